@@ -1,0 +1,39 @@
+#pragma once
+// The `kinestat` command is thin: each subcommand parses options, calls a reader in io/, a
+// pure analysis, and a writer in report/. Each subcommand lives in its own file.
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "kinestat/io/yaml_support.hpp"
+
+namespace kinestat::cli {
+
+/// What a subcommand runs once its options are parsed; returns the exit code.
+using Action = std::function<int()>;
+
+/// Options shared by the analysis subcommands.
+struct CommonOptions {
+  std::string model_path;
+  bool json = false;
+  std::string output_path;  ///< empty: standard output
+  std::optional<double> tolerance;  ///< relative rank tolerance (default: the LAPACK rule)
+};
+
+/// Writes `text` to standard output, or atomically to `output_path` when it is set.
+void emit(const CommonOptions& options, const std::string& text);
+
+// Registration functions: each adds one subcommand to `app` and sets `action` when chosen.
+void register_analyze(CLI::App& app, Action& action);
+void register_structure(CLI::App& app, Action& action);
+
+// `analyze` dispatches on the model's kind to one of these; each kind adds its own options.
+void register_network_options(CLI::App& analyze);
+void register_framework_options(CLI::App& analyze);
+int run_network_analysis(const CommonOptions& options, const io::YamlFile& model);
+int run_framework_analysis(const CommonOptions& options, const io::YamlFile& model);
+
+}  // namespace kinestat::cli

@@ -1,0 +1,245 @@
+#include "kinestat/io/yaml_support.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace kinestat::io {
+
+namespace {
+
+// yaml-cpp parses recursively; bound the nesting so hostile input cannot overflow the stack.
+constexpr int kMaxFlowNesting = 64;
+constexpr std::size_t kMaxInputBytes = std::size_t{256} << 20;  // 256 MiB
+
+// Finds the first place where "[" / "{" nesting exceeds the limit, outside quoted strings
+// and comments. Returns {line, column} (1-based) or {0, 0}.
+std::pair<int, int> excessive_flow_nesting(const std::string& text) {
+  int depth = 0, line = 1, column = 0;
+  char quote = 0;
+  bool comment = false;
+  for (char ch : text) {
+    ++column;
+    if (ch == '\n') {
+      ++line;
+      column = 0;
+      comment = false;
+      continue;
+    }
+    if (comment) continue;
+    if (quote) {
+      if (ch == quote) quote = 0;
+      continue;
+    }
+    if (ch == '"' || ch == '\'') {
+      quote = ch;
+    } else if (ch == '#') {
+      comment = true;
+    } else if (ch == '[' || ch == '{') {
+      if (++depth > kMaxFlowNesting) return {line, column};
+    } else if (ch == ']' || ch == '}') {
+      depth = std::max(0, depth - 1);
+    }
+  }
+  return {0, 0};
+}
+
+std::string describe(const YAML::Node& node) {
+  switch (node.Type()) {
+    case YAML::NodeType::Null: return "nothing";
+    case YAML::NodeType::Scalar: return fmt::format("'{}'", node.Scalar());
+    case YAML::NodeType::Sequence: return "a list";
+    case YAML::NodeType::Map: return "a map";
+    default: return "nothing";
+  }
+}
+
+}  // namespace
+
+std::optional<mpq_class> parse_exact_decimal(std::string_view literal) {
+  std::size_t i = 0;
+  bool negative = false;
+  if (i < literal.size() && (literal[i] == '+' || literal[i] == '-')) negative = literal[i++] == '-';
+  std::string digits;
+  long long exponent = 0;
+  bool any_digit = false;
+  for (; i < literal.size() && std::isdigit(static_cast<unsigned char>(literal[i])); ++i) {
+    digits += literal[i];
+    any_digit = true;
+  }
+  if (i < literal.size() && literal[i] == '.') {
+    ++i;
+    for (; i < literal.size() && std::isdigit(static_cast<unsigned char>(literal[i])); ++i) {
+      digits += literal[i];
+      --exponent;
+      any_digit = true;
+    }
+  }
+  if (!any_digit) return std::nullopt;
+  if (i < literal.size() && (literal[i] == 'e' || literal[i] == 'E')) {
+    ++i;
+    bool exp_negative = false;
+    if (i < literal.size() && (literal[i] == '+' || literal[i] == '-')) exp_negative = literal[i++] == '-';
+    long long e = 0;
+    bool exp_digit = false;
+    for (; i < literal.size() && std::isdigit(static_cast<unsigned char>(literal[i])); ++i) {
+      e = e * 10 + (literal[i] - '0');
+      exp_digit = true;
+      if (e > 4000) return std::nullopt;  // beyond double range: not a sensible length
+    }
+    if (!exp_digit) return std::nullopt;
+    exponent += exp_negative ? -e : e;
+  }
+  if (i != literal.size()) return std::nullopt;
+  // Strip leading zeros so huge zero-padded literals cost nothing.
+  const auto first = digits.find_first_not_of('0');
+  digits = first == std::string::npos ? "0" : digits.substr(first);
+  if (digits.size() > 4000) return std::nullopt;
+  mpz_class numerator(digits, 10);
+  mpz_class power;
+  mpz_ui_pow_ui(power.get_mpz_t(), 10, static_cast<unsigned long>(exponent < 0 ? -exponent : exponent));
+  mpq_class value = exponent < 0 ? mpq_class(numerator, power) : mpq_class(numerator * power);
+  value.canonicalize();
+  return negative ? mpq_class(-value) : value;
+}
+
+YamlFile YamlFile::parse(std::string path, const std::string& text) {
+  if (text.size() > kMaxInputBytes) {
+    throw InputError({path, 1, 1}, fmt::format("file is larger than the {} MiB limit", kMaxInputBytes >> 20));
+  }
+  if (auto [line, column] = excessive_flow_nesting(text); line > 0) {
+    throw InputError({path, line, column}, fmt::format("nesting deeper than {} levels", kMaxFlowNesting));
+  }
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::Exception& error) {
+    throw InputError({path, error.mark.line + 1, error.mark.column + 1},
+                     fmt::format("malformed YAML: {}", error.msg));
+  }
+  if (!root.IsDefined() || root.IsNull()) throw InputError({path, 1, 1}, "empty model file: expected a map");
+  YamlFile file(std::move(path), root);
+  file.expect_map(root, "the model file");
+  return file;
+}
+
+YamlFile YamlFile::load(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError({path, 0, 0}, "cannot open file for reading");
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  if (in.bad()) throw InputError({path, 0, 0}, "cannot read file");
+  return parse(path, buffer.str());
+}
+
+SourceLocation YamlFile::where(const YAML::Node& node) const {
+  const YAML::Mark mark = node.Mark();
+  if (mark.is_null()) return {path_, 0, 0};
+  return {path_, mark.line + 1, mark.column + 1};
+}
+
+void YamlFile::fail(const YAML::Node& node, const std::string& problem) const { throw InputError(where(node), problem); }
+
+void YamlFile::expect_map(const YAML::Node& node, std::string_view what) const {
+  if (!node.IsMap()) fail(node, fmt::format("{} must be a map, found {}", what, describe(node)));
+}
+
+void YamlFile::expect_sequence(const YAML::Node& node, std::string_view what) const {
+  if (!node.IsSequence()) fail(node, fmt::format("{} must be a list, found {}", what, describe(node)));
+}
+
+void YamlFile::check_keys(const YAML::Node& map, std::string_view what,
+                          std::initializer_list<std::string_view> allowed) const {
+  check_keys(map, what, std::vector<std::string>(allowed.begin(), allowed.end()));
+}
+
+void YamlFile::check_keys(const YAML::Node& map, std::string_view what, const std::vector<std::string>& allowed) const {
+  expect_map(map, what);
+  std::set<std::string> seen;
+  for (const auto& entry : map) {
+    if (!entry.first.IsScalar()) fail(entry.first, fmt::format("keys of {} must be names", what));
+    const std::string key = entry.first.Scalar();
+    if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
+      std::string list;
+      for (const auto& name : allowed) list += (list.empty() ? "" : ", ") + name;
+      fail(entry.first, fmt::format("unknown key '{}' in {}; expected one of: {}", key, what, list));
+    }
+    if (!seen.insert(key).second) fail(entry.first, fmt::format("duplicate key '{}' in {}", key, what));
+  }
+}
+
+YAML::Node YamlFile::required(const YAML::Node& map, std::string_view key, std::string_view what) const {
+  YAML::Node value = optional(map, key);
+  if (!value.IsDefined()) fail(map, fmt::format("{} is missing the key '{}'", what, key));
+  return value;
+}
+
+YAML::Node YamlFile::optional(const YAML::Node& map, std::string_view key) const {
+  for (const auto& entry : map) {
+    if (entry.first.IsScalar() && entry.first.Scalar() == key) return entry.second;
+  }
+  return YAML::Node(YAML::NodeType::Undefined);
+}
+
+ExactNumber YamlFile::number(const YAML::Node& node, std::string_view what) const {
+  if (!node.IsScalar()) fail(node, fmt::format("{} must be a number, found {}", what, describe(node)));
+  const std::string& text = node.Scalar();
+  ExactNumber result;
+  result.exact = parse_exact_decimal(text);
+  if (result.exact) {
+    result.value = result.exact->get_d();
+    if (!std::isfinite(result.value)) fail(node, fmt::format("{} is out of range: '{}'", what, text));
+    return result;
+  }
+  fail(node, fmt::format("{} must be a finite number, found '{}'", what, text));
+}
+
+long long YamlFile::integer(const YAML::Node& node, std::string_view what) const {
+  const ExactNumber n = number(node, what);
+  if (!n.exact || n.exact->get_den() != 1 || std::abs(n.value) > 1e15) {
+    fail(node, fmt::format("{} must be an integer, found '{}'", what, node.Scalar()));
+  }
+  return static_cast<long long>(n.value);
+}
+
+std::string YamlFile::string(const YAML::Node& node, std::string_view what) const {
+  if (!node.IsScalar() || node.Scalar().empty()) {
+    fail(node, fmt::format("{} must be a name, found {}", what, describe(node)));
+  }
+  return node.Scalar();
+}
+
+std::vector<ExactNumber> YamlFile::numbers(const YAML::Node& node, std::string_view what,
+                                           std::initializer_list<std::size_t> lengths) const {
+  expect_sequence(node, what);
+  if (std::find(lengths.begin(), lengths.end(), node.size()) == lengths.end()) {
+    std::string expected;
+    for (std::size_t n : lengths) expected += (expected.empty() ? "" : " or ") + std::to_string(n);
+    fail(node, fmt::format("{} must have {} numbers, found {}", what, expected, node.size()));
+  }
+  std::vector<ExactNumber> values;
+  for (const auto& item : node) values.push_back(number(item, what));
+  return values;
+}
+
+std::string model_kind(const YamlFile& file) {
+  const YAML::Node& root = file.root();
+  const YAML::Node version = file.required(root, "kinestat", "the model file");
+  if (file.integer(version, "the format version 'kinestat'") != 1) {
+    file.fail(version, "unsupported format version: expected 'kinestat: 1'");
+  }
+  const YAML::Node kind = file.optional(root, "kind");
+  if (!kind.IsDefined()) return "network";
+  const std::string name = file.string(kind, "'kind'");
+  if (name != "network" && name != "framework" && name != "structure") {
+    file.fail(kind, fmt::format("unknown kind '{}'; expected network, framework or structure", name));
+  }
+  return name;
+}
+
+}  // namespace kinestat::io

@@ -1,0 +1,285 @@
+#include "kinestat/linalg/homogeneous_solution.hpp"
+
+#include <Eigen/LU>
+#include <Eigen/QR>
+#include <Eigen/SVD>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace kinestat::linalg {
+
+namespace {
+
+using Row = std::vector<Rational>;
+
+// Keeps a set of rows in reduced echelon form so that a new row can be tested for
+// dependence in one pass. Pivot column of basis row i is pivots[i]; basis rows are zero in
+// every other basis row's pivot column and one in their own.
+class ExactRowBasis {
+ public:
+  explicit ExactRowBasis(Eigen::Index cols) : cols_(cols) {}
+
+  // Reduces `row` against the basis; if something is left, adds it and returns true.
+  bool add(Row row) {
+    for (std::size_t i = 0; i < rows_.size(); ++i) {
+      const Rational factor = row[static_cast<std::size_t>(pivots_[i])];
+      if (sgn(factor) == 0) continue;
+      for (Eigen::Index c = 0; c < cols_; ++c) {
+        const auto cu = static_cast<std::size_t>(c);
+        if (sgn(rows_[i][cu]) != 0) row[cu] -= factor * rows_[i][cu];
+      }
+    }
+    Eigen::Index pivot = -1;
+    for (Eigen::Index c = 0; c < cols_ && pivot < 0; ++c)
+      if (sgn(row[static_cast<std::size_t>(c)]) != 0) pivot = c;
+    if (pivot < 0) return false;
+    const Rational scale = row[static_cast<std::size_t>(pivot)];
+    for (Rational& value : row) value /= scale;
+    for (auto& other : rows_) {
+      const Rational factor = other[static_cast<std::size_t>(pivot)];
+      if (sgn(factor) == 0) continue;
+      for (Eigen::Index c = 0; c < cols_; ++c) {
+        const auto cu = static_cast<std::size_t>(c);
+        if (sgn(row[cu]) != 0) other[cu] -= factor * row[cu];
+      }
+    }
+    rows_.push_back(std::move(row));
+    pivots_.push_back(pivot);
+    return true;
+  }
+
+ private:
+  Eigen::Index cols_;
+  std::vector<Row> rows_;
+  std::vector<Eigen::Index> pivots_;
+};
+
+Row row_of(const RationalMatrix& a, Eigen::Index r) {
+  Row row(static_cast<std::size_t>(a.cols()));
+  for (Eigen::Index c = 0; c < a.cols(); ++c) row[static_cast<std::size_t>(c)] = a(r, c);
+  return row;
+}
+
+// Exact inverse by Gauss-Jordan; returns false if singular.
+bool invert(RationalMatrix m, RationalMatrix& inverse) {
+  const Eigen::Index n = m.rows();
+  inverse = RationalMatrix(n, n);
+  for (Eigen::Index i = 0; i < n; ++i) inverse(i, i) = 1;
+  for (Eigen::Index c = 0; c < n; ++c) {
+    Eigen::Index pivot = c;
+    while (pivot < n && sgn(m(pivot, c)) == 0) ++pivot;
+    if (pivot == n) return false;
+    for (Eigen::Index k = 0; k < n; ++k) {
+      std::swap(m(c, k), m(pivot, k));
+      std::swap(inverse(c, k), inverse(pivot, k));
+    }
+    const Rational scale = m(c, c);
+    for (Eigen::Index k = 0; k < n; ++k) {
+      m(c, k) /= scale;
+      inverse(c, k) /= scale;
+    }
+    for (Eigen::Index r = 0; r < n; ++r) {
+      if (r == c || sgn(m(r, c)) == 0) continue;
+      const Rational factor = m(r, c);
+      for (Eigen::Index k = 0; k < n; ++k) {
+        m(r, k) -= factor * m(c, k);
+        inverse(r, k) -= factor * inverse(c, k);
+      }
+    }
+  }
+  return true;
+}
+
+void clean_small(Eigen::MatrixXd& m) {
+  const double largest = m.size() > 0 ? m.cwiseAbs().maxCoeff() : 0.0;
+  for (Eigen::Index i = 0; i < m.size(); ++i)
+    if (std::abs(m.data()[i]) <= kCoefficientZero * largest) m.data()[i] = 0.0;
+}
+
+// Greedy choice, in the given order, of vectors (rows of `vectors`) that are independent of
+// the ones chosen before, by Gram-Schmidt with an absolute residual threshold.
+std::vector<Eigen::Index> greedy_independent_rows(const Eigen::MatrixXd& vectors,
+                                                  const std::vector<Eigen::Index>& order, double threshold,
+                                                  Eigen::Index wanted) {
+  std::vector<Eigen::Index> chosen;
+  Eigen::MatrixXd basis(vectors.cols(), 0);
+  for (Eigen::Index r : order) {
+    if (static_cast<Eigen::Index>(chosen.size()) == wanted) break;
+    Eigen::VectorXd residual = vectors.row(r).transpose();
+    for (int pass = 0; pass < 2; ++pass) residual -= basis * (basis.transpose() * residual);  // twice is enough
+    const double norm = residual.norm();
+    if (norm > threshold) {
+      basis.conservativeResize(Eigen::NoChange, basis.cols() + 1);
+      basis.col(basis.cols() - 1) = residual / norm;
+      chosen.push_back(r);
+    }
+  }
+  return chosen;
+}
+
+}  // namespace
+
+std::vector<Eigen::Index> redundant_rows(const RationalMatrix& a) {
+  std::vector<Eigen::Index> redundant;
+  ExactRowBasis basis(a.cols());
+  for (Eigen::Index r = a.rows() - 1; r >= 0; --r)
+    if (!basis.add(row_of(a, r))) redundant.push_back(r);
+  std::sort(redundant.begin(), redundant.end());
+  return redundant;
+}
+
+HomogeneousSolution solve_homogeneous(const RationalMatrix& a) {
+  const Eigen::Index rows = a.rows(), cols = a.cols();
+  std::vector<Row> m;
+  m.reserve(static_cast<std::size_t>(rows));
+  for (Eigen::Index r = 0; r < rows; ++r) m.push_back(row_of(a, r));
+
+  // Reduced row echelon form with pivots sought from the last column backwards.
+  std::vector<Eigen::Index> pivot_col_of_row;
+  std::vector<bool> is_pivot(static_cast<std::size_t>(cols), false);
+  std::size_t rank = 0;
+  for (Eigen::Index c = cols - 1; c >= 0; --c) {
+    const auto cu = static_cast<std::size_t>(c);
+    std::size_t pivot = rank;
+    while (pivot < m.size() && sgn(m[pivot][cu]) == 0) ++pivot;
+    if (pivot == m.size()) continue;
+    std::swap(m[rank], m[pivot]);
+    const Rational scale = m[rank][cu];
+    for (Rational& value : m[rank]) value /= scale;
+    for (std::size_t r = 0; r < m.size(); ++r) {
+      if (r == rank || sgn(m[r][cu]) == 0) continue;
+      const Rational factor = m[r][cu];
+      for (std::size_t k = 0; k < static_cast<std::size_t>(cols); ++k)
+        if (sgn(m[rank][k]) != 0) m[r][k] -= factor * m[rank][k];
+    }
+    pivot_col_of_row.push_back(c);
+    is_pivot[cu] = true;
+    ++rank;
+  }
+
+  HomogeneousSolution solution;
+  solution.rank.exact = true;
+  solution.rank.rank = static_cast<Eigen::Index>(rank);
+  for (Eigen::Index c = 0; c < cols; ++c)
+    if (!is_pivot[static_cast<std::size_t>(c)]) solution.free_variables.push_back(c);
+
+  RationalMatrix k(cols, solution.nullity());
+  for (Eigen::Index j = 0; j < solution.nullity(); ++j) {
+    const Eigen::Index f = solution.free_variables[static_cast<std::size_t>(j)];
+    k(f, j) = 1;
+    for (std::size_t r = 0; r < rank; ++r) k(pivot_col_of_row[r], j) = -m[r][static_cast<std::size_t>(f)];
+  }
+  solution.coefficients = k.to_double();
+  solution.exact_coefficients = std::move(k);
+  solution.redundant_rows = redundant_rows(a);
+  return solution;
+}
+
+HomogeneousSolution solve_homogeneous(const Eigen::MatrixXd& a, const RankTolerance& tolerance) {
+  const Eigen::Index rows = a.rows(), cols = a.cols();
+  HomogeneousSolution solution;
+  Eigen::MatrixXd null_basis;
+  if (rows == 0 || cols == 0) {
+    null_basis = Eigen::MatrixXd::Identity(cols, cols);
+  } else {
+    Eigen::BDCSVD<Eigen::MatrixXd> svd(a, Eigen::ComputeFullV);
+    solution.singular_values = svd.singularValues();
+    solution.rank = decide_rank(solution.singular_values, rows, cols, tolerance);
+    null_basis = svd.matrixV().rightCols(cols - solution.rank.rank);
+  }
+  const Eigen::Index nullity = null_basis.cols();
+
+  std::vector<Eigen::Index> top_down(static_cast<std::size_t>(cols));
+  std::iota(top_down.begin(), top_down.end(), Eigen::Index{0});
+  solution.free_variables = greedy_independent_rows(null_basis, top_down, kFreeVariableResidual, nullity);
+  std::sort(solution.free_variables.begin(), solution.free_variables.end());
+
+  Eigen::MatrixXd at_free(nullity, nullity);
+  for (Eigen::Index j = 0; j < nullity; ++j)
+    at_free.row(j) = null_basis.row(solution.free_variables[static_cast<std::size_t>(j)]);
+  solution.coefficients = at_free.size() > 0 ? Eigen::MatrixXd(null_basis * at_free.inverse())
+                                             : Eigen::MatrixXd(cols, nullity);
+  clean_small(solution.coefficients);
+  for (Eigen::Index j = 0; j < nullity; ++j)  // exactly one on the free variables themselves
+    solution.coefficients.row(solution.free_variables[static_cast<std::size_t>(j)]) =
+        Eigen::RowVectorXd::Unit(nullity, j);
+
+  // Rows kept from the bottom up; redundant = the rest. Fall back to column-pivoted QR of A^T
+  // if the greedy pass disagrees with the SVD rank (only possible near the tolerance).
+  std::vector<Eigen::Index> bottom_up(static_cast<std::size_t>(rows));
+  std::iota(bottom_up.rbegin(), bottom_up.rend(), Eigen::Index{0});
+  std::vector<Eigen::Index> kept =
+      greedy_independent_rows(a, bottom_up, std::max(solution.rank.threshold, 0.0), solution.rank.rank);
+  if (static_cast<Eigen::Index>(kept.size()) != solution.rank.rank) {
+    Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(a.transpose());
+    kept.clear();
+    for (Eigen::Index i = 0; i < solution.rank.rank; ++i) kept.push_back(qr.colsPermutation().indices()(i));
+  }
+  std::vector<bool> is_kept(static_cast<std::size_t>(rows), false);
+  for (Eigen::Index r : kept) is_kept[static_cast<std::size_t>(r)] = true;
+  for (Eigen::Index r = 0; r < rows; ++r)
+    if (!is_kept[static_cast<std::size_t>(r)]) solution.redundant_rows.push_back(r);
+  return solution;
+}
+
+HomogeneousSolution with_free_variables(const HomogeneousSolution& solution, std::vector<Eigen::Index> chosen) {
+  const Eigen::Index nullity = solution.nullity();
+  const Eigen::Index n = solution.coefficients.rows();
+  if (static_cast<Eigen::Index>(chosen.size()) != nullity)
+    throw DependentFreeVariable(-1, "the number of chosen free variables differs from the nullity");
+  for (std::size_t i = 0; i < chosen.size(); ++i) {
+    if (chosen[i] < 0 || chosen[i] >= n) throw DependentFreeVariable(chosen[i], "variable index out of range");
+    for (std::size_t j = 0; j < i; ++j)
+      if (chosen[j] == chosen[i]) throw DependentFreeVariable(chosen[i], "variable chosen twice");
+  }
+  // Report the first chosen variable that depends on those before it.
+  auto first_dependent = [&](const Eigen::MatrixXd& rows_of_k) {
+    const double scale = std::max(1.0, rows_of_k.size() > 0 ? rows_of_k.cwiseAbs().maxCoeff() : 1.0);
+    std::vector<Eigen::Index> order(chosen.size());
+    std::iota(order.begin(), order.end(), Eigen::Index{0});
+    const auto independent = greedy_independent_rows(rows_of_k, order, kFreeVariableResidual * scale, nullity);
+    for (std::size_t i = 0; i < chosen.size(); ++i)
+      if (std::find(independent.begin(), independent.end(), static_cast<Eigen::Index>(i)) == independent.end())
+        return chosen[i];
+    return chosen.front();
+  };
+
+  HomogeneousSolution result = solution;
+  std::vector<Eigen::Index> sorted = chosen;
+  std::sort(sorted.begin(), sorted.end());
+  result.free_variables = sorted;
+  if (solution.exact_coefficients) {
+    const RationalMatrix& k = *solution.exact_coefficients;
+    RationalMatrix at_chosen(nullity, nullity);
+    for (Eigen::Index i = 0; i < nullity; ++i)
+      for (Eigen::Index j = 0; j < nullity; ++j) at_chosen(i, j) = k(sorted[static_cast<std::size_t>(i)], j);
+    RationalMatrix inverse;
+    if (!invert(at_chosen, inverse)) {
+      Eigen::MatrixXd rows_in_request_order(nullity, nullity);
+      for (Eigen::Index i = 0; i < nullity; ++i)
+        rows_in_request_order.row(i) = solution.coefficients.row(chosen[static_cast<std::size_t>(i)]);
+      throw DependentFreeVariable(first_dependent(rows_in_request_order), "chosen variables are not independent");
+    }
+    result.exact_coefficients = k * inverse;
+    result.coefficients = result.exact_coefficients->to_double();
+    return result;
+  }
+  Eigen::MatrixXd at_chosen(nullity, nullity), in_request_order(nullity, nullity);
+  for (Eigen::Index i = 0; i < nullity; ++i) {
+    at_chosen.row(i) = solution.coefficients.row(sorted[static_cast<std::size_t>(i)]);
+    in_request_order.row(i) = solution.coefficients.row(chosen[static_cast<std::size_t>(i)]);
+  }
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(at_chosen);
+  const auto& sv = svd.singularValues();
+  if (nullity > 0 && sv(nullity - 1) <= kFreeVariableResidual * std::max(1.0, sv(0)))
+    throw DependentFreeVariable(first_dependent(in_request_order), "chosen variables are not independent");
+  result.coefficients = solution.coefficients * at_chosen.inverse();
+  clean_small(result.coefficients);
+  for (Eigen::Index j = 0; j < nullity; ++j)
+    result.coefficients.row(sorted[static_cast<std::size_t>(j)]) = Eigen::RowVectorXd::Unit(nullity, j);
+  return result;
+}
+
+}  // namespace kinestat::linalg

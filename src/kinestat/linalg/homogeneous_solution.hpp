@@ -1,0 +1,64 @@
+#pragma once
+// The solution space of a homogeneous system A x = 0, expressed in terms of chosen free
+// variables (Davies' "primary variables"), exactly or in floating point. This is the one
+// piece of linear algebra that all four of Davies' methods share.
+
+#include <Eigen/Core>
+
+#include <optional>
+#include <stdexcept>
+#include <vector>
+
+#include "kinestat/linalg/rank_decision.hpp"
+#include "kinestat/linalg/rational_matrix.hpp"
+
+namespace kinestat::linalg {
+
+/// x = coefficients * x_free spans every solution of A x = 0.
+struct HomogeneousSolution {
+  RankDecision rank;                              ///< rank of A with its evidence
+  Eigen::VectorXd singular_values;                ///< of A, decreasing (floating-point solves only)
+  std::vector<Eigen::Index> free_variables;       ///< indices into x, increasing; size = nullity
+  Eigen::MatrixXd coefficients;                   ///< n x nullity, identity on the free variables
+  std::optional<RationalMatrix> exact_coefficients;  ///< the same, exactly, when A was rational
+  std::vector<Eigen::Index> redundant_rows;       ///< rows of A that depend on later rows
+
+  Eigen::Index nullity() const { return static_cast<Eigen::Index>(free_variables.size()); }
+};
+
+/// Relative threshold for a variable to count as able to be free in floating point: its row of
+/// the orthonormal null-space basis must keep this much norm after removing earlier choices.
+inline constexpr double kFreeVariableResidual = 1e-9;
+/// Coefficients below this fraction of the largest coefficient are printed and stored as zero.
+inline constexpr double kCoefficientZero = 1e-12;
+
+/// Solves A x = 0 exactly. Free variables are the earliest variables that can be free
+/// (elimination pivots from the last column backwards), which reproduces Davies' choice of
+/// primary variables for the motions of the 2-circuit network; redundant rows are those
+/// that depend on later rows.
+HomogeneousSolution solve_homogeneous(const RationalMatrix& a);
+
+/// Solves A x = 0 in floating point: rank from the SVD, null space from V, then the same
+/// rules for free variables and redundant rows as the exact version, with named tolerances.
+HomogeneousSolution solve_homogeneous(const Eigen::MatrixXd& a, const RankTolerance& tolerance);
+
+/// Thrown when requested free variables cannot all be free together.
+class DependentFreeVariable : public std::invalid_argument {
+ public:
+  DependentFreeVariable(Eigen::Index variable, const char* why)
+      : std::invalid_argument(why), variable_(variable) {}
+  /// The first requested variable that is determined by the ones before it (or by nothing).
+  Eigen::Index variable() const { return variable_; }
+
+ private:
+  Eigen::Index variable_;
+};
+
+/// Re-expresses `solution` in terms of `chosen` (exactly nullity() distinct indices, any
+/// order; the result lists them in increasing order). Throws DependentFreeVariable.
+HomogeneousSolution with_free_variables(const HomogeneousSolution& solution, std::vector<Eigen::Index> chosen);
+
+/// Indices of the rows of `a` that depend on later rows (exact).
+std::vector<Eigen::Index> redundant_rows(const RationalMatrix& a);
+
+}  // namespace kinestat::linalg

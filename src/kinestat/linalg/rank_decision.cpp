@@ -1,0 +1,42 @@
+#include "kinestat/linalg/rank_decision.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace kinestat::linalg {
+
+double default_relative_tolerance(Eigen::Index rows, Eigen::Index cols) {
+  return static_cast<double>(std::max<Eigen::Index>({rows, cols, 1})) * std::numeric_limits<double>::epsilon();
+}
+
+double RankDecision::gap() const {
+  if (exact || largest_dropped == 0.0) return std::numeric_limits<double>::infinity();
+  return smallest_kept / largest_dropped;
+}
+
+bool RankDecision::close() const {
+  if (exact) return false;
+  if (gap() < kCloseRankGap) return true;
+  return largest > 0.0 && largest_dropped > std::sqrt(std::numeric_limits<double>::epsilon()) * largest;
+}
+
+RankDecision decide_rank(const Eigen::VectorXd& singular_values, Eigen::Index rows, Eigen::Index cols,
+                         const RankTolerance& tolerance) {
+  RankDecision decision;
+  decision.largest = singular_values.size() > 0 ? singular_values(0) : 0.0;
+  const double relative = tolerance.relative.value_or(default_relative_tolerance(rows, cols));
+  decision.threshold = relative * decision.largest;
+  for (Eigen::Index i = 0; i < singular_values.size(); ++i) {
+    const double sigma = singular_values(i);
+    if (sigma > decision.threshold) {
+      ++decision.rank;
+      decision.smallest_kept = sigma;
+    } else {
+      decision.largest_dropped = std::max(decision.largest_dropped, sigma);
+    }
+  }
+  return decision;
+}
+
+}  // namespace kinestat::linalg

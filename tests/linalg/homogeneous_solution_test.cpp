@@ -1,0 +1,61 @@
+// Homogeneous solutions on the seed's single-circuit example (seed 000, section 2.1) and on
+// small hand-checked systems.
+#include <gtest/gtest.h>
+
+#include "kinestat/linalg/homogeneous_solution.hpp"
+
+namespace kinestat::linalg {
+namespace {
+
+// [M^D]6,6 of two spheric couplings at (0,0,0) and (0,0,1), seed 000 section 2.1.
+RationalMatrix two_spheres_motion_matrix() {
+  const int values[6][6] = {{1, 0, 0, 1, 0, 0},  {0, 1, 0, 0, 1, 0}, {0, 0, 1, 0, 0, 1},
+                            {0, 0, 0, 0, -1, 0}, {0, 0, 0, 1, 0, 0}, {0, 0, 0, 0, 0, 0}};
+  RationalMatrix m(6, 6);
+  for (int r = 0; r < 6; ++r)
+    for (int c = 0; c < 6; ++c) m(r, c) = values[r][c];
+  return m;
+}
+
+TEST(HomogeneousSolution, SingleCircuitOfTwoSpheresExact) {
+  const auto solution = solve_homogeneous(two_spheres_motion_matrix());
+  EXPECT_TRUE(solution.rank.exact);
+  EXPECT_EQ(solution.rank.rank, 5);
+  ASSERT_EQ(solution.free_variables, std::vector<Eigen::Index>{2});  // ta, the earliest that can be free
+  // Only ta and tb move, with ta + tb = 0.
+  const RationalMatrix& k = *solution.exact_coefficients;
+  for (int i = 0; i < 6; ++i) {
+    const Rational expected = i == 2 ? 1 : (i == 5 ? -1 : 0);
+    EXPECT_EQ(k(i, 0), expected) << "variable " << i;
+  }
+  EXPECT_EQ(solution.redundant_rows, std::vector<Eigen::Index>{5});  // the empty sixth row
+}
+
+TEST(HomogeneousSolution, FloatingPointAgreesWithExact) {
+  const auto exact = solve_homogeneous(two_spheres_motion_matrix());
+  const auto approx = solve_homogeneous(two_spheres_motion_matrix().to_double(), {});
+  EXPECT_FALSE(approx.rank.exact);
+  EXPECT_EQ(approx.rank.rank, exact.rank.rank);
+  EXPECT_EQ(approx.free_variables, exact.free_variables);
+  EXPECT_TRUE(approx.coefficients.isApprox(exact.coefficients, 1e-12));
+  EXPECT_EQ(approx.redundant_rows, exact.redundant_rows);
+  EXPECT_GT(approx.rank.smallest_kept, 0.5);
+  EXPECT_LT(approx.rank.largest_dropped, 1e-14);
+}
+
+TEST(HomogeneousSolution, ChosenFreeVariables) {
+  const auto solution = with_free_variables(solve_homogeneous(two_spheres_motion_matrix()), {5});
+  EXPECT_EQ((*solution.exact_coefficients)(2, 0), Rational(-1));
+  EXPECT_THROW(with_free_variables(solve_homogeneous(two_spheres_motion_matrix()), {0}), DependentFreeVariable);
+}
+
+TEST(HomogeneousSolution, RedundantRowsDependOnLaterRows) {
+  RationalMatrix a(3, 2);
+  a(0, 0) = 2;  // row 0 = 2 * row 2
+  a(1, 1) = 1;
+  a(2, 0) = 1;
+  EXPECT_EQ(redundant_rows(a), std::vector<Eigen::Index>{0});
+}
+
+}  // namespace
+}  // namespace kinestat::linalg
