@@ -1,11 +1,78 @@
-// Placeholder until the network analysis lands; replaced by its real implementation.
-#include <iostream>
+// `kinestat analyze` for coupling networks (kind: network): Davies' four methods.
+
+#include <fmt/format.h>
 
 #include "cli/commands.hpp"
+#include "kinestat/io/network_reader.hpp"
+#include "kinestat/network/analyse_network.hpp"
+#include "kinestat/report/network_report.hpp"
 
 namespace kinestat::cli {
-void register_network_options(CLI::App&) {}
-int run_network_analysis(const CommonOptions&, const io::YamlFile& model) {
-  throw io::InputError({model.path(), 1, 1}, "network analysis is not available in this build");
+
+namespace {
+
+struct NetworkOptions {
+  bool exact = false;
+  bool floating = false;
+  bool matrices = false;
+  bool coupled_pairs_only = false;
+  std::vector<std::string> primary;
+  std::vector<std::string> values;  // name=number
+};
+
+NetworkOptions& network_options() {
+  static NetworkOptions options;
+  return options;
 }
+
+std::vector<std::pair<std::string, screw::Rational>> parse_values(const std::vector<std::string>& texts) {
+  std::vector<std::pair<std::string, screw::Rational>> values;
+  for (const std::string& text : texts) {
+    const auto equals = text.find('=');
+    const auto number = equals == std::string::npos ? std::nullopt : io::parse_exact_decimal(text.substr(equals + 1));
+    if (equals == 0 || !number)
+      throw io::InputError({"--value", 0, 0}, fmt::format("expected NAME=NUMBER (e.g. sa=1.5), found '{}'", text));
+    values.emplace_back(text.substr(0, equals), *number);
+  }
+  return values;
+}
+
+}  // namespace
+
+void register_network_options(CLI::App& analyze) {
+  NetworkOptions& o = network_options();
+  auto* exact = analyze.add_flag("--exact", o.exact, "Networks: exact rational arithmetic (GMP)");
+  auto* floating = analyze.add_flag("--float", o.floating, "Networks: floating point (SVD ranks with the tolerance)");
+  exact->excludes(floating);
+  analyze.add_flag("--matrices", o.matrices, "Networks: also print B, Q, BM, QA and the unit matrices");
+  analyze.add_flag("--coupled-pairs", o.coupled_pairs_only, "Networks: list only directly coupled pairs of bodies");
+  analyze.add_option("--primary", o.primary, "Networks: primary variables, e.g. --primary sa,ta,vc,Ub,We")->delimiter(',');
+  analyze.add_option("--value", o.values, "Networks: numeric value of a primary variable, NAME=NUMBER (repeatable)");
+}
+
+int run_network_analysis(const CommonOptions& common, const io::YamlFile& file) {
+  const NetworkOptions& o = network_options();
+  const io::LoadedNetwork loaded = io::read_network_model(file);
+  network::AnalysisOptions options;
+  options.arithmetic = o.exact ? network::Arithmetic::exact
+                               : (o.floating ? network::Arithmetic::floating : network::Arithmetic::automatic);
+  options.tolerance.relative = common.tolerance;
+  if (!o.primary.empty()) options.primary = o.primary;
+  options.values = parse_values(o.values);
+  options.all_pairs = !o.coupled_pairs_only;
+  network::NetworkResult result;
+  try {
+    result = network::analyse_network(loaded.model, options);
+  } catch (const network::ModelError& error) {
+    if (error.field() == "primary" && !o.primary.empty()) throw io::InputError({"--primary", 0, 0}, error.what());
+    if (error.field() == "values" && !o.values.empty()) throw io::InputError({"--value", 0, 0}, error.what());
+    throw io::locate(error, loaded, file.path());
+  }
+  report::NetworkReportOptions report_options;
+  report_options.matrices = o.matrices;
+  emit(common, common.json ? report::network_json(loaded.model, result, report_options).dump(2) + "\n"
+                           : report::network_text(loaded.model, result, report_options));
+  return 0;
+}
+
 }  // namespace kinestat::cli

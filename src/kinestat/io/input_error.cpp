@@ -11,8 +11,9 @@ std::string format_message(const SourceLocation& where, const std::string& probl
   for (char& ch : flat) {
     if (ch == '\n' || ch == '\r') ch = ' ';
   }
-  return fmt::format("{}:{}:{}: error: {}", where.file.empty() ? "<input>" : where.file, where.line,
-                     where.column, flat);
+  const std::string file = where.file.empty() ? "<input>" : where.file;
+  if (where.line <= 0) return fmt::format("{}: error: {}", file, flat);
+  return fmt::format("{}:{}:{}: error: {}", file, where.line, where.column, flat);
 }
 }  // namespace
 

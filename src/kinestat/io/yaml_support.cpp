@@ -61,6 +61,16 @@ std::string describe(const YAML::Node& node) {
 
 }  // namespace
 
+int significant_digits(std::string_view literal) {
+  std::string digits;
+  for (char ch : literal) {
+    if (ch == 'e' || ch == 'E') break;
+    if (std::isdigit(static_cast<unsigned char>(ch))) digits += ch;
+  }
+  const auto first = digits.find_first_not_of('0');
+  return first == std::string::npos ? 1 : static_cast<int>(digits.size() - first);
+}
+
 std::optional<mpq_class> parse_exact_decimal(std::string_view literal) {
   std::size_t i = 0;
   bool negative = false;

@@ -69,6 +69,9 @@ class YamlFile {
   YAML::Node root_;
 };
 
+/// Significant digits of a decimal literal ("0.8660254" -> 7, "-1.50e3" -> 3, "0" -> 1).
+int significant_digits(std::string_view literal);
+
 /// Parses a decimal literal exactly ("-1.25e-3" -> -1/800). Empty if it is not one.
 std::optional<mpq_class> parse_exact_decimal(std::string_view literal);
 

@@ -121,6 +121,14 @@ std::vector<Eigen::Index> greedy_independent_rows(const Eigen::MatrixXd& vectors
 
 }  // namespace
 
+Eigen::Index exact_rank(const RationalMatrix& m) {
+  ExactRowBasis basis(m.cols());
+  Eigen::Index rank = 0;
+  for (Eigen::Index r = 0; r < m.rows(); ++r)
+    if (basis.add(row_of(m, r))) ++rank;
+  return rank;
+}
+
 std::vector<Eigen::Index> redundant_rows(const RationalMatrix& a) {
   std::vector<Eigen::Index> redundant;
   ExactRowBasis basis(a.cols());

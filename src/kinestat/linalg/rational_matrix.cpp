@@ -26,6 +26,42 @@ RationalMatrix RationalMatrix::operator*(const RationalMatrix& other) const {
   return product;
 }
 
+RationalMatrix RationalMatrix::operator+(const RationalMatrix& other) const {
+  assert(rows_ == other.rows_ && cols_ == other.cols_);
+  RationalMatrix sum = *this;
+  for (std::size_t i = 0; i < data_.size(); ++i) sum.data_[i] += other.data_[i];
+  return sum;
+}
+
+RationalMatrix RationalMatrix::operator-(const RationalMatrix& other) const {
+  assert(rows_ == other.rows_ && cols_ == other.cols_);
+  RationalMatrix difference = *this;
+  for (std::size_t i = 0; i < data_.size(); ++i) difference.data_[i] -= other.data_[i];
+  return difference;
+}
+
+RationalMatrix RationalMatrix::block(Eigen::Index row, Eigen::Index col, Eigen::Index rows, Eigen::Index cols) const {
+  assert(row + rows <= rows_ && col + cols <= cols_);
+  RationalMatrix b(rows, cols);
+  for (Eigen::Index r = 0; r < rows; ++r)
+    for (Eigen::Index c = 0; c < cols; ++c) b(r, c) = (*this)(row + r, col + c);
+  return b;
+}
+
+void RationalMatrix::set_block(Eigen::Index row, Eigen::Index col, const RationalMatrix& source) {
+  assert(row + source.rows_ <= rows_ && col + source.cols_ <= cols_);
+  for (Eigen::Index r = 0; r < source.rows_; ++r)
+    for (Eigen::Index c = 0; c < source.cols_; ++c) (*this)(row + r, col + c) = source(r, c);
+}
+
+RationalMatrix RationalMatrix::append_columns(const RationalMatrix& other) const {
+  assert(rows_ == other.rows_);
+  RationalMatrix joined(rows_, cols_ + other.cols_);
+  joined.set_block(0, 0, *this);
+  joined.set_block(0, cols_, other);
+  return joined;
+}
+
 bool RationalMatrix::operator==(const RationalMatrix& other) const {
   return rows_ == other.rows_ && cols_ == other.cols_ && data_ == other.data_;
 }
@@ -44,5 +80,12 @@ Eigen::MatrixXd RationalMatrix::to_double() const {
 }
 
 std::string to_string(const Rational& value) { return value.get_str(); }
+
+RationalMatrix to_rational(const Eigen::MatrixXi& m) {
+  RationalMatrix r(m.rows(), m.cols());
+  for (Eigen::Index i = 0; i < m.rows(); ++i)
+    for (Eigen::Index j = 0; j < m.cols(); ++j) r(i, j) = m(i, j);
+  return r;
+}
 
 }  // namespace kinestat::linalg

@@ -27,6 +27,14 @@ class RationalMatrix {
 
   RationalMatrix transpose() const;
   RationalMatrix operator*(const RationalMatrix& other) const;
+  RationalMatrix operator+(const RationalMatrix& other) const;
+  RationalMatrix operator-(const RationalMatrix& other) const;
+  /// Copy of the rows x cols block starting at (row, col).
+  RationalMatrix block(Eigen::Index row, Eigen::Index col, Eigen::Index rows, Eigen::Index cols) const;
+  /// Copies `source` into this matrix with its top-left corner at (row, col).
+  void set_block(Eigen::Index row, Eigen::Index col, const RationalMatrix& source);
+  /// [this other]: the columns of `other` appended.
+  RationalMatrix append_columns(const RationalMatrix& other) const;
   bool operator==(const RationalMatrix& other) const;
   bool is_zero() const;
   /// Nearest doubles.
@@ -43,6 +51,11 @@ class RationalMatrix {
   Eigen::Index cols_ = 0;
   std::vector<Rational> data_;
 };
+
+/// Exact rank by elimination.
+Eigen::Index exact_rank(const RationalMatrix& m);
+/// Exact conversion of a double (every finite double is a rational).
+RationalMatrix to_rational(const Eigen::MatrixXi& m);
 
 /// Exact text of a rational: "3", "-1/2".
 std::string to_string(const Rational& value);

@@ -1,0 +1,252 @@
+#include "kinestat/io/network_reader.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <set>
+
+namespace kinestat::io {
+
+namespace {
+
+using screw::CouplingType;
+using screw::Rational;
+using screw::Vec3;
+
+class NetworkReader {
+ public:
+  explicit NetworkReader(const YamlFile& file) : file_(file) {}
+
+  LoadedNetwork read() {
+    const YAML::Node& root = file_.root();
+    file_.check_keys(root, "the model file",
+                     {"kinestat", "kind", "name", "description", "dimension", "ground", "bodies", "couplings", "chords",
+                      "primary", "values"});
+    network::Model& model = loaded_.model;
+    if (auto name = file_.optional(root, "name"); name.IsDefined()) model.name = file_.string(name, "'name'");
+    read_dimension(root);
+    if (auto bodies = file_.optional(root, "bodies"); bodies.IsDefined()) read_bodies(bodies);
+    const YAML::Node couplings = file_.required(root, "couplings", "the model file");
+    file_.expect_sequence(couplings, "'couplings'");
+    if (couplings.size() == 0) file_.fail(couplings, "the model has no couplings: 'couplings' is empty");
+    loaded_.field_locations["couplings"] = file_.where(couplings);
+    for (const auto& coupling : couplings) read_coupling(coupling);
+    order_bodies();
+    if (auto ground = file_.optional(root, "ground"); ground.IsDefined()) {
+      const std::string name = body_name(ground, "'ground'");
+      const auto it = std::find(model.bodies.begin(), model.bodies.end(), name);
+      if (it == model.bodies.end()) file_.fail(ground, fmt::format("ground body '{}' is not a body of the model", name));
+      model.ground = static_cast<int>(it - model.bodies.begin());
+    }
+    read_name_list(root, "chords", model.chords);
+    read_name_list(root, "primary", model.primary);
+    if (auto values = file_.optional(root, "values"); values.IsDefined()) read_values(values);
+    model.max_significant_digits = max_digits_;
+    return std::move(loaded_);
+  }
+
+ private:
+  void read_dimension(const YAML::Node& root) {
+    const YAML::Node dimension = file_.optional(root, "dimension");
+    if (!dimension.IsDefined()) return;
+    const std::string text = dimension.IsScalar() ? dimension.Scalar() : "";
+    if (text == "6" || text == "spatial") {
+      loaded_.model.space = screw::ScrewSpace::spatial();
+    } else if (text == "3" || text == "planar") {
+      loaded_.model.space = screw::ScrewSpace::planar();
+    } else {
+      file_.fail(dimension, "'dimension' must be 6 (or spatial) or planar (or 3)");
+    }
+  }
+
+  std::string body_name(const YAML::Node& node, std::string_view what) const {
+    if (!node.IsScalar() || node.Scalar().empty()) file_.fail(node, fmt::format("{} must be a body name or number", what));
+    return node.Scalar();
+  }
+
+  int body_index(const std::string& name) {
+    auto& bodies = loaded_.model.bodies;
+    const auto it = std::find(bodies.begin(), bodies.end(), name);
+    if (it != bodies.end()) return static_cast<int>(it - bodies.begin());
+    bodies.push_back(name);
+    return static_cast<int>(bodies.size() - 1);
+  }
+
+  void read_bodies(const YAML::Node& bodies) {
+    file_.expect_sequence(bodies, "'bodies'");
+    std::set<std::string> seen;
+    for (const auto& body : bodies) {
+      const std::string name = body_name(body, "a body");
+      if (!seen.insert(name).second) file_.fail(body, fmt::format("duplicate body '{}'", name));
+      body_index(name);
+    }
+  }
+
+  // Bodies named by integers are numbered as the user numbered them; others keep the order
+  // in which they first appear. Coupling ends are remapped accordingly.
+  void order_bodies() {
+    auto& model = loaded_.model;
+    const bool all_integers = std::all_of(model.bodies.begin(), model.bodies.end(), [](const std::string& name) {
+      return parse_exact_decimal(name).has_value() && parse_exact_decimal(name)->get_den() == 1 &&
+             name.find_first_of(".eE") == std::string::npos;
+    });
+    if (!all_integers) return;
+    std::vector<int> order(model.bodies.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+    std::sort(order.begin(), order.end(), [&](int a, int b) {
+      return *parse_exact_decimal(model.bodies[static_cast<std::size_t>(a)]) < *parse_exact_decimal(model.bodies[static_cast<std::size_t>(b)]);
+    });
+    std::vector<int> new_index(order.size());
+    std::vector<std::string> sorted;
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      new_index[static_cast<std::size_t>(order[i])] = static_cast<int>(i);
+      sorted.push_back(model.bodies[static_cast<std::size_t>(order[i])]);
+    }
+    // "1" and "01" would both be body 1: a duplicate under another spelling.
+    for (std::size_t i = 1; i < sorted.size(); ++i)
+      if (*parse_exact_decimal(sorted[i]) == *parse_exact_decimal(sorted[i - 1]))
+        file_.fail(file_.root(), fmt::format("bodies '{}' and '{}' are the same number", sorted[i - 1], sorted[i]));
+    model.bodies = sorted;
+    for (auto& c : model.couplings) {
+      c.from = new_index[static_cast<std::size_t>(c.from)];
+      c.to = new_index[static_cast<std::size_t>(c.to)];
+    }
+  }
+
+  Rational number(const YAML::Node& node, std::string_view what) {
+    const ExactNumber n = file_.number(node, what);
+    max_digits_ = std::max(max_digits_, significant_digits(node.Scalar()));
+    return *n.exact;
+  }
+
+  // A 3-vector; planar models also accept [x, y] and require z = 0 for points.
+  Vec3 vector(const YAML::Node& node, std::string_view what, bool nonzero, bool in_plane) {
+    const bool planar = loaded_.model.space.is_planar();
+    if (planar) {
+      file_.numbers(node, what, {2, 3});  // checks shape and finiteness
+    } else {
+      file_.numbers(node, what, {3});
+    }
+    Vec3 v{0, 0, 0};
+    for (std::size_t i = 0; i < node.size(); ++i) v[i] = number(node[i], what);
+    if (nonzero && screw::is_zero(v)) file_.fail(node, fmt::format("{} must not be the zero vector", what));
+    if (planar && in_plane && sgn(v[2]) != 0) file_.fail(node, fmt::format("{} must lie in the xy-plane of a planar model", what));
+    return v;
+  }
+
+  std::vector<std::vector<Rational>> screw_list(const YAML::Node& node, std::string_view what) {
+    file_.expect_sequence(node, what);
+    const std::size_t d = static_cast<std::size_t>(loaded_.model.space.dimension());
+    std::vector<std::vector<Rational>> screws;
+    for (const auto& item : node) {
+      file_.numbers(item, what, {d});
+      std::vector<Rational> s;
+      for (const auto& x : item) s.push_back(number(x, what));
+      screws.push_back(s);
+    }
+    return screws;
+  }
+
+  void read_coupling(const YAML::Node& node) {
+    file_.expect_map(node, "a coupling");
+    const YAML::Node type_node = file_.required(node, "type", "a coupling");
+    const std::string type_name = file_.string(type_node, "'type'");
+    const auto type = screw::parse_coupling_type(type_name);
+    if (!type) {
+      file_.fail(type_node, fmt::format("unknown coupling type '{}'; expected one of: {}", type_name,
+                                        fmt::join(screw::coupling_type_names(), ", ")));
+    }
+    std::vector<std::string> allowed{"name", "type", "between", "point"};
+    for (auto key : screw::geometry_keys(*type)) allowed.emplace_back(key);
+    file_.check_keys(node, fmt::format("a {} coupling", type_name), allowed);
+    for (auto key : screw::required_geometry_keys(*type)) file_.required(node, key, fmt::format("a {} coupling", type_name));
+
+    network::Coupling coupling;
+    coupling.type = *type;
+    const YAML::Node name = file_.required(node, "name", "a coupling");
+    coupling.name = file_.string(name, "a coupling name");
+    for (const auto& other : loaded_.model.couplings)
+      if (other.name == coupling.name) file_.fail(name, fmt::format("duplicate coupling name '{}'", coupling.name));
+
+    const YAML::Node between = file_.required(node, "between", "a coupling");
+    file_.expect_sequence(between, "'between'");
+    if (between.size() != 2) file_.fail(between, "'between' must name exactly two bodies, e.g. [1, 2]");
+    const std::string from = body_name(between[0], "a body in 'between'");
+    const std::string to = body_name(between[1], "a body in 'between'");
+    if (from == to) file_.fail(between, fmt::format("coupling '{}' joins body '{}' to itself", coupling.name, from));
+    coupling.from = body_index(from);
+    coupling.to = body_index(to);
+
+    screw::CouplingGeometry& g = coupling.geometry;
+    if (auto point = file_.optional(node, "point"); point.IsDefined()) g.point = vector(point, "'point'", false, true);
+    if (auto axis = file_.optional(node, "axis"); axis.IsDefined()) g.axis = vector(axis, "'axis'", true, false);
+    if (auto axis2 = file_.optional(node, "axis2"); axis2.IsDefined()) g.axis2 = vector(axis2, "'axis2'", true, false);
+    if (auto normal = file_.optional(node, "normal"); normal.IsDefined()) g.normal = vector(normal, "'normal'", true, false);
+    if (auto pitch = file_.optional(node, "pitch"); pitch.IsDefined()) g.pitch = number(pitch, "'pitch'");
+    if (auto motions = file_.optional(node, "motions"); motions.IsDefined()) g.custom_motions = screw_list(motions, "a custom motion");
+    if (auto actions = file_.optional(node, "actions"); actions.IsDefined()) g.custom_actions = screw_list(actions, "a custom action");
+
+    const bool planar = loaded_.model.space.is_planar();
+    if (*type == CouplingType::revolute && !g.axis && !planar)
+      file_.fail(node, fmt::format("revolute coupling '{}' needs an 'axis' in a spatial model", coupling.name));
+    if (planar && *type == CouplingType::revolute && g.axis && (sgn((*g.axis)[0]) != 0 || sgn((*g.axis)[1]) != 0))
+      file_.fail(file_.optional(node, "axis"), "in a planar model a revolute axis must be normal to the plane ([0, 0, 1])");
+    if (planar && *type == CouplingType::prismatic && sgn((*g.axis)[2]) != 0)
+      file_.fail(file_.optional(node, "axis"), "in a planar model a prismatic axis must lie in the xy-plane");
+    try {
+      (void)screw::coupling_basis(coupling.type, g, loaded_.model.space);
+    } catch (const screw::GeometryError& error) {
+      file_.fail(node, fmt::format("coupling '{}': {}", coupling.name, error.what()));
+    }
+    loaded_.item_locations["couplings"].push_back(file_.where(node));
+    loaded_.model.couplings.push_back(std::move(coupling));
+  }
+
+  void read_name_list(const YAML::Node& root, const char* field, std::vector<std::string>& names) {
+    const YAML::Node list = file_.optional(root, field);
+    if (!list.IsDefined()) return;
+    file_.expect_sequence(list, fmt::format("'{}'", field));
+    loaded_.field_locations[field] = file_.where(list);
+    std::set<std::string> seen;
+    for (const auto& item : list) {
+      const std::string name = file_.string(item, fmt::format("an entry of '{}'", field));
+      if (!seen.insert(name).second) file_.fail(item, fmt::format("'{}' appears twice in '{}'", name, field));
+      names.push_back(name);
+      loaded_.item_locations[field].push_back(file_.where(item));
+    }
+  }
+
+  void read_values(const YAML::Node& values) {
+    file_.expect_map(values, "'values'");
+    loaded_.field_locations["values"] = file_.where(values);
+    std::set<std::string> seen;
+    for (const auto& entry : values) {
+      const std::string name = file_.string(entry.first, "a primary variable name in 'values'");
+      if (!seen.insert(name).second) file_.fail(entry.first, fmt::format("duplicate key '{}' in 'values'", name));
+      loaded_.model.values.emplace_back(name, *file_.number(entry.second, fmt::format("the value of '{}'", name)).exact);
+      loaded_.item_locations["values"].push_back(file_.where(entry.first));
+    }
+  }
+
+  const YamlFile& file_;
+  LoadedNetwork loaded_;
+  int max_digits_ = 0;
+};
+
+}  // namespace
+
+LoadedNetwork read_network_model(const YamlFile& file) { return NetworkReader(file).read(); }
+
+InputError locate(const network::ModelError& error, const LoadedNetwork& loaded, const std::string& path) {
+  SourceLocation where{path, 0, 0};
+  if (auto field = loaded.field_locations.find(error.field()); field != loaded.field_locations.end()) where = field->second;
+  if (auto items = loaded.item_locations.find(error.field());
+      items != loaded.item_locations.end() && error.index() >= 0 &&
+      static_cast<std::size_t>(error.index()) < items->second.size()) {
+    where = items->second[static_cast<std::size_t>(error.index())];
+  }
+  if (where.line == 0) where = {path, 1, 1};
+  return InputError(where, error.what());
+}
+
+}  // namespace kinestat::io

@@ -1,0 +1,464 @@
+#include "kinestat/network/analyse_network.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <set>
+
+#include "kinestat/graph/coupling_graph.hpp"
+#include "kinestat/linalg/svd_analysis.hpp"
+#include "kinestat/network/analysis_frame.hpp"
+#include "kinestat/network/magnitude_names.hpp"
+#include "kinestat/network/unit_matrices.hpp"
+
+namespace kinestat::network {
+
+namespace {
+
+using linalg::Rational;
+using linalg::RationalMatrix;
+using Index = Eigen::Index;
+
+// ---- LinearForms arithmetic, exact when both operands are exact --------------------------
+
+LinearForms forms_from(const RationalMatrix& exact) { return {exact.to_double(), exact}; }
+
+// unit (rows x n) times forms (n x p).
+LinearForms times(const RationalMatrix& unit, const LinearForms& forms) {
+  if (forms.exact) return forms_from(unit * *forms.exact);
+  return {unit.to_double() * forms.values, std::nullopt};
+}
+
+LinearForms block_rows(const LinearForms& forms, Index row, Index rows) {
+  LinearForms b{forms.values.middleRows(row, rows), std::nullopt};
+  if (forms.exact) b.exact = forms.exact->block(row, 0, rows, forms.exact->cols());
+  return b;
+}
+
+LinearForms combine(const LinearForms& a, const LinearForms& b, int sign) {
+  LinearForms sum{a.values + sign * b.values, std::nullopt};
+  if (a.exact && b.exact) sum.exact = sign > 0 ? *a.exact + *b.exact : *a.exact - *b.exact;
+  return sum;
+}
+
+LinearForms zero_forms(Index rows, Index cols, bool exact) {
+  LinearForms z{Eigen::MatrixXd::Zero(rows, cols), std::nullopt};
+  if (exact) z.exact = RationalMatrix(rows, cols);
+  return z;
+}
+
+LinearForms stack(const std::vector<LinearForms>& blocks, Index cols, bool exact) {
+  Index rows = 0;
+  for (const auto& b : blocks) rows += b.values.rows();
+  LinearForms s = zero_forms(rows, cols, exact);
+  Index row = 0;
+  for (const auto& b : blocks) {
+    s.values.middleRows(row, b.values.rows()) = b.values;
+    if (exact) s.exact->set_block(row, 0, *b.exact);
+    row += b.values.rows();
+  }
+  return s;
+}
+
+// Rank of forms: exact, or against an absolute threshold `reference * kPairRankRelative`.
+linalg::RankDecision forms_rank(const LinearForms& forms, double reference) {
+  if (forms.values.size() == 0) return linalg::RankDecision{0, forms.exact.has_value(), 0, 0, 0, 0};
+  if (forms.exact) {
+    linalg::RankDecision d;
+    d.exact = true;
+    d.rank = linalg::exact_rank(*forms.exact);
+    return d;
+  }
+  const double largest = forms.values.norm();
+  if (largest <= kPairRankRelative * reference) {
+    linalg::RankDecision d;
+    d.threshold = kPairRankRelative * reference;
+    d.largest = d.largest_dropped = largest;
+    return d;
+  }
+  linalg::RankTolerance tolerance;
+  tolerance.relative = kPairRankRelative * reference / largest;
+  return linalg::numerical_rank(forms.values, tolerance);
+}
+
+// Maps each d-row block of `forms` (coupling-major or body-major) from the analysis frame to
+// the user's frame, column by column.
+template <class ToUser>
+LinearForms blocks_to_user(const LinearForms& forms, int d, ToUser to_user) {
+  LinearForms user = forms;
+  const Index blocks = forms.values.rows() / d;
+  for (Index b = 0; b < blocks; ++b)
+    for (Index p = 0; p < forms.values.cols(); ++p) {
+      std::vector<Rational> v(static_cast<std::size_t>(d));
+      if (forms.exact) {
+        for (int r = 0; r < d; ++r) v[static_cast<std::size_t>(r)] = (*forms.exact)(b * d + r, p);
+        const auto u = to_user(v);
+        for (int r = 0; r < d; ++r) (*user.exact)(b * d + r, p) = u[static_cast<std::size_t>(r)];
+        for (int r = 0; r < d; ++r) user.values(b * d + r, p) = u[static_cast<std::size_t>(r)].get_d();
+      } else {
+        // Doubles go through rationals exactly (every finite double is a rational).
+        for (int r = 0; r < d; ++r) v[static_cast<std::size_t>(r)] = Rational(forms.values(b * d + r, p));
+        const auto u = to_user(v);
+        for (int r = 0; r < d; ++r) user.values(b * d + r, p) = u[static_cast<std::size_t>(r)].get_d();
+      }
+    }
+  return user;
+}
+
+// ---- the four methods -------------------------------------------------------------------
+
+linalg::HomogeneousSolution solve(const RationalMatrix& a, bool exact, const linalg::RankTolerance& tolerance) {
+  return exact ? linalg::solve_homogeneous(a) : linalg::solve_homogeneous(a.to_double(), tolerance);
+}
+
+LinearForms solution_forms(const linalg::HomogeneousSolution& s) {
+  return {s.coefficients, s.exact_coefficients};
+}
+
+// [M]d,e (or [A]d,e) from coupling magnitudes: coupling e's block is unit_e * K_e.
+LinearForms contract_couplings(const RationalMatrix& unit, const std::vector<int>& first, const LinearForms& k, int d,
+                               bool exact) {
+  std::vector<LinearForms> blocks;
+  for (std::size_t e = 0; e + 1 < first.size(); ++e) {
+    const int n = first[e + 1] - first[e];
+    const RationalMatrix unit_e = unit.block(0, first[e], d, n);
+    blocks.push_back(n == 0 ? zero_forms(d, k.values.cols(), exact) : times(unit_e, block_rows(k, first[e], n)));
+  }
+  return stack(blocks, k.values.cols(), exact);
+}
+
+// [M]d,e = [Mk]d,k [Q]k,e (eq. 14a) or [A]d,e = [Al]d,l [B]l,e (eq. 14b), for every primary:
+// coupling e's block is sum over graph rows g of G(g, e) * (block g of the system vector).
+LinearForms contract_graph(const LinearForms& system, const Eigen::MatrixXi& graph_matrix, int d, bool exact) {
+  std::vector<LinearForms> blocks;
+  for (Index e = 0; e < graph_matrix.cols(); ++e) {
+    LinearForms block = zero_forms(d, system.values.cols(), exact);
+    for (Index g = 0; g < graph_matrix.rows(); ++g) {
+      const int sign = graph_matrix(g, e);
+      if (sign != 0) block = combine(block, block_rows(system, g * d, d), sign);
+    }
+    blocks.push_back(block);
+  }
+  return stack(blocks, system.values.cols(), exact);
+}
+
+// The column spaces of two sets of forms coincide.
+bool same_span(const LinearForms& a, const LinearForms& b) {
+  if (a.values.cols() != b.values.cols()) return false;
+  if (a.values.cols() == 0) return true;
+  if (a.exact && b.exact) {
+    const Index ra = linalg::exact_rank(*a.exact), rb = linalg::exact_rank(*b.exact);
+    return ra == rb && linalg::exact_rank(a.exact->append_columns(*b.exact)) == ra;
+  }
+  Eigen::MatrixXd joined(a.values.rows(), a.values.cols() + b.values.cols());
+  joined << a.values, b.values;
+  const double reference = std::max(a.values.norm(), b.values.norm());
+  const auto ra = forms_rank(a, reference).rank, rb = forms_rank(b, reference).rank;
+  return ra == rb && forms_rank({joined, std::nullopt}, reference).rank == ra;
+}
+
+// ---- model checks and choices ----------------------------------------------------------
+
+int coupling_index(const Model& model, const std::string& name) {
+  for (std::size_t i = 0; i < model.couplings.size(); ++i)
+    if (model.couplings[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+graph::SpanningTree choose_tree(const Model& model, const graph::CouplingGraph& graph, int ground) {
+  if (model.chords.empty()) return graph.breadth_first_tree(ground);
+  std::vector<int> chords;
+  for (std::size_t i = 0; i < model.chords.size(); ++i) {
+    const int c = coupling_index(model, model.chords[i]);
+    if (c < 0) throw ModelError("chords", static_cast<int>(i), fmt::format("unknown coupling '{}' in chords", model.chords[i]));
+    chords.push_back(c);
+  }
+  try {
+    return graph.tree_with_chords(chords);
+  } catch (const graph::TreeError& error) {
+    throw ModelError("chords", -1, fmt::format("these chords do not leave a spanning tree: {}", error.what()));
+  }
+}
+
+void check_connected(const Model& model, const graph::CouplingGraph& graph) {
+  const auto components = graph.components();
+  if (components.size() <= 1) return;
+  std::string list;
+  for (const auto& component : components) {
+    std::string bodies;
+    for (int b : component) bodies += (bodies.empty() ? "" : ", ") + model.bodies[static_cast<std::size_t>(b)];
+    list += (list.empty() ? "{" : "; {") + bodies + "}";
+  }
+  throw ModelError("couplings", -1,
+                   fmt::format("the bodies are not all connected by couplings; {} separate groups: {}. "
+                               "Analyse each group as its own model, or add the missing couplings",
+                               components.size(), list));
+}
+
+bool choose_exact(const Model& model, Arithmetic arithmetic, std::string& reason) {
+  switch (arithmetic) {
+    case Arithmetic::exact: reason = "exact rational arithmetic (requested)"; return true;
+    case Arithmetic::floating: reason = "floating point (requested)"; return false;
+    case Arithmetic::automatic: break;
+  }
+  if (model.max_significant_digits <= kExactMaxSignificantDigits) {
+    reason = "exact rational arithmetic: every number in the model is a short decimal";
+    return true;
+  }
+  reason = fmt::format(
+      "floating point: the model has numbers with {} significant digits, taken to be rounded irrational values",
+      model.max_significant_digits);
+  return false;
+}
+
+std::vector<Index> chosen_primaries(const std::vector<std::string>& requested, const std::vector<Magnitude>& magnitudes,
+                                    const std::vector<std::size_t>& request_index, Index nullity, const char* kind,
+                                    const char* total_name) {
+  std::vector<Index> chosen;
+  for (std::size_t i = 0; i < requested.size(); ++i) {
+    for (std::size_t m = 0; m < magnitudes.size(); ++m)
+      if (magnitudes[m].name == requested[i]) chosen.push_back(static_cast<Index>(m));
+  }
+  if (static_cast<Index>(chosen.size()) != nullity) {
+    throw ModelError("primary", request_index.empty() ? -1 : static_cast<int>(request_index.front()),
+                     fmt::format("{} {} primary variable(s) given but {} = {}: give exactly {} {} primaries or none",
+                                 chosen.size(), kind, total_name, nullity, nullity, kind));
+  }
+  return chosen;
+}
+
+}  // namespace
+
+NetworkResult analyse_network(const Model& model, const AnalysisOptions& options) {
+  if (model.couplings.empty()) throw ModelError("couplings", -1, "the model has no couplings");
+  NetworkResult r;
+  r.model_name = model.name;
+  r.d = model.space.dimension();
+  const int d = r.d;
+  r.bodies = static_cast<int>(model.bodies.size());
+  r.e = static_cast<int>(model.couplings.size());
+  r.ground = model.ground.value_or(0);
+
+  std::vector<graph::Edge> edges;
+  for (const auto& c : model.couplings) edges.push_back({c.from, c.to});
+  const graph::CouplingGraph graph(r.bodies, edges);
+  check_connected(model, graph);
+  const graph::SpanningTree tree = choose_tree(model, graph, r.ground);
+  r.branches = tree.branches;
+  r.chords = tree.chords;
+  r.B = graph.circuit_matrix(tree);
+  r.Q = graph.cutset_matrix(tree);
+  r.l = static_cast<int>(r.B.rows());
+  r.k = static_cast<int>(r.Q.rows());
+
+  // Bases in the user's frame (reported) and in the analysis frame (solved).
+  r.exact = choose_exact(model, options.arithmetic, r.arithmetic_reason);
+  const AnalysisFrame frame = r.exact ? AnalysisFrame{} : AnalysisFrame::of(model);
+  r.length_scale = frame.scale.get_d();
+  std::vector<screw::CouplingBasis> user_bases, frame_bases;
+  for (std::size_t i = 0; i < model.couplings.size(); ++i) {
+    const auto& c = model.couplings[i];
+    try {
+      user_bases.push_back(screw::coupling_basis(c.type, c.geometry, model.space));
+      frame_bases.push_back(screw::coupling_basis(c.type, frame.to_frame(c.geometry, model.space), model.space));
+    } catch (const screw::GeometryError& error) {
+      throw ModelError("couplings", static_cast<int>(i), fmt::format("coupling '{}': {}", c.name, error.what()));
+    }
+  }
+  const UnitMatrices user = unit_matrices(user_bases, d, r.B, r.Q);
+  const UnitMatrices solved = unit_matrices(frame_bases, d, r.B, r.Q);
+  r.BM = user.BM;
+  r.QA = user.QA;
+  r.MD = user.MD;
+  r.AD = user.AD;
+  r.MN = user.MN;
+  r.AN = user.AN;
+  r.F = static_cast<int>(user.MD.cols());
+  r.C = static_cast<int>(user.AD.cols());
+
+  std::vector<std::string> motion_names, action_names;
+  for (std::size_t i = 0; i < model.couplings.size(); ++i) {
+    for (std::size_t j = 0; j < user_bases[i].motions.size(); ++j)
+      motion_names.push_back(magnitude_name(model.couplings[i].name, user_bases[i].motions[j], static_cast<int>(j)));
+    for (std::size_t j = 0; j < user_bases[i].actions.size(); ++j)
+      action_names.push_back(magnitude_name(model.couplings[i].name, user_bases[i].actions[j], static_cast<int>(j)));
+  }
+  make_unique(motion_names);
+  make_unique(action_names);
+  for (std::size_t i = 0, n = 0, a = 0; i < model.couplings.size(); ++i) {
+    for (const auto& s : user_bases[i].motions) r.motions.push_back({motion_names[n++], static_cast<int>(i), s});
+    for (const auto& s : user_bases[i].actions) r.actions.push_back({action_names[a++], static_cast<int>(i), s});
+  }
+
+  // (i) circulation law, (ii) cutset law, (iii) cutset motions, (iv) circuit actions.
+  const linalg::RankTolerance& tol = options.tolerance;
+  r.circulation.solution = solve(solved.MN, r.exact, tol);
+  r.cutset_law.solution = solve(solved.AN, r.exact, tol);
+  r.cutset_motion.solution = solve(solved.AN.transpose(), r.exact, tol);
+  r.circuit_action.solution = solve(solved.MN.transpose(), r.exact, tol);
+  r.m = static_cast<int>(r.circulation.solution.rank.rank);
+  r.a = static_cast<int>(r.cutset_law.solution.rank.rank);
+  r.FN = r.F - r.m;
+  r.CN = r.C - r.a;
+  r.classification = r.FN == 0 ? (r.CN == 0 ? NetworkClass::simply_stiff : NetworkClass::overconstrained_structure)
+                               : (r.CN == 0 ? NetworkClass::kinematic_chain : NetworkClass::overconstrained_chain);
+  r.identities_hold = r.FN - r.CN == r.F - d * r.l && r.CN - r.FN == r.C - d * r.k && r.FN == d * r.k - r.a &&
+                      r.CN == d * r.l - r.m && r.cutset_motion.solution.nullity() == r.FN &&
+                      r.circuit_action.solution.nullity() == r.CN;
+
+  // Primary variables: the user's, or the earliest that can be free.
+  const std::vector<std::string> requested = options.primary ? *options.primary : model.primary;
+  std::vector<std::string> requested_motion, requested_action;
+  std::vector<std::size_t> motion_request_index, action_request_index;
+  for (std::size_t i = 0; i < requested.size(); ++i) {
+    const auto is = [&](const std::vector<Magnitude>& list) {
+      return std::any_of(list.begin(), list.end(), [&](const Magnitude& m) { return m.name == requested[i]; });
+    };
+    if (is(r.motions)) {
+      requested_motion.push_back(requested[i]);
+      motion_request_index.push_back(i);
+    } else if (is(r.actions)) {
+      requested_action.push_back(requested[i]);
+      action_request_index.push_back(i);
+    } else {
+      throw ModelError("primary", static_cast<int>(i),
+                       fmt::format("'{}' is not a motion or action magnitude of this model (motions: {}; actions: {})",
+                                   requested[i], fmt::join(motion_names, ", "), fmt::join(action_names, ", ")));
+    }
+  }
+  auto apply_choice = [&](MethodResult& method, const std::vector<std::string>& names,
+                          const std::vector<std::size_t>& request_index, const std::vector<Magnitude>& magnitudes,
+                          const char* kind, const char* total) {
+    if (names.empty()) return;
+    const auto chosen = chosen_primaries(names, magnitudes, request_index, method.solution.nullity(), kind, total);
+    try {
+      method.solution = linalg::with_free_variables(method.solution, chosen);
+    } catch (const linalg::DependentFreeVariable& error) {
+      const auto it = std::find(chosen.begin(), chosen.end(), error.variable());
+      const std::size_t at = it == chosen.end() ? 0 : static_cast<std::size_t>(it - chosen.begin());
+      throw ModelError("primary", static_cast<int>(request_index[at]),
+                       fmt::format("'{}' cannot be a primary variable together with the others: the {} primaries must be "
+                                   "independent ({} is determined by them or is always zero)",
+                                   names[at], kind, names[at]));
+    }
+  };
+  apply_choice(r.circulation, requested_motion, motion_request_index, r.motions, "motion", "FN");
+  apply_choice(r.cutset_law, requested_action, action_request_index, r.actions, "action", "CN");
+  for (Index v : r.circulation.solution.free_variables) r.primary_motion.push_back(static_cast<int>(v));
+  for (Index v : r.cutset_law.solution.free_variables) r.primary_action.push_back(static_cast<int>(v));
+  r.motion_magnitudes = solution_forms(r.circulation.solution);
+  r.action_magnitudes = solution_forms(r.cutset_law.solution);
+
+  // Contracted matrices [M]d,e and [A]d,e by both methods each, in the analysis frame.
+  const auto motion_to_user = [&](const std::vector<Rational>& v) { return frame.motion_to_user(v, model.space); };
+  const auto action_to_user = [&](const std::vector<Rational>& v) { return frame.action_to_user(v, model.space); };
+  const LinearForms M_i = contract_couplings(solved.MD, solved.first_motion, r.motion_magnitudes, d, r.exact);
+  const LinearForms A_ii = contract_couplings(solved.AD, solved.first_action, r.action_magnitudes, d, r.exact);
+  const LinearForms M_iii = contract_graph(solution_forms(r.cutset_motion.solution), r.Q, d, r.exact);
+  const LinearForms A_iv = contract_graph(solution_forms(r.circuit_action.solution), r.B, d, r.exact);
+  r.motion_methods_agree = same_span(M_i, M_iii);
+  r.action_methods_agree = same_span(A_ii, A_iv);
+  r.circulation.contracted = blocks_to_user(M_i, d, motion_to_user);
+  r.cutset_law.contracted = blocks_to_user(A_ii, d, action_to_user);
+  r.cutset_motion.contracted = blocks_to_user(M_iii, d, motion_to_user);
+  r.circuit_action.contracted = blocks_to_user(A_iv, d, action_to_user);
+
+  // Motion of every body relative to the ground, then of every pair (seed 000, section 2.7).
+  const graph::TreeWalk walk = graph.walk(tree, r.ground);
+  std::vector<LinearForms> body_motion(static_cast<std::size_t>(r.bodies), zero_forms(d, r.FN, r.exact));
+  for (int body : walk.order) {
+    const int e = walk.parent_edge[static_cast<std::size_t>(body)];
+    if (e < 0) continue;
+    body_motion[static_cast<std::size_t>(body)] =
+        combine(body_motion[static_cast<std::size_t>(walk.parent_body[static_cast<std::size_t>(body)])],
+                block_rows(M_i, static_cast<Index>(e) * d, d), walk.sign[static_cast<std::size_t>(body)]);
+  }
+  const double motion_scale = M_i.values.norm(), action_scale = A_ii.values.norm();
+  auto appearing = [](const LinearForms& f) {
+    std::vector<int> used;
+    for (Index p = 0; p < f.values.cols(); ++p)
+      if (f.values.col(p).cwiseAbs().maxCoeff() > 0) used.push_back(static_cast<int>(p));
+    return used;
+  };
+  std::vector<std::vector<std::vector<int>>> couplings_of_pair(static_cast<std::size_t>(r.bodies));
+  for (auto& row : couplings_of_pair) row.resize(static_cast<std::size_t>(r.bodies));
+  for (int e = 0; e < r.e; ++e) {
+    const int i = std::min(model.couplings[static_cast<std::size_t>(e)].from, model.couplings[static_cast<std::size_t>(e)].to);
+    const int j = std::max(model.couplings[static_cast<std::size_t>(e)].from, model.couplings[static_cast<std::size_t>(e)].to);
+    couplings_of_pair[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)].push_back(e);
+  }
+  for (int i = 0; i < r.bodies; ++i)
+    for (int j = i + 1; j < r.bodies; ++j) {
+      const auto& direct = couplings_of_pair[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)];
+      if (direct.empty() && !options.all_pairs) continue;
+      PairSystem pair;
+      pair.body_i = i;
+      pair.body_j = j;
+      const LinearForms relative = combine(body_motion[static_cast<std::size_t>(j)], body_motion[static_cast<std::size_t>(i)], -1);
+      pair.motion_rank = forms_rank(relative, motion_scale);
+      pair.fij = static_cast<int>(pair.motion_rank.rank);
+      pair.motion_primaries = appearing(relative);
+      pair.motion_system = blocks_to_user(relative, d, motion_to_user);
+      if (direct.empty()) {
+        pair.f = d;
+        pair.action_system = zero_forms(d, r.CN, r.exact);
+        r.pairs.push_back(pair);
+        continue;
+      }
+      for (int e : direct) {
+        PairSystem row = pair;
+        row.coupling = e;
+        row.f = user.first_motion[static_cast<std::size_t>(e) + 1] - user.first_motion[static_cast<std::size_t>(e)];
+        row.c = d - row.f;
+        const LinearForms action = block_rows(A_ii, static_cast<Index>(e) * d, d);
+        row.action_rank = forms_rank(action, action_scale);
+        row.cij = static_cast<int>(row.action_rank.rank);
+        row.action_primaries = appearing(action);
+        row.action_system = blocks_to_user(action, d, action_to_user);
+        r.pairs.push_back(row);
+      }
+    }
+
+  // Numeric magnitudes when every primary of a kind has a value.
+  std::vector<std::pair<std::string, Rational>> values = model.values;
+  for (const auto& v : options.values) {
+    auto it = std::find_if(values.begin(), values.end(), [&](const auto& x) { return x.first == v.first; });
+    if (it != values.end()) it->second = v.second; else values.push_back(v);
+  }
+  auto value_vector = [&](const std::vector<int>& primaries, const std::vector<Magnitude>& magnitudes) {
+    std::optional<Eigen::VectorXd> vector = Eigen::VectorXd(static_cast<Index>(primaries.size()));
+    for (std::size_t p = 0; p < primaries.size(); ++p) {
+      const std::string& name = magnitudes[static_cast<std::size_t>(primaries[p])].name;
+      auto it = std::find_if(values.begin(), values.end(), [&](const auto& x) { return x.first == name; });
+      if (it == values.end()) return std::optional<Eigen::VectorXd>{};
+      (*vector)(static_cast<Index>(p)) = it->second.get_d();
+    }
+    return vector;
+  };
+  for (std::size_t v = 0; v < values.size(); ++v) {
+    const auto is_primary = [&](const std::vector<int>& primaries, const std::vector<Magnitude>& magnitudes) {
+      return std::any_of(primaries.begin(), primaries.end(),
+                         [&](int p) { return magnitudes[static_cast<std::size_t>(p)].name == values[v].first; });
+    };
+    if (!is_primary(r.primary_motion, r.motions) && !is_primary(r.primary_action, r.actions))
+      throw ModelError("values", static_cast<int>(v),
+                       fmt::format("'{}' is not a primary variable; values can be given for the primaries only", values[v].first));
+  }
+  if (auto v = value_vector(r.primary_motion, r.motions); v && r.FN > 0) r.motion_values = r.motion_magnitudes.values * *v;
+  if (auto v = value_vector(r.primary_action, r.actions); v && r.CN > 0) r.action_values = r.action_magnitudes.values * *v;
+
+  // Exact arithmetic on long literals analyses the rounded geometry: say if floating point,
+  // which tolerates the rounding, sees a different mechanism.
+  if (r.exact && model.max_significant_digits > kExactMaxSignificantDigits) {
+    const AnalysisFrame conditioned = AnalysisFrame::of(model);
+    std::vector<screw::CouplingBasis> bases;
+    for (const auto& c : model.couplings) bases.push_back(screw::coupling_basis(c.type, conditioned.to_frame(c.geometry, model.space), model.space));
+    const UnitMatrices u = unit_matrices(bases, d, r.B, r.Q);
+    const int fn = r.F - static_cast<int>(linalg::numerical_rank(u.MN.to_double(), tol).rank);
+    const int cn = r.C - static_cast<int>(linalg::numerical_rank(u.AN.to_double(), tol).rank);
+    if (fn != r.FN || cn != r.CN) r.floating_point_disagreement = std::make_pair(fn, cn);
+  }
+  return r;
+}
+
+}  // namespace kinestat::network

@@ -1,0 +1,361 @@
+#include "kinestat/report/network_report.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "kinestat/report/linear_form_text.hpp"
+
+namespace kinestat::report {
+
+namespace {
+
+using network::LinearForms;
+using network::NetworkResult;
+using Index = Eigen::Index;
+using Json = nlohmann::ordered_json;
+
+std::vector<std::string> names_of(const std::vector<int>& indices, const std::vector<network::Magnitude>& magnitudes) {
+  std::vector<std::string> names;
+  for (int i : indices) names.push_back(magnitudes[static_cast<std::size_t>(i)].name);
+  return names;
+}
+
+// Coefficients this small relative to the largest are rounding noise in floating point.
+double noise_level(const LinearForms& forms) {
+  if (forms.exact || forms.values.size() == 0) return 0.0;
+  return 1e-12 * forms.values.cwiseAbs().maxCoeff();
+}
+
+std::vector<std::string> coordinate_letters(const NetworkResult& r, bool motion) {
+  const auto& letters = motion ? screw::kMotionLetters : screw::kActionLetters;
+  std::vector<std::string> out;
+  const std::vector<int> components = r.d == 6 ? std::vector<int>{0, 1, 2, 3, 4, 5} : std::vector<int>{2, 3, 4};
+  for (int c : components) out.emplace_back(1, letters[static_cast<std::size_t>(c)]);
+  return out;
+}
+
+std::string rank_text(const char* symbol, const linalg::RankDecision& rank) {
+  if (rank.exact) return fmt::format("{} = {} (exact)", symbol, rank.rank);
+  return fmt::format("{} = {} (smallest kept singular value {}, largest dropped {}, gap {}{})", symbol, rank.rank,
+                     number_text(rank.smallest_kept), number_text(rank.largest_dropped),
+                     std::isinf(rank.gap()) ? "infinite" : number_text(rank.gap()), rank.close() ? "; CLOSE DECISION" : "");
+}
+
+std::vector<std::string> warnings(const NetworkResult& r) {
+  std::vector<std::string> list;
+  if (r.circulation.solution.rank.close())
+    list.push_back("the rank m of the network unit motion matrix is a close decision: the geometry is near one with a different FN and CN");
+  if (r.cutset_law.solution.rank.close())
+    list.push_back("the rank a of the network unit action matrix is a close decision: the geometry is near one with a different FN and CN");
+  if (!r.identities_hold) list.push_back("the identities FN - CN = F - d*l and CN - FN = C - d*k do not all hold (numerical trouble)");
+  if (!r.motion_methods_agree) list.push_back("the circulation law and the cutset-motion method give different motion matrices");
+  if (!r.action_methods_agree) list.push_back("the cutset law and the circuit-action method give different action matrices");
+  if (r.floating_point_disagreement)
+    list.push_back(fmt::format("floating point gives FN = {}, CN = {}: the model's long decimals are probably rounded; "
+                               "consider --float",
+                               r.floating_point_disagreement->first, r.floating_point_disagreement->second));
+  return list;
+}
+
+Json body_json(const std::string& name) {
+  const bool integer = !name.empty() && std::all_of(name.begin(), name.end(), [](char ch) { return ch >= '0' && ch <= '9'; }) &&
+                       name.size() < 10;
+  return integer ? Json(std::stoi(name)) : Json(name);
+}
+
+Json rank_json(const linalg::RankDecision& rank) {
+  Json j;
+  j["rank"] = rank.rank;
+  j["exact"] = rank.exact;
+  if (!rank.exact) {
+    j["largest_singular_value"] = rank.largest;
+    j["threshold"] = rank.threshold;
+    j["smallest_kept"] = rank.smallest_kept;
+    j["largest_dropped"] = rank.largest_dropped;
+    j["gap"] = std::isinf(rank.gap()) ? Json(nullptr) : Json(rank.gap());
+    j["close"] = rank.close();
+  }
+  return j;
+}
+
+Json expressions_json(const LinearForms& forms, Index first_row, Index rows, const std::vector<std::string>& primaries) {
+  Json list = Json::array();
+  const double noise = noise_level(forms);
+  for (Index r = 0; r < rows; ++r) list.push_back(linear_form_text(forms, first_row + r, primaries, noise));
+  return list;
+}
+
+Json int_matrix_json(const Eigen::MatrixXi& m) {
+  Json rows = Json::array();
+  for (Index r = 0; r < m.rows(); ++r) {
+    Json row = Json::array();
+    for (Index c = 0; c < m.cols(); ++c) row.push_back(m(r, c));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+Json rational_matrix_json(const linalg::RationalMatrix& m) {
+  Json rows = Json::array();
+  for (Index r = 0; r < m.rows(); ++r) {
+    Json row = Json::array();
+    for (Index c = 0; c < m.cols(); ++c) {
+      const linalg::Rational& x = m(r, c);
+      if (x.get_den() == 1 && abs(x) < 1000000000) {
+        row.push_back(x.get_num().get_si());
+      } else {
+        row.push_back(x.get_d());
+      }
+    }
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+std::string int_matrix_text(const Eigen::MatrixXi& m) {
+  std::string text;
+  for (Index r = 0; r < m.rows(); ++r) {
+    text += "   ";
+    for (Index c = 0; c < m.cols(); ++c) text += fmt::format(" {:>2}", m(r, c));
+    text += "\n";
+  }
+  return text;
+}
+
+std::string rational_matrix_text(const linalg::RationalMatrix& m) {
+  std::vector<std::string> cells;
+  std::size_t width = 1;
+  for (Index r = 0; r < m.rows(); ++r)
+    for (Index c = 0; c < m.cols(); ++c) {
+      cells.push_back(sgn(m(r, c)) == 0 ? "0" : (m(r, c).get_den() == 1 ? m(r, c).get_str() : number_text(m(r, c).get_d())));
+      width = std::max(width, cells.back().size());
+    }
+  std::string text;
+  for (Index r = 0; r < m.rows(); ++r) {
+    text += "   ";
+    for (Index c = 0; c < m.cols(); ++c) text += fmt::format(" {:>{}}", cells[static_cast<std::size_t>(r * m.cols() + c)], width);
+    text += "\n";
+  }
+  return text;
+}
+
+// [M]d,e or [A]d,e: rows are coordinates, columns couplings.
+std::string contracted_text(const network::Model& model, const NetworkResult& r, const LinearForms& forms,
+                            const std::vector<std::string>& primaries, bool motion) {
+  const double noise = noise_level(forms);
+  std::vector<std::vector<std::string>> cells(static_cast<std::size_t>(r.d));
+  std::vector<std::size_t> width(static_cast<std::size_t>(r.e), 1);
+  for (int e = 0; e < r.e; ++e) {
+    width[static_cast<std::size_t>(e)] = model.couplings[static_cast<std::size_t>(e)].name.size();
+    for (int c = 0; c < r.d; ++c) {
+      cells[static_cast<std::size_t>(c)].push_back(linear_form_text(forms, e * r.d + c, primaries, noise));
+      width[static_cast<std::size_t>(e)] = std::max(width[static_cast<std::size_t>(e)], cells[static_cast<std::size_t>(c)].back().size());
+    }
+  }
+  std::string text = "      ";
+  for (int e = 0; e < r.e; ++e)
+    text += fmt::format("  {:>{}}", model.couplings[static_cast<std::size_t>(e)].name, width[static_cast<std::size_t>(e)]);
+  text += "\n";
+  const auto letters = coordinate_letters(r, motion);
+  for (int c = 0; c < r.d; ++c) {
+    text += fmt::format("    {} ", letters[static_cast<std::size_t>(c)]);
+    for (int e = 0; e < r.e; ++e)
+      text += fmt::format("  {:>{}}", cells[static_cast<std::size_t>(c)][static_cast<std::size_t>(e)], width[static_cast<std::size_t>(e)]);
+    text += "\n";
+  }
+  return text;
+}
+
+std::string joined_or_dash(const std::vector<std::string>& names) { return names.empty() ? "-" : fmt::format("{}", fmt::join(names, ", ")); }
+
+std::vector<std::string> one_based(const std::vector<Index>& rows) {
+  std::vector<std::string> out;
+  for (Index r : rows) out.push_back(std::to_string(r + 1));
+  return out;
+}
+
+}  // namespace
+
+std::string network_text(const network::Model& model, const NetworkResult& r, const NetworkReportOptions& options) {
+  const auto motion_primaries = names_of(r.primary_motion, r.motions);
+  const auto action_primaries = names_of(r.primary_action, r.actions);
+  std::string t;
+  t += fmt::format("{}\n", r.model_name.empty() ? "Coupling network" : r.model_name);
+  t += fmt::format("  coupling network, {} (d = {}); {}\n", r.d == 6 ? "spatial" : "planar", r.d, r.arithmetic_reason);
+  t += fmt::format("  bodies n = {}, couplings e = {}, circuits l = {}, cutsets k = {}\n", r.bodies, r.e, r.l, r.k);
+  t += fmt::format("  gross degree of freedom F = {}, gross degree of constraint C = {}\n", r.F, r.C);
+  t += fmt::format("  rank of the network unit motion matrix: {}\n", rank_text("m", r.circulation.solution.rank));
+  t += fmt::format("  rank of the network unit action matrix: {}\n", rank_text("a", r.cutset_law.solution.rank));
+  t += fmt::format("  nett degree of freedom    FN = {}\n", r.FN);
+  t += fmt::format("  nett degree of constraint CN = {}\n", r.CN);
+  t += fmt::format("  class: {}\n", network::class_description(r.classification));
+  t += fmt::format("  identities FN = F - m = d*k - a, CN = C - a = d*l - m, FN - CN = F - d*l: {}\n",
+                   r.identities_hold ? "hold" : "FAIL");
+  t += "\n";
+  std::vector<std::string> branch_names, chord_names;
+  for (int b : r.branches) branch_names.push_back(model.couplings[static_cast<std::size_t>(b)].name);
+  for (int c : r.chords) chord_names.push_back(model.couplings[static_cast<std::size_t>(c)].name);
+  t += fmt::format("Spanning tree: branches {}; chords {}\n", joined_or_dash(branch_names), joined_or_dash(chord_names));
+  t += fmt::format("Primary variables: motions {}; actions {}\n", joined_or_dash(motion_primaries), joined_or_dash(action_primaries));
+  t += fmt::format("Redundant equations: rows {} of the circulation law (M^N c = 0); rows {} of the cutset law (A^N C = 0)\n",
+                   joined_or_dash(one_based(r.circulation.solution.redundant_rows)),
+                   joined_or_dash(one_based(r.cutset_law.solution.redundant_rows)));
+  t += "\n";
+
+  auto magnitude_lines = [&](const char* title, const std::vector<network::Magnitude>& magnitudes, const LinearForms& forms,
+                             const std::vector<std::string>& primaries, const std::optional<Eigen::VectorXd>& values) {
+    t += fmt::format("{}\n", title);
+    const double noise = noise_level(forms);
+    for (std::size_t i = 0; i < magnitudes.size(); ++i) {
+      t += fmt::format("  {:<10} = {}", magnitudes[i].name, linear_form_text(forms, static_cast<Index>(i), primaries, noise));
+      if (values) t += fmt::format("   = {}", number_text((*values)(static_cast<Index>(i))));
+      t += "\n";
+    }
+  };
+  magnitude_lines("Motion magnitudes [c]F (circulation law):", r.motions, r.motion_magnitudes, motion_primaries, r.motion_values);
+  magnitude_lines("Action magnitudes [C]C (cutset law):", r.actions, r.action_magnitudes, action_primaries, r.action_values);
+  t += "\nMotion matrix [M]d,e (motion of each coupling's second body relative to its first):\n";
+  t += contracted_text(model, r, r.circulation.contracted, motion_primaries, true);
+  t += "\nAction matrix [A]d,e (action transmitted by each coupling):\n";
+  t += contracted_text(model, r, r.cutset_law.contracted, action_primaries, false);
+  t += fmt::format("\nMethods agree: circulation law and cutset motions {}; cutset law and circuit actions {}\n",
+                   r.motion_methods_agree ? "yes" : "NO", r.action_methods_agree ? "yes" : "NO");
+
+  t += "\nPairs of bodies (seed 000, Table 1; an absent coupling counts as f = d, c = 0):\n";
+  t += fmt::format("  {:<12} {:<10} {:>3} {:>4}  {:<18} {:>3} {:>4}  {}\n", "bodies", "coupling", "f", "fij",
+                   "motion primaries", "c", "cij", "action primaries");
+  for (const auto& p : r.pairs) {
+    const std::string bodies = model.bodies[static_cast<std::size_t>(p.body_i)] + ", " + model.bodies[static_cast<std::size_t>(p.body_j)];
+    const std::string coupling = p.coupling ? model.couplings[static_cast<std::size_t>(*p.coupling)].name : "absent";
+    std::vector<std::string> mp, ap;
+    for (int i : p.motion_primaries) mp.push_back(motion_primaries[static_cast<std::size_t>(i)]);
+    for (int i : p.action_primaries) ap.push_back(action_primaries[static_cast<std::size_t>(i)]);
+    t += fmt::format("  {:<12} {:<10} {:>3} {:>4}  {:<18} {:>3} {:>4}  {}\n", bodies, coupling, p.f, p.fij, joined_or_dash(mp), p.c,
+                     p.cij, joined_or_dash(ap));
+  }
+
+  if (options.matrices) {
+    t += "\nCircuit matrix [B]l,e:\n" + int_matrix_text(r.B);
+    t += "Cutset matrix [Q]k,e:\n" + int_matrix_text(r.Q);
+    t += "Motion-graph circuit matrix [BM]l,F:\n" + int_matrix_text(r.BM);
+    t += "Action-graph cutset matrix [QA]k,C:\n" + int_matrix_text(r.QA);
+    t += "Unit motion matrix [M^D]d,F:\n" + rational_matrix_text(r.MD);
+    t += "Unit action matrix [A^D]d,C:\n" + rational_matrix_text(r.AD);
+    t += "Network unit motion matrix [M^N]dl,F:\n" + rational_matrix_text(r.MN);
+    t += "Network unit action matrix [A^N]dk,C:\n" + rational_matrix_text(r.AN);
+  }
+  const auto warning_list = warnings(r);
+  if (!warning_list.empty()) {
+    t += "\nWarnings:\n";
+    for (const auto& w : warning_list) t += "  - " + w + "\n";
+  }
+  return t;
+}
+
+Json network_json(const network::Model& model, const NetworkResult& r, const NetworkReportOptions& options) {
+  const auto motion_primaries = names_of(r.primary_motion, r.motions);
+  const auto action_primaries = names_of(r.primary_action, r.actions);
+  Json j;
+  j["kind"] = "network";
+  j["name"] = r.model_name;
+  j["dimension"] = r.d;
+  j["arithmetic"] = r.exact ? "exact" : "floating";
+  j["arithmetic_reason"] = r.arithmetic_reason;
+  Json bodies = Json::array();
+  for (const auto& b : model.bodies) bodies.push_back(body_json(b));
+  j["bodies"] = bodies;
+  j["n"] = r.bodies;
+  j["e"] = r.e;
+  j["F"] = r.F;
+  j["C"] = r.C;
+  j["l"] = r.l;
+  j["k"] = r.k;
+  j["rank_motion"] = r.m;
+  j["rank_action"] = r.a;
+  j["FN"] = r.FN;
+  j["CN"] = r.CN;
+  j["classification"] = network::class_id(r.classification);
+  j["classification_description"] = network::class_description(r.classification);
+  j["identities_hold"] = r.identities_hold;
+  j["rank_evidence"] = {{"motion", rank_json(r.circulation.solution.rank)}, {"action", rank_json(r.cutset_law.solution.rank)}};
+  if (!r.exact) j["length_scale"] = r.length_scale;
+  Json branches = Json::array(), chords = Json::array();
+  for (int b : r.branches) branches.push_back(model.couplings[static_cast<std::size_t>(b)].name);
+  for (int c : r.chords) chords.push_back(model.couplings[static_cast<std::size_t>(c)].name);
+  j["tree"] = {{"branches", branches}, {"chords", chords}};
+  j["primary_motion"] = motion_primaries;
+  j["primary_action"] = action_primaries;
+  auto magnitudes_json = [&](const std::vector<network::Magnitude>& magnitudes, const LinearForms& forms,
+                             const std::vector<std::string>& primaries) {
+    Json out = Json::object();
+    const double noise = noise_level(forms);
+    for (std::size_t i = 0; i < magnitudes.size(); ++i)
+      out[magnitudes[i].name] = linear_form_text(forms, static_cast<Index>(i), primaries, noise);
+    return out;
+  };
+  j["motions"] = magnitudes_json(r.motions, r.motion_magnitudes, motion_primaries);
+  j["actions"] = magnitudes_json(r.actions, r.action_magnitudes, action_primaries);
+  auto screws_json = [&](const std::vector<network::Magnitude>& magnitudes) {
+    Json out = Json::array();
+    for (const auto& m : magnitudes) {
+      Json coordinates = Json::array();
+      for (const auto& x : m.unit_screw.coordinates) coordinates.push_back(x.get_d());
+      out.push_back({{"name", m.name}, {"coupling", model.couplings[static_cast<std::size_t>(m.coupling)].name}, {"unit_screw", coordinates}});
+    }
+    return out;
+  };
+  j["unit_motions"] = screws_json(r.motions);
+  j["unit_actions"] = screws_json(r.actions);
+  j["redundant_equations"] = {{"circulation", one_based(r.circulation.solution.redundant_rows)},
+                              {"cutset", one_based(r.cutset_law.solution.redundant_rows)}};
+  auto contracted_json = [&](const LinearForms& forms, const std::vector<std::string>& primaries) {
+    Json out = Json::object();
+    for (int e = 0; e < r.e; ++e) out[model.couplings[static_cast<std::size_t>(e)].name] = expressions_json(forms, e * r.d, r.d, primaries);
+    return out;
+  };
+  j["motion_matrix"] = contracted_json(r.circulation.contracted, motion_primaries);
+  j["action_matrix"] = contracted_json(r.cutset_law.contracted, action_primaries);
+  j["methods_agree"] = {{"motion", r.motion_methods_agree}, {"action", r.action_methods_agree}};
+  Json pairs = Json::array();
+  for (const auto& p : r.pairs) {
+    Json pair;
+    pair["bodies"] = {body_json(model.bodies[static_cast<std::size_t>(p.body_i)]), body_json(model.bodies[static_cast<std::size_t>(p.body_j)])};
+    pair["coupling"] = p.coupling ? Json(model.couplings[static_cast<std::size_t>(*p.coupling)].name) : Json(nullptr);
+    pair["f"] = p.f;
+    pair["fij"] = p.fij;
+    pair["c"] = p.c;
+    pair["cij"] = p.cij;
+    Json mp = Json::array(), ap = Json::array();
+    for (int i : p.motion_primaries) mp.push_back(motion_primaries[static_cast<std::size_t>(i)]);
+    for (int i : p.action_primaries) ap.push_back(action_primaries[static_cast<std::size_t>(i)]);
+    pair["motion_primaries"] = mp;
+    pair["action_primaries"] = ap;
+    pair["motion_system"] = expressions_json(p.motion_system, 0, r.d, motion_primaries);
+    pair["action_system"] = expressions_json(p.action_system, 0, r.d, action_primaries);
+    pairs.push_back(pair);
+  }
+  j["pairs"] = pairs;
+  if (r.motion_values || r.action_values) {
+    Json values = Json::object();
+    auto numeric = [&](const std::vector<network::Magnitude>& magnitudes, const Eigen::VectorXd& v) {
+      Json out = Json::object();
+      for (std::size_t i = 0; i < magnitudes.size(); ++i) out[magnitudes[i].name] = v(static_cast<Index>(i));
+      return out;
+    };
+    if (r.motion_values) values["motions"] = numeric(r.motions, *r.motion_values);
+    if (r.action_values) values["actions"] = numeric(r.actions, *r.action_values);
+    j["values"] = values;
+  }
+  j["warnings"] = warnings(r);
+  if (options.matrices) {
+    j["matrices"] = {{"B", int_matrix_json(r.B)},          {"Q", int_matrix_json(r.Q)},
+                     {"BM", int_matrix_json(r.BM)},        {"QA", int_matrix_json(r.QA)},
+                     {"MD", rational_matrix_json(r.MD)},   {"AD", rational_matrix_json(r.AD)},
+                     {"MN", rational_matrix_json(r.MN)},   {"AN", rational_matrix_json(r.AN)}};
+  }
+  return j;
+}
+
+}  // namespace kinestat::report

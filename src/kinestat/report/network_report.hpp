@@ -1,0 +1,27 @@
+#pragma once
+// Text and JSON reports of a coupling-network analysis.
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+#include "kinestat/network/model.hpp"
+#include "kinestat/network/network_result.hpp"
+
+namespace kinestat::report {
+
+struct NetworkReportOptions {
+  bool matrices = false;  ///< include B, Q, BM, QA, M^D, A^D, M^N, A^N
+};
+
+/// Human-readable report: summary with rank evidence, class, primaries, magnitudes,
+/// contracted matrices, the pair table (seed 000, Table 1) and warnings.
+std::string network_text(const network::Model& model, const network::NetworkResult& result,
+                         const NetworkReportOptions& options = {});
+
+/// Machine-readable report with keys in a fixed order, so the same input gives
+/// byte-identical output.
+nlohmann::ordered_json network_json(const network::Model& model, const network::NetworkResult& result,
+                                    const NetworkReportOptions& options = {});
+
+}  // namespace kinestat::report
