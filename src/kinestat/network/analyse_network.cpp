@@ -157,6 +157,27 @@ bool same_span(const LinearForms& a, const LinearForms& b) {
   return ra == rb && forms_rank({joined, std::nullopt}, reference).rank == ra;
 }
 
+// Magnitudes of unit translations and torques scale with length; the rest do not.
+bool scales_with_length(const screw::UnitScrew& screw) {
+  return screw.kind == screw::UnitScrewKind::translation || screw.kind == screw::UnitScrewKind::torque;
+}
+
+// K_user = D K_frame D_free^-1 with D = diag(L or 1) per magnitude.
+LinearForms to_user_magnitudes(const LinearForms& k, const std::vector<Magnitude>& magnitudes,
+                               const std::vector<int>& free_variables, const Rational& length) {
+  if (length == 1) return k;
+  LinearForms user = k;
+  auto factor = [&](std::size_t i) { return scales_with_length(magnitudes[i].unit_screw) ? length : Rational(1); };
+  for (Index i = 0; i < k.values.rows(); ++i)
+    for (Index p = 0; p < k.values.cols(); ++p) {
+      const Rational f = factor(static_cast<std::size_t>(i)) / factor(static_cast<std::size_t>(free_variables[static_cast<std::size_t>(p)]));
+      if (f == 1) continue;
+      user.values(i, p) *= f.get_d();
+      if (user.exact) (*user.exact)(i, p) *= f;
+    }
+  return user;
+}
+
 // ---- model checks and choices ----------------------------------------------------------
 
 int coupling_index(const Model& model, const std::string& name) {
@@ -346,38 +367,54 @@ NetworkResult analyse_network(const Model& model, const AnalysisOptions& options
   apply_choice(r.cutset_law, requested_action, action_request_index, r.actions, "action", "CN");
   for (Index v : r.circulation.solution.free_variables) r.primary_motion.push_back(static_cast<int>(v));
   for (Index v : r.cutset_law.solution.free_variables) r.primary_action.push_back(static_cast<int>(v));
-  r.motion_magnitudes = solution_forms(r.circulation.solution);
-  r.action_magnitudes = solution_forms(r.cutset_law.solution);
+  // Unit translations and torques built in the analysis frame are L times those of the user's
+  // frame, so their magnitudes are 1/L of the user's: map coefficients back exactly.
+  const LinearForms K_motion = solution_forms(r.circulation.solution);
+  const LinearForms K_action = solution_forms(r.cutset_law.solution);
+  r.motion_magnitudes = to_user_magnitudes(K_motion, r.motions, r.primary_motion, frame.scale);
+  r.action_magnitudes = to_user_magnitudes(K_action, r.actions, r.primary_action, frame.scale);
+  r.circulation.solution.coefficients = r.motion_magnitudes.values;
+  r.circulation.solution.exact_coefficients = r.motion_magnitudes.exact;
+  r.cutset_law.solution.coefficients = r.action_magnitudes.values;
+  r.cutset_law.solution.exact_coefficients = r.action_magnitudes.exact;
 
-  // Contracted matrices [M]d,e and [A]d,e by both methods each, in the analysis frame.
+  // Contracted matrices [M]d,e and [A]d,e by both methods each: in the analysis frame for rank
+  // decisions, in the user's frame and primaries for the report.
   const auto motion_to_user = [&](const std::vector<Rational>& v) { return frame.motion_to_user(v, model.space); };
   const auto action_to_user = [&](const std::vector<Rational>& v) { return frame.action_to_user(v, model.space); };
-  const LinearForms M_i = contract_couplings(solved.MD, solved.first_motion, r.motion_magnitudes, d, r.exact);
-  const LinearForms A_ii = contract_couplings(solved.AD, solved.first_action, r.action_magnitudes, d, r.exact);
+  const LinearForms M_i = contract_couplings(solved.MD, solved.first_motion, K_motion, d, r.exact);
+  const LinearForms A_ii = contract_couplings(solved.AD, solved.first_action, K_action, d, r.exact);
   const LinearForms M_iii = contract_graph(solution_forms(r.cutset_motion.solution), r.Q, d, r.exact);
   const LinearForms A_iv = contract_graph(solution_forms(r.circuit_action.solution), r.B, d, r.exact);
   r.motion_methods_agree = same_span(M_i, M_iii);
   r.action_methods_agree = same_span(A_ii, A_iv);
-  r.circulation.contracted = blocks_to_user(M_i, d, motion_to_user);
-  r.cutset_law.contracted = blocks_to_user(A_ii, d, action_to_user);
+  r.circulation.contracted = contract_couplings(user.MD, user.first_motion, r.motion_magnitudes, d, r.exact);
+  r.cutset_law.contracted = contract_couplings(user.AD, user.first_action, r.action_magnitudes, d, r.exact);
   r.cutset_motion.contracted = blocks_to_user(M_iii, d, motion_to_user);
   r.circuit_action.contracted = blocks_to_user(A_iv, d, action_to_user);
 
   // Motion of every body relative to the ground, then of every pair (seed 000, section 2.7).
   const graph::TreeWalk walk = graph.walk(tree, r.ground);
-  std::vector<LinearForms> body_motion(static_cast<std::size_t>(r.bodies), zero_forms(d, r.FN, r.exact));
-  for (int body : walk.order) {
-    const int e = walk.parent_edge[static_cast<std::size_t>(body)];
-    if (e < 0) continue;
-    body_motion[static_cast<std::size_t>(body)] =
-        combine(body_motion[static_cast<std::size_t>(walk.parent_body[static_cast<std::size_t>(body)])],
-                block_rows(M_i, static_cast<Index>(e) * d, d), walk.sign[static_cast<std::size_t>(body)]);
-  }
+  const auto body_motions = [&](const LinearForms& contracted) {
+    std::vector<LinearForms> body_motion(static_cast<std::size_t>(r.bodies), zero_forms(d, r.FN, r.exact));
+    for (int body : walk.order) {
+      const int e = walk.parent_edge[static_cast<std::size_t>(body)];
+      if (e < 0) continue;
+      body_motion[static_cast<std::size_t>(body)] =
+          combine(body_motion[static_cast<std::size_t>(walk.parent_body[static_cast<std::size_t>(body)])],
+                  block_rows(contracted, static_cast<Index>(e) * d, d), walk.sign[static_cast<std::size_t>(body)]);
+    }
+    return body_motion;
+  };
+  const std::vector<LinearForms> body_motion = body_motions(M_i);
+  const std::vector<LinearForms> body_motion_user = body_motions(r.circulation.contracted);
   const double motion_scale = M_i.values.norm(), action_scale = A_ii.values.norm();
-  auto appearing = [](const LinearForms& f) {
+  // Primaries that appear in a pair's system; in floating point, entries at rounding level do not count.
+  auto appearing = [](const LinearForms& f, double reference) {
+    const double noise = f.exact ? 0.0 : kPairRankRelative * reference;
     std::vector<int> used;
     for (Index p = 0; p < f.values.cols(); ++p)
-      if (f.values.col(p).cwiseAbs().maxCoeff() > 0) used.push_back(static_cast<int>(p));
+      if (f.values.col(p).cwiseAbs().maxCoeff() > noise) used.push_back(static_cast<int>(p));
     return used;
   };
   std::vector<std::vector<std::vector<int>>> couplings_of_pair(static_cast<std::size_t>(r.bodies));
@@ -397,8 +434,8 @@ NetworkResult analyse_network(const Model& model, const AnalysisOptions& options
       const LinearForms relative = combine(body_motion[static_cast<std::size_t>(j)], body_motion[static_cast<std::size_t>(i)], -1);
       pair.motion_rank = forms_rank(relative, motion_scale);
       pair.fij = static_cast<int>(pair.motion_rank.rank);
-      pair.motion_primaries = appearing(relative);
-      pair.motion_system = blocks_to_user(relative, d, motion_to_user);
+      pair.motion_primaries = appearing(relative, motion_scale);
+      pair.motion_system = combine(body_motion_user[static_cast<std::size_t>(j)], body_motion_user[static_cast<std::size_t>(i)], -1);
       if (direct.empty()) {
         pair.f = d;
         pair.action_system = zero_forms(d, r.CN, r.exact);
@@ -413,8 +450,8 @@ NetworkResult analyse_network(const Model& model, const AnalysisOptions& options
         const LinearForms action = block_rows(A_ii, static_cast<Index>(e) * d, d);
         row.action_rank = forms_rank(action, action_scale);
         row.cij = static_cast<int>(row.action_rank.rank);
-        row.action_primaries = appearing(action);
-        row.action_system = blocks_to_user(action, d, action_to_user);
+        row.action_primaries = appearing(action, action_scale);
+        row.action_system = block_rows(r.cutset_law.contracted, static_cast<Index>(e) * d, d);
         r.pairs.push_back(row);
       }
     }
