@@ -481,8 +481,20 @@ NetworkResult analyse_network(const Model& model, const AnalysisOptions& options
       throw ModelError("values", static_cast<int>(v),
                        fmt::format("'{}' is not a primary variable; values can be given for the primaries only", values[v].first));
   }
-  if (auto v = value_vector(r.primary_motion, r.motions); v && r.FN > 0) r.motion_values = r.motion_magnitudes.values * *v;
-  if (auto v = value_vector(r.primary_action, r.actions); v && r.CN > 0) r.action_values = r.action_magnitudes.values * *v;
+  // Coupling screws from the contracted forms: block e (d rows) times the primary values.
+  auto coupling_screws = [&](const LinearForms& contracted, const Eigen::VectorXd& v) {
+    Eigen::MatrixXd screws(d, r.e);
+    for (int e = 0; e < r.e; ++e) screws.col(e) = contracted.values.middleRows(static_cast<Index>(e) * d, d) * v;
+    return screws;
+  };
+  if (auto v = value_vector(r.primary_motion, r.motions); v && r.FN > 0) {
+    r.motion_values = r.motion_magnitudes.values * *v;
+    r.coupling_motion_values = coupling_screws(r.circulation.contracted, *v);
+  }
+  if (auto v = value_vector(r.primary_action, r.actions); v && r.CN > 0) {
+    r.action_values = r.action_magnitudes.values * *v;
+    r.coupling_action_values = coupling_screws(r.cutset_law.contracted, *v);
+  }
 
   // Exact arithmetic on long literals analyses the rounded geometry: say if floating point,
   // which tolerates the rounding, sees a different mechanism.

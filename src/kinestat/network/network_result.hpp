@@ -97,6 +97,9 @@ struct NetworkResult {
 
   /// Numeric values of all magnitudes when values of every primary of that kind were given.
   std::optional<Eigen::VectorXd> motion_values, action_values;
+  /// The same as screws: column e is coupling e's motion (axis formation) or action (ray
+  /// formation), d coordinates in the user's frame.
+  std::optional<Eigen::MatrixXd> coupling_motion_values, coupling_action_values;
 
   /// When exact arithmetic was used on long literals: the floating-point FN and CN, if they
   /// differ (the geometry is within rounding of a configuration with other FN, CN).

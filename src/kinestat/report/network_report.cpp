@@ -220,6 +220,16 @@ std::string network_text(const network::Model& model, const NetworkResult& r, co
   t += contracted_text(model, r, r.circulation.contracted, motion_primaries, true);
   t += "\nAction matrix [A]d,e (action transmitted by each coupling):\n";
   t += contracted_text(model, r, r.cutset_law.contracted, action_primaries, false);
+  auto numeric_screws = [&](const char* title, const Eigen::MatrixXd& columns) {
+    t += fmt::format("\n{}\n", title);
+    for (int e = 0; e < r.e; ++e) {
+      std::vector<std::string> coordinates;
+      for (int c = 0; c < r.d; ++c) coordinates.push_back(number_text(columns(c, e)));
+      t += fmt::format("  {:<10} ({})\n", model.couplings[static_cast<std::size_t>(e)].name, fmt::join(coordinates, ", "));
+    }
+  };
+  if (r.coupling_motion_values) numeric_screws("Numeric motion of each coupling (axis formation):", *r.coupling_motion_values);
+  if (r.coupling_action_values) numeric_screws("Numeric action of each coupling (ray formation):", *r.coupling_action_values);
   t += fmt::format("\nMethods agree: circulation law and cutset motions {}; cutset law and circuit actions {}\n",
                    r.motion_methods_agree ? "yes" : "NO", r.action_methods_agree ? "yes" : "NO");
 
@@ -344,8 +354,19 @@ Json network_json(const network::Model& model, const NetworkResult& r, const Net
       for (std::size_t i = 0; i < magnitudes.size(); ++i) out[magnitudes[i].name] = v(static_cast<Index>(i));
       return out;
     };
+    auto screws = [&](const Eigen::MatrixXd& columns) {
+      Json out = Json::object();
+      for (int e = 0; e < r.e; ++e) {
+        Json coordinates = Json::array();
+        for (int c = 0; c < r.d; ++c) coordinates.push_back(columns(c, e));
+        out[model.couplings[static_cast<std::size_t>(e)].name] = coordinates;
+      }
+      return out;
+    };
     if (r.motion_values) values["motions"] = numeric(r.motions, *r.motion_values);
+    if (r.coupling_motion_values) values["coupling_motions"] = screws(*r.coupling_motion_values);
     if (r.action_values) values["actions"] = numeric(r.actions, *r.action_values);
+    if (r.coupling_action_values) values["coupling_actions"] = screws(*r.coupling_action_values);
     j["values"] = values;
   }
   j["warnings"] = warnings(r);

@@ -1,80 +1,63 @@
 #include "kinestat/screw/coupling_type.hpp"
 
 #include <array>
-#include <utility>
 
 namespace kinestat::screw {
 
 namespace {
-constexpr std::array<std::pair<CouplingType, std::string_view>, 12> kNames{{
-    {CouplingType::revolute, "revolute"},
-    {CouplingType::prismatic, "prismatic"},
-    {CouplingType::helical, "helical"},
-    {CouplingType::cylindrical, "cylindrical"},
-    {CouplingType::universal, "universal"},
-    {CouplingType::spherical, "spherical"},
-    {CouplingType::planar, "planar"},
-    {CouplingType::rigid, "rigid"},
-    {CouplingType::free, "free"},
-    {CouplingType::point_on_plane, "point_on_plane"},
-    {CouplingType::point_on_line, "point_on_line"},
-    {CouplingType::custom, "custom"},
-}};
+
+// One row per type: file-format name, geometry keys it uses, and which of them are required.
+// A revolute's axis is optional: it defaults to z, the only axis a planar model allows
+// (the network reader requires it in spatial models).
+struct TypeFacts {
+  CouplingType type;
+  std::string_view name;
+  std::vector<std::string_view> keys;
+  std::vector<std::string_view> required;
+};
+
+const std::array<TypeFacts, 12>& type_facts() {
+  static const std::array<TypeFacts, 12> facts{{
+      {CouplingType::revolute, "revolute", {"axis"}, {}},
+      {CouplingType::prismatic, "prismatic", {"axis"}, {"axis"}},
+      {CouplingType::helical, "helical", {"axis", "pitch"}, {"axis", "pitch"}},
+      {CouplingType::cylindrical, "cylindrical", {"axis"}, {"axis"}},
+      {CouplingType::universal, "universal", {"axis", "axis2"}, {"axis", "axis2"}},
+      {CouplingType::spherical, "spherical", {}, {}},
+      {CouplingType::planar, "planar", {"normal"}, {"normal"}},
+      {CouplingType::rigid, "rigid", {}, {}},
+      {CouplingType::free, "free", {}, {}},
+      {CouplingType::point_on_plane, "point_on_plane", {"normal"}, {"normal"}},
+      {CouplingType::point_on_line, "point_on_line", {"normal"}, {"normal"}},
+      {CouplingType::custom, "custom", {"motions", "actions"}, {"motions"}},
+  }};
+  return facts;
+}
+
+const TypeFacts& facts_of(CouplingType type) {
+  for (const auto& facts : type_facts())
+    if (facts.type == type) return facts;
+  return type_facts().front();  // unreachable: every enumerator has a row
+}
+
 }  // namespace
 
 std::optional<CouplingType> parse_coupling_type(std::string_view name) {
-  for (const auto& [type, text] : kNames)
-    if (text == name) return type;
+  for (const auto& facts : type_facts())
+    if (facts.name == name) return facts.type;
   return std::nullopt;
 }
 
-std::string_view coupling_type_name(CouplingType type) {
-  for (const auto& [candidate, text] : kNames)
-    if (candidate == type) return text;
-  return "unknown";
-}
+std::string_view coupling_type_name(CouplingType type) { return facts_of(type).name; }
 
 std::vector<std::string_view> coupling_type_names() {
   std::vector<std::string_view> names;
-  for (const auto& entry : kNames) names.push_back(entry.second);
+  for (const auto& facts : type_facts()) names.push_back(facts.name);
   return names;
 }
 
-std::vector<std::string_view> geometry_keys(CouplingType type) {
-  switch (type) {
-    case CouplingType::revolute:
-    case CouplingType::prismatic:
-    case CouplingType::cylindrical: return {"axis"};
-    case CouplingType::helical: return {"axis", "pitch"};
-    case CouplingType::universal: return {"axis", "axis2"};
-    case CouplingType::planar:
-    case CouplingType::point_on_plane:
-    case CouplingType::point_on_line: return {"normal"};
-    case CouplingType::custom: return {"motions", "actions"};
-    case CouplingType::spherical:
-    case CouplingType::rigid:
-    case CouplingType::free: return {};
-  }
-  return {};
-}
+std::vector<std::string_view> geometry_keys(CouplingType type) { return facts_of(type).keys; }
 
-std::vector<std::string_view> required_geometry_keys(CouplingType type) {
-  switch (type) {
-    case CouplingType::prismatic:
-    case CouplingType::cylindrical: return {"axis"};
-    case CouplingType::helical: return {"axis", "pitch"};
-    case CouplingType::universal: return {"axis", "axis2"};
-    case CouplingType::planar:
-    case CouplingType::point_on_plane:
-    case CouplingType::point_on_line: return {"normal"};
-    case CouplingType::custom: return {"motions"};
-    // A revolute's axis defaults to z, the only sensible axis in a planar model.
-    case CouplingType::revolute:
-    case CouplingType::spherical:
-    case CouplingType::rigid:
-    case CouplingType::free: return {};
-  }
-  return {};
-}
+std::vector<std::string_view> required_geometry_keys(CouplingType type) { return facts_of(type).required; }
 
 }  // namespace kinestat::screw
