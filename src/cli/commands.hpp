@@ -23,6 +23,10 @@ struct CommonOptions {
   std::optional<double> tolerance;  ///< relative rank tolerance (default: the LAPACK rule)
 };
 
+/// Parses the command line, runs the chosen subcommand and returns the exit code: 0 success,
+/// 2 bad input or usage, 3 internal error or out of memory.
+int run(int argc, const char* const* argv);
+
 /// Writes `text` to standard output, or atomically to `output_path` when it is set.
 void emit(const CommonOptions& options, const std::string& text);
 

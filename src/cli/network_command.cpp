@@ -41,6 +41,7 @@ std::vector<std::pair<std::string, screw::Rational>> parse_values(const std::vec
 
 void register_network_options(CLI::App& analyze) {
   NetworkOptions& o = network_options();
+  o = NetworkOptions{};  // run() may be called more than once in a process
   auto* exact = analyze.add_flag("--exact", o.exact, "Networks: exact rational arithmetic (GMP)");
   auto* floating = analyze.add_flag("--float", o.floating, "Networks: floating point (SVD ranks with the tolerance)");
   exact->excludes(floating);

@@ -15,7 +15,54 @@ namespace {
 
 // yaml-cpp parses recursively; bound the nesting so hostile input cannot overflow the stack.
 constexpr int kMaxFlowNesting = 64;
-constexpr std::size_t kMaxInputBytes = std::size_t{256} << 20;  // 256 MiB
+// Block nesting shows as indentation and "- - -" runs at the start of a line.
+constexpr std::size_t kMaxLeadingIndicators = 512;
+constexpr std::size_t kMaxInputBytes = std::size_t{64} << 20;  // 64 MiB
+// Aliases let a small file stand for an enormous tree ("billion laughs"); readers walk the
+// tree, so its expanded size is bounded.
+constexpr std::size_t kMaxExpandedNodes = std::size_t{4} << 20;
+
+// The first line whose run of leading spaces and block indicators is longer than the limit.
+int excessive_block_nesting(const std::string& text) {
+  int line = 1;
+  std::size_t run = 0;
+  bool at_start = true;
+  for (char ch : text) {
+    if (ch == '\n') {
+      ++line;
+      run = 0;
+      at_start = true;
+      continue;
+    }
+    if (!at_start) continue;
+    if (ch == ' ' || ch == '-' || ch == '?' || ch == ':' || ch == '\t') {
+      if (++run > kMaxLeadingIndicators) return line;
+    } else {
+      at_start = false;
+    }
+  }
+  return 0;
+}
+
+// Counts the nodes of the tree as readers would see it (aliases expanded), up to the limit.
+bool expands_beyond_limit(const YAML::Node& root) {
+  std::vector<YAML::Node> stack{root};
+  std::size_t count = 0;
+  while (!stack.empty()) {
+    const YAML::Node node = stack.back();
+    stack.pop_back();
+    if (++count > kMaxExpandedNodes) return true;
+    if (node.IsSequence()) {
+      for (const auto& item : node) stack.push_back(item);
+    } else if (node.IsMap()) {
+      for (const auto& entry : node) {
+        stack.push_back(entry.first);
+        stack.push_back(entry.second);
+      }
+    }
+  }
+  return false;
+}
 
 // Finds the first place where "[" / "{" nesting exceeds the limit, outside quoted strings
 // and comments. Returns {line, column} (1-based) or {0, 0}.
@@ -125,6 +172,9 @@ YamlFile YamlFile::parse(std::string path, const std::string& text) {
   if (auto [line, column] = excessive_flow_nesting(text); line > 0) {
     throw InputError({path, line, column}, fmt::format("nesting deeper than {} levels", kMaxFlowNesting));
   }
+  if (const int line = excessive_block_nesting(text); line > 0) {
+    throw InputError({path, line, 1}, fmt::format("indentation or block nesting deeper than {} levels", kMaxLeadingIndicators));
+  }
   YAML::Node root;
   try {
     root = YAML::Load(text);
@@ -133,6 +183,9 @@ YamlFile YamlFile::parse(std::string path, const std::string& text) {
                      fmt::format("malformed YAML: {}", error.msg));
   }
   if (!root.IsDefined() || root.IsNull()) throw InputError({path, 1, 1}, "empty model file: expected a map");
+  if (expands_beyond_limit(root)) {
+    throw InputError({path, 1, 1}, fmt::format("the document expands to more than {} nodes (through aliases?)", kMaxExpandedNodes));
+  }
   YamlFile file(std::move(path), root);
   file.expect_map(root, "the model file");
   return file;
@@ -203,7 +256,8 @@ ExactNumber YamlFile::number(const YAML::Node& node, std::string_view what) cons
   result.exact = parse_exact_decimal(text);
   if (result.exact) {
     result.value = result.exact->get_d();
-    if (!std::isfinite(result.value)) fail(node, fmt::format("{} is out of range: '{}'", what, text));
+    const bool underflow = result.value == 0.0 && sgn(*result.exact) != 0;
+    if (!std::isfinite(result.value) || underflow) fail(node, fmt::format("{} is out of range: '{}'", what, text));
     return result;
   }
   fail(node, fmt::format("{} must be a finite number, found '{}'", what, text));

@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Runs every libFuzzer harness for SECONDS (default 30) each, seeded with the shipped
+# examples. Crashes are written to build/fuzz/crashes/ and fail the script.
+# Usage: scripts/run-fuzzers.sh [SECONDS]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds=${1:-30}
+out=build/fuzz/crashes
+mkdir -p "$out"
+status=0
+for harness in build/fuzz/fuzz/fuzz_*; do
+  name=$(basename "$harness")
+  corpus=build/fuzz/corpus/$name
+  mkdir -p "$corpus"
+  case "$name" in
+    fuzz_cli_arguments) seeds=fuzz/seeds/cli ;;
+    *) seeds=examples ;;
+  esac
+  echo "== $name for ${seconds}s"
+  if ! "$harness" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=4096 -max_len=65536 \
+       -artifact_prefix="$out/$name-" -print_final_stats=1 "$corpus" "$seeds" >/dev/null 2>"build/fuzz/$name.log"; then
+    status=1
+    tail -40 "build/fuzz/$name.log"
+  fi
+  grep -E "stat::number_of_executed_units|stat::peak_rss_mb" "build/fuzz/$name.log" || true
+done
+exit $status

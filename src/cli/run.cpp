@@ -1,0 +1,49 @@
+// The body of the `kinestat` command (main() is in main.cpp so fuzz harnesses can call run()).
+
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "kinestat/io/input_error.hpp"
+#include "kinestat/io/output_file.hpp"
+
+namespace kinestat::cli {
+
+void emit(const CommonOptions& options, const std::string& text) {
+  if (options.output_path.empty() || options.output_path == "-") {
+    std::cout << text;
+    std::cout.flush();
+  } else {
+    io::write_file_atomically(options.output_path, text);
+  }
+}
+
+int run(int argc, const char* const* argv) {
+  CLI::App app{"kinestat: nett degrees of freedom and of constraint of mechanisms, compliant mechanisms and structures"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "kinestat 0.1.0");
+  Action action;
+  register_analyze(app, action);
+  register_structure(app, action);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success& success) {
+    return app.exit(success);
+  } catch (const CLI::ParseError& error) {
+    app.exit(error);
+    return 2;
+  }
+  try {
+    return action ? action() : 2;
+  } catch (const io::InputError& error) {
+    std::cerr << error.what() << '\n';
+    return 2;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "kinestat: error: out of memory (the model is too large for this machine)\n";
+    return 3;
+  } catch (const std::exception& error) {
+    std::cerr << "kinestat: internal error: " << error.what() << '\n';
+    return 3;
+  }
+}
+
+}  // namespace kinestat::cli
