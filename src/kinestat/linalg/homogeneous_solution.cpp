@@ -1,5 +1,7 @@
 #include "kinestat/linalg/homogeneous_solution.hpp"
 
+#include "kinestat/linalg/svd_analysis.hpp"
+
 #include <Eigen/LU>
 #include <Eigen/QR>
 #include <Eigen/SVD>
@@ -192,10 +194,10 @@ HomogeneousSolution solve_homogeneous(const Eigen::MatrixXd& a, const RankTolera
   if (rows == 0 || cols == 0) {
     null_basis = Eigen::MatrixXd::Identity(cols, cols);
   } else {
-    Eigen::BDCSVD<Eigen::MatrixXd> svd(a, Eigen::ComputeFullV);
-    solution.singular_values = svd.singularValues();
-    solution.rank = decide_rank(solution.singular_values, rows, cols, tolerance);
-    null_basis = svd.matrixV().rightCols(cols - solution.rank.rank);
+    const SvdAnalysis svd = analyse_svd(a, tolerance, SvdVectors::right_only);
+    solution.singular_values = svd.singular_values;
+    solution.rank = svd.rank;
+    null_basis = svd.null_space();
   }
   const Eigen::Index nullity = null_basis.cols();
 
