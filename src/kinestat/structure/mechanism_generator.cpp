@@ -16,10 +16,11 @@ int uniform(std::mt19937& rng, int n) { return static_cast<int>(rng() % static_c
 
 }  // namespace
 
-StructureModel generate_group_chain(int bodies, std::uint32_t seed, GeneratorMix mix, bool shuffle) {
+GeneratedMechanism generate_group_chain(int bodies, std::uint32_t seed, GeneratorMix mix, bool shuffle) {
   if (bodies < 2) throw std::invalid_argument("a generated mechanism needs at least 2 bodies");
   std::mt19937 rng(seed);
-  StructureModel model;
+  GeneratedMechanism generated;
+  StructureModel& model = generated.model;
   model.name = "generated chain of structural groups";
   model.body_names.resize(bodies);
   int placed = 1;  // the frame
@@ -41,7 +42,9 @@ StructureModel generate_group_chain(int bodies, std::uint32_t seed, GeneratorMix
     return uniform(rng, placed);
   };
   // The first group is always a crank, so that something is driven.
-  lower(0, placed++, 1);
+  generated.groups.push_back({placed});
+  lower(0, placed, 1);
+  ++placed;
   const int weight = mix.dyads + mix.triads + mix.followers + mix.cranks;
   while (placed < bodies) {
     const int left = bodies - placed;
@@ -60,6 +63,7 @@ StructureModel generate_group_chain(int bodies, std::uint32_t seed, GeneratorMix
       lower(a1, b1, 0);
       lower(a2, b2, 0);
       lower(a3, b3, 0);
+      generated.groups.push_back({t, b1, b2, b3});
       placed += 4;
     } else if (dyad) {
       const int u = placed, v = placed + 1;
@@ -67,6 +71,7 @@ StructureModel generate_group_chain(int bodies, std::uint32_t seed, GeneratorMix
       lower(a1, u, 0);
       lower(u, v, 0);
       lower(v, a2, 0);
+      generated.groups.push_back({u, v});
       placed += 2;
     } else if (follower) {
       const int f = placed;
@@ -78,9 +83,14 @@ StructureModel generate_group_chain(int bodies, std::uint32_t seed, GeneratorMix
       cam.kind = PairKind::higher;
       cam.freedoms = 2;
       model.pairs.push_back(cam);
+      generated.groups.push_back({f});
       placed += 1;
     } else {
-      lower(anchor(), placed++, 1);  // a crank: one body driven on a lower pair
+      // A crank: one body driven on a lower pair. (Anchor first: argument order is unspecified.)
+      const int a = anchor();
+      generated.groups.push_back({placed});
+      lower(a, placed, 1);
+      ++placed;
     }
   }
   std::vector<int> number(bodies);
@@ -93,8 +103,12 @@ StructureModel generate_group_chain(int bodies, std::uint32_t seed, GeneratorMix
     p.b = number[p.b];
     if (p.a > p.b) std::swap(p.a, p.b);
   }
+  for (auto& group : generated.groups) {
+    for (int& b : group) b = number[b];
+    std::sort(group.begin(), group.end());
+  }
   for (int i = 0; i < bodies; ++i) model.body_names[i] = std::to_string(i + 1);
-  return model;
+  return generated;
 }
 
 }  // namespace kinestat::structure

@@ -4,6 +4,7 @@
 // well constrained by construction and its decomposition is known.
 
 #include <cstdint>
+#include <vector>
 
 #include "kinestat/structure/structure_model.hpp"
 
@@ -17,10 +18,17 @@ struct GeneratorMix {
   int cranks = 1;           ///< single bodies driven by an input on a lower pair
 };
 
+/// A generated mechanism and the structural groups it was built from (0-based bodies,
+/// ascending), in generation order.
+struct GeneratedMechanism {
+  StructureModel model;
+  std::vector<std::vector<int>> groups;
+};
+
 /// A mechanism with exactly `bodies` bodies (frame included, at least 2). Groups are drawn
 /// with weights `mix` from a deterministic generator seeded with `seed`; each attaches to
 /// distinct bodies already placed, so that groups are formed in generation order. With
 /// `shuffle`, bodies 2..N are renumbered at random, which exercises the search order.
-StructureModel generate_group_chain(int bodies, std::uint32_t seed, GeneratorMix mix = {}, bool shuffle = false);
+GeneratedMechanism generate_group_chain(int bodies, std::uint32_t seed, GeneratorMix mix = {}, bool shuffle = false);
 
 }  // namespace kinestat::structure
