@@ -75,3 +75,25 @@ TEST(CrossCheck, EveryBodyOfAGeneratedChainIsPlacedOnce) {
 
 }  // namespace
 }  // namespace kinestat::structure
+
+namespace kinestat::structure {
+namespace {
+
+TEST(CrossCheck, LargeSingleGroupsAreOneGroup) {
+  // Ring and ladder families: one crank, then one Assur group of all the other bodies.
+  for (const auto& g : {generate_ring_group(8), generate_ladder_group(4)}) {
+    for (const auto method : {SearchMethod::matching, SearchMethod::seed_search}) {
+      const Decomposition d = decompose(g.model, method);
+      ASSERT_TRUE(d.complete()) << g.model.name;
+      ASSERT_EQ(d.groups.size(), 2u) << g.model.name;
+      EXPECT_EQ(d.groups[0].bodies, g.groups[0]);
+      EXPECT_EQ(d.groups[1].bodies, g.groups[1]);
+    }
+  }
+  const Decomposition big = decompose(generate_ring_group(5000).model);
+  EXPECT_EQ(big.groups.size(), 2u);
+  EXPECT_EQ(big.groups[1].Nm, 5000);
+}
+
+}  // namespace
+}  // namespace kinestat::structure

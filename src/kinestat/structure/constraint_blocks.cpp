@@ -67,6 +67,11 @@ class FlowNetwork {
     }
   }
 
+  /// Sends `amount` along `edge` (an initial, greedy flow; max_flow completes it).
+  void push(int edge, int amount) {
+    capacity_[edge] -= amount;
+    capacity_[edge ^ 1] += amount;
+  }
   int residual(int edge) const { return capacity_[edge]; }
   int target(int edge) const { return to_[edge]; }
   const std::vector<int>& edges(int node) const { return adjacency_[node]; }
@@ -163,6 +168,50 @@ ConstraintBlocks find_constraint_blocks(const StructureModel& model) {
     if (p.b != 0) pair_edge[k][1] = net.add_edge(first_pair + k, first_body + p.b, units);
   }
   for (int b = 1; b < bodies; ++b) body_edge[b] = net.add_edge(first_body + b, sink, d);
+  // A greedy start leaves few augmenting paths for Dinic. In a mechanism built of groups,
+  // a pair's constraints belong to the body solved later, which is usually the one farther
+  // from the frame: visit pairs outward from the frame and give their constraints to the
+  // farther end first.
+  std::vector<int> distance(bodies, -1);
+  {
+    std::vector<std::vector<int>> neighbours(bodies);
+    for (const Pair& p : model.pairs) {
+      neighbours[p.a].push_back(p.b);
+      neighbours[p.b].push_back(p.a);
+    }
+    std::deque<int> queue{0};
+    if (bodies > 0) distance[0] = 0;
+    while (!queue.empty()) {
+      const int u = queue.front();
+      queue.pop_front();
+      for (int v : neighbours[u])
+        if (distance[v] < 0) {
+          distance[v] = distance[u] + 1;
+          queue.push_back(v);
+        }
+    }
+  }
+  std::vector<int> outward(pairs);
+  for (int k = 0; k < pairs; ++k) outward[k] = k;
+  auto near_end = [&](int k) {
+    const Pair& p = model.pairs[k];
+    const int da = distance[p.a] < 0 ? bodies : distance[p.a], db = distance[p.b] < 0 ? bodies : distance[p.b];
+    return std::min(da, db);
+  };
+  std::stable_sort(outward.begin(), outward.end(), [&](int x, int y) { return near_end(x) < near_end(y); });
+  for (int k : outward) {
+    const Pair& p = model.pairs[k];
+    const bool b_farther = distance[p.b] >= distance[p.a];
+    for (int side : {b_farther ? 1 : 0, b_farther ? 0 : 1}) {
+      const int body = side == 0 ? p.a : p.b;
+      if (pair_edge[k][side] < 0) continue;
+      const int amount = std::min(net.residual(supply_edge[k]), net.residual(body_edge[body]));
+      if (amount <= 0) continue;
+      net.push(supply_edge[k], amount);
+      net.push(pair_edge[k][side], amount);
+      net.push(body_edge[body], amount);
+    }
+  }
   net.max_flow(source, sink);
 
   ConstraintBlocks result;

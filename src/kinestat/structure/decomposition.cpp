@@ -124,17 +124,20 @@ class SearchState {
     return receivers;
   }
 
-  /// Algorithm 2: tries the candidates in decreasing body number; a body that becomes a
+  /// All current candidates in decreasing body number.
+  std::vector<int> all_candidates() const { return {candidates_.rbegin(), candidates_.rend()}; }
+
+  /// Algorithm 2: tries the bodies of `first_level` (decreasing body number); a body that becomes a
   /// group hands its DOF on, and the bodies that received them are tried next, one level
   /// deeper (depth first, as the order of Eqs. 3 and 4 shows).
-  void single_search(GroupOracle& oracle) {
+  void single_search(GroupOracle& oracle, std::vector<int> first_level) {
     struct Level {
       std::vector<int> bodies;
       std::size_t next = 0;
       int depth = 1;
     };
     std::vector<Level> stack;
-    stack.push_back({std::vector<int>(candidates_.rbegin(), candidates_.rend()), 0, 1});
+    stack.push_back({std::move(first_level), 0, 1});
     while (!stack.empty()) {
       Level& top = stack.back();
       if (top.next == top.bodies.size()) {
@@ -284,13 +287,19 @@ Decomposition decompose(const StructureModel& model, SearchMethod method) {
   else oracle = std::make_unique<MatchingSearch>(model, blocks);
 
   state.isolate_frame();
+  std::vector<int> first_level = state.all_candidates();
   while (true) {
-    state.single_search(*oracle);  // Step 6
+    state.single_search(*oracle, std::move(first_level));  // Step 6
     if (state.all_solved()) break;
     std::vector<int> group = oracle->extended_group();  // Step 7
     if (group.empty()) break;
     // The extended search runs at the top level, like the first level of Step 6.
-    state.form(group, 2, *oracle);
+    std::vector<int> receivers = state.form(group, 2, *oracle);
+    // The seed then searches all candidates again. Only the bodies that just received DOF
+    // can have become groups (a failed test changes nothing, and every other body was last
+    // tested after its last DOF arrived), so the polynomial method tries just those, in
+    // the same order; the reference keeps the literal rescan, and the tests compare them.
+    first_level = method == SearchMethod::seed_search ? state.all_candidates() : std::move(receivers);
   }
 
   Decomposition result = state.take();

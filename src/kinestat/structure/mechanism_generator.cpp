@@ -111,4 +111,64 @@ GeneratedMechanism generate_group_chain(int bodies, std::uint32_t seed, Generato
   return generated;
 }
 
+GeneratedMechanism generate_ring_group(int ring_bodies) {
+  if (ring_bodies < 4 || ring_bodies % 2 != 0) throw std::invalid_argument("a ring group needs an even number >= 4 of bodies");
+  GeneratedMechanism generated;
+  StructureModel& model = generated.model;
+  model.name = "ring group of " + std::to_string(ring_bodies) + " bodies";
+  const int bodies = ring_bodies + 2;
+  for (int i = 0; i < bodies; ++i) model.body_names.push_back(std::to_string(i + 1));
+  auto lower = [&](int a, int b, int inputs) {
+    Pair p;
+    p.a = std::min(a, b);
+    p.b = std::max(a, b);
+    p.inputs = inputs;
+    model.pairs.push_back(p);
+  };
+  lower(0, 1, 1);  // the crank
+  generated.groups.push_back({1});
+  std::vector<int> ring;
+  for (int i = 0; i < ring_bodies; ++i) {
+    const int body = 2 + i;
+    ring.push_back(body);
+    lower(body, 2 + (i + 1) % ring_bodies, 0);
+    if (i % 2 == 0) lower(body, (i / 2) % 2 == 0 ? 0 : 1, 0);  // alternately on frame and crank
+  }
+  generated.groups.push_back(ring);
+  return generated;
+}
+
+GeneratedMechanism generate_ladder_group(int rungs) {
+  if (rungs < 2) throw std::invalid_argument("a ladder group needs at least 2 rungs");
+  GeneratedMechanism generated;
+  StructureModel& model = generated.model;
+  model.name = "ladder group of " + std::to_string(2 * rungs) + " bodies";
+  const int bodies = 2 * rungs + 2;
+  for (int i = 0; i < bodies; ++i) model.body_names.push_back(std::to_string(i + 1));
+  auto lower = [&](int a, int b, int inputs) {
+    Pair p;
+    p.a = std::min(a, b);
+    p.b = std::max(a, b);
+    p.inputs = inputs;
+    model.pairs.push_back(p);
+  };
+  lower(0, 1, 1);  // the crank
+  generated.groups.push_back({1});
+  auto rail = [](int side, int i) { return 2 + 2 * i + side; };
+  std::vector<int> ladder;
+  for (int i = 0; i < rungs; ++i) {
+    ladder.push_back(rail(0, i));
+    ladder.push_back(rail(1, i));
+    lower(rail(0, i), rail(1, i), 0);  // the rung
+    if (i + 1 < rungs) {
+      lower(rail(0, i), rail(0, i + 1), 0);
+      lower(rail(1, i), rail(1, i + 1), 0);
+    }
+  }
+  lower(0, rail(0, 0), 0);
+  lower(1, rail(1, rungs - 1), 0);
+  generated.groups.push_back(ladder);
+  return generated;
+}
+
 }  // namespace kinestat::structure

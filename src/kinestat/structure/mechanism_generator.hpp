@@ -31,4 +31,16 @@ struct GeneratedMechanism {
 /// `shuffle`, bodies 2..N are renumbered at random, which exercises the search order.
 GeneratedMechanism generate_group_chain(int bodies, std::uint32_t seed, GeneratorMix mix = {}, bool shuffle = false);
 
+/// One large structural group: a crank driven from the frame and a closed ring of
+/// `ring_bodies` (even, at least 4) links joined by revolutes, every second link also
+/// pinned to the frame or the crank. 3 m = 2 (m + m / 2): the ring is a single Assur group
+/// of m bodies, the worst case for a search over chains of growing length.
+GeneratedMechanism generate_ring_group(int ring_bodies);
+
+/// One structural group shaped like a ladder: two rails of `rungs` links each, joined
+/// rung by rung by revolutes, one end pinned to the frame and the other to a driven crank.
+/// 3 (2 m) = 2 ((3 m - 2) + 2). Its connected subchains grow exponentially with m, which is
+/// what makes the seed's search over chains exponential.
+GeneratedMechanism generate_ladder_group(int rungs);
+
 }  // namespace kinestat::structure
