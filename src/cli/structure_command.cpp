@@ -1,5 +1,6 @@
 // `kinestat structure FILE`: decomposition of a mechanism into structural groups (seed 004).
 
+#include <cctype>
 #include <iostream>
 #include <iterator>
 #include <memory>
@@ -27,11 +28,25 @@ struct StructureOptions {
 // would run for hours, so the option is refused rather than left to hang.
 constexpr int kMaxSeedSearchBodies = 40;
 
+bool starts_with_matrix(const std::string& text) {
+  bool comment = false;
+  for (char c : text) {
+    if (comment) {
+      comment = c != '\n';
+      continue;
+    }
+    if (c == '#') comment = true;
+    else if (!std::isspace(static_cast<unsigned char>(c))) return std::isdigit(static_cast<unsigned char>(c)) || c == '-' || c == '+';
+  }
+  return true;  // empty input: the matrix reader says what is missing
+}
+
 structure::StructureModel read_model(const StructureOptions& options) {
   if (options.from_stdin || options.common.model_path == "-") {
     const std::string text{std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>()};
-    // A YAML document has keys; a bare matrix is digits and whitespace only.
-    if (text.find(':') != std::string::npos) {
+    // A bare matrix starts with a code (after blank lines and '#' comments); anything else
+    // is read as a YAML model.
+    if (!starts_with_matrix(text)) {
       const io::YamlFile file = io::YamlFile::parse("<stdin>", text);
       return io::read_structure_model(file);
     }

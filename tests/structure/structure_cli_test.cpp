@@ -129,3 +129,16 @@ TEST(StructureCli, BadFileNamesLineAndColumn) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(StructureCli, YamlModelOnStandardInputAndCommentedMatrix) {
+  const CliRun yaml = run("structure --json -", "kinestat: 1\nkind: structure\nadjacency: [[0, 3], [3, 0]]\n");
+  ASSERT_EQ(yaml.code, 0) << yaml.err;
+  EXPECT_EQ(nlohmann::json::parse(yaml.out)["order"], nlohmann::json({{2}}));
+  const CliRun matrix = run("structure --json -", "# crank: driven lower pair\n0 3\n3 0\n");
+  ASSERT_EQ(matrix.code, 0) << matrix.err;
+  EXPECT_EQ(nlohmann::json::parse(matrix.out)["order"], nlohmann::json({{2}}));
+}
+
+}  // namespace

@@ -292,7 +292,10 @@ std::string structure_svg(const StructureModel& model, const Decomposition& d) {
   constexpr double radius = 28, dx = 130, dy = 110, margin = 60;
   std::vector<int> per_layer(diagram.layers, 0);
   for (const auto& n : diagram.nodes) ++per_layer[n.layer];
-  const double width = margin * 2 + dx * std::max(1, diagram.widest_layer - 1) + 2 * radius;
+  const std::string title = model.name.empty() ? "Structural diagram" : model.name;
+  // Wide enough for the title too (about 7.5 px per character at 15 px).
+  const double width = std::max(margin * 2 + dx * std::max(1, diagram.widest_layer - 1) + 2 * radius,
+                                40 + 7.5 * static_cast<double>(title.size()));
   const double height = margin * 2 + dy * (diagram.layers - 1) + 2 * radius + 20;
   std::vector<std::pair<double, double>> at(diagram.nodes.size());
   std::vector<int> index_of(d.groups.size() + 1, 0);
@@ -324,7 +327,7 @@ std::string structure_svg(const StructureModel& model, const Decomposition& d) {
          "orient=\"auto-start-reverse\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"#333\"/></marker></defs>\n";
   out += "  <rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   out += fmt::format("  <text x=\"{:.1f}\" y=\"24\" text-anchor=\"middle\" font-size=\"15\">{}</text>\n", width / 2,
-                     escape(model.name.empty() ? "Structural diagram" : model.name));
+                     escape(title));
   for (const auto& a : diagram.arrows) {
     const auto [x1, y1] = at[index_of[a.from]];
     const auto [x2, y2] = at[index_of[a.to]];
