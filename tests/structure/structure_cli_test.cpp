@@ -142,3 +142,17 @@ TEST(StructureCli, YamlModelOnStandardInputAndCommentedMatrix) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(StructureCli, OutputIsByteIdenticalAcrossRuns) {
+  for (const std::string args : {"structure --json ", "structure --diagram svg ", "structure "}) {
+    const CliRun a = run(args + example("class-iii-triad.yaml"));
+    const CliRun b = run(args + example("class-iii-triad.yaml"));
+    ASSERT_EQ(a.code, 0) << a.err;
+    EXPECT_EQ(a.out, b.out) << args;
+    EXPECT_FALSE(a.out.empty());
+  }
+}
+
+}  // namespace

@@ -73,3 +73,24 @@ TEST(StructureReport, TextNamesTheUndecomposedPart) {
 
 }  // namespace
 }  // namespace kinestat::report
+
+namespace kinestat::report {
+namespace {
+
+TEST(StructureReport, DiagramOfFig4) {
+  // Fig. 4.b-c: SG-I {2, 3} (2, 1) hangs on the frame; SG-II {4} (1, 0) on the frame (revolute)
+  // and on SG-I (cam with arm 3); SG-III {5} (1, 1) on SG-II only.
+  const auto model = structure::testing::load_example("saura-eq2.yaml");
+  const auto diagram = structure::structural_diagram(structure::decompose(model));
+  ASSERT_EQ(diagram.nodes.size(), 4u);
+  EXPECT_EQ(std::make_pair(diagram.nodes[1].Nm, diagram.nodes[1].nc), std::make_pair(2, 1));
+  EXPECT_EQ(std::make_pair(diagram.nodes[2].Nm, diagram.nodes[2].nc), std::make_pair(1, 0));
+  EXPECT_EQ(std::make_pair(diagram.nodes[3].Nm, diagram.nodes[3].nc), std::make_pair(1, 1));
+  std::vector<std::pair<int, int>> arrows;
+  for (const auto& a : diagram.arrows) arrows.emplace_back(a.from, a.to);
+  EXPECT_EQ(arrows, (std::vector<std::pair<int, int>>{{0, 1}, {0, 2}, {1, 2}, {2, 3}}));
+  EXPECT_EQ(diagram.layers, 4);  // frame, then one group per stage
+}
+
+}  // namespace
+}  // namespace kinestat::report
