@@ -97,3 +97,31 @@ TEST(CrossCheck, LargeSingleGroupsAreOneGroup) {
 
 }  // namespace
 }  // namespace kinestat::structure
+
+namespace kinestat::structure {
+namespace {
+
+TEST(CrossCheck, Eq1AloneAcceptsAChainThatStillMoves) {
+  // Body 6 is driven from the frame. Body 3 has a higher pair with two inputs to the frame
+  // (3 constraints) and a cam with 6 (1 more): 4 constraints on 3 freedoms, over-constrained.
+  // Body 4 hangs on 3 by a revolute and can still turn. The chain {3, 4} satisfies Eq. 1 by
+  // count (S_c 5 - n_c 2 = 3 (3 - 2)), so the seed's search takes it as a group; it is not
+  // one. The matching method reports 3 as over-constrained and 2, 4, 5 as under-constrained.
+  const StructureModel model = model_from_adjacency({{0, 0, 5, 0, 0, 3},
+                                                     {0, 0, 0, 0, 0, 1},
+                                                     {5, 0, 0, 1, 0, 2},
+                                                     {0, 0, 1, 0, 2, 0},
+                                                     {0, 0, 0, 2, 0, 0},
+                                                     {3, 1, 2, 0, 0, 0}});
+  const Decomposition fast = decompose(model);
+  ASSERT_EQ(fast.groups.size(), 1u);
+  EXPECT_EQ(fast.groups[0].bodies, std::vector<int>{5});
+  EXPECT_EQ(fast.undecomposed.over_constrained, std::vector<int>{2});
+  EXPECT_EQ(fast.undecomposed.under_constrained, (std::vector<int>{1, 3, 4}));
+  const Decomposition seed = decompose(model, SearchMethod::seed_search);
+  ASSERT_GE(seed.groups.size(), 2u);
+  EXPECT_EQ(seed.groups[1].bodies, (std::vector<int>{2, 3}));
+}
+
+}  // namespace
+}  // namespace kinestat::structure

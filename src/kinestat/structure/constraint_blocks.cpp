@@ -279,7 +279,7 @@ ConstraintBlocks find_constraint_blocks(const StructureModel& model) {
       global.push_back(b);
     }
   std::vector<std::vector<int>> graph(global.size());
-  std::vector<char> touches_over(global.size(), 0);
+  std::vector<std::vector<int>> over_needed(global.size());
   for (int k = 0; k < pairs; ++k) {
     const Pair& p = model.pairs[k];
     const int ends[2] = {p.a, p.b};
@@ -288,7 +288,7 @@ ConstraintBlocks find_constraint_blocks(const StructureModel& model) {
       if (pair_edge[k][side] < 0 || local[y] < 0) continue;
       const int placed = constraint_units(p, d) - net.residual(pair_edge[k][side]);
       if (placed <= 0 || x == 0) continue;
-      if (over[x]) touches_over[local[y]] = 1;
+      if (over[x]) over_needed[local[y]].push_back(x);
       else if (local[x] >= 0) graph[local[x]].push_back(local[y]);
     }
   }
@@ -297,10 +297,13 @@ ConstraintBlocks find_constraint_blocks(const StructureModel& model) {
   result.blocks.assign(count, {});
   result.predecessors.assign(count, {});
   result.needs_over_constrained.assign(count, false);
+  result.over_predecessors.assign(count, {});
   for (std::size_t i = 0; i < global.size(); ++i) {
     result.blocks[component[i]].push_back(global[i]);
     result.block_of[global[i]] = component[i];
-    if (touches_over[i]) result.needs_over_constrained[component[i]] = true;
+    auto& needed = result.over_predecessors[component[i]];
+    needed.insert(needed.end(), over_needed[i].begin(), over_needed[i].end());
+    if (!over_needed[i].empty()) result.needs_over_constrained[component[i]] = true;
     for (int j : graph[i])
       if (component[j] != component[i]) result.predecessors[component[j]].push_back(component[i]);
   }
@@ -308,6 +311,9 @@ ConstraintBlocks find_constraint_blocks(const StructureModel& model) {
     auto& pred = result.predecessors[c];
     std::sort(pred.begin(), pred.end());
     pred.erase(std::unique(pred.begin(), pred.end()), pred.end());
+    auto& needed = result.over_predecessors[c];
+    std::sort(needed.begin(), needed.end());
+    needed.erase(std::unique(needed.begin(), needed.end()), needed.end());
     for (int q : pred)
       if (result.needs_over_constrained[q]) result.needs_over_constrained[c] = true;  // q < c: already final
   }

@@ -26,9 +26,11 @@ struct ConstraintBlocks {
   std::vector<std::vector<int>> blocks;
   /// Per block: the blocks that must be solved before it (ascending, unique).
   std::vector<std::vector<int>> predecessors;
-  /// Per block: true if it needs a body of the over-constrained part, so that no chain of
-  /// Eq. 1 reaches it.
+  /// Per block: true if it needs a body of the over-constrained part (directly or through
+  /// its predecessors).
   std::vector<bool> needs_over_constrained;
+  /// Per block: the over-constrained bodies it needs directly (ascending, unique).
+  std::vector<std::vector<int>> over_predecessors;
   std::vector<int> over_constrained;   ///< bodies whose freedoms are over-determined
   int redundant_units = 0;             ///< constraints + inputs in excess (over-actuation)
   std::vector<int> under_constrained;  ///< bodies with freedoms no input drives

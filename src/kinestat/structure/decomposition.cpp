@@ -185,6 +185,34 @@ bool satisfies_eq1(const SearchState& state, const std::vector<int>& chain) {
   return P > 0 && Sc - nc == static_cast<long long>(model.dimension) * (P - static_cast<long long>(chain.size()));
 }
 
+// BKCH and PSGGR of the seed: grows the connected chains of unsolved bodies that contain a
+// candidate, one length at a time, and returns the first chain (in ascending order of its
+// sorted bodies) that satisfies Eq. 1. `allowed` restricts the bodies chains may use;
+// `max_length` bounds the search (the number of chains grows exponentially with length).
+std::vector<int> first_eq1_chain(const SearchState& state, const std::function<bool(int)>& allowed, int max_length) {
+  std::set<std::vector<int>> chains;
+  for (int c : state.candidates())
+    if (allowed(c)) chains.insert({c});
+  for (int length = 2; length <= max_length && !chains.empty(); ++length) {
+    std::set<std::vector<int>> longer;
+    for (const auto& chain : chains) {
+      for (int b : chain) {
+        for (int k : state.incident(b)) {
+          const int x = state.other(k, b);
+          if (state.solved(x) || !allowed(x) || std::binary_search(chain.begin(), chain.end(), x)) continue;
+          std::vector<int> grown = chain;
+          grown.insert(std::upper_bound(grown.begin(), grown.end(), x), x);
+          longer.insert(std::move(grown));
+        }
+      }
+    }
+    for (const auto& chain : longer)
+      if (satisfies_eq1(state, chain)) return chain;
+    chains = std::move(longer);
+  }
+  return {};
+}
+
 // The seed's own search (BSGIND, BKCH, PSGGR): every connected chain of unsolved bodies of
 // length 2, 3, ... that contains a candidate is tested with Eq. 1; the first one in
 // ascending order of its sorted body list is the group.
@@ -193,27 +221,7 @@ class SeedSearch final : public GroupOracle {
   explicit SeedSearch(const SearchState& state) : state_(state) {}
   bool is_single_group(int body) override { return satisfies_eq1(state_, {body}); }
   std::vector<int> extended_group() override {
-    std::set<std::vector<int>> chains;
-    for (int c : state_.candidates()) chains.insert({c});
-    const int unsolved = state_.model().body_count() - 1;
-    for (int length = 2; length <= unsolved && !chains.empty(); ++length) {
-      std::set<std::vector<int>> longer;
-      for (const auto& chain : chains) {
-        for (int b : chain) {
-          for (int k : state_.incident(b)) {
-            const int x = state_.other(k, b);
-            if (state_.solved(x) || std::binary_search(chain.begin(), chain.end(), x)) continue;
-            std::vector<int> grown = chain;
-            grown.insert(std::upper_bound(grown.begin(), grown.end(), x), x);
-            longer.insert(std::move(grown));
-          }
-        }
-      }
-      for (const auto& chain : longer)
-        if (satisfies_eq1(state_, chain)) return chain;
-      chains = std::move(longer);
-    }
-    return {};
+    return first_eq1_chain(state_, [](int) { return true; }, state_.model().body_count() - 1);
   }
   void formed(const std::vector<int>&) override {}
 
@@ -223,38 +231,60 @@ class SeedSearch final : public GroupOracle {
 
 // The polynomial method: the groups are the blocks of the constraint assignment, and a
 // block can be formed once the blocks it depends on are solved.
+//
+// Over-constrained part: its redundancy could sit on any of its pairs, so it has no blocks.
+// A chain there whose pairs to solved bodies satisfy Eq. 1 is nevertheless placed by them
+// (as in the seed: the rocker of a four-bar driven at both frame pairs), so single bodies and
+// chains of up to kOverChainLength bodies of that part are tested with Eq. 1 as the seed does
+// (bounded, so the search stays polynomial); blocks that needed them are released once they
+// are solved.
 class MatchingSearch final : public GroupOracle {
  public:
-  MatchingSearch(const StructureModel& model, const ConstraintBlocks& blocks)
-      : blocks_(blocks), pending_(blocks.blocks.size()), successors_(blocks.blocks.size()),
-        eligible_(blocks.blocks.size(), 0), ready_(ReadyOrder{&blocks}) {
+  static constexpr int kOverChainLength = 4;  ///< a class-III group has 4 bodies
+
+  MatchingSearch(const StructureModel& model, const ConstraintBlocks& blocks, const SearchState& state)
+      : blocks_(blocks), state_(state), pending_(blocks.blocks.size()), successors_(blocks.blocks.size()),
+        over_successors_(model.body_count()), eligible_(blocks.blocks.size(), 0), over_(model.body_count(), 0),
+        ready_(ReadyOrder{&blocks}) {
+    for (int b : blocks.over_constrained) over_[b] = 1;
     std::vector<char> on_frame(blocks.blocks.size(), 0);
     for (const Pair& p : model.pairs) {
       if (p.a == 0 && blocks.block_of[p.b] >= 0) on_frame[blocks.block_of[p.b]] = 1;
     }
     for (std::size_t k = 0; k < blocks.blocks.size(); ++k) {
-      pending_[k] = static_cast<int>(blocks.predecessors[k].size());
+      const auto& over_needed = blocks.over_predecessors[k];
+      pending_[k] = static_cast<int>(blocks.predecessors[k].size() + over_needed.size());
       for (int q : blocks.predecessors[k]) successors_[q].push_back(static_cast<int>(k));
+      for (int x : over_needed) over_successors_[x].push_back(static_cast<int>(k));
       // A block with nothing before it and no pair to the frame floats: no chain reaches it.
-      eligible_[k] = !blocks.needs_over_constrained[k] && (pending_[k] > 0 || on_frame[k]);
+      eligible_[k] = pending_[k] > 0 || on_frame[k];
       make_ready_if_possible(static_cast<int>(k));
     }
   }
   bool is_single_group(int body) override {
     const int k = blocks_.block_of[body];
-    return k >= 0 && blocks_.blocks[k].size() == 1 && pending_[k] == 0 && eligible_[k];
+    if (k < 0) return over_[body] && satisfies_eq1(state_, {body});
+    return blocks_.blocks[k].size() == 1 && pending_[k] == 0 && eligible_[k];
   }
   std::vector<int> extended_group() override {
-    if (ready_.empty()) return {};
-    return blocks_.blocks[*ready_.begin()];
+    const std::vector<int>* block = ready_.empty() ? nullptr : &blocks_.blocks[*ready_.begin()];
+    if (!blocks_.over_constrained.empty()) {
+      // The seed takes the shortest chain; among chains of one length, the first in order.
+      const int longest = std::min<int>(kOverChainLength, block ? static_cast<int>(block->size()) : kOverChainLength);
+      std::vector<int> chain = first_eq1_chain(state_, [this](int b) { return over_[b] != 0; }, longest);
+      if (!chain.empty() && (!block || chain.size() < block->size() || chain < *block)) return chain;
+    }
+    return block ? *block : std::vector<int>{};
   }
   void formed(const std::vector<int>& bodies) override {
     const int k = blocks_.block_of[bodies.front()];
-    ready_.erase(k);
-    for (int s : successors_[k]) {
-      --pending_[s];
-      make_ready_if_possible(s);
+    if (k < 0) {  // over-constrained bodies placed by Eq. 1
+      for (int b : bodies)
+        for (int s : over_successors_[b]) release(s);
+      return;
     }
+    ready_.erase(k);
+    for (int s : successors_[k]) release(s);
   }
 
  private:
@@ -267,13 +297,20 @@ class MatchingSearch final : public GroupOracle {
       return bx < by;
     }
   };
+  void release(int k) {
+    --pending_[k];
+    make_ready_if_possible(k);
+  }
   void make_ready_if_possible(int k) {
     if (pending_[k] == 0 && eligible_[k] && blocks_.blocks[k].size() > 1) ready_.insert(k);
   }
   const ConstraintBlocks& blocks_;
-  std::vector<int> pending_;
+  const SearchState& state_;
+  std::vector<int> pending_;  ///< unsolved predecessor blocks and over-constrained bodies
   std::vector<std::vector<int>> successors_;
+  std::vector<std::vector<int>> over_successors_;  ///< per over-constrained body: blocks that need it
   std::vector<char> eligible_;
+  std::vector<char> over_;
   std::set<int, ReadyOrder> ready_;
 };
 
@@ -284,7 +321,7 @@ Decomposition decompose(const StructureModel& model, SearchMethod method) {
   SearchState state(model);
   std::unique_ptr<GroupOracle> oracle;
   if (method == SearchMethod::seed_search) oracle = std::make_unique<SeedSearch>(state);
-  else oracle = std::make_unique<MatchingSearch>(model, blocks);
+  else oracle = std::make_unique<MatchingSearch>(model, blocks, state);
 
   state.isolate_frame();
   std::vector<int> first_level = state.all_candidates();
