@@ -97,7 +97,7 @@ void register_structure(CLI::App& app, Action& action) {
       "structure", "Decompose a mechanism into structural groups (Assur groups) and rank the placements of its inputs");
   command->add_option("model", options->common.model_path,
                       "Model file (kind: structure), or '-' for a matrix or model on standard input");
-  command->add_flag("--stdin", options->from_stdin, "Read a whitespace-separated adjacency matrix from standard input");
+  command->add_flag("--stdin", options->from_stdin, "Read a whitespace-separated adjacency matrix (or a YAML model) from standard input");
   command->add_flag("--json", options->common.json, "Machine-readable JSON instead of text");
   command->add_option("-o,--output", options->common.output_path, "Write to this file instead of standard output");
   command->add_option("--diagram", options->diagram, "Write the structural diagram instead of the report")
@@ -107,7 +107,8 @@ void register_structure(CLI::App& app, Action& action) {
       ->check(CLI::IsMember({"matching", "seed"}));
   command->add_option("--transformations", options->max_transformations,
                       "Analyse the other placements of the inputs when there are at most this many (0: skip)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   command->callback([options, &action] {
     if (options->common.model_path.empty() && !options->from_stdin) {
       throw CLI::RequiredError("model (a file, '-' or --stdin)");

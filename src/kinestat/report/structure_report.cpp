@@ -153,6 +153,8 @@ std::string structure_text(const StructureReport& report) {
                            x.original ? "  (as given)" : "", groups);
       }
       if (shown < t->ranked.size()) out += fmt::format("  ... {} more (see --json)\n", t->ranked.size() - shown);
+      for (std::size_t i = shown; i < t->ranked.size(); ++i)
+        if (t->ranked[i].original) out += fmt::format("  The placement as given ranks {} of {}.\n", i + 1, t->ranked.size());
     }
   }
   return out;
