@@ -1,6 +1,120 @@
-// Placeholder until the structural-group analysis lands; replaced by its real implementation.
+// `kinestat structure FILE`: decomposition of a mechanism into structural groups (seed 004).
+
+#include <cctype>
+#include <iostream>
+#include <iterator>
+#include <memory>
+#include <sstream>
+
 #include "cli/commands.hpp"
+#include "kinestat/io/structure_reader.hpp"
+#include "kinestat/report/structure_report.hpp"
+#include "kinestat/structure/decomposition.hpp"
+#include "kinestat/structure/transformations.hpp"
 
 namespace kinestat::cli {
-void register_structure(CLI::App&, Action&) {}
+
+namespace {
+
+struct StructureOptions {
+  CommonOptions common;
+  bool from_stdin = false;
+  std::string diagram;  ///< empty, "dot" or "svg"
+  std::string method = "matching";
+  std::uint64_t max_transformations = 1000;
+};
+
+// The seed's search enumerates chains, which grows combinatorially; beyond this size it
+// would run for hours, so the option is refused rather than left to hang.
+constexpr int kMaxSeedSearchBodies = 40;
+
+bool starts_with_matrix(const std::string& text) {
+  bool comment = false;
+  for (char c : text) {
+    if (comment) {
+      comment = c != '\n';
+      continue;
+    }
+    if (c == '#') comment = true;
+    else if (!std::isspace(static_cast<unsigned char>(c))) return std::isdigit(static_cast<unsigned char>(c)) || c == '-' || c == '+';
+  }
+  return true;  // empty input: the matrix reader says what is missing
+}
+
+structure::StructureModel read_model(const StructureOptions& options) {
+  if (options.from_stdin || options.common.model_path == "-") {
+    const std::string text{std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>()};
+    // A bare matrix starts with a code (after blank lines and '#' comments); anything else
+    // is read as a YAML model.
+    if (!starts_with_matrix(text)) {
+      const io::YamlFile file = io::YamlFile::parse("<stdin>", text);
+      return io::read_structure_model(file);
+    }
+    return io::read_adjacency_text(text, "<stdin>");
+  }
+  const io::YamlFile file = io::YamlFile::load(options.common.model_path);
+  const std::string kind = io::model_kind(file);
+  if (kind != "structure") {
+    throw io::InputError({file.path(), 1, 1}, "'kinestat structure' reads models of 'kind: structure', found kind '" + kind +
+                                                   "'");
+  }
+  return io::read_structure_model(file);
+}
+
+int run(const StructureOptions& options) {
+  const structure::StructureModel model = read_model(options);
+  const auto method = options.method == "seed" ? structure::SearchMethod::seed_search : structure::SearchMethod::matching;
+  if (method == structure::SearchMethod::seed_search && model.body_count() > kMaxSeedSearchBodies) {
+    throw io::InputError({options.from_stdin ? "<stdin>" : options.common.model_path, 1, 1},
+                         "--method seed enumerates chains and is limited to " + std::to_string(kMaxSeedSearchBodies) +
+                             " bodies; this model has " + std::to_string(model.body_count()) +
+                             " (use the default --method matching)");
+  }
+  const structure::Decomposition decomposition = structure::decompose(model, method);
+  if (options.diagram == "dot") {
+    emit(options.common, report::structure_dot(model, decomposition));
+    return 0;
+  }
+  if (options.diagram == "svg") {
+    emit(options.common, report::structure_svg(model, decomposition));
+    return 0;
+  }
+  std::unique_ptr<structure::TransformationSet> transformations;
+  if (options.max_transformations > 0) {
+    transformations = std::make_unique<structure::TransformationSet>(
+        structure::structural_transformations(model, options.max_transformations));
+  }
+  const report::StructureReport report{model, decomposition, transformations.get(), method};
+  emit(options.common, options.common.json ? report::structure_json(report) : report::structure_text(report));
+  return 0;
+}
+
+}  // namespace
+
+void register_structure(CLI::App& app, Action& action) {
+  auto options = std::make_shared<StructureOptions>();
+  CLI::App* command = app.add_subcommand(
+      "structure", "Decompose a mechanism into structural groups (Assur groups) and rank the placements of its inputs");
+  command->add_option("model", options->common.model_path,
+                      "Model file (kind: structure), or '-' for a matrix or model on standard input");
+  command->add_flag("--stdin", options->from_stdin, "Read a whitespace-separated adjacency matrix (or a YAML model) from standard input");
+  command->add_flag("--json", options->common.json, "Machine-readable JSON instead of text");
+  command->add_option("-o,--output", options->common.output_path, "Write to this file instead of standard output");
+  command->add_option("--diagram", options->diagram, "Write the structural diagram instead of the report")
+      ->check(CLI::IsMember({"dot", "svg"}));
+  command->add_option("--method", options->method,
+                      "Group search: matching (polynomial, default) or seed (the paper's Algorithms 1-3)")
+      ->check(CLI::IsMember({"matching", "seed"}));
+  command->add_option("--transformations", options->max_transformations,
+                      "Analyse the other placements of the inputs when there are at most this many (0: skip)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  command->callback([options, &action] {
+    if (options->common.model_path.empty() && !options->from_stdin) {
+      throw CLI::RequiredError("model (a file, '-' or --stdin)");
+    }
+    action = [options] { return run(*options); };
+  });
+}
+
 }  // namespace kinestat::cli

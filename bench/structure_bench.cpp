@@ -1,0 +1,56 @@
+// Structural-group decomposition on generated planar mechanisms: chains of dyads, triads,
+// cam followers and cranks of 10 to 10,000 bodies, and single large Assur groups (rings),
+// with the polynomial matching method and, where it finishes, the seed's chain search.
+#include <benchmark/benchmark.h>
+
+#include "kinestat/structure/decomposition.hpp"
+#include "kinestat/structure/mechanism_generator.hpp"
+
+namespace {
+
+using namespace kinestat::structure;
+
+void run(benchmark::State& state, const StructureModel& model, SearchMethod method) {
+  for (auto _ : state) {
+    Decomposition d = decompose(model, method);
+    benchmark::DoNotOptimize(d.groups.data());
+    if (!d.complete()) state.SkipWithError("generated mechanism did not decompose");
+  }
+  state.counters["bodies"] = model.body_count();
+  state.counters["pairs"] = static_cast<double>(model.pairs.size());
+  state.SetComplexityN(model.body_count());
+}
+
+void BM_ChainMatching(benchmark::State& state) {
+  const auto g = generate_group_chain(static_cast<int>(state.range(0)), 42, {}, /*shuffle=*/true);
+  run(state, g.model, SearchMethod::matching);
+}
+BENCHMARK(BM_ChainMatching)->Arg(10)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond)->Complexity();
+
+void BM_ChainSeedSearch(benchmark::State& state) {
+  const auto g = generate_group_chain(static_cast<int>(state.range(0)), 42, {}, /*shuffle=*/true);
+  run(state, g.model, SearchMethod::seed_search);
+}
+BENCHMARK(BM_ChainSeedSearch)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMicrosecond);
+
+void BM_RingGroupMatching(benchmark::State& state) {
+  run(state, generate_ring_group(static_cast<int>(state.range(0))).model, SearchMethod::matching);
+}
+BENCHMARK(BM_RingGroupMatching)->Arg(8)->Arg(16)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
+
+void BM_RingGroupSeedSearch(benchmark::State& state) {
+  run(state, generate_ring_group(static_cast<int>(state.range(0))).model, SearchMethod::seed_search);
+}
+BENCHMARK(BM_RingGroupSeedSearch)->Arg(8)->Arg(12)->Arg(16)->Arg(20)->Unit(benchmark::kMicrosecond);
+
+void BM_LadderGroupMatching(benchmark::State& state) {
+  run(state, generate_ladder_group(static_cast<int>(state.range(0))).model, SearchMethod::matching);
+}
+BENCHMARK(BM_LadderGroupMatching)->Arg(3)->Arg(5)->Arg(7)->Arg(500)->Arg(5000)->Unit(benchmark::kMicrosecond);
+
+void BM_LadderGroupSeedSearch(benchmark::State& state) {
+  run(state, generate_ladder_group(static_cast<int>(state.range(0))).model, SearchMethod::seed_search);
+}
+BENCHMARK(BM_LadderGroupSeedSearch)->Arg(3)->Arg(5)->Arg(7)->Arg(9)->Arg(10)->Unit(benchmark::kMicrosecond);
+
+}  // namespace

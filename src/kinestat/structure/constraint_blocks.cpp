@@ -1,0 +1,323 @@
+#include "kinestat/structure/constraint_blocks.hpp"
+
+#include <algorithm>
+#include <array>
+#include <deque>
+
+namespace kinestat::structure {
+
+int constraint_units(const Pair& pair, int dimension) { return dimension - pair.freedoms + pair.inputs; }
+
+namespace {
+
+// Maximum flow by Dinic's algorithm on an adjacency list of paired edges (e, e ^ 1).
+// Augmenting paths can run along a whole mechanism, so the search is iterative.
+class FlowNetwork {
+ public:
+  explicit FlowNetwork(int nodes) : adjacency_(nodes) {}
+
+  int add_edge(int from, int to, int capacity) {
+    const int id = static_cast<int>(to_.size());
+    to_.push_back(to);
+    capacity_.push_back(capacity);
+    adjacency_[from].push_back(id);
+    to_.push_back(from);
+    capacity_.push_back(0);
+    adjacency_[to].push_back(id + 1);
+    return id;
+  }
+
+  void max_flow(int source, int sink) {
+    const int n = static_cast<int>(adjacency_.size());
+    std::vector<int> level(n), next(n);
+    std::vector<int> path;
+    while (levels(source, sink, level)) {
+      std::fill(next.begin(), next.end(), 0);
+      int u = source;
+      path.clear();
+      while (true) {
+        if (u == sink) {
+          int bottleneck = capacity_[path.front()];
+          for (int e : path) bottleneck = std::min(bottleneck, capacity_[e]);
+          for (int e : path) {
+            capacity_[e] -= bottleneck;
+            capacity_[e ^ 1] += bottleneck;
+          }
+          path.clear();
+          u = source;
+          continue;
+        }
+        auto& it = next[u];
+        const auto& edges = adjacency_[u];
+        while (it < static_cast<int>(edges.size()) &&
+               !(capacity_[edges[it]] > 0 && level[to_[edges[it]]] == level[u] + 1))
+          ++it;
+        if (it == static_cast<int>(edges.size())) {
+          if (u == source) break;
+          level[u] = -1;  // dead end for this phase
+          const int back = path.back();
+          path.pop_back();
+          u = to_[back ^ 1];
+          ++next[u];
+          continue;
+        }
+        path.push_back(edges[it]);
+        u = to_[edges[it]];
+      }
+    }
+  }
+
+  /// Sends `amount` along `edge` (an initial, greedy flow; max_flow completes it).
+  void push(int edge, int amount) {
+    capacity_[edge] -= amount;
+    capacity_[edge ^ 1] += amount;
+  }
+  int residual(int edge) const { return capacity_[edge]; }
+  int target(int edge) const { return to_[edge]; }
+  const std::vector<int>& edges(int node) const { return adjacency_[node]; }
+
+ private:
+  bool levels(int source, int sink, std::vector<int>& level) const {
+    std::fill(level.begin(), level.end(), -1);
+    std::deque<int> queue{source};
+    level[source] = 0;
+    while (!queue.empty()) {
+      const int u = queue.front();
+      queue.pop_front();
+      for (int e : adjacency_[u]) {
+        if (capacity_[e] > 0 && level[to_[e]] < 0) {
+          level[to_[e]] = level[u] + 1;
+          queue.push_back(to_[e]);
+        }
+      }
+    }
+    return level[sink] >= 0;
+  }
+
+  std::vector<std::vector<int>> adjacency_;
+  std::vector<int> to_;
+  std::vector<int> capacity_;
+};
+
+// Strongly connected components (Tarjan, iterative). Returns the component of each node;
+// components are numbered so that every edge goes from a lower to a higher or equal number.
+std::vector<int> components_in_topological_order(const std::vector<std::vector<int>>& graph, int& count) {
+  const int n = static_cast<int>(graph.size());
+  std::vector<int> index(n, -1), low(n, 0), component(n, -1), stack, next(n, 0);
+  std::vector<char> on_stack(n, 0);
+  std::vector<int> call;
+  int counter = 0;
+  count = 0;
+  for (int root = 0; root < n; ++root) {
+    if (index[root] >= 0) continue;
+    call.push_back(root);
+    index[root] = low[root] = counter++;
+    stack.push_back(root);
+    on_stack[root] = 1;
+    while (!call.empty()) {
+      const int u = call.back();
+      if (next[u] < static_cast<int>(graph[u].size())) {
+        const int v = graph[u][next[u]++];
+        if (index[v] < 0) {
+          index[v] = low[v] = counter++;
+          stack.push_back(v);
+          on_stack[v] = 1;
+          call.push_back(v);
+        } else if (on_stack[v]) {
+          low[u] = std::min(low[u], index[v]);
+        }
+        continue;
+      }
+      call.pop_back();
+      if (!call.empty()) low[call.back()] = std::min(low[call.back()], low[u]);
+      if (low[u] == index[u]) {
+        int v;
+        do {
+          v = stack.back();
+          stack.pop_back();
+          on_stack[v] = 0;
+          component[v] = count;
+        } while (v != u);
+        ++count;
+      }
+    }
+  }
+  // Tarjan closes a component after everything reachable from it: reverse the numbering.
+  for (int& c : component) c = count - 1 - c;
+  return component;
+}
+
+}  // namespace
+
+ConstraintBlocks find_constraint_blocks(const StructureModel& model) {
+  const int bodies = model.body_count();
+  const int pairs = static_cast<int>(model.pairs.size());
+  const int d = model.dimension;
+  // Nodes: source, sink, one per pair (demand: its constraint units), one per moving body
+  // (capacity: its d freedoms). The frame has no freedoms, so constraints against it must
+  // be absorbed by the other body.
+  const int source = 0, sink = 1, first_pair = 2, first_body = 2 + pairs - 1;  // body b -> first_body + b
+  FlowNetwork net(2 + pairs + std::max(0, bodies - 1));
+  std::vector<int> supply_edge(pairs), body_edge(bodies, -1);
+  std::vector<std::array<int, 2>> pair_edge(pairs, {-1, -1});
+  for (int k = 0; k < pairs; ++k) {
+    const Pair& p = model.pairs[k];
+    const int units = constraint_units(p, d);
+    supply_edge[k] = net.add_edge(source, first_pair + k, units);
+    if (p.a != 0) pair_edge[k][0] = net.add_edge(first_pair + k, first_body + p.a, units);
+    if (p.b != 0) pair_edge[k][1] = net.add_edge(first_pair + k, first_body + p.b, units);
+  }
+  for (int b = 1; b < bodies; ++b) body_edge[b] = net.add_edge(first_body + b, sink, d);
+  // A greedy start leaves few augmenting paths for Dinic. In a mechanism built of groups,
+  // a pair's constraints belong to the body solved later, which is usually the one farther
+  // from the frame: visit pairs outward from the frame and give their constraints to the
+  // farther end first.
+  std::vector<int> distance(bodies, -1);
+  {
+    std::vector<std::vector<int>> neighbours(bodies);
+    for (const Pair& p : model.pairs) {
+      neighbours[p.a].push_back(p.b);
+      neighbours[p.b].push_back(p.a);
+    }
+    std::deque<int> queue{0};
+    if (bodies > 0) distance[0] = 0;
+    while (!queue.empty()) {
+      const int u = queue.front();
+      queue.pop_front();
+      for (int v : neighbours[u])
+        if (distance[v] < 0) {
+          distance[v] = distance[u] + 1;
+          queue.push_back(v);
+        }
+    }
+  }
+  std::vector<int> outward(pairs);
+  for (int k = 0; k < pairs; ++k) outward[k] = k;
+  auto near_end = [&](int k) {
+    const Pair& p = model.pairs[k];
+    const int da = distance[p.a] < 0 ? bodies : distance[p.a], db = distance[p.b] < 0 ? bodies : distance[p.b];
+    return std::min(da, db);
+  };
+  std::stable_sort(outward.begin(), outward.end(), [&](int x, int y) { return near_end(x) < near_end(y); });
+  for (int k : outward) {
+    const Pair& p = model.pairs[k];
+    const bool b_farther = distance[p.b] >= distance[p.a];
+    for (int side : {b_farther ? 1 : 0, b_farther ? 0 : 1}) {
+      const int body = side == 0 ? p.a : p.b;
+      if (pair_edge[k][side] < 0) continue;
+      const int amount = std::min(net.residual(supply_edge[k]), net.residual(body_edge[body]));
+      if (amount <= 0) continue;
+      net.push(supply_edge[k], amount);
+      net.push(pair_edge[k][side], amount);
+      net.push(body_edge[body], amount);
+    }
+  }
+  net.max_flow(source, sink);
+
+  ConstraintBlocks result;
+  result.block_of.assign(bodies, -1);
+  const int nodes = 2 + pairs + std::max(0, bodies - 1);
+
+  // Over-constrained: everything reachable in the residual network from a pair whose
+  // constraints could not all be placed.
+  std::vector<char> seen(nodes, 0);
+  std::deque<int> queue;
+  for (int k = 0; k < pairs; ++k) {
+    const int excess = net.residual(supply_edge[k]);
+    if (excess > 0) {
+      result.redundant_units += excess;
+      seen[first_pair + k] = 1;
+      queue.push_back(first_pair + k);
+    }
+  }
+  while (!queue.empty()) {
+    const int u = queue.front();
+    queue.pop_front();
+    for (int e : net.edges(u)) {
+      const int v = net.target(e);
+      if (v == source || v == sink || seen[v] || net.residual(e) <= 0) continue;
+      seen[v] = 1;
+      queue.push_back(v);
+    }
+  }
+  std::vector<char> over(bodies, 0), under(bodies, 0);
+  for (int b = 1; b < bodies; ++b) over[b] = seen[first_body + b];
+
+  // Under-constrained: everything that reaches, in the residual network, a body with
+  // freedoms left over (its constraints could be moved to free one of them).
+  std::fill(seen.begin(), seen.end(), 0);
+  for (int b = 1; b < bodies; ++b) {
+    const int spare = net.residual(body_edge[b]);
+    if (spare > 0) {
+      result.missing_units += spare;
+      seen[first_body + b] = 1;
+      queue.push_back(first_body + b);
+    }
+  }
+  while (!queue.empty()) {
+    const int v = queue.front();
+    queue.pop_front();
+    for (int e : net.edges(v)) {
+      const int u = net.target(e);  // edge e ^ 1 runs u -> v
+      if (u == source || u == sink || seen[u] || net.residual(e ^ 1) <= 0) continue;
+      seen[u] = 1;
+      queue.push_back(u);
+    }
+  }
+  for (int b = 1; b < bodies; ++b) under[b] = seen[first_body + b];
+  for (int b = 1; b < bodies; ++b) {
+    if (over[b]) result.over_constrained.push_back(b);
+    if (under[b]) result.under_constrained.push_back(b);
+  }
+
+  // Dependencies among the well-constrained bodies: a constraint placed on body y that also
+  // involves body x needs x known first (x -> y). Mutual dependence makes one block.
+  std::vector<int> local(bodies, -1), global;
+  for (int b = 1; b < bodies; ++b)
+    if (!over[b] && !under[b]) {
+      local[b] = static_cast<int>(global.size());
+      global.push_back(b);
+    }
+  std::vector<std::vector<int>> graph(global.size());
+  std::vector<std::vector<int>> over_needed(global.size());
+  for (int k = 0; k < pairs; ++k) {
+    const Pair& p = model.pairs[k];
+    const int ends[2] = {p.a, p.b};
+    for (int side = 0; side < 2; ++side) {
+      const int y = ends[side], x = ends[1 - side];
+      if (pair_edge[k][side] < 0 || local[y] < 0) continue;
+      const int placed = constraint_units(p, d) - net.residual(pair_edge[k][side]);
+      if (placed <= 0 || x == 0) continue;
+      if (over[x]) over_needed[local[y]].push_back(x);
+      else if (local[x] >= 0) graph[local[x]].push_back(local[y]);
+    }
+  }
+  int count = 0;
+  const std::vector<int> component = components_in_topological_order(graph, count);
+  result.blocks.assign(count, {});
+  result.predecessors.assign(count, {});
+  result.needs_over_constrained.assign(count, false);
+  result.over_predecessors.assign(count, {});
+  for (std::size_t i = 0; i < global.size(); ++i) {
+    result.blocks[component[i]].push_back(global[i]);
+    result.block_of[global[i]] = component[i];
+    auto& needed = result.over_predecessors[component[i]];
+    needed.insert(needed.end(), over_needed[i].begin(), over_needed[i].end());
+    if (!over_needed[i].empty()) result.needs_over_constrained[component[i]] = true;
+    for (int j : graph[i])
+      if (component[j] != component[i]) result.predecessors[component[j]].push_back(component[i]);
+  }
+  for (int c = 0; c < count; ++c) {
+    auto& pred = result.predecessors[c];
+    std::sort(pred.begin(), pred.end());
+    pred.erase(std::unique(pred.begin(), pred.end()), pred.end());
+    auto& needed = result.over_predecessors[c];
+    std::sort(needed.begin(), needed.end());
+    needed.erase(std::unique(needed.begin(), needed.end()), needed.end());
+    for (int q : pred)
+      if (result.needs_over_constrained[q]) result.needs_over_constrained[c] = true;  // q < c: already final
+  }
+  return result;
+}
+
+}  // namespace kinestat::structure
