@@ -81,10 +81,12 @@ class FrameworkReader {
       if (index_.count(name)) file_.fail(entry.first, fmt::format("duplicate node name '{}'", name));
       Node node;
       node.name = name;
-      YAML::Node position = entry.second;
-      if (entry.second.IsMap()) {
-        file_.check_keys(entry.second, fmt::format("node '{}'", name), {"position", "orientation"});
-        position = file_.required(entry.second, "position", fmt::format("node '{}'", name));
+      // (yaml-cpp nodes have reference semantics: never assign one node over another.)
+      const bool detailed = entry.second.IsMap();
+      if (detailed) file_.check_keys(entry.second, fmt::format("node '{}'", name), {"position", "orientation"});
+      const YAML::Node position =
+          detailed ? file_.required(entry.second, "position", fmt::format("node '{}'", name)) : entry.second;
+      if (detailed) {
         if (auto orientation = file_.optional(entry.second, "orientation"); orientation.IsDefined()) {
           if (model_.dimension == 2) file_.fail(orientation, "a planar node has no orientation: its rotation is about z");
           node.triad = triad(orientation, fmt::format("the orientation of node '{}'", name));
