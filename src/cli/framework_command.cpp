@@ -11,12 +11,12 @@ namespace kinestat::cli {
 
 namespace {
 // Framework-only options; filled by register_framework_options before the action runs.
-long long dense_limit = 3000;
+long long dense_limit = 1500;
 }  // namespace
 
 void register_framework_options(CLI::App& analyze) {
   analyze.add_option("--dense-limit", dense_limit,
-                     "Frameworks: largest matrix dimension analysed with the dense SVD (larger: sparse QR counts only)")
+                     "Frameworks: largest matrix dimension analysed with the dense SVD (larger: sparse QR counts only); default 1500")
       ->check(CLI::NonNegativeNumber);
 }
 

@@ -106,3 +106,25 @@ elements: [{type: truss, nodes: [A, C]}, {type: truss, nodes: [C, B]}]
 
 }  // namespace
 }  // namespace kinestat::framework
+
+namespace kinestat::framework {
+namespace {
+
+TEST(SparsePath, SparseQrCountsAgreeWithTheSvd) {
+  // The counts-only path for large models must give the SVD's answer.
+  for (const char* name : {"truss-12.yaml", "wire-flexure-guide.yaml", "folded-sheet-guide-5-symmetric.yaml",
+                           "folded-sheet-guide-6.yaml", "braced-square.yaml", "cube-frame.yaml", "simplex-tensegrity.yaml"}) {
+    const FrameworkModel model = testing::load_example(name);
+    AnalysisOptions sparse;
+    sparse.dense_limit = 0;
+    const FrameworkAnalysis a = analyse_framework(model), b = analyse_framework(model, sparse);
+    EXPECT_EQ(b.method, RankMethod::sparse_qr);
+    EXPECT_EQ(a.rank, b.rank) << name;
+    EXPECT_EQ(a.mechanisms, b.mechanisms) << name;
+    EXPECT_EQ(a.self_stresses, b.self_stresses) << name;
+    EXPECT_FALSE(b.vectors);
+  }
+}
+
+}  // namespace
+}  // namespace kinestat::framework

@@ -18,7 +18,7 @@ struct AnalysisOptions {
   linalg::RankTolerance tolerance;  ///< relative to σ_max of the non-dimensional D(c)
   /// Largest max(m, n) analysed with a dense SVD; larger models get counts from a sparse QR
   /// (no singular values, modes or stress states).
-  Eigen::Index dense_limit = 3000;
+  Eigen::Index dense_limit = 1500;
   bool vectors = true;  ///< compute modes, stress states and the design proposal (dense path only)
 };
 
