@@ -106,7 +106,9 @@ nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const 
   else decision["gap"] = nullptr;
   decision["close"] = d.close();
   j["rank_decision"] = decision;
-  j["relative_smallest_singular_value"] = rounded(a.relative_smallest_singular_value());
+  // Unknown (null) on the sparse path, which computes no singular values.
+  if (a.singular_values.size() == 0 && a.m > 0 && a.n > 0) j["relative_smallest_singular_value"] = nullptr;
+  else j["relative_smallest_singular_value"] = rounded(a.relative_smallest_singular_value());
   j["singular_values"] = nlohmann::ordered_json::array();
   for (Eigen::Index i = 0; i < a.singular_values.size(); ++i) j["singular_values"].push_back(significant(a.singular_values(i)));
   j["row_labels"] = nlohmann::ordered_json::array();
