@@ -167,3 +167,40 @@ TEST(StraightGuide, SixFoldedSheetFlexuresAreOverConstrainedWithBendingInAllShee
 
 }  // namespace
 }  // namespace kinestat::framework
+
+namespace kinestat::framework {
+namespace {
+
+TEST(StraightGuide, PlanarParallelLeafSpringGuide) {
+  // Two parallel planar leaf springs (bending released, elongation rigid) carry a rigid stage:
+  // each spring is one constraint along itself, so the stage keeps one freedom, translation
+  // along x. Rows: 2 elongations + 2 x 3 rigid-body coordinates; columns: C, D (3 each) and the
+  // stage node S without its declared x: 8 x 8.
+  const std::string text = R"(kinestat: 1
+kind: framework
+dimension: 2
+nodes: {A: [0, 0], B: [2, 0], C: [0, 5], D: [2, 5], S: [1, 5]}
+supports: {A: fixed, B: fixed}
+independent: {S: [x]}
+elements:
+  - {type: beam, nodes: [A, C], released: [bending]}
+  - {type: beam, nodes: [B, D], released: [bending]}
+  - {name: stage, type: rigid_body, nodes: [S, C, D]}
+)";
+  FrameworkModel model = testing::parse_model(text);
+  const FrameworkAnalysis a = analyse_framework(model);
+  EXPECT_EQ(a.m, 8);
+  EXPECT_EQ(a.n, 8);
+  EXPECT_TRUE(a.exactly_constrained());
+  model.nodes[4].roles[0] = CoordinateRole::dependent;
+  const FrameworkAnalysis free = analyse_framework(model);
+  ASSERT_EQ(free.mechanisms, 1);
+  for (Eigen::Index j = 0; j < free.n; ++j) {
+    const std::string label = report::framework_column_label(model, free, j);
+    const bool x = label.substr(label.size() - 2) == ".x";
+    EXPECT_NEAR(free.modes[0].velocities(j), x ? 1.0 / std::sqrt(3.0) : 0.0, 1e-12) << label;
+  }
+}
+
+}  // namespace
+}  // namespace kinestat::framework
