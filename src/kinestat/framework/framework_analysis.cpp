@@ -118,7 +118,13 @@ FrameworkAnalysis analyse_framework(const FrameworkModel& model, const AnalysisO
     // One minimal set of releases: the rows a column-pivoted QR of D(c)ᵀ leaves out of a basis
     // of the row space; then, among the kept rows, the columns left out of a column basis are
     // the coordinates to constrain. Removing both leaves a square non-singular D(c).
-    auto [kept_rows, released] = pivot_columns(transposed, rank);
+    // Rows of independent deformations (ε^m) are weighted up so that the pivoting keeps them
+    // whenever it has a choice: the proposal should release rigid deformations, not demote a
+    // generalised coordinate. Weighting columns changes neither rank nor spans.
+    Eigen::MatrixXd weighted = transposed;
+    const double weight = 1e3 * std::max(1.0, transposed.cwiseAbs().maxCoeff());
+    for (Eigen::Index i = fixed_rows; i < weighted.cols(); ++i) weighted.col(i) *= weight;
+    auto [kept_rows, released] = pivot_columns(weighted, rank);
     result.releases = released;
     Eigen::MatrixXd kept(static_cast<Eigen::Index>(kept_rows.size()), dense.cols());
     for (std::size_t i = 0; i < kept_rows.size(); ++i) kept.row(static_cast<Eigen::Index>(i)) = dense.row(kept_rows[i]);
