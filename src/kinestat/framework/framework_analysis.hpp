@@ -1,0 +1,78 @@
+#pragma once
+// Exact-constraint analysis of seed 002, section 3: rank of D(c) from its SVD, the class of
+// Table 1, kinematically indeterminate modes (from V) and statically indeterminate stress
+// states (from U), plus design help: which deformations to release and which coordinates to
+// constrain (or declare independent) to reach exact constraint.
+
+#include <Eigen/Core>
+
+#include <vector>
+
+#include "kinestat/framework/framework_jacobian.hpp"
+#include "kinestat/framework/framework_model.hpp"
+#include "kinestat/linalg/rank_decision.hpp"
+
+namespace kinestat::framework {
+
+struct AnalysisOptions {
+  linalg::RankTolerance tolerance;  ///< relative to σ_max of the non-dimensional D(c)
+  /// Largest max(m, n) analysed with a dense SVD; larger models get counts from a sparse QR
+  /// (no singular values, modes or stress states).
+  Eigen::Index dense_limit = 1500;
+  bool vectors = true;  ///< compute modes, stress states and the design proposal (dense path only)
+};
+
+enum class RankMethod { dense_svd, sparse_qr };
+
+/// A kinematically indeterminate mode: rates of the dependent coordinates (columns of D(c)),
+/// non-dimensional (translations divided by the characteristic length, rotations in rad),
+/// unit 2-norm, largest-magnitude component positive.
+struct KinematicMode {
+  Eigen::VectorXd velocities;
+  std::vector<Eigen::Index> moving;  ///< columns of D(c) with a non-zero rate
+};
+
+/// A statically indeterminate stress state: generalised stress resultants dual to the rows of
+/// D(c) (ε° then ε^m), non-dimensional, unit 2-norm, largest-magnitude component positive.
+struct StressState {
+  Eigen::VectorXd resultants;
+  std::vector<Eigen::Index> candidates;  ///< rows of D(c) that are fixed deformations with non-zero resultant
+};
+
+struct FrameworkAnalysis {
+  FrameworkIndexing indexing;
+  FrameworkPartition partition;
+  ConstraintCount count;
+  std::vector<Eigen::Index> rows;  ///< deformation index of each row of D(c)
+  double length = 1.0;             ///< characteristic length used to non-dimensionalise D(c)
+  RankMethod method = RankMethod::dense_svd;
+  Eigen::Index m = 0, n = 0, rank = 0;
+  linalg::RankDecision decision;
+  Eigen::VectorXd singular_values;  ///< min(m, n) values, decreasing (dense path only)
+  Eigen::Index mechanisms = 0;      ///< n − rank: kinematically indeterminate modes
+  Eigen::Index self_stresses = 0;   ///< m − rank: statically indeterminate stress states
+  bool vectors = false;             ///< modes, stresses and the proposal below were computed
+  std::vector<KinematicMode> modes;
+  std::vector<StressState> stresses;
+  std::vector<Eigen::Index> releases;   ///< rows of D(c) to release (make dependent)
+  std::vector<Eigen::Index> constrain;  ///< columns of D(c) to fix or declare independent
+
+  bool statically_determinate() const { return self_stresses == 0; }
+  bool kinematically_determinate() const { return mechanisms == 0; }
+  bool exactly_constrained() const { return self_stresses == 0 && mechanisms == 0; }
+  /// σ_min / σ_max over the min(m, n) singular values: how close the design is to singular
+  /// (0 when rank deficient or when no singular values were computed; 1 for an empty D(c)).
+  double relative_smallest_singular_value() const;
+};
+
+/// Component magnitudes below this (of a unit-norm mode or stress state) count as zero.
+inline constexpr double kModeZero = 1e-9;
+
+/// Runs the analysis of seed 002 on `model`.
+FrameworkAnalysis analyse_framework(const FrameworkModel& model, const AnalysisOptions& options = {});
+
+/// The model with the proposal of `analysis` applied: its releases become released
+/// deformations and its constrained columns become independent coordinates.
+FrameworkModel apply_proposal(const FrameworkModel& model, const FrameworkAnalysis& analysis);
+
+}  // namespace kinestat::framework

@@ -1,0 +1,349 @@
+#include "kinestat/io/framework_reader.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+namespace kinestat::io {
+
+using framework::CoordinateRole;
+using framework::DeformationRole;
+using framework::Element;
+using framework::ElementType;
+using framework::FrameworkModel;
+using framework::Node;
+
+namespace {
+
+std::string join(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& name : names) out += (out.empty() ? "" : ", ") + name;
+  return out;
+}
+
+class FrameworkReader {
+ public:
+  explicit FrameworkReader(const YamlFile& file) : file_(file) {}
+
+  FrameworkModel read() {
+    const YAML::Node& root = file_.root();
+    file_.check_keys(root, "the framework model",
+                     {"kinestat", "kind", "name", "description", "dimension", "nodes", "supports", "independent", "elements"});
+    if (auto name = file_.optional(root, "name"); name.IsDefined()) model_.name = file_.string(name, "'name'");
+    if (auto dimension = file_.optional(root, "dimension"); dimension.IsDefined()) {
+      const long long d = file_.integer(dimension, "'dimension'");
+      if (d != 2 && d != 3) file_.fail(dimension, "'dimension' must be 3 (spatial) or 2 (planar)");
+      model_.dimension = static_cast<int>(d);
+    }
+    read_nodes(file_.required(root, "nodes", "the framework model"));
+    const YAML::Node elements = file_.required(root, "elements", "the framework model");
+    file_.expect_sequence(elements, "'elements'");
+    element_nodes_.clear();
+    for (const auto& item : elements) read_element(item);
+    for (std::size_t e = 0; e < model_.elements.size(); ++e) set_frame(e);
+    if (auto supports = file_.optional(root, "supports"); supports.IsDefined()) read_supports(supports);
+    if (auto independent = file_.optional(root, "independent"); independent.IsDefined()) read_independent(independent);
+    return model_;
+  }
+
+ private:
+  Eigen::Vector3d vector3(const YAML::Node& node, std::string_view what) const {
+    const auto values = file_.numbers(node, what, {3});
+    return {values[0].value, values[1].value, values[2].value};
+  }
+
+  // A triad given as three rows: the x, y and z axes in global coordinates. Returns the
+  // matrix whose columns are those axes.
+  Eigen::Matrix3d triad(const YAML::Node& node, std::string_view what) const {
+    file_.expect_sequence(node, what);
+    if (node.size() != 3) file_.fail(node, fmt::format("{} must be three axes [[x], [y], [z]], found {} entries", what, node.size()));
+    Eigen::Matrix3d axes;
+    for (std::size_t i = 0; i < 3; ++i) axes.col(static_cast<Eigen::Index>(i)) = vector3(node[i], what);
+    const double deviation = (axes.transpose() * axes - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
+    if (!(deviation <= kOrientationTolerance)) {
+      file_.fail(node, fmt::format("{} is not orthonormal: the axes deviate from unit length or right angles by {:.3g}",
+                                   what, deviation));
+    }
+    if (axes.determinant() < 0) file_.fail(node, fmt::format("{} is left-handed: z must be x × y", what));
+    return axes;
+  }
+
+  void read_nodes(const YAML::Node& nodes) {
+    file_.expect_map(nodes, "'nodes'");
+    if (nodes.size() == 0) file_.fail(nodes, "'nodes' is empty: a framework needs at least one node");
+    for (const auto& entry : nodes) {
+      const std::string name = file_.string(entry.first, "a node name");
+      if (index_.count(name)) file_.fail(entry.first, fmt::format("duplicate node name '{}'", name));
+      Node node;
+      node.name = name;
+      // (yaml-cpp nodes have reference semantics: never assign one node over another.)
+      const bool detailed = entry.second.IsMap();
+      if (detailed) file_.check_keys(entry.second, fmt::format("node '{}'", name), {"position", "orientation"});
+      const YAML::Node position =
+          detailed ? file_.required(entry.second, "position", fmt::format("node '{}'", name)) : entry.second;
+      if (detailed) {
+        if (auto orientation = file_.optional(entry.second, "orientation"); orientation.IsDefined()) {
+          if (model_.dimension == 2) file_.fail(orientation, "a planar node has no orientation: its rotation is about z");
+          node.triad = triad(orientation, fmt::format("the orientation of node '{}'", name));
+          node.rotational = true;
+        }
+      }
+      const auto what = fmt::format("the position of node '{}'", name);
+      const auto values = file_.numbers(position, what, {static_cast<std::size_t>(model_.dimension)});
+      for (std::size_t i = 0; i < values.size(); ++i) node.position(static_cast<Eigen::Index>(i)) = values[i].value;
+      index_[name] = model_.nodes.size();
+      model_.nodes.push_back(std::move(node));
+    }
+    length_ = framework::characteristic_length(model_);
+  }
+
+  std::size_t node_index(const YAML::Node& item) const {
+    const std::string name = file_.string(item, "a node name");
+    const auto found = index_.find(name);
+    if (found == index_.end()) file_.fail(item, fmt::format("unknown node '{}'", name));
+    return found->second;
+  }
+
+  // Deformation names and the groups a `released:` or `independent:` list may use.
+  std::map<std::string, std::vector<std::size_t>> deformation_groups(const Element& element) const {
+    std::map<std::string, std::vector<std::size_t>> groups;
+    const auto names = framework::deformation_names(model_, element);
+    for (std::size_t k = 0; k < names.size(); ++k) groups[names[k]] = {k};
+    if (element.type == ElementType::beam) {
+      for (std::size_t k = 0; k < names.size(); ++k) groups[fmt::format("e{}", k + 1)] = {k};
+      if (model_.dimension == 3) {
+        groups["bending"] = {2, 3, 4, 5};
+        groups["bending_xz"] = {2, 3};
+        groups["bending_xy"] = {4, 5};
+      } else {
+        groups["bending"] = {1, 2};
+      }
+    } else if (element.type == ElementType::truss) {
+      groups["e1"] = {0};
+    } else {
+      const std::size_t per_node = model_.dimension == 2 ? 3 : 6;
+      for (std::size_t k = 1; k < element.nodes.size(); ++k)
+        for (std::size_t i = 0; i < per_node; ++i) groups[model_.nodes[element.nodes[k]].name].push_back((k - 1) * per_node + i);
+    }
+    return groups;
+  }
+
+  void read_roles(const YAML::Node& list, Element& element, DeformationRole role, std::string_view what) {
+    file_.expect_sequence(list, what);
+    const auto groups = deformation_groups(element);
+    for (const auto& item : list) {
+      const std::string name = file_.string(item, "a deformation name");
+      const auto found = groups.find(name);
+      if (found == groups.end()) {
+        file_.fail(item, fmt::format("element '{}' ({}) has no deformation '{}'; it has: {}", element.name,
+                                     type_name(element.type), name,
+                                     join(framework::deformation_names(model_, element))));
+      }
+      for (std::size_t k : found->second) {
+        // An independent deformation is also released; `released:` never demotes it.
+        if (role == DeformationRole::released && element.roles[k] == DeformationRole::independent) continue;
+        element.roles[k] = role;
+      }
+    }
+  }
+
+  std::string type_name(ElementType type) const {
+    switch (type) {
+      case ElementType::truss: return model_.dimension == 2 ? "planar truss" : "truss";
+      case ElementType::beam: return model_.dimension == 2 ? "planar beam" : "beam";
+      case ElementType::rigid_body: return "rigid body";
+    }
+    return "element";
+  }
+
+  void read_element(const YAML::Node& item) {
+    const std::string label = fmt::format("element {}", model_.elements.size() + 1);
+    file_.check_keys(item, label, {"type", "name", "nodes", "released", "independent", "orientation", "torsion_coupling"});
+    Element element;
+    element.name = std::to_string(model_.elements.size() + 1);
+    if (auto name = file_.optional(item, "name"); name.IsDefined()) element.name = file_.string(name, "an element name");
+    if (!element_names_.insert(element.name).second) file_.fail(item, fmt::format("duplicate element name '{}'", element.name));
+    const YAML::Node type = file_.required(item, "type", label);
+    const std::string type_text = file_.string(type, "an element type");
+    if (type_text == "truss") element.type = ElementType::truss;
+    else if (type_text == "beam") element.type = ElementType::beam;
+    else if (type_text == "rigid_body") element.type = ElementType::rigid_body;
+    else file_.fail(type, fmt::format("unknown element type '{}'; expected truss, beam or rigid_body", type_text));
+
+    const YAML::Node nodes = file_.required(item, "nodes", label);
+    file_.expect_sequence(nodes, fmt::format("the nodes of element '{}'", element.name));
+    for (const auto& n : nodes) {
+      const std::size_t index = node_index(n);
+      if (std::find(element.nodes.begin(), element.nodes.end(), index) != element.nodes.end())
+        file_.fail(n, fmt::format("node '{}' appears twice in element '{}'", model_.nodes[index].name, element.name));
+      element.nodes.push_back(index);
+    }
+    if (element.type == ElementType::rigid_body) {
+      if (element.nodes.size() < 2) file_.fail(nodes, "a rigid body needs at least two nodes (the first is its reference node)");
+    } else if (element.nodes.size() != 2) {
+      file_.fail(nodes, fmt::format("a {} connects exactly two nodes, found {}", type_text, element.nodes.size()));
+    } else {
+      const double l = (model_.nodes[element.nodes[1]].position - model_.nodes[element.nodes[0]].position).norm();
+      if (!(l > kZeroLength * length_)) {
+        file_.fail(nodes, fmt::format("zero-length element '{}': nodes '{}' and '{}' coincide", element.name,
+                                      model_.nodes[element.nodes[0]].name, model_.nodes[element.nodes[1]].name));
+      }
+    }
+    if (element.type != ElementType::truss)
+      for (std::size_t n : element.nodes) model_.nodes[n].rotational = true;
+
+    if (auto c = file_.optional(item, "torsion_coupling"); c.IsDefined()) {
+      if (element.type != ElementType::beam || model_.dimension != 3)
+        file_.fail(c, "'torsion_coupling' applies to spatial beams only");
+      element.torsion_coupling = file_.number(c, "'torsion_coupling'").value;
+    }
+    element.roles.assign(framework::deformation_count(model_.dimension, element), DeformationRole::fixed);
+    if (auto independent = file_.optional(item, "independent"); independent.IsDefined())
+      read_roles(independent, element, DeformationRole::independent, "'independent' deformations");
+    if (auto released = file_.optional(item, "released"); released.IsDefined())
+      read_roles(released, element, DeformationRole::released, "'released' deformations");
+    orientations_.push_back(file_.optional(item, "orientation"));
+    element_nodes_.push_back(nodes);
+    model_.elements.push_back(std::move(element));
+  }
+
+  // The element triad of a beam (eq 4): local x from p to q, y and z across the section.
+  void set_frame(std::size_t e) {
+    Element& element = model_.elements[e];
+    const YAML::Node& orientation = orientations_[e];
+    if (element.type != ElementType::beam) {
+      if (orientation.IsDefined()) file_.fail(orientation, "only beams have an orientation");
+      return;
+    }
+    const Node& p = model_.nodes[element.nodes[0]];
+    const Eigen::Vector3d x = (model_.nodes[element.nodes[1]].position - p.position).normalized();
+    if (model_.dimension == 2) {
+      if (orientation.IsDefined()) file_.fail(orientation, "a planar beam takes its orientation from the plane (local z = global z)");
+      element.frame << x, Eigen::Vector3d::UnitZ().cross(x), Eigen::Vector3d::UnitZ();
+      return;
+    }
+    const std::string what = fmt::format("the orientation of element '{}'", element.name);
+    if (orientation.IsDefined() && orientation.IsMap()) {
+      file_.check_keys(orientation, what, {"y", "z"});
+      if (orientation.size() != 1) file_.fail(orientation, fmt::format("{} gives exactly one of y or z", what));
+      const bool is_y = file_.optional(orientation, "y").IsDefined();
+      const YAML::Node axis_node = is_y ? file_.optional(orientation, "y") : file_.optional(orientation, "z");
+      const Eigen::Vector3d axis = vector3(axis_node, what);
+      if (!(axis.norm() > 0)) file_.fail(axis_node, fmt::format("{}: the axis is the zero vector", what));
+      const Eigen::Vector3d unit = axis.normalized();
+      const double cosine = unit.dot(x);
+      if (!(std::abs(cosine) <= kOrientationTolerance)) {
+        file_.fail(axis_node, fmt::format("{}: local {} must be perpendicular to the element axis from '{}' to '{}' (cosine {:.3g})",
+                                          what, is_y ? "y" : "z", p.name, model_.nodes[element.nodes[1]].name, cosine));
+      }
+      if (is_y) element.frame << x, unit, x.cross(unit);
+      else element.frame << x, unit.cross(x), unit;
+      return;
+    }
+    if (orientation.IsDefined()) {
+      element.frame = triad(orientation, what);
+      check_along(element.frame.col(0), x, orientation, what, element);
+      return;
+    }
+    if (p.triad) {
+      check_along(p.triad->col(0), x, element_nodes_[e], fmt::format("the orientation of node '{}'", p.name), element);
+      element.frame = *p.triad;
+      return;
+    }
+    // Default: local z is the global z axis made perpendicular to the element (global x for
+    // elements along z); see docs/framework.md.
+    const Eigen::Vector3d reference = std::abs(x.z()) < 0.9 ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitX();
+    const Eigen::Vector3d z = (reference - reference.dot(x) * x).normalized();
+    element.frame << x, z.cross(x), z;
+  }
+
+  void check_along(const Eigen::Vector3d& axis, const Eigen::Vector3d& x, const YAML::Node& where, const std::string& what,
+                   const Element& element) const {
+    if (!((axis - x).cwiseAbs().maxCoeff() <= kOrientationTolerance)) {
+      file_.fail(where, fmt::format("{}: its x axis must point along element '{}' from '{}' to '{}' (give the element an "
+                                    "orientation)", what, element.name, model_.nodes[element.nodes[0]].name,
+                                    model_.nodes[element.nodes[1]].name));
+    }
+  }
+
+  // Slots named in a support or independent list.
+  std::vector<int> slots(const YAML::Node& value, const Node& node, bool allow_keywords) const {
+    const std::vector<int> available = framework::node_slots(model_.dimension, node);
+    if (allow_keywords && value.IsScalar()) {
+      const std::string word = value.Scalar();
+      if (word == "fixed") return available;
+      if (word == "pinned") {
+        std::vector<int> translations;
+        for (int s : available)
+          if (framework::is_translation(s)) translations.push_back(s);
+        return translations;
+      }
+      file_.fail(value, fmt::format("unknown support '{}'; expected fixed, pinned or a list of coordinates", word));
+    }
+    file_.expect_sequence(value, fmt::format("the coordinates of node '{}'", node.name));
+    std::vector<int> result;
+    for (const auto& item : value) {
+      const std::string name = file_.string(item, "a coordinate name");
+      const auto found = std::find(framework::kSlotNames.begin(), framework::kSlotNames.end(), name);
+      const int slot = found == framework::kSlotNames.end() ? -1 : static_cast<int>(found - framework::kSlotNames.begin());
+      if (slot < 0) file_.fail(item, fmt::format("unknown coordinate '{}'; expected x, y, z, rx, ry or rz", name));
+      if (std::find(available.begin(), available.end(), slot) == available.end()) {
+        if (model_.dimension == 2 && (slot == 2 || slot == 3 || slot == 4))
+          file_.fail(item, fmt::format("a planar model has no coordinate '{}'", name));
+        file_.fail(item, fmt::format("node '{}' has no rotational coordinate '{}': only nodes of beams, rigid bodies or with an "
+                                     "orientation rotate", node.name, name));
+      }
+      result.push_back(slot);
+    }
+    return result;
+  }
+
+  void read_supports(const YAML::Node& supports) {
+    file_.expect_map(supports, "'supports'");
+    std::set<std::size_t> seen;
+    for (const auto& entry : supports) {
+      const std::size_t n = node_index(entry.first);
+      if (!seen.insert(n).second) file_.fail(entry.first, fmt::format("duplicate support for node '{}'", model_.nodes[n].name));
+      for (int s : slots(entry.second, model_.nodes[n], true))
+        model_.nodes[n].roles[static_cast<std::size_t>(s)] = CoordinateRole::fixed;
+    }
+  }
+
+  void read_independent(const YAML::Node& independent) {
+    file_.expect_map(independent, "'independent'");
+    std::set<std::size_t> seen;
+    for (const auto& entry : independent) {
+      const std::size_t n = node_index(entry.first);
+      Node& node = model_.nodes[n];
+      if (!seen.insert(n).second) file_.fail(entry.first, fmt::format("duplicate entry for node '{}'", node.name));
+      const std::vector<int> list = slots(entry.second, node, false);
+      for (std::size_t i = 0; i < list.size(); ++i) {
+        auto& role = node.roles[static_cast<std::size_t>(list[i])];
+        if (role == CoordinateRole::fixed) {
+          file_.fail(entry.second[i], fmt::format("coordinate '{}.{}' is both fixed (in 'supports') and independent", node.name,
+                                                  framework::kSlotNames[static_cast<std::size_t>(list[i])]));
+        }
+        role = CoordinateRole::independent;
+      }
+    }
+  }
+
+  const YamlFile& file_;
+  FrameworkModel model_;
+  std::map<std::string, std::size_t> index_;
+  std::set<std::string> element_names_;
+  std::vector<YAML::Node> orientations_;
+  std::vector<YAML::Node> element_nodes_;
+  double length_ = 1.0;
+};
+
+}  // namespace
+
+FrameworkModel read_framework(const YamlFile& file) { return FrameworkReader(file).read(); }
+
+}  // namespace kinestat::io

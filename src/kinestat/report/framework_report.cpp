@@ -1,0 +1,208 @@
+#include "kinestat/report/framework_report.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace kinestat::report {
+
+using framework::FrameworkAnalysis;
+using framework::FrameworkModel;
+
+namespace {
+
+// Ten significant digits: enough to read, and stable against last-bit noise of the SVD.
+double rounded(double value) {
+  if (!std::isfinite(value)) return value;
+  if (std::abs(value) < 1e-12) return 0.0;
+  const double r = std::stod(fmt::format("{:.10g}", value));
+  return r == 0.0 ? 0.0 : r;
+}
+
+std::string number(double value) { return fmt::format("{:.6g}", rounded(value)); }
+
+// Rank evidence keeps tiny values (a dropped singular value of 1e-16 is information).
+double significant(double value) {
+  if (!std::isfinite(value) || value == 0.0) return value;
+  return std::stod(fmt::format("{:.10g}", value));
+}
+std::string evidence(double value) { return fmt::format("{:.3g}", significant(value)); }
+
+const framework::CoordinateRef& column_ref(const FrameworkAnalysis& a, Eigen::Index column) {
+  return a.indexing.coordinates[static_cast<std::size_t>(a.partition.dependent_coordinates[static_cast<std::size_t>(column)])];
+}
+
+const framework::DeformationRef& row_ref(const FrameworkAnalysis& a, Eigen::Index row) {
+  return a.indexing.deformations[static_cast<std::size_t>(a.rows[static_cast<std::size_t>(row)])];
+}
+
+std::string deformation_name(const FrameworkModel& model, const framework::DeformationRef& d) {
+  return framework::deformation_names(model, model.elements[d.element])[d.deformation];
+}
+
+// Mode velocities grouped by node, in node order, coordinates in slot order.
+nlohmann::ordered_json velocities_by_node(const FrameworkModel& model, const FrameworkAnalysis& a, const Eigen::VectorXd& v) {
+  nlohmann::ordered_json nodes = nlohmann::ordered_json::object();
+  for (Eigen::Index j = 0; j < v.size(); ++j) {
+    const auto& c = column_ref(a, j);
+    nodes[model.nodes[c.node].name][framework::kSlotNames[static_cast<std::size_t>(c.slot)]] = rounded(v(j));
+  }
+  return nodes;
+}
+
+}  // namespace
+
+std::string framework_row_label(const FrameworkModel& model, const FrameworkAnalysis& analysis, Eigen::Index row) {
+  const auto& d = row_ref(analysis, row);
+  return model.elements[d.element].name + "." + deformation_name(model, d);
+}
+
+std::string framework_column_label(const FrameworkModel& model, const FrameworkAnalysis& analysis, Eigen::Index column) {
+  const auto& c = column_ref(analysis, column);
+  return model.nodes[c.node].name + "." + framework::kSlotNames[static_cast<std::size_t>(c.slot)];
+}
+
+std::string framework_classification(const FrameworkAnalysis& a) {
+  return fmt::format("statically {}, kinematically {}", a.statically_determinate() ? "determinate" : "indeterminate",
+                     a.kinematically_determinate() ? "determinate" : "indeterminate");
+}
+
+nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const FrameworkAnalysis& a) {
+  nlohmann::ordered_json j;
+  j["kind"] = "framework";
+  if (!model.name.empty()) j["name"] = model.name;
+  j["dimension"] = model.dimension;
+  j["rows"] = a.m;
+  j["cols"] = a.n;
+  j["rank"] = a.rank;
+  j["classification"] = framework_classification(a);
+  j["statically_determinate"] = a.statically_determinate();
+  j["kinematically_determinate"] = a.kinematically_determinate();
+  j["exactly_constrained"] = a.exactly_constrained();
+  j["mechanisms"] = a.mechanisms;
+  j["self_stresses"] = a.self_stresses;
+  const auto& c = a.count;
+  j["count"] = {{"coordinates", c.coordinates},
+                {"fixed_coordinates", c.fixed_coordinates},
+                {"dependent_coordinates", c.dependent_coordinates},
+                {"independent_coordinates", c.independent_coordinates},
+                {"fixed_deformations", c.fixed_deformations},
+                {"independent_deformations", c.independent_deformations},
+                {"released_deformations", c.released_deformations},
+                {"declared_dof", c.declared_dof()},
+                {"grubler_dof", c.grubler_dof()},
+                {"square", c.square()}};
+  j["method"] = a.method == framework::RankMethod::dense_svd ? "dense_svd" : "sparse_qr";
+  j["characteristic_length"] = rounded(a.length);
+  const auto& d = a.decision;
+  nlohmann::ordered_json decision;
+  decision["largest"] = significant(d.largest);
+  decision["threshold"] = significant(d.threshold);
+  decision["smallest_kept"] = significant(d.smallest_kept);
+  decision["largest_dropped"] = significant(d.largest_dropped);
+  if (std::isfinite(d.gap())) decision["gap"] = significant(d.gap());
+  else decision["gap"] = nullptr;
+  decision["close"] = d.close();
+  j["rank_decision"] = decision;
+  // Unknown (null) on the sparse path, which computes no singular values.
+  if (a.singular_values.size() == 0 && a.m > 0 && a.n > 0) j["relative_smallest_singular_value"] = nullptr;
+  else j["relative_smallest_singular_value"] = rounded(a.relative_smallest_singular_value());
+  j["singular_values"] = nlohmann::ordered_json::array();
+  for (Eigen::Index i = 0; i < a.singular_values.size(); ++i) j["singular_values"].push_back(significant(a.singular_values(i)));
+  j["row_labels"] = nlohmann::ordered_json::array();
+  for (Eigen::Index i = 0; i < a.m; ++i) j["row_labels"].push_back(framework_row_label(model, a, i));
+  j["column_labels"] = nlohmann::ordered_json::array();
+  for (Eigen::Index i = 0; i < a.n; ++i) j["column_labels"].push_back(framework_column_label(model, a, i));
+  j["vectors"] = a.vectors;
+
+  j["modes"] = nlohmann::ordered_json::array();
+  for (const auto& mode : a.modes) {
+    nlohmann::ordered_json m;
+    m["velocities"] = velocities_by_node(model, a, mode.velocities);
+    m["moving"] = nlohmann::ordered_json::array();
+    for (Eigen::Index col : mode.moving) m["moving"].push_back(framework_column_label(model, a, col));
+    j["modes"].push_back(m);
+  }
+  j["stresses"] = nlohmann::ordered_json::array();
+  for (const auto& state : a.stresses) {
+    nlohmann::ordered_json s;
+    s["resultants"] = nlohmann::ordered_json::array();
+    for (Eigen::Index i = 0; i < state.resultants.size(); ++i) {
+      const auto& ref = row_ref(a, i);
+      nlohmann::ordered_json entry;
+      entry["element"] = model.elements[ref.element].name;
+      entry["deformation"] = deformation_name(model, ref);
+      entry["value"] = rounded(state.resultants(i));
+      s["resultants"].push_back(entry);
+    }
+    s["candidates"] = nlohmann::ordered_json::array();
+    for (Eigen::Index row : state.candidates) s["candidates"].push_back(framework_row_label(model, a, row));
+    j["stresses"].push_back(s);
+  }
+  j["releases"] = nlohmann::ordered_json::array();
+  for (Eigen::Index row : a.releases) {
+    const auto& ref = row_ref(a, row);
+    j["releases"].push_back({{"element", model.elements[ref.element].name}, {"deformation", deformation_name(model, ref)}});
+  }
+  j["constrain"] = nlohmann::ordered_json::array();
+  for (Eigen::Index col : a.constrain) {
+    const auto& ref = column_ref(a, col);
+    j["constrain"].push_back(
+        {{"node", model.nodes[ref.node].name}, {"coordinate", framework::kSlotNames[static_cast<std::size_t>(ref.slot)]}});
+  }
+  return j;
+}
+
+std::string framework_report_text(const FrameworkModel& model, const FrameworkAnalysis& a) {
+  std::string out;
+  auto line = [&out](const std::string& text) { out += text + "\n"; };
+  line(fmt::format("framework{} ({}-D): {} nodes, {} elements", model.name.empty() ? "" : " " + model.name, model.dimension,
+                   model.nodes.size(), model.elements.size()));
+  const auto& c = a.count;
+  line(fmt::format("coordinates: {} = {} fixed + {} dependent + {} independent", c.coordinates, c.fixed_coordinates,
+                   c.dependent_coordinates, c.independent_coordinates));
+  line(fmt::format("deformations: {} fixed + {} independent + {} released", c.fixed_deformations, c.independent_deformations,
+                   c.released_deformations));
+  line(fmt::format("Gruebler count (eq 15): n_dof = {} - ({} + {}) = {}; declared {} -> D(c) {}", c.coordinates,
+                   c.fixed_coordinates, c.fixed_deformations, c.grubler_dof(), c.declared_dof(),
+                   c.square() ? "square" : "not square"));
+  line(fmt::format("D(c): {} rows x {} columns, rank {} ({}{})", a.m, a.n, a.rank,
+                   a.method == framework::RankMethod::dense_svd ? "SVD" : "sparse QR, counts only",
+                   fmt::format(", characteristic length {}", number(a.length))));
+  line(fmt::format("rank decision: threshold {}, smallest kept {}, largest dropped {}{}", evidence(a.decision.threshold),
+                   evidence(a.decision.smallest_kept), evidence(a.decision.largest_dropped),
+                   a.decision.close() ? " -- CLOSE: the design is near a different answer" : ""));
+  if (a.singular_values.size() > 0)
+    line(fmt::format("smallest/largest singular value: {}", number(a.relative_smallest_singular_value())));
+  line(fmt::format("classification: {}", framework_classification(a)));
+  line(fmt::format("{} kinematically indeterminate mode(s), {} statically indeterminate stress state(s){}", a.mechanisms,
+                   a.self_stresses, a.exactly_constrained() ? ": exactly constrained" : ""));
+  for (std::size_t k = 0; k < a.modes.size(); ++k) {
+    line(fmt::format("mode {} (velocities; translations per characteristic length):", k + 1));
+    for (Eigen::Index col : a.modes[k].moving)
+      line(fmt::format("  {:>16} {:>12}", framework_column_label(model, a, col), number(a.modes[k].velocities(col))));
+  }
+  for (std::size_t k = 0; k < a.stresses.size(); ++k) {
+    line(fmt::format("stress state {} (generalised stress resultants):", k + 1));
+    for (Eigen::Index row = 0; row < a.stresses[k].resultants.size(); ++row)
+      if (a.stresses[k].resultants(row) != 0.0)
+        line(fmt::format("  {:>24} {:>12}", framework_row_label(model, a, row), number(a.stresses[k].resultants(row))));
+  }
+  if (!a.releases.empty()) {
+    std::string list;
+    for (Eigen::Index row : a.releases) list += (list.empty() ? "" : ", ") + framework_row_label(model, a, row);
+    line("release (one minimal set): " + list);
+  }
+  if (!a.constrain.empty()) {
+    std::string list;
+    for (Eigen::Index col : a.constrain) list += (list.empty() ? "" : ", ") + framework_column_label(model, a, col);
+    line("constrain or declare independent (one minimal set): " + list);
+  }
+  if (!a.vectors && (a.mechanisms > 0 || a.self_stresses > 0))
+    line("(model too large for the dense SVD: modes and stress states not computed)");
+  return out;
+}
+
+}  // namespace kinestat::report

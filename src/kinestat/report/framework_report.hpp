@@ -1,0 +1,30 @@
+#pragma once
+// Text and JSON reports of an exact-constraint analysis (seed 002). Deterministic: the same
+// model and analysis give byte-identical output (fixed key order, numbers rounded to ten
+// significant digits, -0 printed as 0).
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+#include "kinestat/framework/framework_analysis.hpp"
+#include "kinestat/framework/framework_model.hpp"
+
+namespace kinestat::report {
+
+/// Label of row `row` of D(c): "<element>.<deformation>".
+std::string framework_row_label(const framework::FrameworkModel& model, const framework::FrameworkAnalysis& analysis,
+                                Eigen::Index row);
+/// Label of column `column` of D(c): "<node>.<coordinate>".
+std::string framework_column_label(const framework::FrameworkModel& model, const framework::FrameworkAnalysis& analysis,
+                                   Eigen::Index column);
+/// Table 1 class, e.g. "statically indeterminate, kinematically determinate".
+std::string framework_classification(const framework::FrameworkAnalysis& analysis);
+
+/// The report as JSON (keys documented in docs/framework.md).
+nlohmann::ordered_json framework_report_json(const framework::FrameworkModel& model,
+                                             const framework::FrameworkAnalysis& analysis);
+/// The report as readable text.
+std::string framework_report_text(const framework::FrameworkModel& model, const framework::FrameworkAnalysis& analysis);
+
+}  // namespace kinestat::report
