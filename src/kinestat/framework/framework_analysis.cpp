@@ -86,7 +86,7 @@ FrameworkAnalysis analyse_framework(const FrameworkModel& model, const AnalysisO
   } else if (!options.vectors) {
     // Counts only: singular values without singular vectors.
     if (result.m > 0 && result.n > 0) {
-      result.singular_values = Eigen::BDCSVD<Eigen::MatrixXd>(Eigen::MatrixXd(jacobian)).singularValues();
+      result.singular_values = linalg::singular_values(Eigen::MatrixXd(jacobian));
       result.decision = linalg::decide_rank(result.singular_values, result.m, result.n, options.tolerance);
     }
   } else {

@@ -74,9 +74,14 @@ SvdAnalysis analyse_svd(const Eigen::MatrixXd& a, const RankTolerance& tolerance
   return result;
 }
 
+Eigen::VectorXd singular_values(const Eigen::MatrixXd& a) {
+  if (a.rows() == 0 || a.cols() == 0) return {};
+  return thin_svd(a).s;
+}
+
 RankDecision numerical_rank(const Eigen::MatrixXd& a, const RankTolerance& tolerance) {
   if (a.rows() == 0 || a.cols() == 0) return {};
-  return decide_rank(thin_svd(a).s, a.rows(), a.cols(), tolerance);
+  return decide_rank(singular_values(a), a.rows(), a.cols(), tolerance);
 }
 
 }  // namespace kinestat::linalg

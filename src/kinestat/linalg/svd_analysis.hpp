@@ -37,6 +37,9 @@ enum class SvdVectors { both, right_only };
 SvdAnalysis analyse_svd(const Eigen::MatrixXd& a, const RankTolerance& tolerance = {},
                         SvdVectors vectors = SvdVectors::both);
 
+/// Singular values of `a`, decreasing, from a checked SVD.
+Eigen::VectorXd singular_values(const Eigen::MatrixXd& a);
+
 /// Numerical rank of `a` with its evidence (from a checked SVD).
 RankDecision numerical_rank(const Eigen::MatrixXd& a, const RankTolerance& tolerance = {});
 
