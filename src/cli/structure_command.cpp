@@ -7,6 +7,8 @@
 #include <sstream>
 
 #include "cli/commands.hpp"
+#include "kinestat/io/network_reader.hpp"
+#include "kinestat/io/network_structure.hpp"
 #include "kinestat/io/structure_reader.hpp"
 #include "kinestat/report/structure_report.hpp"
 #include "kinestat/structure/decomposition.hpp"
@@ -54,9 +56,10 @@ structure::StructureModel read_model(const StructureOptions& options) {
   }
   const io::YamlFile file = io::YamlFile::load(options.common.model_path);
   const std::string kind = io::model_kind(file);
+  if (kind == "network") return io::structure_of_network(io::read_network_model(file), file.path());
   if (kind != "structure") {
-    throw io::InputError({file.path(), 1, 1}, "'kinestat structure' reads models of 'kind: structure', found kind '" + kind +
-                                                   "'");
+    throw io::InputError({file.path(), 1, 1}, "'kinestat structure' reads models of kind 'structure' or 'network', found kind '" +
+                                                   kind + "'");
   }
   return io::read_structure_model(file);
 }

@@ -21,7 +21,7 @@ class NetworkReader {
     const YAML::Node& root = file_.root();
     file_.check_keys(root, "the model file",
                      {"kinestat", "kind", "name", "description", "dimension", "ground", "bodies", "couplings", "chords",
-                      "primary", "values"});
+                      "primary", "values", "inputs"});
     network::Model& model = loaded_.model;
     if (auto name = file_.optional(root, "name"); name.IsDefined()) model.name = file_.string(name, "'name'");
     read_dimension(root);
@@ -40,6 +40,7 @@ class NetworkReader {
     }
     read_name_list(root, "chords", model.chords);
     read_name_list(root, "primary", model.primary);
+    read_inputs(root);
     if (auto values = file_.optional(root, "values"); values.IsDefined()) read_values(values);
     model.max_significant_digits = max_digits_;
     return std::move(loaded_);
@@ -213,6 +214,22 @@ class NetworkReader {
       if (!seen.insert(name).second) file_.fail(item, fmt::format("'{}' appears twice in '{}'", name, field));
       names.push_back(name);
       loaded_.item_locations[field].push_back(file_.where(item));
+    }
+  }
+
+  // Driven couplings: names of couplings, a name given twice for a pair driven twice.
+  void read_inputs(const YAML::Node& root) {
+    const YAML::Node list = file_.optional(root, "inputs");
+    if (!list.IsDefined()) return;
+    file_.expect_sequence(list, "'inputs'");
+    loaded_.field_locations["inputs"] = file_.where(list);
+    for (const auto& item : list) {
+      const std::string name = file_.string(item, "an entry of 'inputs'");
+      const auto& couplings = loaded_.model.couplings;
+      if (std::none_of(couplings.begin(), couplings.end(), [&](const network::Coupling& c) { return c.name == name; }))
+        file_.fail(item, fmt::format("'inputs' names '{}', which is not a coupling of the model", name));
+      loaded_.model.inputs.push_back(name);
+      loaded_.item_locations["inputs"].push_back(file_.where(item));
     }
   }
 

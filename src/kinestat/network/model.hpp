@@ -27,6 +27,7 @@ struct Model {
   std::vector<Coupling> couplings;
   std::vector<std::string> chords;          ///< coupling names the user wants as chords (optional)
   std::vector<std::string> primary;         ///< primary variable names chosen by the user (optional)
+  std::vector<std::string> inputs;          ///< driven couplings (structural analysis); a name twice = two inputs
   std::vector<std::pair<std::string, screw::Rational>> values;  ///< numeric values of primary variables, in file order
   /// Largest number of significant digits of any number literal in the file. Long literals
   /// (e.g. 0.8660254037844386) are rounded irrationals, so exact arithmetic would analyse a
