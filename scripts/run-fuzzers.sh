@@ -14,6 +14,7 @@ for harness in build/fuzz/fuzz/fuzz_*; do
   mkdir -p "$corpus"
   case "$name" in
     fuzz_cli_arguments) seeds=fuzz/seeds/cli ;;
+    fuzz_adjacency_matrix) seeds=fuzz/seeds/adjacency ;;
     *) seeds=examples ;;
   esac
   echo "== $name for ${seconds}s"

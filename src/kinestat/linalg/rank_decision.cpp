@@ -16,15 +16,17 @@ double RankDecision::gap() const {
 }
 
 bool RankDecision::close() const {
-  if (exact) return false;
+  if (exact || largest <= 0.0) return false;
   if (gap() < kCloseRankGap) return true;
-  return largest > 0.0 && largest_dropped > std::sqrt(std::numeric_limits<double>::epsilon()) * largest;
+  const double nearly_singular = std::sqrt(std::numeric_limits<double>::epsilon()) * largest;
+  return largest_dropped > kAboveRounding * rounding_level || (rank > 0 && smallest_kept < nearly_singular);
 }
 
 RankDecision decide_rank(const Eigen::VectorXd& singular_values, Eigen::Index rows, Eigen::Index cols,
                          const RankTolerance& tolerance) {
   RankDecision decision;
   decision.largest = singular_values.size() > 0 ? singular_values(0) : 0.0;
+  decision.rounding_level = default_relative_tolerance(rows, cols) * decision.largest;
   const double relative = tolerance.relative.value_or(default_relative_tolerance(rows, cols));
   decision.threshold = relative * decision.largest;
   for (Eigen::Index i = 0; i < singular_values.size(); ++i) {

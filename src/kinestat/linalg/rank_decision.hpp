@@ -26,17 +26,22 @@ struct RankDecision {
   double threshold = 0.0;          ///< absolute threshold used: values above it are kept
   double smallest_kept = 0.0;      ///< smallest singular value counted in the rank (0 if rank = 0)
   double largest_dropped = 0.0;    ///< largest singular value below the threshold (0 if none)
+  double rounding_level = 0.0;     ///< max(rows, cols) * eps * sigma_max: what rounding alone produces
 
   /// Ratio smallest_kept / largest_dropped: large means a clear decision; infinite for exact
   /// decisions or when nothing was dropped.
   double gap() const;
-  /// True when the decision is close: the gap is below `kCloseRankGap`, or a dropped value
-  /// exceeds sqrt(eps) of the largest (a design near a different answer).
+  /// True when the decision is close — the design is near one with a different answer: the gap
+  /// is below `kCloseRankGap`, or a dropped value is over `kAboveRounding` times the rounding
+  /// level (it was dropped by a loose tolerance, not because it is noise), or a kept value is
+  /// below sqrt(eps) of the largest (nearly singular).
   bool close() const;
 };
 
 /// A rank decision with a gap below this ratio is reported as close.
 inline constexpr double kCloseRankGap = 1e3;
+/// A dropped singular value this many times the rounding level is not rounding noise.
+inline constexpr double kAboveRounding = 1e4;
 
 /// Decides the rank from singular values sorted in decreasing order.
 RankDecision decide_rank(const Eigen::VectorXd& singular_values, Eigen::Index rows, Eigen::Index cols,

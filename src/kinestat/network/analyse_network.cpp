@@ -72,7 +72,7 @@ linalg::RankDecision forms_rank(const LinearForms& forms, double reference) {
   const double largest = forms.values.norm();
   if (largest <= kPairRankRelative * reference) {
     linalg::RankDecision d;
-    d.threshold = kPairRankRelative * reference;
+    d.threshold = d.rounding_level = kPairRankRelative * reference;
     d.largest = d.largest_dropped = largest;
     return d;
   }
