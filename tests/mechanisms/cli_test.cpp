@@ -44,15 +44,15 @@ std::ostream& operator<<(std::ostream& os, const Expected& e) { return os << e.f
 // Hand counts: F = sum of joint freedoms, C = d e - F, l = e - n + 1, k = n - 1.
 const std::vector<Expected> kExamples = {
     {"single-circuit-two-spheres.yaml", 6, 6, 1, 1, 1, 1, "overconstrained_chain"},
-    {"four-bar-planar.yaml", 4, 8, 1, 3, 1, 0, "kinematic_chain"},
+    {"four-bar-planar.yaml", 4, 8, 1, 3, 1, 0, "kinematically_designed_chain"},
     {"four-bar-spatial.yaml", 4, 20, 1, 3, 1, 3, "overconstrained_chain"},
-    {"slider-crank.yaml", 4, 8, 1, 3, 1, 0, "kinematic_chain"},
+    {"slider-crank.yaml", 4, 8, 1, 3, 1, 0, "kinematically_designed_chain"},
     {"bennett.yaml", 4, 20, 1, 3, 1, 3, "overconstrained_chain"},
     {"bennett-perturbed.yaml", 4, 20, 1, 3, 0, 2, "overconstrained_structure"},
     {"spherical-4r.yaml", 4, 20, 1, 3, 1, 3, "overconstrained_chain"},
-    {"stewart-6ups.yaml", 36, 72, 5, 13, 6, 0, "kinematic_chain"},
+    {"stewart-6ups.yaml", 36, 72, 5, 13, 6, 0, "kinematically_designed_chain"},
     {"sarrus.yaml", 6, 30, 1, 5, 1, 1, "overconstrained_chain"},
-    {"parallelogram.yaml", 4, 8, 1, 3, 1, 0, "kinematic_chain"},
+    {"parallelogram.yaml", 4, 8, 1, 3, 1, 0, "kinematically_designed_chain"},
     {"parallelogram-redundant.yaml", 6, 12, 2, 4, 1, 1, "overconstrained_chain"},
 };
 
