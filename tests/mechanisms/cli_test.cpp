@@ -54,6 +54,7 @@ const std::vector<Expected> kExamples = {
     {"sarrus.yaml", 6, 30, 1, 5, 1, 1, "overconstrained_chain"},
     {"parallelogram.yaml", 4, 8, 1, 3, 1, 0, "kinematically_designed_chain"},
     {"parallelogram-redundant.yaml", 6, 12, 2, 4, 1, 1, "overconstrained_chain"},
+    {"tsai-3upu.yaml", 15, 39, 2, 7, 3, 0, "kinematically_designed_chain"},
 };
 
 class AnalyzeCommand : public testing::TestWithParam<Expected> {};
@@ -105,8 +106,8 @@ TEST_P(AnalyzeCommand, FloatingPointGivesTheSameFNAndCN) {
   EXPECT_EQ(j["CN"], GetParam().CN);
 }
 
-INSTANTIATE_TEST_SUITE_P(Examples, AnalyzeCommand, testing::ValuesIn(kExamples), [](const auto& info) {
-  std::string name = info.param.file.substr(0, info.param.file.find('.'));
+INSTANTIATE_TEST_SUITE_P(Examples, AnalyzeCommand, testing::ValuesIn(kExamples), [](const testing::TestParamInfo<Expected>& param_info) {
+  std::string name = param_info.param.file.substr(0, param_info.param.file.find('.'));
   for (char& ch : name)
     if (ch == '-') ch = '_';
   return name;

@@ -30,6 +30,7 @@ const std::vector<Published> kMechanisms = {
     {"bennett-perturbed.yaml", 0, 2}, {"spherical-4r.yaml", 1, 3},
     {"stewart-6ups.yaml", 6, 0},      {"sarrus.yaml", 1, 1},
     {"parallelogram.yaml", 1, 0},     {"parallelogram-redundant.yaml", 1, 1},
+    {"tsai-3upu.yaml", 3, 0},
 };
 
 network::NetworkResult analyse(const network::Model& model, Arithmetic arithmetic = Arithmetic::automatic) {
@@ -164,8 +165,8 @@ TEST_P(Invariance, ThirtyDegreesInFullDoublePrecision) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Mechanisms, Invariance, testing::ValuesIn(kMechanisms), [](const auto& info) {
-  std::string name = info.param.file.substr(0, info.param.file.find('.'));
+INSTANTIATE_TEST_SUITE_P(Mechanisms, Invariance, testing::ValuesIn(kMechanisms), [](const testing::TestParamInfo<Published>& param_info) {
+  std::string name = param_info.param.file.substr(0, param_info.param.file.find('.'));
   for (char& ch : name)
     if (ch == '-') ch = '_';
   return name;

@@ -12,7 +12,7 @@ namespace kinestat::mechanisms_test {
 
 namespace {
 
-screw::Vec3 apply(const Matrix3& r, const screw::Vec3& v) {
+screw::Vec3 times(const Matrix3& r, const screw::Vec3& v) {
   screw::Vec3 out{0, 0, 0};
   for (std::size_t i = 0; i < 3; ++i)
     for (std::size_t j = 0; j < 3; ++j) out[i] += r[i][j] * v[j];
@@ -38,16 +38,16 @@ std::vector<Rational> project(const std::array<Rational, 6>& full, const screw::
 std::vector<Rational> move_motion(const std::vector<Rational>& s, const screw::ScrewSpace& space, const Matrix3& r,
                                   const screw::Vec3& t) {
   const auto full = embed(s, space);
-  const screw::Vec3 w = apply(r, {full[0], full[1], full[2]});
-  const screw::Vec3 v = plus(apply(r, {full[3], full[4], full[5]}), screw::cross(t, w));
+  const screw::Vec3 w = times(r, {full[0], full[1], full[2]});
+  const screw::Vec3 v = plus(times(r, {full[3], full[4], full[5]}), screw::cross(t, w));
   return project({w[0], w[1], w[2], v[0], v[1], v[2]}, space);
 }
 
 std::vector<Rational> move_action(const std::vector<Rational>& s, const screw::ScrewSpace& space, const Matrix3& r,
                                   const screw::Vec3& t) {
   const auto full = embed(s, space);
-  const screw::Vec3 f = apply(r, {full[3], full[4], full[5]});
-  const screw::Vec3 m = plus(apply(r, {full[0], full[1], full[2]}), screw::cross(t, f));
+  const screw::Vec3 f = times(r, {full[3], full[4], full[5]});
+  const screw::Vec3 m = plus(times(r, {full[0], full[1], full[2]}), screw::cross(t, f));
   return project({m[0], m[1], m[2], f[0], f[1], f[2]}, space);
 }
 
@@ -77,10 +77,10 @@ Matrix3 z_rotation(const Rational& c, const Rational& s) { return {{{c, -s, 0}, 
 network::Model rigidly_moved(network::Model model, const Matrix3& rotation, const screw::Vec3& translation) {
   for (auto& c : model.couplings) {
     auto& g = c.geometry;
-    g.point = plus(apply(rotation, g.point), translation);
-    if (g.axis) g.axis = apply(rotation, *g.axis);
-    if (g.axis2) g.axis2 = apply(rotation, *g.axis2);
-    if (g.normal) g.normal = apply(rotation, *g.normal);
+    g.point = plus(times(rotation, g.point), translation);
+    if (g.axis) g.axis = times(rotation, *g.axis);
+    if (g.axis2) g.axis2 = times(rotation, *g.axis2);
+    if (g.normal) g.normal = times(rotation, *g.normal);
     for (auto& m : g.custom_motions) m = move_motion(m, model.space, rotation, translation);
     for (auto& a : g.custom_actions) a = move_action(a, model.space, rotation, translation);
   }

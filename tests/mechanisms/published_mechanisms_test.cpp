@@ -50,7 +50,9 @@ TEST(SingleCircuitTwoSpheres, SeedSections21And22) {
   const auto& mc = *r.motion_magnitudes.exact;
   const int ta = magnitude_index(r.motions, "ta"), tb = magnitude_index(r.motions, "tb");
   for (int i = 0; i < r.F; ++i)
-    if (i != ta && i != tb) EXPECT_EQ(mc(i, 0), 0) << r.motions[static_cast<std::size_t>(i)].name;
+    if (i != ta && i != tb) {
+      EXPECT_EQ(mc(i, 0), 0) << r.motions[static_cast<std::size_t>(i)].name;
+    }
   EXPECT_NE(mc(ta, 0), 0);
   EXPECT_EQ(mc(ta, 0), mc(tb, 0));
   // Section 2.2: all action magnitudes zero except Wa and Wb with Wa + Wb = 0 (same sense
@@ -59,7 +61,9 @@ TEST(SingleCircuitTwoSpheres, SeedSections21And22) {
   const auto& ac = *r.action_magnitudes.exact;
   const int wa = magnitude_index(r.actions, "Wa"), wb = magnitude_index(r.actions, "Wb");
   for (int i = 0; i < r.C; ++i)
-    if (i != wa && i != wb) EXPECT_EQ(ac(i, 0), 0) << r.actions[static_cast<std::size_t>(i)].name;
+    if (i != wa && i != wb) {
+      EXPECT_EQ(ac(i, 0), 0) << r.actions[static_cast<std::size_t>(i)].name;
+    }
   EXPECT_NE(ac(wa, 0), 0);
   EXPECT_EQ(ac(wa, 0), -ac(wb, 0));
   // fij reduced from three to one; each coupling transmits one action (the z force).
@@ -263,6 +267,33 @@ TEST(Parallelogram, RedundantCrankAddsOneSelfStress) {
   EXPECT_EQ(fij(model, r, "ground", "coupler"), 1);
   // The self-stress is a pair of opposite forces along the cranks: every joint carries it.
   for (const char* joint : {"A", "B", "C", "D", "E", "H"}) EXPECT_EQ(cij(model, r, joint), 1) << joint;
+}
+
+TEST(Tsai3UPU, PlatformOnlyTranslates) {
+  const auto model = load_example("tsai-3upu.yaml");
+  const auto r = analyse(model);
+  EXPECT_EQ(r.F, 15);
+  EXPECT_EQ(r.l, 2);
+  EXPECT_EQ(r.FN, 3);  // Tsai 1996: three translations
+  EXPECT_EQ(r.CN, 0);
+  EXPECT_EQ(r.classification, NetworkClass::kinematic_chain);
+  expect_consistent(r);
+  const auto& pair = *std::find_if(r.pairs.begin(), r.pairs.end(), [&](const network::PairSystem& p) {
+    const auto& a = model.bodies[static_cast<std::size_t>(p.body_i)];
+    const auto& b = model.bodies[static_cast<std::size_t>(p.body_j)];
+    return (a == "base" && b == "platform") || (a == "platform" && b == "base");
+  });
+  EXPECT_EQ(pair.fij, 3);
+  // No rotation of the platform relative to the base, for any value of the primaries: the
+  // rows r, s, t of its motion system vanish; u, v, w span all three translations.
+  ASSERT_TRUE(pair.motion_system.exact.has_value());
+  const auto& m = *pair.motion_system.exact;
+  for (int row = 0; row < 3; ++row)
+    for (Eigen::Index p = 0; p < m.cols(); ++p) EXPECT_EQ(m(row, p), 0) << row;
+  EXPECT_EQ(linalg::exact_rank(m.block(3, 0, 3, m.cols())), 3);
+  // CN = 0: the three leg torques are independent, so none can be locked in (cij = 0).
+  EXPECT_EQ(cij(model, r, "P1"), 0);
+  EXPECT_EQ(cij(model, r, "U2a"), 0);
 }
 
 }  // namespace
