@@ -113,6 +113,38 @@ TEST_P(Invariance, OtherSpanningTrees) {
   }
 }
 
+TEST_P(Invariance, AnyBodyAsGround) {
+  // fij is a property of a pair of bodies, whichever body is held still.
+  for (std::size_t ground = 0; ground < model_.bodies.size(); ++ground) {
+    SCOPED_TRACE(model_.bodies[ground]);
+    auto other = model_;
+    other.ground = static_cast<int>(ground);
+    expect_same(other, analyse(other));
+  }
+}
+
+TEST_P(Invariance, CoupledPairsOnlyIsASubsetOfAllPairs) {
+  for (const Arithmetic arithmetic : {Arithmetic::exact, Arithmetic::floating}) {
+    network::AnalysisOptions options;
+    options.arithmetic = arithmetic;
+    options.all_pairs = false;
+    const auto r = network::analyse_network(model_, options);
+    EXPECT_EQ(r.FN, GetParam().FN);
+    EXPECT_EQ(r.CN, GetParam().CN);
+    const auto all = pair_table(model_, reference_);
+    const auto coupled = pair_table(model_, r);
+    std::size_t expected_rows = 0;
+    for (const auto& [key, value] : all)
+      if (!std::get<2>(key).empty()) ++expected_rows;
+    EXPECT_EQ(coupled.size(), expected_rows);
+    for (const auto& [key, value] : coupled) {
+      ASSERT_FALSE(std::get<2>(key).empty());
+      ASSERT_TRUE(all.count(key));
+      EXPECT_EQ(value, all.at(key));
+    }
+  }
+}
+
 TEST_P(Invariance, ExactAndFloatingPointAgree) {
   const auto exact = analyse(model_, Arithmetic::exact);
   const auto floating = analyse(model_, Arithmetic::floating);
