@@ -55,6 +55,7 @@ const std::vector<Expected> kExamples = {
     {"parallelogram.yaml", 4, 8, 1, 3, 1, 0, "kinematically_designed_chain"},
     {"parallelogram-redundant.yaml", 6, 12, 2, 4, 1, 1, "overconstrained_chain"},
     {"tsai-3upu.yaml", 15, 39, 2, 7, 3, 0, "kinematically_designed_chain"},
+    {"screw-jack.yaml", 3, 15, 1, 2, 1, 4, "overconstrained_chain"},
 };
 
 class AnalyzeCommand : public testing::TestWithParam<Expected> {};

@@ -269,6 +269,32 @@ TEST(Parallelogram, RedundantCrankAddsOneSelfStress) {
   for (const char* joint : {"A", "B", "C", "D", "E", "H"}) EXPECT_EQ(cij(model, r, joint), 1) << joint;
 }
 
+TEST(ScrewJack, NutAdvancesByPitchTimesAngle) {
+  const auto model = load_example("screw-jack.yaml");
+  const auto r = analyse(model);
+  EXPECT_EQ(r.F, 3);
+  EXPECT_EQ(r.FN, 1);
+  EXPECT_EQ(r.CN, 4);
+  expect_consistent(r);
+  // v = h omega with h = 0.005 = 1/200: the prismatic magnitude is 1/200 of the revolute's.
+  const auto& c = *r.motion_magnitudes.exact;
+  int revolute = -1, prismatic = -1;
+  for (std::size_t i = 0; i < r.motions.size(); ++i) {
+    const auto& name = model.couplings[static_cast<std::size_t>(r.motions[i].coupling)].name;
+    if (name == "R") revolute = static_cast<int>(i);
+    if (name == "P") prismatic = static_cast<int>(i);
+  }
+  ASSERT_GE(revolute, 0);
+  ASSERT_GE(prismatic, 0);
+  EXPECT_NE(c(revolute, 0), 0);
+  EXPECT_EQ(abs(c(prismatic, 0)), abs(c(revolute, 0)) / 200);
+  // With lengths in units 1000 times smaller the pitch is 5 units per radian.
+  const auto small_units = analyse(scaled(model, 1000));
+  const auto& k = *small_units.motion_magnitudes.exact;
+  EXPECT_EQ(abs(k(prismatic, 0)), 5 * abs(k(revolute, 0)));
+  EXPECT_EQ(fij(model, r, "ground", "nut"), 1);
+}
+
 TEST(Tsai3UPU, PlatformOnlyTranslates) {
   const auto model = load_example("tsai-3upu.yaml");
   const auto r = analyse(model);
