@@ -202,6 +202,23 @@ std::map<PairKey, std::pair<int, int>> pair_table(const network::Model& model, c
   return table;
 }
 
+std::map<PairKey, std::pair<std::vector<std::string>, std::vector<std::string>>> pair_primaries(
+    const network::Model& model, const network::NetworkResult& result) {
+  std::map<PairKey, std::pair<std::vector<std::string>, std::vector<std::string>>> table;
+  for (const auto& p : result.pairs) {
+    std::string a = model.bodies[static_cast<std::size_t>(p.body_i)];
+    std::string b = model.bodies[static_cast<std::size_t>(p.body_j)];
+    if (b < a) std::swap(a, b);
+    const std::string coupling = p.coupling ? model.couplings[static_cast<std::size_t>(*p.coupling)].name : "";
+    auto& row = table[PairKey{a, b, coupling}];
+    for (int m : p.motion_primaries)
+      row.first.push_back(result.motions[static_cast<std::size_t>(result.primary_motion[static_cast<std::size_t>(m)])].name);
+    for (int m : p.action_primaries)
+      row.second.push_back(result.actions[static_cast<std::size_t>(result.primary_action[static_cast<std::size_t>(m)])].name);
+  }
+  return table;
+}
+
 int fij(const network::Model& model, const network::NetworkResult& result, const std::string& a, const std::string& b) {
   for (const auto& p : result.pairs) {
     const std::string& i = model.bodies[static_cast<std::size_t>(p.body_i)];

@@ -53,6 +53,11 @@ using PairKey = std::tuple<std::string, std::string, std::string>;
 std::map<PairKey, std::pair<int, int>> pair_table(const network::Model& model, const network::NetworkResult& result,
                                                    bool undo_renaming = false);
 
+/// (body name, body name, coupling name or "") -> (motion primaries, action primaries) that
+/// appear in the pair's motion system and in the coupling's action system, by name.
+std::map<PairKey, std::pair<std::vector<std::string>, std::vector<std::string>>> pair_primaries(
+    const network::Model& model, const network::NetworkResult& result);
+
 /// fij of bodies `a`, `b` (any order) from the all-pairs rows, and cij of coupling `coupling`.
 int fij(const network::Model& model, const network::NetworkResult& result, const std::string& a, const std::string& b);
 int cij(const network::Model& model, const network::NetworkResult& result, const std::string& coupling);

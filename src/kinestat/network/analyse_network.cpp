@@ -374,10 +374,15 @@ NetworkResult analyse_network(const Model& model, const AnalysisOptions& options
                 block_rows(M_i, static_cast<Index>(e) * d, d), walk.sign[static_cast<std::size_t>(body)]);
   }
   const double motion_scale = M_i.values.norm(), action_scale = A_ii.values.norm();
-  auto appearing = [](const LinearForms& f) {
+  // A primary appears when its column is nonzero: exactly, or in floating point above the
+  // same absolute threshold that forms_rank uses, so rounding noise does not add primaries.
+  auto appearing = [](const LinearForms& f, double reference) {
     std::vector<int> used;
-    for (Index p = 0; p < f.values.cols(); ++p)
-      if (f.values.col(p).cwiseAbs().maxCoeff() > 0) used.push_back(static_cast<int>(p));
+    for (Index p = 0; p < f.values.cols(); ++p) {
+      const bool nonzero = f.exact ? !f.exact->block(0, p, f.exact->rows(), 1).is_zero()
+                                   : f.values.col(p).cwiseAbs().maxCoeff() > kPairRankRelative * reference;
+      if (nonzero) used.push_back(static_cast<int>(p));
+    }
     return used;
   };
   std::vector<std::vector<std::vector<int>>> couplings_of_pair(static_cast<std::size_t>(r.bodies));
@@ -397,7 +402,7 @@ NetworkResult analyse_network(const Model& model, const AnalysisOptions& options
       const LinearForms relative = combine(body_motion[static_cast<std::size_t>(j)], body_motion[static_cast<std::size_t>(i)], -1);
       pair.motion_rank = forms_rank(relative, motion_scale);
       pair.fij = static_cast<int>(pair.motion_rank.rank);
-      pair.motion_primaries = appearing(relative);
+      pair.motion_primaries = appearing(relative, motion_scale);
       pair.motion_system = blocks_to_user(relative, d, motion_to_user);
       if (direct.empty()) {
         pair.f = d;
@@ -413,7 +418,7 @@ NetworkResult analyse_network(const Model& model, const AnalysisOptions& options
         const LinearForms action = block_rows(A_ii, static_cast<Index>(e) * d, d);
         row.action_rank = forms_rank(action, action_scale);
         row.cij = static_cast<int>(row.action_rank.rank);
-        row.action_primaries = appearing(action);
+        row.action_primaries = appearing(action, action_scale);
         row.action_system = blocks_to_user(action, d, action_to_user);
         r.pairs.push_back(row);
       }
