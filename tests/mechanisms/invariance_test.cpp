@@ -180,6 +180,24 @@ TEST_P(Invariance, PairPrimariesAgreeInFloatingPoint) {
   }
 }
 
+TEST_P(Invariance, RedundantRowsAgreeInFloatingPoint) {
+  // The redundant equations (rows of the user's M^N and A^N that depend on later rows, seed
+  // 000, section 2.5.1) do not depend on the arithmetic, also far from the origin.
+  const Matrix3 rotation = planar() ? z_rotation(Rational(3, 5), Rational(4, 5)) : quaternion_rotation(1, 2, 3, 4);
+  const std::vector<network::Model> models = {model_, scaled(model_, 1000),
+                                              rigidly_moved(model_, rotation, {12345, -678, planar() ? 0 : 91})};
+  for (std::size_t i = 0; i < models.size(); ++i) {
+    SCOPED_TRACE(i);
+    const auto exact = analyse(models[i], Arithmetic::exact);
+    const auto floating = analyse(models[i], Arithmetic::floating);
+    EXPECT_EQ(floating.circulation.solution.redundant_rows, exact.circulation.solution.redundant_rows);
+    EXPECT_EQ(floating.cutset_law.solution.redundant_rows, exact.cutset_law.solution.redundant_rows);
+    // Dropping them leaves as many rows as the rank: CN rows of M^N, FN rows of A^N.
+    EXPECT_EQ(static_cast<int>(floating.circulation.solution.redundant_rows.size()), GetParam().CN);
+    EXPECT_EQ(static_cast<int>(floating.cutset_law.solution.redundant_rows.size()), GetParam().FN);
+  }
+}
+
 TEST_P(Invariance, RigidMotionThenFloatingPoint) {
   const Matrix3 rotation = planar() ? z_rotation(Rational(3, 5), Rational(4, 5)) : quaternion_rotation(1, 2, 3, 4);
   const auto moved = rigidly_moved(model_, rotation, {7, -2, 0});

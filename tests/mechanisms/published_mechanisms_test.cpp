@@ -96,6 +96,11 @@ TEST(DaviesTwoCircuit, Table1) {
   EXPECT_EQ(cij(model, r, "C"), 2);
   EXPECT_EQ(cij(model, r, "B"), 1);
   EXPECT_EQ(cij(model, r, "A"), 2);
+  // Section 2.5.1: "The discarded rows can be the second and the empty twelfth" of M^N
+  // (12 x 13, rank 10), in either arithmetic; discarding them keeps the rank.
+  const std::vector<Eigen::Index> discarded{1, 11};
+  EXPECT_EQ(r.circulation.solution.redundant_rows, discarded);
+  EXPECT_EQ(analyse(model, Arithmetic::floating).circulation.solution.redundant_rows, discarded);
 }
 
 TEST(FourBar, PlanarIsAKinematicChain) {

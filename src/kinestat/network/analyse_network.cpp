@@ -296,6 +296,13 @@ NetworkResult analyse_network(const Model& model, const AnalysisOptions& options
   r.cutset_law.solution = solve(solved.AN, r.exact, tol);
   r.cutset_motion.solution = solve(solved.AN.transpose(), r.exact, tol);
   r.circuit_action.solution = solve(solved.MN.transpose(), r.exact, tol);
+  if (!r.exact) {
+    // The conditioned frame mixes the d rows of each circuit (cutset), so the rows that are
+    // redundant there are not the user's: choose them again on the user's M^N and A^N.
+    r.circulation.solution.redundant_rows =
+        linalg::redundant_rows(user.MN.to_double(), r.circulation.solution.rank.rank);
+    r.cutset_law.solution.redundant_rows = linalg::redundant_rows(user.AN.to_double(), r.cutset_law.solution.rank.rank);
+  }
   r.m = static_cast<int>(r.circulation.solution.rank.rank);
   r.a = static_cast<int>(r.cutset_law.solution.rank.rank);
   r.FN = r.F - r.m;
