@@ -140,6 +140,28 @@ std::vector<Eigen::Index> redundant_rows(const RationalMatrix& a) {
   return redundant;
 }
 
+std::vector<Eigen::Index> redundant_rows(const Eigen::MatrixXd& a, Eigen::Index rank) {
+  Eigen::MatrixXd unit_rows = a;
+  for (Eigen::Index r = 0; r < a.rows(); ++r) {
+    const double norm = a.row(r).norm();
+    if (norm > 0) unit_rows.row(r) /= norm;
+  }
+  std::vector<Eigen::Index> bottom_up(static_cast<std::size_t>(a.rows()));
+  std::iota(bottom_up.rbegin(), bottom_up.rend(), Eigen::Index{0});
+  std::vector<Eigen::Index> kept = greedy_independent_rows(unit_rows, bottom_up, kFreeVariableResidual, rank);
+  if (static_cast<Eigen::Index>(kept.size()) != rank) {
+    Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(unit_rows.transpose());
+    kept.clear();
+    for (Eigen::Index i = 0; i < rank; ++i) kept.push_back(qr.colsPermutation().indices()(i));
+  }
+  std::vector<bool> is_kept(static_cast<std::size_t>(a.rows()), false);
+  for (Eigen::Index r : kept) is_kept[static_cast<std::size_t>(r)] = true;
+  std::vector<Eigen::Index> redundant;
+  for (Eigen::Index r = 0; r < a.rows(); ++r)
+    if (!is_kept[static_cast<std::size_t>(r)]) redundant.push_back(r);
+  return redundant;
+}
+
 HomogeneousSolution solve_homogeneous(const RationalMatrix& a) {
   const Eigen::Index rows = a.rows(), cols = a.cols();
   std::vector<Row> m;

@@ -61,4 +61,11 @@ HomogeneousSolution with_free_variables(const HomogeneousSolution& solution, std
 /// Indices of the rows of `a` that depend on later rows (exact).
 std::vector<Eigen::Index> redundant_rows(const RationalMatrix& a);
 
+/// The same in floating point when the rank of `a` is already known (decided on a better
+/// conditioned copy whose rows are mixed, e.g. a change of origin and length unit): rows are
+/// scaled to unit length, which does not change which rows depend on which, and kept from the
+/// bottom up while independent (residual above kFreeVariableResidual); rows beyond `rank` are
+/// redundant. Falls back to column-pivoted QR if the greedy pass keeps a different number.
+std::vector<Eigen::Index> redundant_rows(const Eigen::MatrixXd& a, Eigen::Index rank);
+
 }  // namespace kinestat::linalg

@@ -317,6 +317,13 @@ NetworkResult analyse_network(const Model& model, const AnalysisOptions& options
   r.cutset_law.solution = solve(solved.AN, r.exact, tol);
   r.cutset_motion.solution = solve(solved.AN.transpose(), r.exact, tol);
   r.circuit_action.solution = solve(solved.MN.transpose(), r.exact, tol);
+  if (!r.exact) {
+    // The conditioned frame mixes the d rows of each circuit (cutset), so the rows that are
+    // redundant there are not the user's: choose them again on the user's M^N and A^N.
+    r.circulation.solution.redundant_rows =
+        linalg::redundant_rows(user.MN.to_double(), r.circulation.solution.rank.rank);
+    r.cutset_law.solution.redundant_rows = linalg::redundant_rows(user.AN.to_double(), r.cutset_law.solution.rank.rank);
+  }
   r.m = static_cast<int>(r.circulation.solution.rank.rank);
   r.a = static_cast<int>(r.cutset_law.solution.rank.rank);
   r.FN = r.F - r.m;
@@ -409,12 +416,15 @@ NetworkResult analyse_network(const Model& model, const AnalysisOptions& options
   const std::vector<LinearForms> body_motion = body_motions(M_i);
   const std::vector<LinearForms> body_motion_user = body_motions(r.circulation.contracted);
   const double motion_scale = M_i.values.norm(), action_scale = A_ii.values.norm();
-  // Primaries that appear in a pair's system; in floating point, entries at rounding level do not count.
+  // A primary appears when its column is nonzero: exactly, or in floating point above the
+  // same absolute threshold that forms_rank uses, so rounding noise does not add primaries.
   auto appearing = [](const LinearForms& f, double reference) {
-    const double noise = f.exact ? 0.0 : kPairRankRelative * reference;
     std::vector<int> used;
-    for (Index p = 0; p < f.values.cols(); ++p)
-      if (f.values.col(p).cwiseAbs().maxCoeff() > noise) used.push_back(static_cast<int>(p));
+    for (Index p = 0; p < f.values.cols(); ++p) {
+      const bool nonzero = f.exact ? !f.exact->block(0, p, f.exact->rows(), 1).is_zero()
+                                   : f.values.col(p).cwiseAbs().maxCoeff() > kPairRankRelative * reference;
+      if (nonzero) used.push_back(static_cast<int>(p));
+    }
     return used;
   };
   std::vector<std::vector<std::vector<int>>> couplings_of_pair(static_cast<std::size_t>(r.bodies));

@@ -1,0 +1,153 @@
+// Coupling-network analysis benchmarks (Google Benchmark): Davies' 2-circuit network (exact),
+// and generated networks of about 10, 100 and 1,000 couplings: (a) a ladder of spatial
+// four-bar-like loops, (b) a random connected graph; random revolute, cylindrical and
+// spherical joints at random integer points with random integer axes (fixed seeds, so every
+// run analyses the same networks). Arguments: couplings, exact (1) or floating (0),
+// all_pairs (1) or coupled pairs only (0).
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <optional>
+#include <random>
+#include <string>
+
+#include "kinestat/network/analyse_network.hpp"
+
+namespace {
+
+using kinestat::network::AnalysisOptions;
+using kinestat::network::Arithmetic;
+using kinestat::network::Coupling;
+using kinestat::network::Model;
+using kinestat::screw::CouplingType;
+using kinestat::screw::Vec3;
+
+Model davies_two_circuit() {
+  Model m;
+  m.name = "Davies 2-circuit network";
+  m.bodies = {"1", "2", "3", "4"};
+  m.ground = 0;
+  const auto add = [&](const char* name, CouplingType type, int from, int to, Vec3 point, std::optional<Vec3> axis,
+                       std::optional<Vec3> normal) {
+    Coupling c;
+    c.name = name;
+    c.type = type;
+    c.from = from;
+    c.to = to;
+    c.geometry.point = point;
+    c.geometry.axis = axis;
+    c.geometry.normal = normal;
+    m.couplings.push_back(c);
+  };
+  add("A", CouplingType::spherical, 2, 3, {0, 0, 0}, std::nullopt, std::nullopt);
+  add("B", CouplingType::spherical, 1, 3, {0, 0, 1}, std::nullopt, std::nullopt);
+  add("C", CouplingType::planar, 0, 3, {0, 0, 0}, std::nullopt, Vec3{0, 0, 1});
+  add("D", CouplingType::cylindrical, 0, 1, {1, 0, 0}, Vec3{0, 1, 0}, std::nullopt);
+  add("E", CouplingType::cylindrical, 0, 2, {0, 0, 0}, Vec3{0, 1, 0}, std::nullopt);
+  m.chords = {"B", "E"};
+  m.primary = {"sa", "ta", "vc", "Ub", "We"};
+  return m;
+}
+
+class JointMaker {
+ public:
+  explicit JointMaker(unsigned seed) : random_(seed) {}
+
+  Coupling make(int from, int to) {
+    Coupling c;
+    c.name = "J" + std::to_string(count_++);
+    c.from = from;
+    c.to = to;
+    const int kind = std::uniform_int_distribution<int>(0, 2)(random_);
+    c.type = kind == 0 ? CouplingType::revolute : kind == 1 ? CouplingType::cylindrical : CouplingType::spherical;
+    c.geometry.point = {coordinate(20), coordinate(20), coordinate(20)};
+    if (c.type != CouplingType::spherical) {
+      Vec3 axis{0, 0, 0};
+      while (kinestat::screw::is_zero(axis)) axis = {coordinate(5), coordinate(5), coordinate(5)};
+      c.geometry.axis = axis;
+    }
+    return c;
+  }
+
+ private:
+  int coordinate(int range) { return std::uniform_int_distribution<int>(-range, range)(random_); }
+  std::mt19937 random_;
+  int count_ = 0;
+};
+
+// Ladder: rails u_0..u_L and v_0..v_L, rungs u_i - v_i; loop i is u_{i-1} u_i v_i v_{i-1}.
+// e = 3 L + 1 couplings, 2 L + 2 bodies, L circuits.
+Model ladder(int couplings) {
+  const int loops = std::max(1, (couplings - 1) / 3);
+  Model m;
+  m.name = "ladder";
+  for (int i = 0; i <= loops; ++i) {
+    m.bodies.push_back("u" + std::to_string(i));
+    m.bodies.push_back("v" + std::to_string(i));
+  }
+  m.ground = 0;
+  JointMaker joints(12345);
+  m.couplings.push_back(joints.make(0, 1));
+  for (int i = 1; i <= loops; ++i) {
+    m.couplings.push_back(joints.make(2 * (i - 1), 2 * i));
+    m.couplings.push_back(joints.make(2 * (i - 1) + 1, 2 * i + 1));
+    m.couplings.push_back(joints.make(2 * i, 2 * i + 1));
+  }
+  return m;
+}
+
+// Random connected graph: a random tree on n = 0.6 e bodies, then random extra couplings.
+Model random_graph(int couplings) {
+  const int bodies = std::max(2, couplings * 3 / 5);
+  Model m;
+  m.name = "random graph";
+  for (int i = 0; i < bodies; ++i) m.bodies.push_back("b" + std::to_string(i));
+  m.ground = 0;
+  std::mt19937 random(777);
+  JointMaker joints(4242);
+  for (int i = 1; i < bodies; ++i) m.couplings.push_back(joints.make(std::uniform_int_distribution<int>(0, i - 1)(random), i));
+  while (static_cast<int>(m.couplings.size()) < couplings) {
+    const int a = std::uniform_int_distribution<int>(0, bodies - 1)(random);
+    const int b = std::uniform_int_distribution<int>(0, bodies - 1)(random);
+    if (a != b) m.couplings.push_back(joints.make(a, b));
+  }
+  return m;
+}
+
+void run(benchmark::State& state, const Model& model) {
+  AnalysisOptions options;
+  options.arithmetic = state.range(1) != 0 ? Arithmetic::exact : Arithmetic::floating;
+  options.all_pairs = state.range(2) != 0;
+  int fn = 0, cn = 0;
+  for (auto _ : state) {
+    const auto r = kinestat::network::analyse_network(model, options);
+    fn = r.FN;
+    cn = r.CN;
+    benchmark::DoNotOptimize(fn);
+  }
+  state.counters["couplings"] = static_cast<double>(model.couplings.size());
+  state.counters["bodies"] = static_cast<double>(model.bodies.size());
+  state.counters["FN"] = fn;
+  state.counters["CN"] = cn;
+}
+
+void BM_DaviesTwoCircuit(benchmark::State& state) { run(state, davies_two_circuit()); }
+void BM_Ladder(benchmark::State& state) { run(state, ladder(static_cast<int>(state.range(0)))); }
+void BM_RandomGraph(benchmark::State& state) { run(state, random_graph(static_cast<int>(state.range(0)))); }
+
+}  // namespace
+
+BENCHMARK(BM_DaviesTwoCircuit)->Args({5, 1, 1})->Args({5, 0, 1})->Unit(benchmark::kMicrosecond);
+// 10 and 100 couplings: exact and floating, all pairs on and off.
+BENCHMARK(BM_Ladder)
+    ->ArgsProduct({{10, 100}, {1, 0}, {1, 0}})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RandomGraph)
+    ->ArgsProduct({{10, 100}, {1, 0}, {1, 0}})
+    ->Unit(benchmark::kMillisecond);
+// 300 and 1,000 couplings: floating point only, one iteration. The 1,000-coupling cases take
+// minutes and gigabytes (see bench/README.md); run them on purpose with
+// --benchmark_filter='/1000/'.
+BENCHMARK(BM_Ladder)->ArgsProduct({{300, 1000}, {0}, {1, 0}})->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RandomGraph)->ArgsProduct({{300, 1000}, {0}, {1, 0}})->Iterations(1)->Unit(benchmark::kMillisecond);
