@@ -2,36 +2,19 @@
 // published FN and CN, byte-identical output for the same input.
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <nlohmann/json.hpp>
 
-#include <array>
-#include <cstdio>
 #include <string>
 #include <vector>
 
+#include "support/cli_run.hpp"
+
 namespace {
 
-struct CommandOutput {
-  int exit_code = -1;
-  std::string out;
-};
+kinestat::testing::CliRun run(const std::string& arguments) { return kinestat::testing::run_cli(arguments); }
 
-CommandOutput run(const std::string& arguments) {
-  const std::string command = std::string("\"") + KINESTAT_CLI + "\" " + arguments + " 2>/dev/null";
-  CommandOutput result;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (pipe == nullptr) return result;
-  std::array<char, 4096> buffer{};
-  std::size_t n = 0;
-  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.out.append(buffer.data(), n);
-  const int status = pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
-
-std::string example(const std::string& file) { return std::string("\"") + KINESTAT_SOURCE_DIR + "/examples/" + file + "\""; }
+std::string example(const std::string& file) { return "\"" + kinestat::testing::example_path(file) + "\""; }
 
 struct Expected {
   std::string file;

@@ -14,6 +14,15 @@ namespace {
 // mechanisms identical everywhere.
 int uniform(std::mt19937& rng, int n) { return static_cast<int>(rng() % static_cast<std::uint32_t>(n)); }
 
+// A lower pair between bodies a and b (0-based), driven `inputs` times.
+void add_lower_pair(StructureModel& model, int a, int b, int inputs) {
+  Pair p;
+  p.a = std::min(a, b);
+  p.b = std::max(a, b);
+  p.inputs = inputs;
+  model.pairs.push_back(p);
+}
+
 }  // namespace
 
 GeneratedMechanism generate_group_chain(int bodies, std::uint32_t seed, GeneratorMix mix, bool shuffle) {
@@ -118,13 +127,7 @@ GeneratedMechanism generate_ring_group(int ring_bodies) {
   model.name = "ring group of " + std::to_string(ring_bodies) + " bodies";
   const int bodies = ring_bodies + 2;
   for (int i = 0; i < bodies; ++i) model.body_names.push_back(std::to_string(i + 1));
-  auto lower = [&](int a, int b, int inputs) {
-    Pair p;
-    p.a = std::min(a, b);
-    p.b = std::max(a, b);
-    p.inputs = inputs;
-    model.pairs.push_back(p);
-  };
+  auto lower = [&](int a, int b, int inputs) { add_lower_pair(model, a, b, inputs); };
   lower(0, 1, 1);  // the crank
   generated.groups.push_back({1});
   std::vector<int> ring;
@@ -145,13 +148,7 @@ GeneratedMechanism generate_ladder_group(int rungs) {
   model.name = "ladder group of " + std::to_string(2 * rungs) + " bodies";
   const int bodies = 2 * rungs + 2;
   for (int i = 0; i < bodies; ++i) model.body_names.push_back(std::to_string(i + 1));
-  auto lower = [&](int a, int b, int inputs) {
-    Pair p;
-    p.a = std::min(a, b);
-    p.b = std::max(a, b);
-    p.inputs = inputs;
-    model.pairs.push_back(p);
-  };
+  auto lower = [&](int a, int b, int inputs) { add_lower_pair(model, a, b, inputs); };
   lower(0, 1, 1);  // the crank
   generated.groups.push_back({1});
   auto rail = [](int side, int i) { return 2 + 2 * i + side; };
