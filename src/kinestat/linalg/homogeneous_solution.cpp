@@ -106,15 +106,17 @@ std::vector<Eigen::Index> greedy_independent_rows(const Eigen::MatrixXd& vectors
                                                   const std::vector<Eigen::Index>& order, double threshold,
                                                   Eigen::Index wanted) {
   std::vector<Eigen::Index> chosen;
-  Eigen::MatrixXd basis(vectors.cols(), 0);
+  // Preallocated: at most `wanted` basis vectors; the first `kept` columns are in use.
+  Eigen::MatrixXd basis(vectors.cols(), std::max<Eigen::Index>(wanted, 0));
+  Eigen::Index kept = 0;
   for (Eigen::Index r : order) {
-    if (static_cast<Eigen::Index>(chosen.size()) == wanted) break;
+    if (kept == wanted) break;
     Eigen::VectorXd residual = vectors.row(r).transpose();
-    for (int pass = 0; pass < 2; ++pass) residual -= basis * (basis.transpose() * residual);  // twice is enough
+    const auto used = basis.leftCols(kept);
+    for (int pass = 0; pass < 2; ++pass) residual -= used * (used.transpose() * residual);  // twice is enough
     const double norm = residual.norm();
     if (norm > threshold) {
-      basis.conservativeResize(Eigen::NoChange, basis.cols() + 1);
-      basis.col(basis.cols() - 1) = residual / norm;
+      basis.col(kept++) = residual / norm;
       chosen.push_back(r);
     }
   }
