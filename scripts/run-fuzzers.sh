@@ -15,11 +15,11 @@ for harness in build/fuzz/fuzz/fuzz_*; do
   case "$name" in
     fuzz_cli_arguments) seeds=fuzz/seeds/cli ;;
     fuzz_adjacency_matrix) seeds=fuzz/seeds/adjacency ;;
-    *) seeds=examples ;;
+    *) seeds="examples fuzz/seeds/model" ;;
   esac
   echo "== $name for ${seconds}s"
   if ! "$harness" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=4096 -max_len=65536 \
-       -artifact_prefix="$out/$name-" -print_final_stats=1 "$corpus" "$seeds" >/dev/null 2>"build/fuzz/$name.log"; then
+       -artifact_prefix="$out/$name-" -print_final_stats=1 "$corpus" $seeds >/dev/null 2>"build/fuzz/$name.log"; then
     status=1
     tail -40 "build/fuzz/$name.log"
   fi

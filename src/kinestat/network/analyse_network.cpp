@@ -29,7 +29,16 @@ LinearForms times(const RationalMatrix& unit, const LinearForms& forms) {
   return {unit.to_double() * forms.values, std::nullopt};
 }
 
+LinearForms zero_forms(Index rows, Index cols, bool exact) {
+  LinearForms z{Eigen::MatrixXd::Zero(rows, cols), std::nullopt};
+  if (exact) z.exact = RationalMatrix(rows, cols);
+  return z;
+}
+
 LinearForms block_rows(const LinearForms& forms, Index row, Index rows) {
+  // With no primaries (FN or CN = 0) the forms have no columns and no storage; Eigen blocks of
+  // them would offset a null pointer.
+  if (forms.values.cols() == 0) return zero_forms(rows, 0, forms.exact.has_value());
   LinearForms b{forms.values.middleRows(row, rows), std::nullopt};
   if (forms.exact) b.exact = forms.exact->block(row, 0, rows, forms.exact->cols());
   return b;
@@ -41,17 +50,13 @@ LinearForms combine(const LinearForms& a, const LinearForms& b, int sign) {
   return sum;
 }
 
-LinearForms zero_forms(Index rows, Index cols, bool exact) {
-  LinearForms z{Eigen::MatrixXd::Zero(rows, cols), std::nullopt};
-  if (exact) z.exact = RationalMatrix(rows, cols);
-  return z;
-}
 
 LinearForms stack(const std::vector<LinearForms>& blocks, Index cols, bool exact) {
   Index rows = 0;
   for (const auto& b : blocks) rows += b.values.rows();
   LinearForms s = zero_forms(rows, cols, exact);
   Index row = 0;
+  if (cols == 0) return s;  // nothing to copy (and no storage to take blocks of)
   for (const auto& b : blocks) {
     s.values.middleRows(row, b.values.rows()) = b.values;
     if (exact) s.exact->set_block(row, 0, *b.exact);
