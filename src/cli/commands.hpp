@@ -36,6 +36,7 @@ void emit(const CommonOptions& options, const std::string& text);
 void register_analyze(CLI::App& app, Action& action);
 void register_structure(CLI::App& app, Action& action);
 void register_draw(CLI::App& app, Action& action);
+void register_report(CLI::App& app, Action& action);
 
 /// A model of any kind, analysed and turned into a scene for `draw` and `report`.
 struct LoadedScene {

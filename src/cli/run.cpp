@@ -25,6 +25,7 @@ int run(int argc, const char* const* argv) {
   register_analyze(app, action);
   register_structure(app, action);
   register_draw(app, action);
+  register_report(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& success) {
