@@ -33,7 +33,7 @@
     viewSelect.appendChild(o);
   });
   if (S.large) $('notes').appendChild(text('p', 'Large model (' + S.elements.count + ' elements): drawn as one line set, without glyphs, labels or modes.', 'note'));
-  if (S.modes.length === 0 && S.stresses.length === 0) $('notes').appendChild(text('p', 'No kinematic modes and no self-stress states to show.', 'note'));
+  if (!S.large && S.modes.length === 0 && S.stresses.length === 0) $('notes').appendChild(text('p', 'No kinematic modes and no self-stress states to show.', 'note'));
 
   // ---- three.js scene
   let renderer;

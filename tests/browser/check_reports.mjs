@@ -137,6 +137,38 @@ for (const file of files) {
   console.log((errors.length ? 'FAIL ' : 'ok   ') + name + ' (' + views.length + ' views)');
   await page.close();
 }
+// A generated planar strip of about 200 000 bars: the report opens and draws.
+if (!only || only === 'large') {
+  const columns = 66700;
+  const lines = ['kinestat: 1', 'kind: framework', 'name: large strip', 'dimension: 2', 'nodes:'];
+  for (let i = 0; i < columns; i++) lines.push('  a' + i + ': [' + i + ', 0]', '  b' + i + ': [' + i + ', 1]');
+  lines.push('supports: {a0: fixed, b0: fixed}', 'elements:');
+  for (let i = 0; i + 1 < columns; i++)
+    lines.push('  - {type: truss, nodes: [a' + i + ', a' + (i + 1) + ']}', '  - {type: truss, nodes: [b' + i + ', b' + (i + 1) + ']}',
+               '  - {type: truss, nodes: [a' + (i + 1) + ', b' + i + ']}');
+  const model = path.join(work, 'large.yaml');
+  fs.writeFileSync(model, lines.join('\n') + '\n');
+  const html = path.join(work, 'large.html');
+  execFileSync(cli, ['report', model, '-o', html]);
+  const size = fs.statSync(html).size;
+  check(size < 12 * 1024 * 1024, 'large: the report is ' + size + ' bytes');
+  const page = await context.newPage();
+  const errors = [];
+  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+  page.on('pageerror', (e) => errors.push(String(e)));
+  await page.goto(pathToFileURL(html).href);
+  try {
+    await page.waitForFunction(() => window.kinestatViewer && window.kinestatViewer.frames > 3, null, { timeout: 60000 });
+    const seen = await page.evaluate(pixels);
+    check(seen.ink > 0, 'large: the 3D canvas is blank');
+  } catch (e) {
+    failures.push('large: the viewer did not start: ' + errors.join('; '));
+  }
+  await page.screenshot({ path: path.join(out, 'large-strip.png') });
+  check(errors.length === 0, 'large: console errors: ' + errors.join('; '));
+  console.log((errors.length ? 'FAIL ' : 'ok   ') + 'large strip (' + (size / 1048576).toFixed(1) + ' MB)');
+  await page.close();
+}
 await context.close();
 fs.rmSync(work, { recursive: true, force: true });
 console.log(checks + ' checks, ' + failures.length + ' failed; screenshots in ' + out);
