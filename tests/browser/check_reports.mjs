@@ -26,8 +26,10 @@ const executable = option('chromium', '/usr/bin/chromium');
 const only = option('only', '');
 
 if (!fs.existsSync(path.join(modules, 'playwright-core')) || !fs.existsSync(executable)) {
-  console.log('SKIP: playwright-core (' + modules + ') or Chromium (' + executable + ') is missing');
-  process.exit(77);
+  // CI sets KINESTAT_REQUIRE_BROWSER=1 so that a missing piece fails instead of skipping.
+  const required = process.env.KINESTAT_REQUIRE_BROWSER === '1';
+  console.log((required ? 'FAILED: ' : 'SKIP: ') + 'playwright-core (' + modules + ') or Chromium (' + executable + ') is missing');
+  process.exit(required ? 1 : 77);
 }
 const require = createRequire(path.join(path.resolve(modules), 'index.js'));
 const { chromium } = require('playwright-core');
