@@ -118,6 +118,32 @@ for (const file of files) {
   }
   if (['truss-12', 'davies-2-circuit', 'four-bar-linkage'].includes(name))
     check(moving > 0, name + ': no kinematic mode that moves a drawn point');
+  // Networks: the coupling screw axes and the motion system of a chosen pair are drawn.
+  if (name === 'davies-2-circuit') {
+    const result = await page.evaluate(() => {
+      const v = window.kinestatViewer;
+      v.freeze(0);
+      v.setView(0);
+      v.render();
+      const before = document.getElementById('view').toDataURL();
+      const box = document.getElementById('screws');
+      box.checked = true;
+      box.dispatchEvent(new Event('change'));
+      v.render();
+      const screws = document.getElementById('view').toDataURL();
+      const pair = document.getElementById('pair');
+      pair.value = '0';
+      pair.dispatchEvent(new Event('change'));
+      v.render();
+      const withPair = document.getElementById('view').toDataURL();
+      return { screws: screws !== before, pair: withPair !== screws, info: document.getElementById('pairinfo').textContent,
+               pairs: pair.options.length - 1 };
+    });
+    check(result.screws, name + ': showing the coupling screw axes does not change the picture');
+    check(result.pairs === 6, name + ': expected 6 pairs of bodies, found ' + result.pairs);
+    check(result.pair && result.info.includes('Motion system'), name + ': choosing a pair does not show its motion system');
+    await page.screenshot({ path: path.join(out, name + '-screws.png') });
+  }
   const stress = views.findIndex((v) => v.startsWith('self-stress'));
   if (stress >= 0) {
     const result = await page.evaluate((i) => {
