@@ -6,6 +6,9 @@
 #include "cli/commands.hpp"
 #include "kinestat/io/input_error.hpp"
 #include "kinestat/report/html_writer.hpp"
+#include "kinestat/report/structure_report.hpp"
+#include "kinestat/report/svg_writer.hpp"
+#include "kinestat/structure/decomposition.hpp"
 
 namespace kinestat::cli {
 
@@ -24,7 +27,15 @@ void register_report(CLI::App& app, Action& action) {
         return 2;
       }
       const LoadedScene loaded = load_scene(options->model_path, options->tolerance);
-      emit(*options, report::html_report(loaded.scene));
+      std::string figure, title;
+      if (loaded.kind == "network" && !loaded.scene.large) {
+        figure = report::graph_svg(loaded.scene);
+        title = "Coupling, motion and action graphs";
+      } else if (loaded.kind == "structure" && loaded.structure_model && !loaded.scene.large) {
+        figure = report::structure_svg(*loaded.structure_model, structure::decompose(*loaded.structure_model));
+        title = "Structural diagram";
+      }
+      emit(*options, report::html_report(loaded.scene, figure, title));
       return 0;
     };
   });

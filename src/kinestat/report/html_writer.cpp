@@ -122,7 +122,7 @@ nlohmann::ordered_json scene_json(const Scene& scene) {
   return j;
 }
 
-std::string html_report(const Scene& scene) {
+std::string html_report(const Scene& scene, const std::string& figure, const std::string& figure_title) {
   std::string html;
   html += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
   html += "<meta name=\"generator\" content=\"kinestat report\">\n";
@@ -145,7 +145,14 @@ std::string html_report(const Scene& scene) {
 <p id="pairinfo" class="note"></p>
 </div>
 <p class="note">Made by kinestat. Drag to rotate, wheel to zoom.</p>
-</div>
+)";
+  if (!figure.empty()) {
+    // Inline SVG: drop the XML declaration, keep the drawing.
+    const auto start = figure.find("<svg");
+    html += "<h2>" + html_escape(figure_title) + "</h2>\n<div class=\"figure\">" +
+            (start == std::string::npos ? std::string() : figure.substr(start)) + "</div>\n";
+  }
+  html += R"(</div>
 <div id="main"><canvas id="view"></canvas><div id="legend"></div><div id="message"></div></div>
 )";
   html += "<script>\n" + script_safe(viewer_assets::three_js()) + "\n</script>\n";

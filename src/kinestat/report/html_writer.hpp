@@ -18,7 +18,8 @@ bool html_report_built_in();
 /// names, glyphs, modes or stresses.
 nlohmann::ordered_json scene_json(const Scene& scene);
 
-/// The HTML document. Requires html_report_built_in().
-std::string html_report(const Scene& scene);
+/// The HTML document. Requires html_report_built_in(). `figure` (optional) is an SVG document
+/// shown in the side panel under `figure_title`, e.g. the coupling graph or structural diagram.
+std::string html_report(const Scene& scene, const std::string& figure = {}, const std::string& figure_title = {});
 
 }  // namespace kinestat::report

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "kinestat/report/framework_report.hpp"
+#include "kinestat/report/structure_report.hpp"
 #include "kinestat/screw/coupling_type.hpp"
 
 namespace kinestat::report {
@@ -262,6 +263,11 @@ Scene structure_scene(const structure::StructureModel& model, const structure::D
       {"structural groups", std::to_string(decomposition.groups.size())},
       {"complete decomposition", decomposition.complete() ? "yes" : "no"},
   };
+  for (const auto& group : decomposition.groups) {
+    std::string bodies;
+    for (int b : group.bodies) bodies += (bodies.empty() ? "" : ", ") + structure::body_label(model, b);
+    scene.summary.push_back({group_name(group.number), fmt::format("{} (N_m = {}, n_c = {}, stage {})", bodies, group.Nm, group.nc, group.stage)});
+  }
   // No geometry in a structure model: bodies on a circle, the frame at the bottom.
   const int n = model.body_count();
   for (int b = 0; b < n; ++b) {
