@@ -33,7 +33,8 @@
     viewSelect.appendChild(o);
   });
   if (S.large) $('notes').appendChild(text('p', 'Large model (' + S.elements.count + ' elements): drawn as one line set, without glyphs, labels or modes.', 'note'));
-  if (!S.large && S.modes.length === 0 && S.stresses.length === 0) $('notes').appendChild(text('p', 'No kinematic modes and no self-stress states to show.', 'note'));
+  if (S.kind === 'structure') $('notes').appendChild(text('p', 'A structure model has no geometry: bodies are placed on a circle (the frame black, at the bottom), pairs drawn as bars, bodies coloured by structural group.', 'note'));
+  else if (!S.large && S.modes.length === 0 && S.stresses.length === 0) $('notes').appendChild(text('p', 'No kinematic modes and no self-stress states to show.', 'note'));
 
   // ---- three.js scene
   let renderer;
@@ -92,9 +93,14 @@
   const spheres = [];
   if (!light) {
     const ball = new THREE.SphereGeometry(radius * 1.8, 16, 12);
+    const groupBall = new THREE.SphereGeometry(radius * 4, 16, 12);
     for (let i = 0; i < n; i++) {
       const fixed = S.nodes.fixed[i];
-      const mesh = new THREE.Mesh(ball, new THREE.MeshLambertMaterial({ color: fixed ? 0x222222 : 0xf0f0f0 }));
+      // Structures: bodies coloured by structural group, as in the SVG drawings.
+      const palette = [0xa6cee3, 0xb2df8a, 0xfdbf6f, 0xcab2d6, 0xfb9a99, 0xffff99, 0xd9d9d9];
+      const group = S.kind === 'structure' && S.group_of ? S.group_of[i] : 0;
+      const colour = fixed ? 0x222222 : (group > 0 ? palette[(group - 1) % palette.length] : 0xf0f0f0);
+      const mesh = new THREE.Mesh(group > 0 ? groupBall : ball, new THREE.MeshLambertMaterial({ color: colour }));
       scene.add(mesh);
       spheres.push(mesh);
     }

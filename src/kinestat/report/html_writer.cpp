@@ -67,6 +67,7 @@ nlohmann::ordered_json scene_json(const Scene& scene) {
   j["summary"] = nlohmann::ordered_json::array();
   for (const auto& fact : scene.summary) j["summary"].push_back({fact.key, fact.value});
   j["bodies"] = scene.bodies;
+  j["group_of"] = scene.group_of;
   j["ground"] = scene.ground;
   auto position = nlohmann::ordered_json::array();
   auto fixed_nodes = nlohmann::ordered_json::array();
