@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -36,6 +37,20 @@ std::pair<Vector3d, Vector3d> twist_of(const screw::ScrewSpace& space, const Eig
   std::array<double, 6> full{};
   for (int i = 0; i < space.dimension(); ++i) full[static_cast<std::size_t>(space.components[static_cast<std::size_t>(i)])] = motion(i);
   return {Vector3d(full[0], full[1], full[2]), Vector3d(full[3], full[4], full[5])};
+}
+
+/// Sign of a vector that does not depend on rounding: +1 when the first component (in index
+/// order) of magnitude at least half the largest is positive. The analyses normalise modes by
+/// their largest component, which is ambiguous when several components are equal (the 12-truss:
+/// four equal velocities, twelve equal forces), so builds that round differently could draw
+/// mirrored arrows or swapped colours.
+template <class Values>
+double canonical_sign(const Values& values) {
+  double largest = 0;
+  for (const auto& v : values) largest = std::max(largest, std::abs(v));
+  for (const auto& v : values)
+    if (std::abs(v) >= 0.5 * largest && largest > 0) return v > 0 ? 1.0 : -1.0;
+  return 1.0;
 }
 
 }  // namespace
@@ -217,6 +232,11 @@ Scene framework_scene(const framework::FrameworkModel& model, const framework::F
       const auto& ref = a.indexing.coordinates[static_cast<std::size_t>(a.partition.dependent_coordinates[static_cast<std::size_t>(col)])];
       if (framework::is_translation(ref.slot)) mode.velocity[ref.node](ref.slot) = v(col) * a.length;
     }
+    std::vector<double> flat;
+    for (const auto& velocity : mode.velocity)
+      for (int c = 0; c < 3; ++c) flat.push_back(velocity(c));
+    const double sign = canonical_sign(flat);
+    for (auto& velocity : mode.velocity) velocity *= sign;
     scene.modes.push_back(std::move(mode));
   }
   // Stress: the resultant dual to each element's elongation (deformation 0 of trusses and beams).
@@ -242,6 +262,8 @@ Scene framework_scene(const framework::FrameworkModel& model, const framework::F
       if (ref.deformation != 0 || scene_element_of[ref.element] < 0) continue;
       stress.value[static_cast<std::size_t>(scene_element_of[ref.element])] = s(row);
     }
+    const double sign = canonical_sign(stress.value);
+    for (double& value : stress.value) value *= sign;
     scene.stresses.push_back(std::move(stress));
   }
   scene.large = scene.elements.size() > kLargeSceneElements || scene.nodes.size() > kLargeSceneElements;
