@@ -253,7 +253,7 @@
   };
 
   // ---- camera: orbit around the centre
-  const orbit = { azimuth: S.dimension === 2 ? -Math.PI / 2 : -Math.PI / 3, elevation: S.dimension === 2 ? 1.5 : 0.45, distance: size * 1.6 };
+  const orbit = { azimuth: S.dimension === 2 ? -Math.PI / 2 : -Math.PI / 3, elevation: S.dimension === 2 ? 1.5 : 0.45, distance: size * 2.4 };
   const placeCamera = () => {
     const c = Math.cos(orbit.elevation);
     camera.position.set(centre.x + orbit.distance * c * Math.cos(orbit.azimuth),
