@@ -9,6 +9,8 @@
 #include <string>
 
 #include "kinestat/io/yaml_support.hpp"
+#include "kinestat/report/scene.hpp"
+#include "kinestat/structure/structure_model.hpp"
 
 namespace kinestat::cli {
 
@@ -33,6 +35,16 @@ void emit(const CommonOptions& options, const std::string& text);
 // Registration functions: each adds one subcommand to `app` and sets `action` when chosen.
 void register_analyze(CLI::App& app, Action& action);
 void register_structure(CLI::App& app, Action& action);
+void register_draw(CLI::App& app, Action& action);
+void register_report(CLI::App& app, Action& action);
+
+/// A model of any kind, analysed and turned into a scene for `draw` and `report`.
+struct LoadedScene {
+  std::string kind;
+  report::Scene scene;
+  std::optional<structure::StructureModel> structure_model;  ///< networks and structures
+};
+LoadedScene load_scene(const std::string& path, std::optional<double> tolerance);
 
 // `analyze` dispatches on the model's kind to one of these; each kind adds its own options.
 void register_network_options(CLI::App& analyze);

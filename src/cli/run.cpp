@@ -24,6 +24,8 @@ int run(int argc, const char* const* argv) {
   Action action;
   register_analyze(app, action);
   register_structure(app, action);
+  register_draw(app, action);
+  register_report(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& success) {

@@ -1,0 +1,72 @@
+// `kinestat draw FILE --what graph|mechanism|structure`: static SVG pictures of a model.
+
+#include <memory>
+
+#include "cli/commands.hpp"
+#include "kinestat/io/input_error.hpp"
+#include "kinestat/report/structure_report.hpp"
+#include "kinestat/report/svg_writer.hpp"
+#include "kinestat/structure/decomposition.hpp"
+
+namespace kinestat::cli {
+
+namespace {
+
+struct DrawOptions {
+  CommonOptions common;
+  std::string what;  ///< empty: graph for networks and structures, mechanism for frameworks
+  int mode = 1;
+  int stress = 1;
+};
+
+int run(const DrawOptions& options) {
+  const LoadedScene loaded = load_scene(options.common.model_path, options.common.tolerance);
+  const std::string& kind = loaded.kind;
+  std::string what = options.what;
+  if (what.empty()) what = kind == "framework" ? "mechanism" : "graph";
+  const auto refuse = [&](const std::string& message) {
+    throw io::InputError({options.common.model_path, 0, 0}, message);
+  };
+  if (what == "graph") {
+    if (kind == "framework") refuse("a framework has no coupling graph; draw it with --what mechanism");
+    emit(options.common, report::graph_svg(loaded.scene));
+  } else if (what == "mechanism") {
+    if (kind == "structure")
+      refuse("a model of kind 'structure' has no geometry to draw; use --what graph or --what structure");
+    if (options.mode > static_cast<int>(loaded.scene.modes.size()) && options.mode != 1)
+      refuse("--mode " + std::to_string(options.mode) + ": the model has " + std::to_string(loaded.scene.modes.size()) +
+             " kinematic mode(s)");
+    if (options.stress > static_cast<int>(loaded.scene.stresses.size()) && options.stress != 1)
+      refuse("--stress " + std::to_string(options.stress) + ": the model has " +
+             std::to_string(loaded.scene.stresses.size()) + " self-stress state(s)");
+    emit(options.common, report::mechanism_svg(loaded.scene, {options.mode, options.stress}));
+  } else {
+    if (!loaded.structure_model) refuse("a framework has no structural diagram; draw it with --what mechanism");
+    emit(options.common, report::structure_svg(*loaded.structure_model, structure::decompose(*loaded.structure_model)));
+  }
+  return 0;
+}
+
+}  // namespace
+
+void register_draw(CLI::App& app, Action& action) {
+  auto options = std::make_shared<DrawOptions>();
+  CLI::App* command = app.add_subcommand("draw", "Draw a model as an SVG picture (coupling graph, mechanism, structural diagram)");
+  command->add_option("model", options->common.model_path, "Model file (YAML or JSON, any kind)")->required();
+  command->add_option("--what", options->what,
+                      "graph: coupling graph with motion and action graphs; mechanism: the model with a mode and a "
+                      "self-stress; structure: the structural diagram (default: mechanism for frameworks, graph otherwise)")
+      ->check(CLI::IsMember({"graph", "mechanism", "structure"}));
+  command->add_option("-o,--output", options->common.output_path, "Write the SVG to this file instead of standard output");
+  command->add_option("--mode", options->mode, "Mechanism: kinematic mode drawn as arrows, 1-based (0: none)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  command->add_option("--stress", options->stress, "Mechanism: self-stress drawn as colours, 1-based (0: none)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  command->add_option("--tolerance", options->common.tolerance, "Relative rank tolerance (as for analyze)")
+      ->check(CLI::PositiveNumber);
+  command->callback([options, &action] { action = [options] { return run(*options); }; });
+}
+
+}  // namespace kinestat::cli

@@ -1,0 +1,44 @@
+// `kinestat report FILE -o report.html`: one self-contained interactive HTML report.
+
+#include <iostream>
+#include <memory>
+
+#include "cli/commands.hpp"
+#include "kinestat/io/input_error.hpp"
+#include "kinestat/report/html_writer.hpp"
+#include "kinestat/report/structure_report.hpp"
+#include "kinestat/report/svg_writer.hpp"
+#include "kinestat/structure/decomposition.hpp"
+
+namespace kinestat::cli {
+
+void register_report(CLI::App& app, Action& action) {
+  auto options = std::make_shared<CommonOptions>();
+  CLI::App* command = app.add_subcommand(
+      "report", "Write a self-contained interactive HTML report (summary, 3D view, modes, self-stress)");
+  command->add_option("model", options->model_path, "Model file (YAML or JSON, any kind)")->required();
+  command->add_option("-o,--output", options->output_path, "Write the HTML to this file instead of standard output");
+  command->add_option("--tolerance", options->tolerance, "Relative rank tolerance (as for analyze)")->check(CLI::PositiveNumber);
+  command->callback([options, &action] {
+    action = [options] {
+      if (!report::html_report_built_in()) {
+        std::cerr << "kinestat: error: HTML output is not built in: this kinestat was built without npm, so three.js "
+                     "could not be embedded (rebuild with npm available; 'kinestat draw' writes SVG)\n";
+        return 2;
+      }
+      const LoadedScene loaded = load_scene(options->model_path, options->tolerance);
+      std::string figure, title;
+      if (loaded.kind == "network" && !loaded.scene.large) {
+        figure = report::graph_svg(loaded.scene);
+        title = "Coupling, motion and action graphs";
+      } else if (loaded.kind == "structure" && loaded.structure_model && !loaded.scene.large) {
+        figure = report::structure_svg(*loaded.structure_model, structure::decompose(*loaded.structure_model));
+        title = "Structural diagram";
+      }
+      emit(*options, report::html_report(loaded.scene, figure, title));
+      return 0;
+    };
+  });
+}
+
+}  // namespace kinestat::cli

@@ -1,0 +1,166 @@
+#include "kinestat/report/html_writer.hpp"
+
+#include <cmath>
+
+#include "kinestat/report/viewer_assets.hpp"
+
+namespace kinestat::report {
+
+namespace {
+
+/// Rounds to `digits` decimals so that the JSON text is deterministic and short.
+double rounded(double value, int digits = 6) {
+  if (!std::isfinite(value)) return 0.0;
+  const double scale = std::pow(10.0, digits);
+  const double r = std::round(value * scale) / scale;
+  return r == 0.0 ? 0.0 : r;
+}
+
+nlohmann::ordered_json vector_json(const Eigen::Vector3d& v) { return {rounded(v.x()), rounded(v.y()), rounded(v.z())}; }
+
+nlohmann::ordered_json screws_json(const std::vector<std::vector<double>>& screws) {
+  auto out = nlohmann::ordered_json::array();
+  for (const auto& s : screws) {
+    auto row = nlohmann::ordered_json::array();
+    for (double v : s) row.push_back(rounded(v));
+    out.push_back(row);
+  }
+  return out;
+}
+
+/// Text that may sit inside <script>: no "</" and no HTML comment openers.
+std::string script_safe(std::string text) {
+  std::string out;
+  out.reserve(text.size());
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '<' && i + 1 < text.size() && (text[i + 1] == '/' || text[i + 1] == '!')) {
+      out += "\\u003c";
+    } else {
+      out += text[i];
+    }
+  }
+  return out;
+}
+
+std::string html_escape(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    if (c == '<') out += "&lt;";
+    else if (c == '>') out += "&gt;";
+    else if (c == '&') out += "&amp;";
+    else out += c;
+  }
+  return out;
+}
+
+}  // namespace
+
+bool html_report_built_in() { return viewer_assets::built_in(); }
+
+nlohmann::ordered_json scene_json(const Scene& scene) {
+  nlohmann::ordered_json j;
+  j["kind"] = scene.kind;
+  j["name"] = scene.name;
+  j["dimension"] = scene.dimension;
+  j["screw_components"] = scene.screw_dimension == 3 ? std::vector<int>{2, 3, 4} : std::vector<int>{0, 1, 2, 3, 4, 5};
+  j["large"] = scene.large;
+  j["summary"] = nlohmann::ordered_json::array();
+  for (const auto& fact : scene.summary) j["summary"].push_back({fact.key, fact.value});
+  j["bodies"] = scene.bodies;
+  j["group_of"] = scene.group_of;
+  j["ground"] = scene.ground;
+  auto position = nlohmann::ordered_json::array();
+  auto fixed_nodes = nlohmann::ordered_json::array();
+  auto names = nlohmann::ordered_json::array();
+  for (const auto& node : scene.nodes) {
+    for (int k = 0; k < 3; ++k) position.push_back(rounded(node.position(k)));
+    fixed_nodes.push_back(node.fixed ? 1 : 0);
+    if (!scene.large) names.push_back(node.name);
+  }
+  j["nodes"] = {{"position", position}, {"fixed", fixed_nodes}, {"name", names}};
+  auto pairs = nlohmann::ordered_json::array();
+  auto element_names = nlohmann::ordered_json::array();
+  for (const auto& element : scene.elements) {
+    pairs.push_back(element.a);
+    pairs.push_back(element.b);
+    if (!scene.large) element_names.push_back(element.name);
+  }
+  j["elements"] = {{"count", scene.elements.size()}, {"pairs", pairs}, {"name", element_names}};
+  j["glyphs"] = nlohmann::ordered_json::array();
+  j["modes"] = nlohmann::ordered_json::array();
+  j["stresses"] = nlohmann::ordered_json::array();
+  j["pairs"] = nlohmann::ordered_json::array();
+  if (scene.large) return j;
+  for (const auto& g : scene.glyphs) {
+    nlohmann::ordered_json glyph;
+    glyph["name"] = g.name;
+    glyph["type"] = g.type;
+    glyph["from"] = g.from;
+    glyph["to"] = g.to;
+    glyph["f"] = g.f;
+    glyph["c"] = g.c;
+    glyph["point"] = vector_json(g.point);
+    if (g.axis) glyph["axis"] = vector_json(*g.axis);
+    if (g.axis2) glyph["axis2"] = vector_json(*g.axis2);
+    if (g.normal) glyph["normal"] = vector_json(*g.normal);
+    glyph["motions"] = screws_json(g.motions);
+    glyph["actions"] = screws_json(g.actions);
+    j["glyphs"].push_back(glyph);
+  }
+  for (const auto& mode : scene.modes) {
+    auto velocity = nlohmann::ordered_json::array();
+    for (const auto& v : mode.velocity)
+      for (int k = 0; k < 3; ++k) velocity.push_back(rounded(v(k)));
+    j["modes"].push_back({{"label", mode.label}, {"velocity", velocity}});
+  }
+  for (const auto& stress : scene.stresses) {
+    auto value = nlohmann::ordered_json::array();
+    for (double v : stress.value) value.push_back(rounded(v));
+    j["stresses"].push_back({{"label", stress.label}, {"value", value}});
+  }
+  for (const auto& pair : scene.pairs)
+    j["pairs"].push_back({{"i", pair.body_i}, {"j", pair.body_j}, {"fij", pair.fij}, {"motions", screws_json(pair.motions)}});
+  return j;
+}
+
+std::string html_report(const Scene& scene, const std::string& figure, const std::string& figure_title) {
+  std::string html;
+  html += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
+  html += "<meta name=\"generator\" content=\"kinestat report\">\n";
+  html += "<title>" + html_escape(scene.name.empty() ? std::string("kinestat report") : scene.name) + "</title>\n";
+  html += "<style>\n" + viewer_assets::viewer_css() + "</style>\n</head>\n<body>\n";
+  html += R"(<div id="side">
+<h1 id="title"></h1>
+<h2>Summary</h2>
+<table id="summary"></table>
+<h2>Modes and self-stress</h2>
+<select id="mode" aria-label="view"></select>
+<label for="amplitude">Amplitude</label>
+<input id="amplitude" type="range" min="0" max="1" step="0.01" value="0.5">
+<div id="notes"></div>
+<div id="network" style="display:none">
+<h2>Couplings</h2>
+<label><input id="screws" type="checkbox"> unit motion screw axes of every coupling (orange)</label>
+<h2>Motion system of a pair</h2>
+<select id="pair" aria-label="pair of bodies"></select>
+<p id="pairinfo" class="note"></p>
+</div>
+<p class="note">Made by kinestat. Drag to rotate, wheel to zoom.</p>
+)";
+  if (!figure.empty()) {
+    // Inline SVG: drop the XML declaration, keep the drawing.
+    const auto start = figure.find("<svg");
+    html += "<h2>" + html_escape(figure_title) + "</h2>\n<div class=\"figure\">" +
+            (start == std::string::npos ? std::string() : figure.substr(start)) + "</div>\n";
+  }
+  html += R"(</div>
+<div id="main"><canvas id="view"></canvas><div id="legend"></div><div id="message"></div></div>
+)";
+  html += "<script>\n" + script_safe(viewer_assets::three_js()) + "\n</script>\n";
+  html += "<script>\nwindow.KINESTAT_SCENE = " + script_safe(scene_json(scene).dump()) + ";\n</script>\n";
+  html += "<script>\n" + script_safe(viewer_assets::viewer_js()) + "\n</script>\n";
+  html += "</body>\n</html>\n";
+  return html;
+}
+
+}  // namespace kinestat::report

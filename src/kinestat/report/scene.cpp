@@ -1,0 +1,316 @@
+#include "kinestat/report/scene.hpp"
+
+#include <Eigen/Geometry>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "kinestat/report/framework_report.hpp"
+#include "kinestat/report/structure_report.hpp"
+#include "kinestat/screw/coupling_type.hpp"
+
+namespace kinestat::report {
+
+namespace {
+
+using Eigen::Vector3d;
+
+Vector3d to_vector(const screw::Vec3& v) { return {v[0].get_d(), v[1].get_d(), v[2].get_d()}; }
+
+std::string rank_evidence(const linalg::RankDecision& rank) {
+  if (rank.exact) return fmt::format("{} (exact rational elimination)", rank.rank);
+  return fmt::format("{} (smallest kept singular value {:.3g}, largest dropped {:.3g}{})", rank.rank, rank.smallest_kept,
+                     rank.largest_dropped, rank.close() ? "; CLOSE DECISION" : "");
+}
+
+std::vector<double> screw_doubles(const std::vector<screw::Rational>& coordinates) {
+  std::vector<double> out;
+  out.reserve(coordinates.size());
+  for (const auto& value : coordinates) out.push_back(value.get_d());
+  return out;
+}
+
+/// Angular velocity and velocity of the point at the origin of a d-coordinate motion screw.
+std::pair<Vector3d, Vector3d> twist_of(const screw::ScrewSpace& space, const Eigen::VectorXd& motion) {
+  std::array<double, 6> full{};
+  for (int i = 0; i < space.dimension(); ++i) full[static_cast<std::size_t>(space.components[static_cast<std::size_t>(i)])] = motion(i);
+  return {Vector3d(full[0], full[1], full[2]), Vector3d(full[3], full[4], full[5])};
+}
+
+/// Sign of a vector that does not depend on rounding: +1 when the first component (in index
+/// order) of magnitude at least half the largest is positive. The analyses normalise modes by
+/// their largest component, which is ambiguous when several components are equal (the 12-truss:
+/// four equal velocities, twelve equal forces), so builds that round differently could draw
+/// mirrored arrows or swapped colours.
+template <class Values>
+double canonical_sign(const Values& values) {
+  double largest = 0;
+  for (const auto& v : values) largest = std::max(largest, std::abs(v));
+  for (const auto& v : values)
+    if (std::abs(v) >= 0.5 * largest && largest > 0) return v > 0 ? 1.0 : -1.0;
+  return 1.0;
+}
+
+}  // namespace
+
+std::string fixed(double value, int digits) {
+  if (!std::isfinite(value)) return "0";
+  std::string text = fmt::format("{:.{}f}", value, digits);
+  if (text.find('.') != std::string::npos) {
+    while (text.back() == '0') text.pop_back();
+    if (text.back() == '.') text.pop_back();
+  }
+  if (text == "-0") text = "0";
+  return text;
+}
+
+Scene network_scene(const network::Model& model, const network::NetworkResult& result) {
+  Scene scene;
+  scene.kind = "network";
+  scene.name = model.name;
+  scene.screw_dimension = model.space.dimension();
+  scene.dimension = model.space.is_planar() ? 2 : 3;
+  scene.bodies = model.bodies;
+  scene.ground = result.ground;
+  const auto& r = result;
+  scene.summary = {
+      {"kind", "coupling network (Davies, seed 000)"},
+      {"d", std::to_string(r.d)},
+      {"bodies n", std::to_string(r.bodies)},
+      {"couplings e", std::to_string(r.e)},
+      {"circuits l", std::to_string(r.l)},
+      {"cutsets k", std::to_string(r.k)},
+      {"gross freedoms F", std::to_string(r.F)},
+      {"gross constraints C", std::to_string(r.C)},
+      {"rank m of [M]N", rank_evidence(r.circulation.solution.rank)},
+      {"rank a of [A]N", rank_evidence(r.cutset_law.solution.rank)},
+      {"FN (nett degree of freedom)", std::to_string(r.FN)},
+      {"CN (nett degree of constraint)", std::to_string(r.CN)},
+      {"class", network::class_description(r.classification)},
+      {"arithmetic", r.exact ? "exact" : "floating point"},
+  };
+
+  // Bodies are drawn as stars: a centre (the mean of its coupling points) linked to one end
+  // node per coupling it takes part in.
+  const std::size_t n = model.bodies.size();
+  std::vector<Vector3d> centre(n, Vector3d::Zero());
+  std::vector<int> count(n, 0);
+  for (const auto& c : model.couplings) {
+    const Vector3d p = to_vector(c.geometry.point);
+    for (int b : {c.from, c.to}) {
+      centre[static_cast<std::size_t>(b)] += p;
+      ++count[static_cast<std::size_t>(b)];
+    }
+  }
+  for (std::size_t b = 0; b < n; ++b) {
+    if (count[b] > 0) centre[b] /= count[b];
+    scene.nodes.push_back({model.bodies[b], centre[b], static_cast<int>(b), static_cast<int>(b) == r.ground});
+  }
+  for (std::size_t e = 0; e < model.couplings.size(); ++e) {
+    const auto& c = model.couplings[e];
+    const Vector3d p = to_vector(c.geometry.point);
+    for (int b : {c.from, c.to}) {
+      scene.nodes.push_back({c.name + "@" + model.bodies[static_cast<std::size_t>(b)], p, b, b == r.ground});
+      scene.elements.push_back({c.name, "link", b, static_cast<int>(scene.nodes.size()) - 1});
+    }
+    SceneGlyph glyph;
+    glyph.name = c.name;
+    glyph.type = std::string(screw::coupling_type_name(c.type));
+    glyph.from = c.from;
+    glyph.to = c.to;
+    glyph.point = p;
+    if (c.geometry.axis) glyph.axis = to_vector(*c.geometry.axis);
+    if (c.geometry.axis2) glyph.axis2 = to_vector(*c.geometry.axis2);
+    if (c.geometry.normal) glyph.normal = to_vector(*c.geometry.normal);
+    for (const auto& m : r.motions)
+      if (m.coupling == static_cast<int>(e)) glyph.motions.push_back(screw_doubles(m.unit_screw.coordinates));
+    for (const auto& a : r.actions)
+      if (a.coupling == static_cast<int>(e)) glyph.actions.push_back(screw_doubles(a.unit_screw.coordinates));
+    glyph.f = static_cast<int>(glyph.motions.size());
+    glyph.c = static_cast<int>(glyph.actions.size());
+    scene.glyphs.push_back(glyph);
+    GraphEdge edge;
+    edge.name = c.name;
+    edge.from = c.from;
+    edge.to = c.to;
+    edge.f = glyph.f;
+    edge.c = glyph.c;
+    for (const auto& m : r.motions)
+      if (m.coupling == static_cast<int>(e)) edge.motion_names.push_back(m.name);
+    for (const auto& a : r.actions)
+      if (a.coupling == static_cast<int>(e)) edge.action_names.push_back(a.name);
+    scene.edges.push_back(edge);
+  }
+  for (int chord : r.chords) scene.edges[static_cast<std::size_t>(chord)].branch = false;
+  scene.B = r.B;
+  scene.Q = r.Q;
+
+  // The motion of every body relative to the ground, per motion primary.
+  std::vector<const network::PairSystem*> to_ground(n, nullptr);
+  for (const auto& pair : r.pairs) {
+    if (pair.body_i == r.ground && !to_ground[static_cast<std::size_t>(pair.body_j)]) to_ground[static_cast<std::size_t>(pair.body_j)] = &pair;
+    if (pair.body_j == r.ground && !to_ground[static_cast<std::size_t>(pair.body_i)]) to_ground[static_cast<std::size_t>(pair.body_i)] = &pair;
+  }
+  for (std::size_t k = 0; k < r.primary_motion.size(); ++k) {
+    SceneMode mode;
+    mode.label = "mode " + std::to_string(k + 1) + ": " + r.motions[static_cast<std::size_t>(r.primary_motion[k])].name + " = 1";
+    for (const auto& node : scene.nodes) {
+      const auto b = static_cast<std::size_t>(node.body);
+      Vector3d v = Vector3d::Zero();
+      if (static_cast<int>(b) != r.ground && to_ground[b]) {
+        const auto& forms = to_ground[b]->motion_system.values;
+        if (static_cast<Eigen::Index>(k) < forms.cols()) {
+          Eigen::VectorXd motion = forms.col(static_cast<Eigen::Index>(k));
+          if (to_ground[b]->body_j == r.ground) motion = -motion;
+          const auto [omega, v0] = twist_of(model.space, motion);
+          v = v0 + omega.cross(node.position);
+        }
+      }
+      mode.velocity.push_back(v);
+    }
+    scene.modes.push_back(std::move(mode));
+  }
+  for (const auto& pair : r.pairs) {
+    bool seen = false;
+    for (const auto& p : scene.pairs) seen = seen || (p.body_i == pair.body_i && p.body_j == pair.body_j);
+    if (seen) continue;
+    ScenePair sp{pair.body_i, pair.body_j, pair.fij, {}};
+    for (int column : pair.motion_primaries) {
+      std::vector<double> s;
+      for (Eigen::Index row = 0; row < pair.motion_system.values.rows(); ++row) s.push_back(pair.motion_system.values(row, column));
+      sp.motions.push_back(std::move(s));
+    }
+    scene.pairs.push_back(std::move(sp));
+  }
+  scene.large = scene.elements.size() > kLargeSceneElements;
+  return scene;
+}
+
+Scene framework_scene(const framework::FrameworkModel& model, const framework::FrameworkAnalysis& a) {
+  Scene scene;
+  scene.kind = "framework";
+  scene.name = model.name;
+  scene.dimension = model.dimension;
+  scene.screw_dimension = model.dimension == 2 ? 3 : 6;
+  scene.summary = {
+      {"kind", "framework / flexure mechanism (seed 002)"},
+      {"dimension", std::to_string(model.dimension)},
+      {"nodes", std::to_string(model.nodes.size())},
+      {"elements", std::to_string(model.elements.size())},
+      {"D(c)", fmt::format("{} x {}", a.m, a.n)},
+      {"rank D(c)", a.method == framework::RankMethod::dense_svd ? rank_evidence(a.decision)
+                                                                  : fmt::format("{} (sparse QR, counts only)", a.rank)},
+      {"kinematically indeterminate modes", std::to_string(a.mechanisms)},
+      {"statically indeterminate stress states", std::to_string(a.self_stresses)},
+      {"class", framework_classification(a)},
+  };
+  for (const auto& node : model.nodes) {
+    bool fixed_node = true;
+    for (int slot : framework::node_slots(model.dimension, node))
+      if (framework::is_translation(slot) && node.roles[static_cast<std::size_t>(slot)] != framework::CoordinateRole::fixed) fixed_node = false;
+    scene.nodes.push_back({node.name, node.position, -1, fixed_node});
+  }
+  for (const auto& element : model.elements) {
+    if (element.nodes.empty()) continue;
+    if (element.type == framework::ElementType::rigid_body) {
+      for (std::size_t i = 1; i < element.nodes.size(); ++i)
+        scene.elements.push_back({element.name, "rigid", static_cast<int>(element.nodes[0]), static_cast<int>(element.nodes[i])});
+    } else if (element.nodes.size() >= 2) {
+      scene.elements.push_back({element.name, element.type == framework::ElementType::beam ? "beam" : "truss",
+                                static_cast<int>(element.nodes[0]), static_cast<int>(element.nodes[1])});
+    }
+  }
+  // Translations in D(c) are divided by the characteristic length; undo that.
+  for (std::size_t k = 0; k < a.modes.size(); ++k) {
+    SceneMode mode;
+    mode.label = "mode " + std::to_string(k + 1);
+    mode.velocity.assign(model.nodes.size(), Vector3d::Zero());
+    const auto& v = a.modes[k].velocities;
+    for (Eigen::Index col = 0; col < v.size(); ++col) {
+      const auto& ref = a.indexing.coordinates[static_cast<std::size_t>(a.partition.dependent_coordinates[static_cast<std::size_t>(col)])];
+      if (framework::is_translation(ref.slot)) mode.velocity[ref.node](ref.slot) = v(col) * a.length;
+    }
+    std::vector<double> flat;
+    for (const auto& velocity : mode.velocity)
+      for (int c = 0; c < 3; ++c) flat.push_back(velocity(c));
+    const double sign = canonical_sign(flat);
+    for (auto& velocity : mode.velocity) velocity *= sign;
+    scene.modes.push_back(std::move(mode));
+  }
+  // Stress: the resultant dual to each element's elongation (deformation 0 of trusses and beams).
+  std::vector<int> scene_element_of(model.elements.size(), -1);
+  {
+    int index = 0;
+    for (std::size_t e = 0; e < model.elements.size(); ++e) {
+      const auto& element = model.elements[e];
+      if (element.type == framework::ElementType::rigid_body) {
+        index += element.nodes.empty() ? 0 : static_cast<int>(element.nodes.size()) - 1;
+      } else if (element.nodes.size() >= 2) {
+        scene_element_of[e] = index++;
+      }
+    }
+  }
+  for (std::size_t k = 0; k < a.stresses.size(); ++k) {
+    SceneStress stress;
+    stress.label = "self-stress " + std::to_string(k + 1);
+    stress.value.assign(scene.elements.size(), 0.0);
+    const auto& s = a.stresses[k].resultants;
+    for (Eigen::Index row = 0; row < s.size(); ++row) {
+      const auto& ref = a.indexing.deformations[static_cast<std::size_t>(a.rows[static_cast<std::size_t>(row)])];
+      if (ref.deformation != 0 || scene_element_of[ref.element] < 0) continue;
+      stress.value[static_cast<std::size_t>(scene_element_of[ref.element])] = s(row);
+    }
+    const double sign = canonical_sign(stress.value);
+    for (double& value : stress.value) value *= sign;
+    scene.stresses.push_back(std::move(stress));
+  }
+  scene.large = scene.elements.size() > kLargeSceneElements || scene.nodes.size() > kLargeSceneElements;
+  return scene;
+}
+
+Scene structure_scene(const structure::StructureModel& model, const structure::Decomposition& decomposition) {
+  Scene scene;
+  scene.kind = "structure";
+  scene.name = model.name;
+  scene.dimension = 2;
+  scene.screw_dimension = model.dimension;
+  scene.summary = {
+      {"kind", "structural groups (seed 004)"},
+      {"bodies", std::to_string(model.body_count())},
+      {"pairs", std::to_string(model.pairs.size())},
+      {"mobility (Grübler-Kutzbach)", std::to_string(model.mobility())},
+      {"inputs", std::to_string(model.input_count())},
+      {"structural groups", std::to_string(decomposition.groups.size())},
+      {"complete decomposition", decomposition.complete() ? "yes" : "no"},
+  };
+  for (const auto& group : decomposition.groups) {
+    std::string bodies;
+    for (int b : group.bodies) bodies += (bodies.empty() ? "" : ", ") + structure::body_label(model, b);
+    scene.summary.push_back({group_name(group.number), fmt::format("{} (N_m = {}, n_c = {}, stage {})", bodies, group.Nm, group.nc, group.stage)});
+  }
+  // No geometry in a structure model: bodies on a circle, the frame at the bottom.
+  const int n = model.body_count();
+  for (int b = 0; b < n; ++b) {
+    scene.bodies.push_back(structure::body_label(model, b));
+    const double angle = -std::numbers::pi / 2 + 2 * std::numbers::pi * b / std::max(n, 1);
+    scene.nodes.push_back({structure::body_label(model, b), Vector3d(std::cos(angle), std::sin(angle), 0), b, b == 0});
+  }
+  for (std::size_t p = 0; p < model.pairs.size(); ++p) {
+    const auto& pair = model.pairs[p];
+    scene.elements.push_back({"pair " + std::to_string(p + 1), "pair", pair.a, pair.b});
+    GraphEdge edge;
+    edge.name = "p" + std::to_string(p + 1);
+    edge.from = pair.a;
+    edge.to = pair.b;
+    edge.f = pair.freedoms;
+    edge.c = model.dimension - pair.freedoms;
+    scene.edges.push_back(edge);
+  }
+  scene.group_of = decomposition.group_of;
+  scene.large = scene.elements.size() > kLargeSceneElements;
+  return scene;
+}
+
+}  // namespace kinestat::report

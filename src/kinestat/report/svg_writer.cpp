@@ -1,0 +1,517 @@
+#include "kinestat/report/svg_writer.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <set>
+
+namespace kinestat::report {
+
+namespace {
+
+struct P {
+  double x = 0, y = 0;
+};
+P operator+(P a, P b) { return {a.x + b.x, a.y + b.y}; }
+P operator-(P a, P b) { return {a.x - b.x, a.y - b.y}; }
+P operator*(double s, P a) { return {s * a.x, s * a.y}; }
+double norm(P a) { return std::hypot(a.x, a.y); }
+P unit(P a) {
+  const double n = norm(a);
+  return n > 0 ? P{a.x / n, a.y / n} : P{1, 0};
+}
+
+std::string f2(double v) { return fixed(v, 2); }
+std::string pt(P p) { return f2(p.x) + "," + f2(p.y); }
+
+std::string escape(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+std::string header(double width, double height) {
+  return fmt::format(
+      "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1}\" viewBox=\"0 0 {0} {1}\" "
+      "font-family=\"Helvetica, Arial, sans-serif\" font-size=\"12\">\n"
+      "<defs>\n"
+      "<marker id=\"arrow\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"7\" markerHeight=\"7\" "
+      "orient=\"auto-start-reverse\" markerUnits=\"userSpaceOnUse\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"context-stroke\"/></marker>\n"
+      "<marker id=\"arrow-black\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"9\" markerHeight=\"9\" "
+      "orient=\"auto\" markerUnits=\"userSpaceOnUse\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"#222\"/></marker>\n"
+      "<marker id=\"arrow-green\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"8\" markerHeight=\"8\" "
+      "orient=\"auto\" markerUnits=\"userSpaceOnUse\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"#1b7837\"/></marker>\n"
+      "<marker id=\"arrow-orange\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"9\" markerHeight=\"9\" "
+      "orient=\"auto\" markerUnits=\"userSpaceOnUse\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"#e66101\"/></marker>\n"
+      "</defs>\n"
+      "<rect x=\"0\" y=\"0\" width=\"{0}\" height=\"{1}\" fill=\"white\"/>\n",
+      fixed(width, 0), fixed(height, 0));
+}
+
+void text(std::string& out, P at, const std::string& content, const std::string& anchor = "middle",
+          const std::string& extra = "") {
+  out += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"{}\"{}>{}</text>\n", f2(at.x), f2(at.y), anchor,
+                     extra.empty() ? "" : " " + extra, escape(content));
+}
+
+// ---------------------------------------------------------------- graphs
+
+/// A quadratic Bézier from a to b through control point c.
+struct Curve {
+  P a, c, b;
+  P at(double t) const { return (1 - t) * (1 - t) * a + 2 * (1 - t) * t * c + t * t * b; }
+  /// Control point of the piece between t0 and t1 (the curve's blossom).
+  P control(double t0, double t1) const { return (1 - t0) * (1 - t1) * a + ((1 - t0) * t1 + t0 * (1 - t1)) * c + t0 * t1 * b; }
+};
+
+constexpr double kNodeRadius = 13;
+/// A white outline behind edge labels so that lines under them do not hide them.
+const std::string kHalo = "paint-order=\"stroke\" stroke=\"white\" stroke-width=\"3\"";
+constexpr double kParallelSpacing = 26;
+
+/// Curve between the centres of bodies i and j for the k-th of m parallel edges, oriented
+/// from i to j.
+Curve edge_curve(P pi, P pj, int k, int m, double spacing = kParallelSpacing) {
+  const P mid = 0.5 * (pi + pj);
+  const P d = unit(pj - pi);
+  P normal{-d.y, d.x};
+  const double offset = (k - (m - 1) / 2.0) * spacing;
+  return {pi, mid + (2 * offset) * normal, pj};
+}
+
+/// The part of `curve` outside the two node circles.
+Curve trimmed(const Curve& curve) {
+  const P a = curve.a + kNodeRadius * unit(curve.c - curve.a);
+  const P b = curve.b + (kNodeRadius + 1) * unit(curve.c - curve.b);
+  // Keep the control point: the shape changes imperceptibly for short trims.
+  return {a, curve.c, b};
+}
+
+std::string path_of(const Curve& c) { return "M" + pt(c.a) + " Q" + pt(c.c) + " " + pt(c.b); }
+
+bool segments_cross(P a, P b, P c, P d) {
+  const auto side = [](P p, P q, P r) { return (q.x - p.x) * (r.y - p.y) - (q.y - p.y) * (r.x - p.x); };
+  const double d1 = side(a, b, c), d2 = side(a, b, d), d3 = side(c, d, a), d4 = side(c, d, b);
+  return ((d1 > 1e-9 && d2 < -1e-9) || (d1 < -1e-9 && d2 > 1e-9)) && ((d3 > 1e-9 && d4 < -1e-9) || (d3 < -1e-9 && d4 > 1e-9));
+}
+
+/// Bodies on a circle, the ground at the bottom. For up to kPermutedBodies bodies every
+/// order of the others around the circle is tried and the first (in lexicographic order)
+/// with the fewest crossing edges is taken; larger models keep body order.
+constexpr int kPermutedBodies = 8;
+
+std::vector<P> body_layout(const Scene& scene, P centre, double radius) {
+  const int n = static_cast<int>(scene.bodies.size());
+  std::vector<int> others;
+  for (int b = 0; b < n; ++b)
+    if (b != scene.ground) others.push_back(b);
+  const auto place = [&](const std::vector<int>& order) {
+    std::vector<P> at(static_cast<std::size_t>(n));
+    for (int k = 0; k < n; ++k) {
+      const int b = k == 0 ? scene.ground : order[static_cast<std::size_t>(k - 1)];
+      const double angle = std::numbers::pi / 2 - 2 * std::numbers::pi * k / n;
+      at[static_cast<std::size_t>(b)] = n == 1 ? centre : centre + radius * P{std::cos(angle), std::sin(angle)};
+    }
+    return at;
+  };
+  if (n > kPermutedBodies || n < 4) return place(others);
+  std::set<std::pair<int, int>> pairs;
+  for (const auto& edge : scene.edges) pairs.insert({std::min(edge.from, edge.to), std::max(edge.from, edge.to)});
+  const std::vector<std::pair<int, int>> list(pairs.begin(), pairs.end());
+  std::vector<int> best = others, order = others;
+  int fewest = -1;
+  do {
+    const auto at = place(order);
+    int crossings = 0;
+    for (std::size_t i = 0; i < list.size(); ++i)
+      for (std::size_t j = i + 1; j < list.size(); ++j)
+        if (segments_cross(at[static_cast<std::size_t>(list[i].first)], at[static_cast<std::size_t>(list[i].second)],
+                           at[static_cast<std::size_t>(list[j].first)], at[static_cast<std::size_t>(list[j].second)]))
+          ++crossings;
+    if (fewest < 0 || crossings < fewest) fewest = crossings, best = order;
+  } while (std::next_permutation(order.begin(), order.end()));
+  return place(best);
+}
+
+/// For every edge: its index among the edges joining the same two bodies, and how many there are.
+std::vector<std::pair<int, int>> parallel_index(const Scene& scene, const std::vector<int>& multiplicity) {
+  std::map<std::pair<int, int>, int> total, seen;
+  for (std::size_t e = 0; e < scene.edges.size(); ++e) {
+    const auto& edge = scene.edges[e];
+    total[{std::min(edge.from, edge.to), std::max(edge.from, edge.to)}] += multiplicity[e];
+  }
+  std::vector<std::pair<int, int>> out;
+  for (std::size_t e = 0; e < scene.edges.size(); ++e) {
+    const auto& edge = scene.edges[e];
+    const auto key = std::make_pair(std::min(edge.from, edge.to), std::max(edge.from, edge.to));
+    out.emplace_back(seen[key], total[key]);
+    seen[key] += multiplicity[e];
+  }
+  return out;
+}
+
+/// Curve of the k-th parallel edge of `edge`, oriented from `from` to `to`, keeping the side
+/// of the offset independent of orientation.
+Curve oriented_curve(const std::vector<P>& at, const GraphEdge& edge, int k, int m, double spacing = kParallelSpacing) {
+  const int lo = std::min(edge.from, edge.to), hi = std::max(edge.from, edge.to);
+  Curve c = edge_curve(at[static_cast<std::size_t>(lo)], at[static_cast<std::size_t>(hi)], k, m, spacing);
+  if (edge.from != lo) std::swap(c.a, c.b);
+  return c;
+}
+
+const std::array<const char*, 8> kGroupColours = {"#ffffff", "#a6cee3", "#b2df8a", "#fdbf6f", "#cab2d6", "#fb9a99", "#ffff99", "#d9d9d9"};
+
+void draw_bodies(std::string& out, const Scene& scene, const std::vector<P>& at) {
+  for (std::size_t b = 0; b < at.size(); ++b) {
+    std::string fill = "white";
+    if (scene.kind == "structure" && b < scene.group_of.size() && scene.group_of[b] > 0)
+      fill = kGroupColours[static_cast<std::size_t>(1 + (scene.group_of[b] - 1) % 7)];
+    const bool ground = static_cast<int>(b) == scene.ground;
+    out += fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{}\" stroke=\"#222\" stroke-width=\"{}\"/>\n", f2(at[b].x),
+                       f2(at[b].y), fixed(kNodeRadius, 0), ground ? "#e0e0e0" : fill, ground ? "2.5" : "1.5");
+    if (scene.bodies[b].size() <= 2) {
+      text(out, at[b] + P{0, 4}, scene.bodies[b]);
+    } else {
+      // Long names go outside the circle, away from the centre of the layout.
+      P mean{0, 0};
+      for (const P& p : at) mean = mean + p;
+      mean = (1.0 / static_cast<double>(at.size())) * mean;
+      const P out_dir = unit(at[b] - mean);
+      const P anchor = at[b] + (kNodeRadius + 8) * out_dir;
+      text(out, anchor + P{0, 4 + 4 * out_dir.y}, scene.bodies[b], out_dir.x > 0.3 ? "start" : (out_dir.x < -0.3 ? "end" : "middle"));
+    }
+  }
+}
+
+void panel_title(std::string& out, P at, const std::string& title, const std::string& subtitle) {
+  text(out, at, title, "middle", "font-size=\"14\" font-weight=\"bold\"");
+  text(out, at + P{0, 16}, subtitle, "middle", "font-size=\"11\" fill=\"#555\"");
+}
+
+/// Coupling graph with tree, chords, circuits and cutsets in the square panel at `origin`.
+void coupling_graph_panel(std::string& out, const Scene& scene, P origin, double size) {
+  const P centre = origin + P{size / 2, size / 2 + 20};
+  const auto at = body_layout(scene, centre, size * 0.32);
+  const bool network = scene.kind == "network";
+  panel_title(out, origin + P{size / 2, 22}, network ? "coupling graph" : "bodies and pairs",
+              network ? "tree branches thick, chords thin; circuits and cutsets" : "pairs with freedoms f; colour: structural group");
+  const std::vector<int> ones(scene.edges.size(), 1);
+  const auto index = parallel_index(scene, ones);
+  std::vector<P> middle(scene.edges.size());
+  for (std::size_t e = 0; e < scene.edges.size(); ++e) {
+    const auto& edge = scene.edges[e];
+    const Curve c = oriented_curve(at, edge, index[e].first, index[e].second);
+    middle[e] = c.at(0.5);
+    out += fmt::format("<path d=\"{}\" fill=\"none\" stroke=\"#222\" stroke-width=\"{}\"{}/>\n", path_of(trimmed(c)),
+                       edge.branch ? "3.5" : "1.2", network ? " marker-end=\"url(#arrow-black)\"" : "");
+    const P d = unit(c.b - c.a);
+    const P side = P{-d.y, d.x};
+    const std::string label = network ? edge.name : edge.name + " (f=" + std::to_string(edge.f) + ")";
+    text(out, middle[e] + 11.0 * side + P{0, 4}, label, "middle", "font-style=\"italic\" " + kHalo);
+  }
+  if (network) {
+    // Circuits: an arc arrow at the centre of their edges, named by their chord.
+    for (Eigen::Index row = 0; row < scene.B.rows(); ++row) {
+      P mean{0, 0};
+      int count = 0;
+      for (Eigen::Index e = 0; e < scene.B.cols(); ++e)
+        if (scene.B(row, e) != 0) {
+          mean = mean + middle[static_cast<std::size_t>(e)];
+          ++count;
+        }
+      if (count == 0) continue;
+      mean = (1.0 / count) * mean;
+      const double r = 16;
+      const P start = mean + P{r, 0}, end = mean + P{0, -r};
+      out += fmt::format("<path d=\"M{} A{},{} 0 1 1 {}\" fill=\"none\" stroke=\"#1b7837\" stroke-width=\"1.5\" marker-end=\"url(#arrow-green)\"/>\n",
+                         pt(start), f2(r), f2(r), pt(end));
+      std::string name;
+      for (std::size_t e = 0; e < scene.edges.size(); ++e)
+        if (!scene.edges[e].branch && scene.B(row, static_cast<Eigen::Index>(e)) != 0 && name.empty()) {
+          // The circuit of a chord contains only that chord.
+          name = scene.edges[e].name;
+        }
+      text(out, mean + P{0, 4}, name, "middle", "font-size=\"10\" fill=\"#1b7837\"");
+    }
+    // Cutsets: a dashed line through the middles of their edges, named by their branch.
+    for (Eigen::Index row = 0; row < scene.Q.rows(); ++row) {
+      std::vector<P> points;
+      std::string name;
+      for (Eigen::Index e = 0; e < scene.Q.cols(); ++e)
+        if (scene.Q(row, e) != 0) {
+          points.push_back(middle[static_cast<std::size_t>(e)]);
+          if (scene.edges[static_cast<std::size_t>(e)].branch && name.empty()) name = scene.edges[static_cast<std::size_t>(e)].name;
+        }
+      if (points.empty()) continue;
+      P mean{0, 0};
+      for (const P& p : points) mean = mean + p;
+      mean = (1.0 / static_cast<double>(points.size())) * mean;
+      std::vector<P> line;
+      if (points.size() == 1) {
+        // Across the single edge.
+        std::size_t e = 0;
+        for (Eigen::Index c = 0; c < scene.Q.cols(); ++c)
+          if (scene.Q(row, c) != 0) e = static_cast<std::size_t>(c);
+        const auto& edge = scene.edges[e];
+        const P d = unit(at[static_cast<std::size_t>(edge.to)] - at[static_cast<std::size_t>(edge.from)]);
+        const P n{-d.y, d.x};
+        line = {points[0] - 22.0 * n, points[0] + 22.0 * n};
+      } else {
+        // Ordered along the principal direction of the points, extended past both ends.
+        double sxx = 0, sxy = 0, syy = 0;
+        for (const P& p : points) {
+          const P q = p - mean;
+          sxx += q.x * q.x;
+          sxy += q.x * q.y;
+          syy += q.y * q.y;
+        }
+        const double angle = 0.5 * std::atan2(2 * sxy, sxx - syy);
+        const P axis{std::cos(angle), std::sin(angle)};
+        std::stable_sort(points.begin(), points.end(), [&](P a, P b) {
+          return (a.x - mean.x) * axis.x + (a.y - mean.y) * axis.y < (b.x - mean.x) * axis.x + (b.y - mean.y) * axis.y;
+        });
+        line.push_back(points.front() - 18.0 * unit(points[1] - points[0]));
+        for (const P& p : points) line.push_back(p);
+        line.push_back(points.back() + 18.0 * unit(points.back() - points[points.size() - 2]));
+      }
+      std::string d = "M" + pt(line[0]);
+      for (std::size_t i = 1; i < line.size(); ++i) d += " L" + pt(line[i]);
+      out += fmt::format("<path d=\"{}\" fill=\"none\" stroke=\"#762a83\" stroke-width=\"1.5\" stroke-dasharray=\"6,4\"/>\n", d);
+      const P label_at = line.back() + 10.0 * unit(line.back() - line[line.size() - 2]);
+      text(out, label_at + P{0, 4}, name, "middle", "font-size=\"10\" fill=\"#762a83\"");
+    }
+  }
+  draw_bodies(out, scene, at);
+}
+
+/// Motion graph (series) or action graph (parallel) of Fig. 3 in the panel at `origin`.
+void expanded_graph_panel(std::string& out, const Scene& scene, P origin, double size, bool motions) {
+  const P centre = origin + P{size / 2, size / 2 + 20};
+  const auto at = body_layout(scene, centre, size * 0.32);
+  panel_title(out, origin + P{size / 2, 22}, motions ? "motion graph" : "action graph",
+              motions ? "each coupling as f edges in series" : "each coupling as c edges in parallel");
+  std::vector<int> multiplicity;
+  for (const auto& edge : scene.edges) multiplicity.push_back(motions ? 1 : std::max(edge.c, 0));
+  const auto index = parallel_index(scene, multiplicity);
+  for (std::size_t e = 0; e < scene.edges.size(); ++e) {
+    const auto& edge = scene.edges[e];
+    const auto& names = motions ? edge.motion_names : edge.action_names;
+    if (motions) {
+      const Curve c = oriented_curve(at, edge, index[e].first, index[e].second);
+      const Curve t = trimmed(c);
+      const int f = std::max(edge.f, 1);
+      for (int s = 0; s < f; ++s) {
+        const double t0 = static_cast<double>(s) / f, t1 = static_cast<double>(s + 1) / f;
+        const Curve piece{t.at(t0), t.control(t0, t1), t.at(t1)};
+        out += fmt::format("<path d=\"{}\" fill=\"none\" stroke=\"#222\" stroke-width=\"1.3\"{}/>\n", path_of(piece),
+                           edge.f > 0 ? "" : " stroke-dasharray=\"2,3\"");
+        if (s + 1 < f)
+          out += fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"3\" fill=\"#222\"/>\n", f2(piece.b.x), f2(piece.b.y));
+        const P m = piece.at(0.5);
+        const P d = unit(piece.b - piece.a);
+        const std::string label = s < static_cast<int>(names.size()) ? names[static_cast<std::size_t>(s)] : edge.name;
+        text(out, m + 9.0 * P{-d.y, d.x} + P{0, 4}, label, "middle", "font-size=\"10\" font-style=\"italic\" " + kHalo);
+      }
+    } else {
+      for (int s = 0; s < edge.c; ++s) {
+        const int k = index[e].first + s;
+        const Curve c = oriented_curve(at, edge, k, index[e].second, 14);
+        out += fmt::format("<path d=\"{}\" fill=\"none\" stroke=\"#222\" stroke-width=\"1.1\"/>\n", path_of(trimmed(c)));
+        const P m = c.at(0.5 + 0.14 * (k % 3 - 1));
+        const std::string label = s < static_cast<int>(names.size()) ? names[static_cast<std::size_t>(s)] : edge.name;
+        out += fmt::format("<rect x=\"{}\" y=\"{}\" width=\"22\" height=\"12\" fill=\"white\"/>\n", f2(m.x - 11), f2(m.y - 7));
+        text(out, m + P{0, 3}, label, "middle", "font-size=\"10\" font-style=\"italic\" " + kHalo);
+      }
+    }
+  }
+  draw_bodies(out, scene, at);
+}
+
+// ---------------------------------------------------------------- mechanisms
+
+struct View {
+  int dimension = 2;
+  double cy = std::cos(-0.6), sy = std::sin(-0.6);  // yaw about z
+  double cp = std::cos(0.45), sp = std::sin(0.45);  // pitch
+  /// Screen coordinates with y up, before fitting.
+  P project(const Eigen::Vector3d& v) const {
+    if (dimension == 2) return {v.x(), v.y()};
+    const double x = cy * v.x() - sy * v.y();
+    const double depth = sy * v.x() + cy * v.y();
+    return {x, v.z() * cp + depth * sp};
+  }
+};
+
+struct Fit {
+  double scale = 1, ox = 0, oy = 0;
+  P operator()(P p) const { return {ox + scale * p.x, oy - scale * p.y}; }
+};
+
+std::string stress_colour(double value) { return value > 0 ? "#c0392b" : "#2166ac"; }
+
+}  // namespace
+
+std::string graph_svg(const Scene& scene) {
+  const double size = 380;
+  const bool network = scene.kind == "network";
+  const double width = network ? 3 * size : size + 160, height = size + 40;
+  std::string out = header(width, height);
+  text(out, P{width / 2, height - 12}, scene.name, "middle", "font-size=\"12\" fill=\"#333\"");
+  coupling_graph_panel(out, scene, P{network ? 0.0 : 80.0, 0}, size);
+  if (network) {
+    expanded_graph_panel(out, scene, P{size, 0}, size, true);
+    expanded_graph_panel(out, scene, P{2 * size, 0}, size, false);
+  }
+  out += "</svg>\n";
+  return out;
+}
+
+std::string mechanism_svg(const Scene& scene, const MechanismDrawing& drawing) {
+  View view;
+  view.dimension = scene.dimension;
+  const double width = 640, height = 520, margin = 50, top = 40, legend = 60;
+  std::vector<P> at;
+  for (const auto& node : scene.nodes) at.push_back(view.project(node.position));
+  const SceneMode* mode = drawing.mode >= 1 && drawing.mode <= static_cast<int>(scene.modes.size())
+                              ? &scene.modes[static_cast<std::size_t>(drawing.mode - 1)]
+                              : nullptr;
+  const SceneStress* stress = drawing.stress >= 1 && drawing.stress <= static_cast<int>(scene.stresses.size())
+                                  ? &scene.stresses[static_cast<std::size_t>(drawing.stress - 1)]
+                                  : nullptr;
+  if (scene.large) mode = nullptr, stress = nullptr;
+  P lo{1e300, 1e300}, hi{-1e300, -1e300};
+  for (const P& p : at) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+  }
+  if (at.empty()) lo = hi = P{0, 0};
+  const double extent = std::max({hi.x - lo.x, hi.y - lo.y, 1e-12});
+  // Mode arrows: the largest is a fifth of the drawing.
+  std::vector<P> arrow(at.size(), P{0, 0});
+  if (mode) {
+    double largest = 0;
+    for (std::size_t i = 0; i < at.size(); ++i) {
+      arrow[i] = view.project(scene.nodes[i].position + mode->velocity[i]) - at[i];
+      largest = std::max(largest, norm(arrow[i]));
+    }
+    for (std::size_t i = 0; i < at.size(); ++i) {
+      arrow[i] = largest > 0 && norm(arrow[i]) > 1e-9 * largest ? (0.2 * extent / largest) * arrow[i] : P{0, 0};
+      const P tip = at[i] + arrow[i];
+      lo = {std::min(lo.x, tip.x), std::min(lo.y, tip.y)};
+      hi = {std::max(hi.x, tip.x), std::max(hi.y, tip.y)};
+    }
+  }
+  Fit fit;
+  const double span_x = std::max(hi.x - lo.x, 1e-12 * extent), span_y = std::max(hi.y - lo.y, 1e-12 * extent);
+  fit.scale = std::min((width - 2 * margin) / span_x, (height - top - legend - 2 * margin) / span_y);
+  if (!std::isfinite(fit.scale) || fit.scale <= 0) fit.scale = 1;
+  fit.ox = width / 2 - fit.scale * (lo.x + hi.x) / 2;
+  fit.oy = top + margin + (height - top - legend - 2 * margin) / 2 + fit.scale * (lo.y + hi.y) / 2;
+
+  std::string out = header(width, height);
+  text(out, P{width / 2, 24}, scene.name, "middle", "font-size=\"14\" font-weight=\"bold\"");
+  if (scene.large) {
+    std::string d;
+    for (const auto& element : scene.elements)
+      d += "M" + pt(fit(at[static_cast<std::size_t>(element.a)])) + "L" + pt(fit(at[static_cast<std::size_t>(element.b)]));
+    out += "<path d=\"" + d + "\" fill=\"none\" stroke=\"#333\" stroke-width=\"0.5\"/>\n";
+    text(out, P{width / 2, height - 20},
+         fmt::format("{} elements: drawn as one path without labels, modes or stresses", scene.elements.size()), "middle",
+         "font-size=\"11\" fill=\"#555\"");
+    out += "</svg>\n";
+    return out;
+  }
+  double largest_stress = 0;
+  if (stress)
+    for (double v : stress->value) largest_stress = std::max(largest_stress, std::abs(v));
+  for (std::size_t e = 0; e < scene.elements.size(); ++e) {
+    const auto& element = scene.elements[e];
+    const P a = fit(at[static_cast<std::size_t>(element.a)]), b = fit(at[static_cast<std::size_t>(element.b)]);
+    std::string colour = "#333", width_text = element.type == "beam" ? "3.5" : "2", dash;
+    if (element.type == "rigid") colour = "#888", dash = " stroke-dasharray=\"5,3\"";
+    if (element.type == "link") colour = "#555", width_text = "3";
+    if (stress && largest_stress > 0) {
+      const double v = stress->value[e];
+      if (std::abs(v) > 1e-9 * largest_stress) {
+        colour = stress_colour(v);
+        width_text = fixed(1.5 + 3.5 * std::abs(v) / largest_stress, 2);
+      } else {
+        colour = "#bbbbbb";
+      }
+    }
+    out += fmt::format("<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{}\" stroke-width=\"{}\" stroke-linecap=\"round\"{}/>\n",
+                       f2(a.x), f2(a.y), f2(b.x), f2(b.y), colour, width_text, dash);
+  }
+  // Coupling glyphs: a square at the point, the axis as a dash-dotted line.
+  std::map<std::pair<long long, long long>, int> labels_at;
+  for (const auto& glyph : scene.glyphs) {
+    const P p = fit(view.project(glyph.point));
+    // Couplings at the same point get their labels one below the other.
+    const int below = labels_at[{std::llround(p.x), std::llround(p.y)}]++;
+    const auto axis = glyph.axis ? glyph.axis : glyph.normal;
+    if (axis && axis->norm() > 0) {
+      const Eigen::Vector3d u = axis->normalized() * 0.18 * extent;
+      const P a = fit(view.project(glyph.point - u)), b = fit(view.project(glyph.point + u));
+      if (norm(b - a) > 2)
+        out += fmt::format("<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"#1b7837\" stroke-width=\"1\" stroke-dasharray=\"8,3,2,3\"/>\n",
+                           f2(a.x), f2(a.y), f2(b.x), f2(b.y));
+    }
+    out += fmt::format("<rect x=\"{}\" y=\"{}\" width=\"10\" height=\"10\" fill=\"white\" stroke=\"#1b7837\" stroke-width=\"1.5\"/>\n",
+                       f2(p.x - 5), f2(p.y - 5));
+    text(out, p + P{8, 14.0 + 12.0 * below}, glyph.name + " (" + glyph.type + ")", "start", "font-size=\"10\" fill=\"#1b7837\"");
+  }
+  const bool label_nodes = scene.nodes.size() <= 200;
+  const std::size_t labelled = scene.kind == "network" ? scene.bodies.size() : scene.nodes.size();
+  for (std::size_t i = 0; i < scene.nodes.size(); ++i) {
+    const P p = fit(at[i]);
+    if (scene.nodes[i].fixed && scene.kind == "framework") {
+      out += fmt::format("<path d=\"M{} L{} L{} z\" fill=\"#ddd\" stroke=\"#222\" stroke-width=\"1\"/>\n", pt(p), pt(p + P{-7, 12}),
+                         pt(p + P{7, 12}));
+    }
+    if (scene.kind == "network" && i >= scene.bodies.size()) continue;
+    out += fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"3.5\" fill=\"{}\" stroke=\"#222\" stroke-width=\"1.2\"/>\n", f2(p.x), f2(p.y),
+                       scene.nodes[i].fixed ? "#222" : "white");
+    if (label_nodes && i < labelled) text(out, p + P{-7, -7}, scene.nodes[i].name, "end", "font-size=\"11\"");
+  }
+  if (mode) {
+    for (std::size_t i = 0; i < at.size(); ++i) {
+      if (norm(arrow[i]) == 0) continue;
+      const P a = fit(at[i]), b = fit(at[i] + arrow[i]);
+      out += fmt::format("<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"#e66101\" stroke-width=\"2\" marker-end=\"url(#arrow-orange)\"/>\n",
+                         f2(a.x), f2(a.y), f2(b.x), f2(b.y));
+    }
+  }
+  // Legend.
+  double y = height - legend + 12;
+  if (mode) {
+    out += fmt::format("<line x1=\"20\" y1=\"{0}\" x2=\"50\" y2=\"{0}\" stroke=\"#e66101\" stroke-width=\"2\" marker-end=\"url(#arrow-orange)\"/>\n", f2(y - 4));
+    text(out, P{58, y}, fmt::format("{} (of {}): nodal velocities, largest drawn at 20% of the model size", mode->label, scene.modes.size()), "start");
+    y += 20;
+  }
+  if (stress && largest_stress > 0) {
+    out += fmt::format("<line x1=\"20\" y1=\"{0}\" x2=\"50\" y2=\"{0}\" stroke=\"#c0392b\" stroke-width=\"5\"/>\n", f2(y - 4));
+    out += fmt::format("<line x1=\"56\" y1=\"{0}\" x2=\"86\" y2=\"{0}\" stroke=\"#2166ac\" stroke-width=\"5\"/>\n", f2(y - 4));
+    text(out, P{94, y},
+         fmt::format("{} of {}: tension red, compression blue, width by |N|, largest |N| = {}", stress->label,
+                     scene.stresses.size(), fixed(largest_stress, 4)),
+         "start");
+    y += 20;
+  }
+  if (!mode && !stress) text(out, P{20, y}, scene.modes.empty() && scene.stresses.empty() ? "no kinematic modes and no self-stress" : "configuration only", "start");
+  out += "</svg>\n";
+  return out;
+}
+
+}  // namespace kinestat::report

@@ -1,0 +1,204 @@
+// Browser tests of the HTML reports: headless Chromium (Debian's `chromium`) driven by
+// playwright-core from the npm registry. For every shipped example: the report opens without
+// console errors and the 3D canvas is not blank; a kinematic mode at two amplitudes gives two
+// different pictures; the 12-truss self-stress colours its twelve bars with two colours.
+// Screenshots go to --out. Exit 0 all passed, 1 failures, 77 skipped (no playwright-core).
+//
+// node tests/browser/check_reports.mjs --cli build/release/kinestat \
+//   --modules build/release/viewer/node_modules --examples examples \
+//   --out build/release/browser-artifacts --chromium /usr/bin/chromium
+import { createRequire } from 'node:module';
+import { execFileSync } from 'node:child_process';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { pathToFileURL } from 'node:url';
+
+const option = (name, fallback) => {
+  const i = process.argv.indexOf('--' + name);
+  return i >= 0 ? process.argv[i + 1] : fallback;
+};
+const cli = option('cli', 'build/release/kinestat');
+const modules = option('modules', 'build/release/viewer/node_modules');
+const examples = option('examples', 'examples');
+const out = option('out', 'build/release/browser-artifacts');
+const executable = option('chromium', '/usr/bin/chromium');
+const only = option('only', '');
+
+if (!fs.existsSync(path.join(modules, 'playwright-core')) || !fs.existsSync(executable)) {
+  // CI sets KINESTAT_REQUIRE_BROWSER=1 so that a missing piece fails instead of skipping.
+  const required = process.env.KINESTAT_REQUIRE_BROWSER === '1';
+  console.log((required ? 'FAILED: ' : 'SKIP: ') + 'playwright-core (' + modules + ') or Chromium (' + executable + ') is missing');
+  process.exit(required ? 1 : 77);
+}
+const require = createRequire(path.join(path.resolve(modules), 'index.js'));
+const { chromium } = require('playwright-core');
+
+fs.mkdirSync(out, { recursive: true });
+const work = fs.mkdtempSync(path.join(os.tmpdir(), 'kinestat-browser-'));
+const context = await chromium.launchPersistentContext(path.join(work, 'profile'), {
+  executablePath: executable,
+  headless: true,
+  viewport: { width: 1100, height: 700 },
+  args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking',
+         '--disable-component-update', '--disable-sync', '--enable-unsafe-swiftshader', '--use-angle=swiftshader'],
+});
+
+const failures = [];
+let checks = 0;
+const check = (condition, message) => {
+  checks++;
+  if (!condition) failures.push(message);
+};
+
+// Pixel statistics of the WebGL canvas, read through a 2D canvas.
+const pixels = () => {
+  const source = document.getElementById('view');
+  const c = document.createElement('canvas');
+  c.width = source.width;
+  c.height = source.height;
+  const g = c.getContext('2d');
+  g.drawImage(source, 0, 0);
+  const data = g.getImageData(0, 0, c.width, c.height).data;
+  let ink = 0, red = 0, blue = 0;
+  for (let i = 0; i < data.length; i += 4) {
+    const r = data[i], gr = data[i + 1], b = data[i + 2];
+    if (r < 235 || gr < 235 || b < 235) ink++;
+    if (r > gr + 60 && r > b + 60) red++;
+    if (b > r + 60 && b > gr + 20) blue++;
+  }
+  return { total: data.length / 4, ink, red, blue, url: source.toDataURL() };
+};
+
+const files = fs.readdirSync(examples).filter((f) => f.endsWith('.yaml') && (!only || f.includes(only))).sort();
+for (const file of files) {
+  const name = file.replace(/\.yaml$/, '');
+  const html = path.join(work, name + '.html');
+  execFileSync(cli, ['report', path.join(examples, file), '-o', html]);
+  const page = await context.newPage();
+  const errors = [];
+  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+  page.on('pageerror', (e) => errors.push(String(e)));
+  await page.goto(pathToFileURL(html).href);
+  try {
+    await page.waitForFunction(() => window.kinestatViewer && window.kinestatViewer.frames > 3, null, { timeout: 30000 });
+  } catch (e) {
+    failures.push(name + ': the viewer did not start: ' + errors.join('; '));
+    await page.screenshot({ path: path.join(out, name + '.png') });
+    await page.close();
+    continue;
+  }
+  const still = await page.evaluate(pixels);
+  check(still.ink > still.total * 0.002, name + ': the 3D canvas is blank (' + still.ink + ' inked pixels)');
+  await page.screenshot({ path: path.join(out, name + '.png') });
+  const views = await page.evaluate(() => window.kinestatViewer.views);
+  // Every mode that moves a drawn point must change the picture when the slider moves.
+  let moving = 0;
+  for (let mode = 0; mode < views.length; mode++) {
+    if (!views[mode].startsWith('mode')) continue;
+    const modeIndex = await page.evaluate((i) => window.kinestatViewer.views.slice(0, i).filter((v) => v.startsWith('mode')).length, mode);
+    if (!(await page.evaluate((k) => window.kinestatViewer.modeMoves(k), modeIndex))) continue;
+    moving++;
+    const a = await page.evaluate((i) => {
+      const v = window.kinestatViewer;
+      v.freeze(Math.PI / 2);
+      v.setView(i);
+      v.setAmplitude(0);
+      v.render();
+      return document.getElementById('view').toDataURL();
+    }, mode);
+    const b = await page.evaluate(() => {
+      const v = window.kinestatViewer;
+      v.setAmplitude(1);
+      v.render();
+      return document.getElementById('view').toDataURL();
+    });
+    check(a !== b, name + ': moving the amplitude slider of ' + views[mode] + ' does not change the picture');
+    if (moving === 1) await page.screenshot({ path: path.join(out, name + '-mode.png') });
+  }
+  if (['truss-12', 'davies-2-circuit', 'four-bar-linkage'].includes(name))
+    check(moving > 0, name + ': no kinematic mode that moves a drawn point');
+  // Networks: the coupling screw axes and the motion system of a chosen pair are drawn.
+  if (name === 'davies-2-circuit') {
+    const result = await page.evaluate(() => {
+      const v = window.kinestatViewer;
+      v.freeze(0);
+      v.setView(0);
+      v.render();
+      const before = document.getElementById('view').toDataURL();
+      const box = document.getElementById('screws');
+      box.checked = true;
+      box.dispatchEvent(new Event('change'));
+      v.render();
+      const screws = document.getElementById('view').toDataURL();
+      const pair = document.getElementById('pair');
+      pair.value = '0';
+      pair.dispatchEvent(new Event('change'));
+      v.render();
+      const withPair = document.getElementById('view').toDataURL();
+      return { screws: screws !== before, pair: withPair !== screws, info: document.getElementById('pairinfo').textContent,
+               pairs: pair.options.length - 1 };
+    });
+    check(result.screws, name + ': showing the coupling screw axes does not change the picture');
+    check(result.pairs === 6, name + ': expected 6 pairs of bodies, found ' + result.pairs);
+    check(result.pair && result.info.includes('Motion system'), name + ': choosing a pair does not show its motion system');
+    await page.screenshot({ path: path.join(out, name + '-screws.png') });
+  }
+  const stress = views.findIndex((v) => v.startsWith('self-stress'));
+  if (stress >= 0) {
+    const result = await page.evaluate((i) => {
+      const v = window.kinestatViewer;
+      v.freeze(0);
+      v.setView(i);
+      v.render();
+      return v.elementColours();
+    }, stress);
+    const seen = await page.evaluate(pixels);
+    if (name === 'truss-12') {
+      check(result.length === 12, name + ': expected 12 bars, found ' + result.length);
+      check(new Set(result).size === 2, name + ': the self-stress should colour the bars with two colours, found ' + [...new Set(result)].join(', '));
+      check(seen.red > 100 && seen.blue > 100, name + ': tension (red) and compression (blue) not both visible (' + seen.red + ' red, ' + seen.blue + ' blue pixels)');
+    }
+    await page.screenshot({ path: path.join(out, name + '-stress.png') });
+  }
+  check(errors.length === 0, name + ': console errors: ' + errors.join('; '));
+  console.log((errors.length ? 'FAIL ' : 'ok   ') + name + ' (' + views.length + ' views)');
+  await page.close();
+}
+// A generated planar strip of about 200 000 bars: the report opens and draws.
+if (!only || only === 'large') {
+  const columns = 66700;
+  const lines = ['kinestat: 1', 'kind: framework', 'name: large strip', 'dimension: 2', 'nodes:'];
+  for (let i = 0; i < columns; i++) lines.push('  a' + i + ': [' + i + ', 0]', '  b' + i + ': [' + i + ', 1]');
+  lines.push('supports: {a0: fixed, b0: fixed}', 'elements:');
+  for (let i = 0; i + 1 < columns; i++)
+    lines.push('  - {type: truss, nodes: [a' + i + ', a' + (i + 1) + ']}', '  - {type: truss, nodes: [b' + i + ', b' + (i + 1) + ']}',
+               '  - {type: truss, nodes: [a' + (i + 1) + ', b' + i + ']}');
+  const model = path.join(work, 'large.yaml');
+  fs.writeFileSync(model, lines.join('\n') + '\n');
+  const html = path.join(work, 'large.html');
+  execFileSync(cli, ['report', model, '-o', html]);
+  const size = fs.statSync(html).size;
+  check(size < 12 * 1024 * 1024, 'large: the report is ' + size + ' bytes');
+  const page = await context.newPage();
+  const errors = [];
+  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+  page.on('pageerror', (e) => errors.push(String(e)));
+  await page.goto(pathToFileURL(html).href);
+  try {
+    await page.waitForFunction(() => window.kinestatViewer && window.kinestatViewer.frames > 3, null, { timeout: 60000 });
+    const seen = await page.evaluate(pixels);
+    check(seen.ink > 0, 'large: the 3D canvas is blank');
+  } catch (e) {
+    failures.push('large: the viewer did not start: ' + errors.join('; '));
+  }
+  await page.screenshot({ path: path.join(out, 'large-strip.png') });
+  check(errors.length === 0, 'large: console errors: ' + errors.join('; '));
+  console.log((errors.length ? 'FAIL ' : 'ok   ') + 'large strip (' + (size / 1048576).toFixed(1) + ' MB)');
+  await page.close();
+}
+await context.close();
+fs.rmSync(work, { recursive: true, force: true });
+console.log(checks + ' checks, ' + failures.length + ' failed; screenshots in ' + out);
+for (const f of failures) console.log('FAILED: ' + f);
+process.exit(failures.length ? 1 : 0);

@@ -1,0 +1,310 @@
+// kinestat report viewer: draws the scene embedded as window.KINESTAT_SCENE with three.js
+// (global THREE). Rotate by dragging, zoom with the wheel. window.kinestatViewer gives tests
+// and users a small API: setView, setAmplitude, freeze, elementColours, ready.
+(function () {
+  'use strict';
+  const S = window.KINESTAT_SCENE;
+  const api = { ready: false, frames: 0 };
+  window.kinestatViewer = api;
+  const $ = (id) => document.getElementById(id);
+  const text = (tag, content, cls) => {
+    const e = document.createElement(tag);
+    e.textContent = content;
+    if (cls) e.className = cls;
+    return e;
+  };
+
+  // ---- side panel
+  $('title').textContent = S.name || 'kinestat report';
+  const table = $('summary');
+  for (const [key, value] of S.summary) {
+    const row = document.createElement('tr');
+    row.appendChild(text('td', key));
+    row.appendChild(text('td', value));
+    table.appendChild(row);
+  }
+  const viewSelect = $('mode');
+  const views = [{ kind: 'configuration', label: 'configuration' }];
+  S.modes.forEach((m, i) => views.push({ kind: 'mode', index: i, label: m.label + ' (kinematic)' }));
+  S.stresses.forEach((s, i) => views.push({ kind: 'stress', index: i, label: s.label }));
+  views.forEach((v, i) => {
+    const o = text('option', v.label);
+    o.value = String(i);
+    viewSelect.appendChild(o);
+  });
+  if (S.large) $('notes').appendChild(text('p', 'Large model (' + S.elements.count + ' elements): drawn as one line set, without glyphs, labels or modes.', 'note'));
+  if (S.kind === 'structure') $('notes').appendChild(text('p', 'A structure model has no geometry: bodies are placed on a circle (the frame black, at the bottom), pairs drawn as bars, bodies coloured by structural group.', 'note'));
+  else if (!S.large && S.modes.length === 0 && S.stresses.length === 0) $('notes').appendChild(text('p', 'No kinematic modes and no self-stress states to show.', 'note'));
+
+  // ---- three.js scene
+  let renderer;
+  try {
+    renderer = new THREE.WebGLRenderer({ canvas: $('view'), antialias: true, preserveDrawingBuffer: true });
+  } catch (error) {
+    $('message').textContent = 'WebGL is not available in this browser: ' + error.message;
+    return;
+  }
+  renderer.setPixelRatio(1);
+  const scene = new THREE.Scene();
+  scene.background = new THREE.Color(0xffffff);
+  scene.add(new THREE.AmbientLight(0xffffff, 0.7));
+  const sun = new THREE.DirectionalLight(0xffffff, 0.8);
+  scene.add(sun);
+  const camera = new THREE.PerspectiveCamera(35, 1, 1e-3, 1e7);
+  camera.up.set(0, 0, 1);
+
+  const P = S.nodes.position;
+  const n = P.length / 3;
+  const base = (i) => new THREE.Vector3(P[3 * i], P[3 * i + 1], P[3 * i + 2]);
+  const box = new THREE.Box3();
+  for (let i = 0; i < n; i++) box.expandByPoint(base(i));
+  if (n === 0) box.expandByPoint(new THREE.Vector3());
+  const centre = box.getCenter(new THREE.Vector3());
+  const size = Math.max(box.getSize(new THREE.Vector3()).length(), 1e-9);
+  const E = S.elements.pairs;
+  const m = E.length / 2;
+  const light = S.large || m > 2000 || n > 2000;
+  const radius = size * 0.008;
+
+  const grey = new THREE.Color(0x444444);
+  const current = new Float32Array(3 * n);
+  current.set(P);
+  const colours = [];
+  for (let e = 0; e < m; e++) colours.push(grey.clone());
+
+  // Elements: cylinders for ordinary models, one line set for large ones.
+  let lineSet = null;
+  const bars = [];
+  const yAxis = new THREE.Vector3(0, 1, 0);
+  if (light) {
+    const geometry = new THREE.BufferGeometry();
+    geometry.setAttribute('position', new THREE.BufferAttribute(new Float32Array(6 * m), 3));
+    geometry.setAttribute('color', new THREE.BufferAttribute(new Float32Array(6 * m), 3));
+    lineSet = new THREE.LineSegments(geometry, new THREE.LineBasicMaterial({ vertexColors: true }));
+    scene.add(lineSet);
+  } else {
+    const cylinder = new THREE.CylinderGeometry(1, 1, 1, 12);
+    for (let e = 0; e < m; e++) {
+      const mesh = new THREE.Mesh(cylinder, new THREE.MeshLambertMaterial({ color: grey }));
+      scene.add(mesh);
+      bars.push(mesh);
+    }
+  }
+  const spheres = [];
+  if (!light) {
+    const ball = new THREE.SphereGeometry(radius * 1.8, 16, 12);
+    const groupBall = new THREE.SphereGeometry(radius * 4, 16, 12);
+    for (let i = 0; i < n; i++) {
+      const fixed = S.nodes.fixed[i];
+      // Structures: bodies coloured by structural group, as in the SVG drawings.
+      const palette = [0xa6cee3, 0xb2df8a, 0xfdbf6f, 0xcab2d6, 0xfb9a99, 0xffff99, 0xd9d9d9];
+      const group = S.kind === 'structure' && S.group_of ? S.group_of[i] : 0;
+      const colour = fixed ? 0x222222 : (group > 0 ? palette[(group - 1) % palette.length] : 0xf0f0f0);
+      const mesh = new THREE.Mesh(group > 0 ? groupBall : ball, new THREE.MeshLambertMaterial({ color: colour }));
+      scene.add(mesh);
+      spheres.push(mesh);
+    }
+  }
+  // Coupling glyphs (networks): a box at the point and the joint axis.
+  const glyphs = [];
+  const glyphGroup = new THREE.Group();
+  scene.add(glyphGroup);
+  const lineBetween = (a, b, colour) => {
+    const g = new THREE.BufferGeometry().setFromPoints([a, b]);
+    return new THREE.Line(g, new THREE.LineBasicMaterial({ color: colour }));
+  };
+  if (!light) {
+    S.glyphs.forEach((g, k) => {
+      const group = new THREE.Group();
+      const cube = new THREE.Mesh(new THREE.BoxGeometry(radius * 5, radius * 5, radius * 5),
+                                  new THREE.MeshLambertMaterial({ color: 0x1b7837 }));
+      group.add(cube);
+      const axis = g.axis || g.normal;
+      if (axis) {
+        const d = new THREE.Vector3(axis[0], axis[1], axis[2]).normalize().multiplyScalar(size * 0.12);
+        group.add(lineBetween(d.clone().negate(), d, 0x1b7837));
+      }
+      group.position.set(g.point[0], g.point[1], g.point[2]);
+      glyphGroup.add(group);
+      glyphs.push({ group: group, node: S.bodies.length + 2 * k + 1 });
+    });
+  }
+
+  // Screw axes of unit motions: rotations as lines along the axis, translations as arrows.
+  const full = (screw) => {
+    if (screw.length === 6) return screw;
+    const out = [0, 0, 0, 0, 0, 0];
+    S.screw_components.forEach((c, i) => { out[c] = screw[i]; });
+    return out;
+  };
+  const screwObject = (screw, colour, at) => {
+    const s = full(screw);
+    const w = new THREE.Vector3(s[0], s[1], s[2]);
+    const v = new THREE.Vector3(s[3], s[4], s[5]);
+    if (w.length() > 1e-12) {
+      const p = new THREE.Vector3().crossVectors(w, v).divideScalar(w.lengthSq());
+      const d = w.clone().normalize().multiplyScalar(size * 0.25);
+      return lineBetween(p.clone().sub(d), p.clone().add(d), colour);
+    }
+    if (v.length() < 1e-12) return new THREE.Group();
+    return new THREE.ArrowHelper(v.clone().normalize(), at, size * 0.15, colour);
+  };
+  const screwGroup = new THREE.Group();
+  scene.add(screwGroup);
+  const pairGroup = new THREE.Group();
+  scene.add(pairGroup);
+  if (S.kind === 'network' && !light) {
+    $('network').style.display = '';
+    S.glyphs.forEach((g) => {
+      const at = new THREE.Vector3(g.point[0], g.point[1], g.point[2]);
+      g.motions.forEach((s) => screwGroup.add(screwObject(s, 0xe66101, at)));
+    });
+    screwGroup.visible = false;
+    $('screws').addEventListener('change', () => { screwGroup.visible = $('screws').checked; });
+    const pairSelect = $('pair');
+    pairSelect.appendChild(text('option', '(none)'));
+    S.pairs.forEach((p, i) => {
+      const o = text('option', 'bodies ' + S.bodies[p.i] + ', ' + S.bodies[p.j] + ': fij = ' + p.fij);
+      o.value = String(i);
+      pairSelect.appendChild(o);
+    });
+    pairSelect.addEventListener('change', () => {
+      pairGroup.clear();
+      const p = S.pairs[Number(pairSelect.value)];
+      $('pairinfo').textContent = '';
+      if (!p) return;
+      const at = base(p.j);
+      p.motions.forEach((s) => pairGroup.add(screwObject(s, 0x7b3294, at)));
+      $('pairinfo').textContent = 'Motion system of body ' + S.bodies[p.j] + ' relative to ' + S.bodies[p.i] + ': ' +
+        p.motions.length + ' screw(s) shown (purple), rank fij = ' + p.fij + '.';
+    });
+  }
+
+  // ---- view state
+  const state = { view: 0, amplitude: 0.5, frozen: null, start: performance.now() };
+  const velocityScale = (mode) => {
+    let largest = 0;
+    for (let i = 0; i < n; i++)
+      largest = Math.max(largest, Math.hypot(mode.velocity[3 * i], mode.velocity[3 * i + 1], mode.velocity[3 * i + 2]));
+    return largest > 0 ? size * 0.25 / largest : 0;
+  };
+  const red = new THREE.Color(0xc0392b), blue = new THREE.Color(0x2166ac), light_grey = new THREE.Color(0xdddddd);
+  const applyColours = () => {
+    const v = views[state.view];
+    const legend = $('legend');
+    legend.textContent = '';
+    for (let e = 0; e < m; e++) colours[e].copy(grey);
+    if (v.kind === 'stress') {
+      const values = S.stresses[v.index].value;
+      let largest = 0;
+      for (const x of values) largest = Math.max(largest, Math.abs(x));
+      for (let e = 0; e < m; e++) {
+        const x = values[e] || 0;
+        const t = largest > 0 ? Math.abs(x) / largest : 0;
+        colours[e].copy(light_grey).lerp(x > 0 ? red : blue, t);
+      }
+      legend.appendChild(text('span', 'compression '));
+      legend.appendChild(text('span', '', 'bar'));
+      legend.appendChild(text('span', ' tension; largest |N| = ' + largest.toPrecision(4) + ' (unit-norm stress state)'));
+    } else if (v.kind === 'mode') {
+      legend.textContent = velocityScale(S.modes[v.index]) === 0
+        ? S.modes[v.index].label + ': moves no drawn point (only rotations, or rotation about an axis through every point of the moving bodies)'
+        : S.modes[v.index].label + ': amplitude ' + state.amplitude.toFixed(2) + ' (largest displacement ' +
+          (state.amplitude * 25).toFixed(0) + '% of the model size)';
+    } else {
+      legend.textContent = 'drag to rotate, wheel to zoom';
+    }
+    if (lineSet) {
+      const c = lineSet.geometry.attributes.color.array;
+      for (let e = 0; e < m; e++) for (let k = 0; k < 2; k++) colours[e].toArray(c, 6 * e + 3 * k);
+      lineSet.geometry.attributes.color.needsUpdate = true;
+    } else {
+      bars.forEach((bar, e) => bar.material.color.copy(colours[e]));
+    }
+  };
+  const place = (phase) => {
+    const v = views[state.view];
+    current.set(P);
+    if (v.kind === 'mode') {
+      const mode = S.modes[v.index];
+      const k = velocityScale(mode) * state.amplitude * Math.sin(phase);
+      for (let i = 0; i < 3 * n; i++) current[i] += k * mode.velocity[i];
+    }
+    const at = (i) => new THREE.Vector3(current[3 * i], current[3 * i + 1], current[3 * i + 2]);
+    if (lineSet) {
+      const p = lineSet.geometry.attributes.position.array;
+      for (let e = 0; e < m; e++) {
+        const a = E[2 * e], b = E[2 * e + 1];
+        for (let k = 0; k < 3; k++) { p[6 * e + k] = current[3 * a + k]; p[6 * e + 3 + k] = current[3 * b + k]; }
+      }
+      lineSet.geometry.attributes.position.needsUpdate = true;
+      lineSet.geometry.computeBoundingSphere();
+    }
+    bars.forEach((bar, e) => {
+      const a = at(E[2 * e]), b = at(E[2 * e + 1]);
+      const d = b.clone().sub(a);
+      const length = Math.max(d.length(), 1e-12);
+      bar.position.copy(a).add(b).multiplyScalar(0.5);
+      bar.quaternion.setFromUnitVectors(yAxis, d.divideScalar(length));
+      bar.scale.set(radius, length, radius);
+    });
+    spheres.forEach((s, i) => s.position.copy(at(i)));
+    glyphs.forEach((g) => g.group.position.copy(at(g.node)));
+  };
+
+  // ---- camera: orbit around the centre
+  const orbit = { azimuth: S.dimension === 2 ? -Math.PI / 2 : -Math.PI / 3, elevation: S.dimension === 2 ? 1.5 : 0.45, distance: size * 2.4 };
+  const placeCamera = () => {
+    const c = Math.cos(orbit.elevation);
+    camera.position.set(centre.x + orbit.distance * c * Math.cos(orbit.azimuth),
+                        centre.y + orbit.distance * c * Math.sin(orbit.azimuth),
+                        centre.z + orbit.distance * Math.sin(orbit.elevation));
+    camera.lookAt(centre);
+    sun.position.copy(camera.position);
+  };
+  const canvas = $('view');
+  let drag = null;
+  canvas.addEventListener('pointerdown', (e) => { drag = { x: e.clientX, y: e.clientY }; canvas.setPointerCapture(e.pointerId); });
+  canvas.addEventListener('pointerup', () => { drag = null; });
+  canvas.addEventListener('pointermove', (e) => {
+    if (!drag) return;
+    orbit.azimuth -= (e.clientX - drag.x) * 0.01;
+    orbit.elevation = Math.max(-1.55, Math.min(1.55, orbit.elevation + (e.clientY - drag.y) * 0.01));
+    drag = { x: e.clientX, y: e.clientY };
+  });
+  canvas.addEventListener('wheel', (e) => { e.preventDefault(); orbit.distance *= Math.exp(e.deltaY * 0.001); }, { passive: false });
+
+  const resize = () => {
+    const w = canvas.clientWidth, h = canvas.clientHeight;
+    if (canvas.width !== w || canvas.height !== h) {
+      renderer.setSize(w, h, false);
+      camera.aspect = w / Math.max(h, 1);
+      camera.updateProjectionMatrix();
+    }
+  };
+  const frame = () => {
+    resize();
+    const phase = state.frozen !== null ? state.frozen : (performance.now() - state.start) / 1000 * Math.PI;
+    place(phase);
+    placeCamera();
+    renderer.render(scene, camera);
+    api.frames++;
+    requestAnimationFrame(frame);
+  };
+
+  viewSelect.addEventListener('change', () => { state.view = Number(viewSelect.value); applyColours(); });
+  const slider = $('amplitude');
+  slider.addEventListener('input', () => { state.amplitude = Number(slider.value); applyColours(); });
+
+  api.views = views.map((v) => v.label);
+  api.setView = (i) => { viewSelect.value = String(i); viewSelect.dispatchEvent(new Event('change')); };
+  api.setAmplitude = (a) => { slider.value = String(a); slider.dispatchEvent(new Event('input')); };
+  api.freeze = (phase) => { state.frozen = phase; };
+  api.modeMoves = (i) => velocityScale(S.modes[i]) > 0;
+  api.elementColours = () => colours.map((c) => '#' + c.getHexString());
+  api.render = () => { place(state.frozen !== null ? state.frozen : 0); placeCamera(); renderer.render(scene, camera); };
+  applyColours();
+  placeCamera();
+  requestAnimationFrame(frame);
+  api.ready = true;
+})();
