@@ -60,7 +60,10 @@
   for (let i = 0; i < n; i++) box.expandByPoint(base(i));
   if (n === 0) box.expandByPoint(new THREE.Vector3());
   const centre = box.getCenter(new THREE.Vector3());
-  const size = Math.max(box.getSize(new THREE.Vector3()).length(), 1e-9);
+  // All points at one place (e.g. a spherical linkage whose axes meet at its centre): draw at
+  // unit scale so joint glyphs and screw axes are visible.
+  const extent = box.getSize(new THREE.Vector3()).length();
+  const size = extent > 0 ? extent : 1;
   const E = S.elements.pairs;
   const m = E.length / 2;
   const light = S.large || m > 2000 || n > 2000;
