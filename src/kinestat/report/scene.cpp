@@ -147,6 +147,21 @@ Scene network_scene(const network::Model& model, const network::NetworkResult& r
   scene.B = r.B;
   scene.Q = r.Q;
 
+  // A small three-armed marker on every body centre: a body rotating about an axis through all
+  // its coupling points (Davies' sa, ta) would otherwise not visibly move. At most one arm lies
+  // along any axis, so every rotation moves the marker.
+  double extent = 0.0;
+  for (const auto& a : scene.nodes)
+    for (const auto& b : scene.nodes) extent = std::max(extent, (a.position - b.position).norm());
+  const double arm = extent > 0.0 ? 0.1 * extent : 0.1;
+  const int arms = model.space.is_planar() ? 2 : 3;
+  for (std::size_t b = 0; b < n; ++b)
+    for (int axis = 0; axis < arms; ++axis) {
+      scene.nodes.push_back({model.bodies[b] + ".marker" + std::to_string(axis), centre[b] + arm * Vector3d::Unit(axis),
+                             static_cast<int>(b), static_cast<int>(b) == r.ground});
+      scene.elements.push_back({model.bodies[b] + ".marker", "link", static_cast<int>(b), static_cast<int>(scene.nodes.size()) - 1});
+    }
+
   // The motion of every body relative to the ground, per motion primary.
   std::vector<const network::PairSystem*> to_ground(n, nullptr);
   for (const auto& pair : r.pairs) {
