@@ -1,5 +1,7 @@
 #include "kinestat/report/html_writer.hpp"
 
+#include "kinestat/report/markup_escape.hpp"
+
 #include <cmath>
 
 #include "kinestat/report/viewer_assets.hpp"
@@ -42,16 +44,7 @@ std::string script_safe(std::string text) {
   return out;
 }
 
-std::string html_escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '&') out += "&amp;";
-    else out += c;
-  }
-  return out;
-}
+std::string html_escape(const std::string& text) { return markup_escape(text); }
 
 }  // namespace
 

@@ -1,5 +1,7 @@
 #include "kinestat/report/structure_report.hpp"
 
+#include "kinestat/report/markup_escape.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -308,19 +310,7 @@ std::string structure_svg(const StructureModel& model, const Decomposition& d) {
     at[i] = {width / 2 - row / 2 + dx * n.slot, margin + 20 + radius + dy * n.layer};
     index_of[n.group] = static_cast<int>(i);
   }
-  auto escape = [](const std::string& s) {
-    std::string out;
-    for (char c : s) {
-      switch (c) {
-        case '&': out += "&amp;"; break;
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '"': out += "&quot;"; break;
-        default: out += c;
-      }
-    }
-    return out;
-  };
+  const auto escape = markup_escape;
   std::string out = fmt::format(
       "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{:.0f}\" height=\"{:.0f}\" viewBox=\"0 0 {:.0f} {:.0f}\" "
       "font-family=\"Helvetica, Arial, sans-serif\">\n",

@@ -1,5 +1,7 @@
 #include "kinestat/report/svg_writer.hpp"
 
+#include "kinestat/report/markup_escape.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -27,19 +29,7 @@ P unit(P a) {
 std::string f2(double v) { return fixed(v, 2); }
 std::string pt(P p) { return f2(p.x) + "," + f2(p.y); }
 
-std::string escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
+std::string escape(const std::string& text) { return markup_escape(text); }
 
 std::string header(double width, double height) {
   return fmt::format(
