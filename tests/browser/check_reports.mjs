@@ -70,19 +70,29 @@ const pixels = () => {
   return { total: data.length / 4, ink, red, blue, url: source.toDataURL() };
 };
 
-const files = fs.readdirSync(examples).filter((f) => f.endsWith('.yaml') && (!only || f.includes(only))).sort();
-for (const file of files) {
-  const name = file.replace(/\.yaml$/, '');
-  const html = path.join(work, name + '.html');
-  execFileSync(cli, ['report', path.join(examples, file), '-o', html]);
+// Opens a report and waits for the viewer to draw a few frames. Returns the page, the console
+// and page errors seen (the list keeps growing while the page is used), and whether it started.
+const openReport = async (html, timeout) => {
   const page = await context.newPage();
   const errors = [];
   page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
   page.on('pageerror', (e) => errors.push(String(e)));
   await page.goto(pathToFileURL(html).href);
   try {
-    await page.waitForFunction(() => window.kinestatViewer && window.kinestatViewer.frames > 3, null, { timeout: 30000 });
+    await page.waitForFunction(() => window.kinestatViewer && window.kinestatViewer.frames > 3, null, { timeout });
+    return { page, errors, started: true };
   } catch (e) {
+    return { page, errors, started: false };
+  }
+};
+
+const files = fs.readdirSync(examples).filter((f) => f.endsWith('.yaml') && (!only || f.includes(only))).sort();
+for (const file of files) {
+  const name = file.replace(/\.yaml$/, '');
+  const html = path.join(work, name + '.html');
+  execFileSync(cli, ['report', path.join(examples, file), '-o', html]);
+  const { page, errors, started } = await openReport(html, 30000);
+  if (!started) {
     failures.push(name + ': the viewer did not start: ' + errors.join('; '));
     await page.screenshot({ path: path.join(out, name + '.png') });
     await page.close();
@@ -180,16 +190,11 @@ if (!only || only === 'large') {
   execFileSync(cli, ['report', model, '-o', html]);
   const size = fs.statSync(html).size;
   check(size < 12 * 1024 * 1024, 'large: the report is ' + size + ' bytes');
-  const page = await context.newPage();
-  const errors = [];
-  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
-  page.on('pageerror', (e) => errors.push(String(e)));
-  await page.goto(pathToFileURL(html).href);
-  try {
-    await page.waitForFunction(() => window.kinestatViewer && window.kinestatViewer.frames > 3, null, { timeout: 60000 });
+  const { page, errors, started } = await openReport(html, 60000);
+  if (started) {
     const seen = await page.evaluate(pixels);
     check(seen.ink > 0, 'large: the 3D canvas is blank');
-  } catch (e) {
+  } else {
     failures.push('large: the viewer did not start: ' + errors.join('; '));
   }
   await page.screenshot({ path: path.join(out, 'large-strip.png') });

@@ -2,7 +2,7 @@
 // A coupling network as plain data: bodies, couplings between them, and the user's choices
 // (chords, primary variables, numeric values). Filled by io::read_network_model.
 
-#include <map>
+#include <utility>
 #include <optional>
 #include <string>
 #include <vector>
