@@ -109,6 +109,9 @@ TEST(TextbookExamples, OverActuatedFourBarIsReported) {
     EXPECT_EQ(numbered_groups(d), (Groups{{4}, {2}}));  // decreasing body number
     EXPECT_EQ(testing::numbered(d.undecomposed.over_constrained), (std::vector<int>{3}));
     EXPECT_EQ(d.undecomposed.redundant, 1);  // two inputs, mobility one
+    // 3 + 3 units on the driven frame pairs and 2 + 2 on the coupler's pairs: 10 for 9
+    // freedoms, and the one too many can be blamed on any of the four pairs.
+    EXPECT_EQ(testing::numbered(d.undecomposed.over_constrained_part), (std::vector<int>{2, 3, 4}));
   }
 }
 
@@ -125,8 +128,22 @@ TEST(TextbookExamples, GroupsBehindAPlacedOverConstrainedBodyAreFound) {
     const Decomposition d = decompose(model, method);
     EXPECT_EQ(numbered_groups(d), (Groups{{4}, {2}, {5, 6}}));
     EXPECT_EQ(testing::numbered(d.undecomposed.over_constrained), (std::vector<int>{3}));
+    // The dyad takes all the units of its pairs, so the redundancy cannot sit there.
+    EXPECT_EQ(testing::numbered(d.undecomposed.over_constrained_part), (std::vector<int>{2, 3, 4}));
     EXPECT_TRUE(d.undecomposed.blocked.empty());
   }
+}
+
+TEST(TextbookExamples, FramePairsMayNameTheFrameSecond) {
+  // A four-bar whose frame pairs are written (crank, frame) and (rocker, frame): the dyad
+  // {coupler, rocker} must still be seen as attached to the frame (found by the property
+  // tests: only pairs written (frame, x) counted before).
+  StructureModel model;
+  model.body_names = {"frame", "crank", "coupler", "rocker"};
+  model.pairs = {pair_from_code(1, 0, 3), pair_from_code(1, 2, 1), pair_from_code(2, 3, 1), pair_from_code(3, 0, 1)};
+  const Decomposition d = decompose(model);
+  EXPECT_TRUE(d.complete());
+  EXPECT_EQ(numbered_groups(d), (Groups{{2}, {3, 4}}));
 }
 
 TEST(TextbookExamples, UnderActuatedFiveBarKeepsItsDrivenCrank) {

@@ -91,6 +91,10 @@ void append_undecomposed(std::string& out, const StructureModel& model, const De
   if (!u.over_constrained.empty())
     out += fmt::format("  over-constrained: bodies {}: {} constraint(s) or input(s) too many; remove inputs or pairs there\n",
                        body_list(u.over_constrained), u.redundant);
+  if (u.over_constrained_part.size() > u.over_constrained.size())
+    out += fmt::format("    the redundancy can sit on any pair of the over-constrained part, bodies {};\n"
+                       "    which of its bodies Eq. 1 still places can depend on the body numbering\n",
+                       body_list(u.over_constrained_part));
   if (!u.under_constrained.empty())
     out += fmt::format("  under-constrained: bodies {}: {} input(s) missing; drive more pairs there\n",
                        body_list(u.under_constrained), u.missing);
@@ -221,6 +225,7 @@ std::string structure_json(const StructureReport& report) {
     ordered_json x;
     x["over_constrained"] = one_based(u.over_constrained);
     x["redundant"] = u.redundant;
+    x["over_constrained_part"] = one_based(u.over_constrained_part);
     x["under_constrained"] = one_based(u.under_constrained);
     x["missing_inputs"] = u.missing;
     x["blocked"] = one_based(u.blocked);

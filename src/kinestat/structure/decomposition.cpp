@@ -248,8 +248,9 @@ class MatchingSearch final : public GroupOracle {
         ready_(ReadyOrder{&blocks}) {
     for (int b : blocks.over_constrained) over_[b] = 1;
     std::vector<char> on_frame(blocks.blocks.size(), 0);
-    for (const Pair& p : model.pairs) {
+    for (const Pair& p : model.pairs) {  // either end may be the frame
       if (p.a == 0 && blocks.block_of[p.b] >= 0) on_frame[blocks.block_of[p.b]] = 1;
+      if (p.b == 0 && blocks.block_of[p.a] >= 0) on_frame[blocks.block_of[p.a]] = 1;
     }
     for (std::size_t k = 0; k < blocks.blocks.size(); ++k) {
       const auto& over_needed = blocks.over_predecessors[k];
@@ -350,7 +351,10 @@ Decomposition decompose(const StructureModel& model, SearchMethod method) {
     else if (under[b]) rest.under_constrained.push_back(b);
     else rest.blocked.push_back(b);
   }
-  if (!rest.over_constrained.empty()) rest.redundant = blocks.redundant_units;
+  if (!rest.over_constrained.empty()) {
+    rest.redundant = blocks.redundant_units;
+    rest.over_constrained_part = blocks.over_constrained;
+  }
   if (!rest.under_constrained.empty()) rest.missing = blocks.missing_units;
   return result;
 }

@@ -33,8 +33,13 @@ struct Assignment {
 
 /// What could not be decomposed, and why.
 struct UndecomposedPart {
-  std::vector<int> over_constrained;   ///< bodies with more constraints + inputs than freedoms
+  std::vector<int> over_constrained;   ///< bodies with more constraints + inputs than freedoms, not placed by Eq. 1
   int redundant = 0;                   ///< how many too many (over-actuation or redundant pairs)
+  /// The whole over-constrained part (Dulmage-Mendelsohn): `over_constrained` and the bodies of
+  /// it that Eq. 1 still placed. The redundancy can sit on any pair there. Unlike which of
+  /// its bodies Eq. 1 places (which follows the seed's visiting order, so the body
+  /// numbering), this set does not depend on how the mechanism is numbered.
+  std::vector<int> over_constrained_part;
   std::vector<int> under_constrained;  ///< bodies with freedoms that no input drives
   int missing = 0;                     ///< how many inputs are missing
   std::vector<int> blocked;            ///< bodies that need one of the above, or are not connected to the frame
