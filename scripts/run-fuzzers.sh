@@ -15,7 +15,7 @@ for harness in build/fuzz/fuzz/fuzz_*; do
   case "$name" in
     fuzz_cli_arguments) seeds=fuzz/seeds/cli ;;
     fuzz_adjacency_matrix) seeds=fuzz/seeds/adjacency ;;
-    *) seeds="examples fuzz/seeds/model" ;;
+    *) seeds="examples examples/json fuzz/seeds/model" ;;
   esac
   echo "== $name for ${seconds}s"
   if ! "$harness" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=4096 -max_len=65536 \
