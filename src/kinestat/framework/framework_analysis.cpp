@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "kinestat/framework/physical_scaling.hpp"
 #include "kinestat/linalg/homogeneous_solution.hpp"
 #include "kinestat/linalg/sparse_rank.hpp"
 #include "kinestat/linalg/svd_analysis.hpp"
@@ -35,11 +36,16 @@ void normalise(Eigen::Ref<Eigen::VectorXd> v) {
 // possible free variables (linalg::solve_homogeneous), so it does not depend on how the SVD
 // happened to rotate a multi-dimensional null space. Falls back to the SVD's own basis when
 // the two rank decisions disagree (only possible right at the tolerance).
+// `a` is the scaled matrix S_r D̂ S_c; a null vector w of it is S_c⁻¹ times one of D̂, so
+// `unscale` (S_c, or S_r for the left null space) brings it back before normalising. The
+// echelon basis maps to the echelon basis of D̂ itself (same free variables), so the result is
+// the one an unscaled analysis would print.
 Eigen::MatrixXd deterministic_null_space(const Eigen::MatrixXd& a, const Eigen::MatrixXd& svd_basis,
-                                         const linalg::RankTolerance& tolerance) {
+                                         const Eigen::VectorXd& unscale, const linalg::RankTolerance& tolerance) {
   if (svd_basis.cols() == 0) return svd_basis;
   const linalg::HomogeneousSolution solution = linalg::solve_homogeneous(a, tolerance);
   Eigen::MatrixXd basis = solution.coefficients.cols() == svd_basis.cols() ? solution.coefficients : svd_basis;
+  basis = unscale.asDiagonal() * basis;
   for (Eigen::Index j = 0; j < basis.cols(); ++j) normalise(basis.col(j));
   return basis;
 }
@@ -75,8 +81,13 @@ FrameworkAnalysis analyse_framework(const FrameworkModel& model, const AnalysisO
   result.rows = result.partition.jacobian_rows();
   result.length = characteristic_length(model);
   const Eigen::SparseMatrix<double> derivative = deformation_derivative(model, result.indexing);
-  const Eigen::SparseMatrix<double> jacobian =
+  const Eigen::SparseMatrix<double> nondimensional =
       dependent_jacobian(model, result.indexing, result.partition, derivative, result.length);
+  const linalg::Equilibration scaling = physical_scaling(model, result.indexing, result.partition, result.length);
+  result.row_scale = scaling.rows;
+  result.column_scale = scaling.cols;
+  const Eigen::SparseMatrix<double> jacobian =
+      scaling.rows.asDiagonal() * nondimensional * scaling.cols.asDiagonal();
   result.m = jacobian.rows();
   result.n = jacobian.cols();
 
@@ -98,7 +109,7 @@ FrameworkAnalysis analyse_framework(const FrameworkModel& model, const AnalysisO
     const Eigen::Index rank = svd.rank.rank;
 
     // Kinematic modes: V columns of zero singular values and those in excess of the rows.
-    const Eigen::MatrixXd modes = deterministic_null_space(dense, svd.null_space(), options.tolerance);
+    const Eigen::MatrixXd modes = deterministic_null_space(dense, svd.null_space(), scaling.cols, options.tolerance);
     for (Eigen::Index j = 0; j < modes.cols(); ++j) {
       KinematicMode mode{modes.col(j), {}};
       for (Eigen::Index i = 0; i < mode.velocities.size(); ++i)
@@ -107,7 +118,7 @@ FrameworkAnalysis analyse_framework(const FrameworkModel& model, const AnalysisO
     }
     // Stress states: U columns of zero singular values and those in excess of the columns.
     const Eigen::MatrixXd transposed = dense.transpose();
-    const Eigen::MatrixXd stresses = deterministic_null_space(transposed, svd.left_null_space(), options.tolerance);
+    const Eigen::MatrixXd stresses = deterministic_null_space(transposed, svd.left_null_space(), scaling.rows, options.tolerance);
     const auto fixed_rows = static_cast<Eigen::Index>(result.partition.fixed_deformations.size());
     for (Eigen::Index j = 0; j < stresses.cols(); ++j) {
       StressState state{stresses.col(j), {}};

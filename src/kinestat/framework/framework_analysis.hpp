@@ -45,6 +45,11 @@ struct FrameworkAnalysis {
   ConstraintCount count;
   std::vector<Eigen::Index> rows;  ///< deformation index of each row of D(c)
   double length = 1.0;             ///< characteristic length used to non-dimensionalise D(c)
+  /// Factors by which the rows and columns of D̂ are multiplied before every rank decision
+  /// (physical_scaling: from element lengths only). Singular values, the rank decision and
+  /// relative_smallest_singular_value are of the scaled matrix; modes and stress states are
+  /// given back in D̂'s units (translations / length, rotations in rad).
+  Eigen::VectorXd row_scale, column_scale;
   RankMethod method = RankMethod::dense_svd;
   Eigen::Index m = 0, n = 0, rank = 0;
   linalg::RankDecision decision;

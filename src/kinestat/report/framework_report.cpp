@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -29,6 +30,17 @@ double significant(double value) {
   return std::stod(fmt::format("{:.10g}", value));
 }
 std::string evidence(double value) { return fmt::format("{:.3g}", significant(value)); }
+
+// The smallest and largest of the length-scaling factors (framework::physical_scaling), to
+// four digits: they come from an iteration, and only their spread is information.
+std::array<double, 2> factor_range(const Eigen::VectorXd& factors) {
+  if (factors.size() == 0) return {1.0, 1.0};
+  auto four = [](double v) { return std::stod(fmt::format("{:.4g}", v)); };
+  return {four(factors.minCoeff()), four(factors.maxCoeff())};
+}
+double spread(const Eigen::VectorXd& factors) { return factors.size() == 0 ? 1.0 : factors.maxCoeff() / factors.minCoeff(); }
+// The text report mentions the scaling only when it does something noticeable.
+constexpr double kShownScaleSpread = 1.01;
 
 const framework::CoordinateRef& column_ref(const FrameworkAnalysis& a, Eigen::Index column) {
   return a.indexing.coordinates[static_cast<std::size_t>(a.partition.dependent_coordinates[static_cast<std::size_t>(column)])];
@@ -96,6 +108,7 @@ nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const 
                 {"square", c.square()}};
   j["method"] = a.method == framework::RankMethod::dense_svd ? "dense_svd" : "sparse_qr";
   j["characteristic_length"] = rounded(a.length);
+  j["length_scaling"] = {{"row_factors", factor_range(a.row_scale)}, {"column_factors", factor_range(a.column_scale)}};
   const auto& d = a.decision;
   nlohmann::ordered_json decision;
   decision["largest"] = significant(d.largest);
@@ -171,6 +184,11 @@ std::string framework_report_text(const FrameworkModel& model, const FrameworkAn
   line(fmt::format("D(c): {} rows x {} columns, rank {} ({}{})", a.m, a.n, a.rank,
                    a.method == framework::RankMethod::dense_svd ? "SVD" : "sparse QR, counts only",
                    fmt::format(", characteristic length {}", number(a.length))));
+  if (spread(a.row_scale) > kShownScaleSpread || spread(a.column_scale) > kShownScaleSpread) {
+    const auto rows = factor_range(a.row_scale), cols = factor_range(a.column_scale);
+    line(fmt::format("scaled by element lengths before the rank decision: row factors {} to {}, column factors {} to {}",
+                     evidence(rows[0]), evidence(rows[1]), evidence(cols[0]), evidence(cols[1])));
+  }
   line(fmt::format("rank decision: threshold {}, smallest kept {}, largest dropped {}{}", evidence(a.decision.threshold),
                    evidence(a.decision.smallest_kept), evidence(a.decision.largest_dropped),
                    a.decision.close() ? " -- CLOSE: the design is near a different answer" : ""));
