@@ -1,6 +1,7 @@
 // libFuzzer harness: any bytes as a model file (network, framework or structure), through the
-// reader of its kind and, for small models, the analyses. Input errors are expected; any other exception, crash, hang or
-// sanitizer report is a bug.
+// reader of its kind and, for small models, the analyses and every report of them (text, JSON,
+// DOT, SVG drawings of the scene). Input errors are expected; any other exception, crash, hang
+// or sanitizer report is a bug.
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -13,6 +14,11 @@
 #include "kinestat/io/structure_reader.hpp"
 #include "kinestat/io/yaml_support.hpp"
 #include "kinestat/network/analyse_network.hpp"
+#include "kinestat/report/framework_report.hpp"
+#include "kinestat/report/network_report.hpp"
+#include "kinestat/report/scene.hpp"
+#include "kinestat/report/structure_report.hpp"
+#include "kinestat/report/svg_writer.hpp"
 #include "kinestat/structure/decomposition.hpp"
 #include "kinestat/structure/transformations.hpp"
 
@@ -24,8 +30,14 @@ constexpr int kMaxAnalysedBodies = 64;
 
 void analyse_structure(const kinestat::structure::StructureModel& model) {
   if (model.body_count() > kMaxAnalysedBodies) return;
-  (void)kinestat::structure::decompose(model);
-  (void)kinestat::structure::structural_transformations(model, 64);
+  const auto decomposition = kinestat::structure::decompose(model);
+  const auto transformations = kinestat::structure::structural_transformations(model, 64);
+  const kinestat::report::StructureReport report{model, decomposition, &transformations};
+  (void)kinestat::report::structure_text(report);
+  (void)kinestat::report::structure_json(report);
+  (void)kinestat::report::structure_dot(model, decomposition);
+  (void)kinestat::report::structure_svg(model, decomposition);
+  (void)kinestat::report::graph_svg(kinestat::report::structure_scene(model, decomposition));
 }
 constexpr std::size_t kMaxInputBytes = 1 << 16;
 }  // namespace
@@ -40,7 +52,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       const auto loaded = kinestat::io::read_network_model(file);
       if (loaded.model.couplings.size() <= kMaxAnalysedCouplings) {
         try {
-          (void)kinestat::network::analyse_network(loaded.model);
+          const auto result = kinestat::network::analyse_network(loaded.model);
+          (void)kinestat::report::network_text(loaded.model, result);
+          (void)kinestat::report::network_json(loaded.model, result).dump();
+          const auto scene = kinestat::report::network_scene(loaded.model, result);
+          (void)kinestat::report::graph_svg(scene);
+          (void)kinestat::report::mechanism_svg(scene);
         } catch (const kinestat::network::ModelError& error) {
           (void)kinestat::io::locate(error, loaded, file.path());
         }
@@ -48,7 +65,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       }
     } else if (kind == "framework") {
       const auto model = kinestat::io::read_framework(file);
-      if (model.elements.size() <= kMaxAnalysedElements) (void)kinestat::framework::analyse_framework(model);
+      if (model.elements.size() <= kMaxAnalysedElements) {
+        const auto analysis = kinestat::framework::analyse_framework(model);
+        (void)kinestat::report::framework_report_text(model, analysis);
+        (void)kinestat::report::framework_report_json(model, analysis).dump();
+        (void)kinestat::report::mechanism_svg(kinestat::report::framework_scene(model, analysis));
+      }
     } else if (kind == "structure") {
       analyse_structure(kinestat::io::read_structure_model(file));
     }
