@@ -4,13 +4,20 @@
 
 namespace kinestat::framework {
 
-double element_length(const FrameworkModel& model, const Element& element, double fallback) {
-  double arm = 0.0;
-  if (!element.nodes.empty()) {
-    const Eigen::Vector3d& reference = model.nodes[element.nodes.front()].position;
-    for (std::size_t node : element.nodes) arm = std::max(arm, (model.nodes[node].position - reference).norm());
+DeformationReach deformation_reach(const FrameworkModel& model, const Element& element, std::size_t deformation,
+                                   double fallback) {
+  DeformationReach reach;
+  if (element.nodes.empty()) return reach;
+  reach.first = element.nodes.front();
+  reach.second = element.nodes.back();
+  if (element.type == ElementType::rigid_body) {
+    // Deformations come link by link: reference node to node k, k = 1, 2, ...
+    const std::size_t per_link = model.dimension == 2 ? 3 : 6;
+    reach.second = element.nodes[std::min(element.nodes.size() - 1, deformation / per_link + 1)];
   }
-  return arm > 0.0 ? arm : fallback;
+  const double arm = (model.nodes[reach.second].position - model.nodes[reach.first].position).norm();
+  reach.arm = arm > 0.0 ? arm : fallback;
+  return reach;
 }
 
 linalg::Equilibration physical_scaling(const FrameworkModel& model, const FrameworkIndexing& indexing,
@@ -21,15 +28,13 @@ linalg::Equilibration physical_scaling(const FrameworkModel& model, const Framew
   for (std::size_t j = 0; j < columns.size(); ++j)
     column_position[static_cast<std::size_t>(columns[j])] = static_cast<Eigen::Index>(j);
 
-  std::vector<double> arm(model.elements.size());
-  for (std::size_t e = 0; e < model.elements.size(); ++e) arm[e] = element_length(model, model.elements[e], length);
-
   std::vector<linalg::EntryMagnitude> pattern;
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const DeformationRef& d = indexing.deformations[static_cast<std::size_t>(rows[i])];
     const Element& element = model.elements[d.element];
     const bool length_row = deformation_is_length(model.dimension, element, d.deformation);
-    for (std::size_t node : element.nodes) {
+    const DeformationReach reach = deformation_reach(model, element, d.deformation, length);
+    for (std::size_t node : {reach.first, reach.second}) {  // the same node twice only repeats a maximum
       for (int slot = 0; slot < kSlots; ++slot) {
         const Eigen::Index coordinate = indexing.coordinate_of[node][static_cast<std::size_t>(slot)];
         if (coordinate < 0) continue;
@@ -37,8 +42,8 @@ linalg::Equilibration physical_scaling(const FrameworkModel& model, const Framew
         if (col < 0) continue;
         const bool translation = is_translation(slot);
         double magnitude = 1.0;
-        if (length_row && !translation) magnitude = arm[d.element] / length;
-        if (!length_row && translation) magnitude = length / arm[d.element];
+        if (length_row && !translation) magnitude = reach.arm / length;
+        if (!length_row && translation) magnitude = length / reach.arm;
         pattern.push_back({static_cast<Eigen::Index>(i), col, magnitude});
       }
     }

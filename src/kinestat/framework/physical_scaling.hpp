@@ -9,14 +9,21 @@
 
 namespace kinestat::framework {
 
-/// The lever arm of an element: the distance between its nodes (trusses, beams), or the
-/// largest distance of a node from the reference node (rigid bodies); `fallback` when zero.
-double element_length(const FrameworkModel& model, const Element& element, double fallback);
+/// The two nodes one deformation of `element` involves and its lever arm (file length units):
+/// a truss's or beam's ends and length; for a rigid body, the reference node and the node
+/// whose link the deformation belongs to, and their distance. `fallback` when the arm is zero.
+struct DeformationReach {
+  std::size_t first = 0, second = 0;
+  double arm = 1.0;
+};
+DeformationReach deformation_reach(const FrameworkModel& model, const Element& element, std::size_t deformation,
+                                   double fallback);
 
 /// Row and column factors for D̂ = dependent_jacobian(..., length), from lengths only: every
-/// row of element e may meet every coordinate of e's nodes, with the natural magnitude of its
-/// units — 1 for length per length and for angle per angle, ℓ_e / length for length per
-/// radian, length / ℓ_e for angle per length — and linalg::equilibrate balances that pattern.
+/// row may meet every coordinate of the two nodes its deformation involves, with the natural
+/// magnitude of its units — 1 for length per length and for angle per angle, ℓ / length for
+/// length per radian, length / ℓ for angle per length, ℓ the deformation's lever arm — and
+/// linalg::equilibrate balances that pattern.
 /// Values of D̂ are not looked at, so geometry that makes an entry small (a bar at right angles
 /// to the only free coordinate) still shows as singular; and the factors depend on ratios of
 /// lengths only, so they are the same in millimetres and in metres and under rigid motions.
