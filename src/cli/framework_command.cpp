@@ -6,6 +6,7 @@
 #include "kinestat/framework/framework_analysis.hpp"
 #include "kinestat/io/framework_reader.hpp"
 #include "kinestat/report/framework_report.hpp"
+#include "kinestat/report/json_text.hpp"
 
 namespace kinestat::cli {
 
@@ -27,7 +28,7 @@ int run_framework_analysis(const CommonOptions& options, const io::YamlFile& mod
   analysis_options.dense_limit = static_cast<Eigen::Index>(dense_limit);
   const framework::FrameworkAnalysis analysis = framework::analyse_framework(model, analysis_options);
   if (options.json) {
-    emit(options, report::framework_report_json(model, analysis).dump(2) + "\n");
+    emit(options, report::json_text(report::framework_report_json(model, analysis)));
   } else {
     emit(options, report::framework_report_text(model, analysis));
   }

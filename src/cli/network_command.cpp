@@ -5,6 +5,7 @@
 #include "cli/commands.hpp"
 #include "kinestat/io/network_reader.hpp"
 #include "kinestat/network/analyse_network.hpp"
+#include "kinestat/report/json_text.hpp"
 #include "kinestat/report/network_report.hpp"
 
 namespace kinestat::cli {
@@ -71,7 +72,7 @@ int run_network_analysis(const CommonOptions& common, const io::YamlFile& file) 
   }
   report::NetworkReportOptions report_options;
   report_options.matrices = o.matrices;
-  emit(common, common.json ? report::network_json(loaded.model, result, report_options).dump(2) + "\n"
+  emit(common, common.json ? report::json_text(report::network_json(loaded.model, result, report_options))
                            : report::network_text(loaded.model, result, report_options));
   return 0;
 }

@@ -22,6 +22,46 @@ constexpr std::size_t kMaxInputBytes = std::size_t{64} << 20;  // 64 MiB
 // tree, so its expanded size is bounded.
 constexpr std::size_t kMaxExpandedNodes = std::size_t{4} << 20;
 
+// Where the first byte that is not part of well-formed UTF-8 stands (1-based line and column,
+// columns counted in characters, and its offset), or line 0. yaml-cpp passes such bytes through into names, and a
+// name must be printable in every report, JSON included. Rejects overlong forms, surrogates and
+// code points above U+10FFFF, as RFC 3629 does.
+struct TextPosition {
+  int line = 0, column = 0;
+  std::size_t offset = 0;
+};
+TextPosition first_invalid_utf8(const std::string& text) {
+  int line = 1, column = 1;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const auto byte = static_cast<unsigned char>(text[i]);
+    std::size_t length = 0;
+    unsigned char low = 0x80, high = 0xBF;  // allowed range of the second byte
+    if (byte < 0x80) length = 1;
+    else if (byte >= 0xC2 && byte <= 0xDF) length = 2;
+    else if (byte == 0xE0) length = 3, low = 0xA0;
+    else if ((byte >= 0xE1 && byte <= 0xEC) || byte == 0xEE || byte == 0xEF) length = 3;
+    else if (byte == 0xED) length = 3, high = 0x9F;
+    else if (byte == 0xF0) length = 4, low = 0x90;
+    else if (byte >= 0xF1 && byte <= 0xF3) length = 4;
+    else if (byte == 0xF4) length = 4, high = 0x8F;
+    else return {line, column, i};
+    if (i + length > text.size()) return {line, column, i};
+    for (std::size_t k = 1; k < length; ++k) {
+      const auto next = static_cast<unsigned char>(text[i + k]);
+      if (next < (k == 1 ? low : 0x80) || next > (k == 1 ? high : 0xBF)) return {line, column, i};
+    }
+    if (byte == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+    i += length;
+  }
+  return {};
+}
+
 // The first line whose run of leading spaces and block indicators is longer than the limit.
 int excessive_block_nesting(const std::string& text) {
   int line = 1;
@@ -168,6 +208,11 @@ std::optional<mpq_class> parse_exact_decimal(std::string_view literal) {
 YamlFile YamlFile::parse(std::string path, const std::string& text) {
   if (text.size() > kMaxInputBytes) {
     throw InputError({path, 1, 1}, fmt::format("file is larger than the {} MiB limit", kMaxInputBytes >> 20));
+  }
+  if (const TextPosition bad = first_invalid_utf8(text); bad.line > 0) {
+    throw InputError({path, bad.line, bad.column},
+                     fmt::format("byte 0x{:02X} is not UTF-8: model files are UTF-8 text (save UTF-16 or Latin-1 files as UTF-8)",
+                                 static_cast<unsigned char>(text[bad.offset])));
   }
   if (auto [line, column] = excessive_flow_nesting(text); line > 0) {
     throw InputError({path, line, column}, fmt::format("nesting deeper than {} levels", kMaxFlowNesting));

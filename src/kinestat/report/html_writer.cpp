@@ -1,5 +1,6 @@
 #include "kinestat/report/html_writer.hpp"
 
+#include "kinestat/report/json_text.hpp"
 #include "kinestat/report/markup_escape.hpp"
 
 #include <cmath>
@@ -150,7 +151,7 @@ std::string html_report(const Scene& scene, const std::string& figure, const std
 <div id="main"><canvas id="view"></canvas><div id="legend"></div><div id="message"></div></div>
 )";
   html += "<script>\n" + script_safe(viewer_assets::three_js()) + "\n</script>\n";
-  html += "<script>\nwindow.KINESTAT_SCENE = " + script_safe(scene_json(scene).dump()) + ";\n</script>\n";
+  html += "<script>\nwindow.KINESTAT_SCENE = " + script_safe(json_text(scene_json(scene), -1)) + ";\n</script>\n";
   html += "<script>\n" + script_safe(viewer_assets::viewer_js()) + "\n</script>\n";
   html += "</body>\n</html>\n";
   return html;

@@ -1,5 +1,6 @@
 #include "kinestat/report/structure_report.hpp"
 
+#include "kinestat/report/json_text.hpp"
 #include "kinestat/report/markup_escape.hpp"
 
 #include <fmt/format.h>
@@ -268,7 +269,7 @@ std::string structure_json(const StructureReport& report) {
   } else {
     j["transformations"] = nullptr;
   }
-  return j.dump(2) + "\n";
+  return json_text(j);
 }
 
 std::string structure_dot(const StructureModel& model, const Decomposition& d) {
