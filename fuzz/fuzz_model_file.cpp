@@ -1,7 +1,8 @@
 // libFuzzer harness: any bytes as a model file (network, framework or structure), through the
 // reader of its kind and, for small models, the analyses and every report of them (text, JSON,
 // DOT, SVG drawings of the scene). Input errors are expected; any other exception, crash, hang
-// or sanitizer report is a bug.
+// or sanitizer report is a bug. JSON is dumped strictly (a byte that is not UTF-8 throws), so
+// anything a reader lets through that a report cannot print shows up here.
 #include <cstddef>
 #include <cstdint>
 #include <string>

@@ -1,7 +1,8 @@
 // Model files are UTF-8. A name with bytes that are not UTF-8 (a Latin-1 export, a corrupted
 // file) used to pass the reader and make the JSON report throw (exit 3; found by the fuzzer,
 // fuzz/seeds/model/regression-invalid-utf8-name.yaml); now it is an input error with its
-// position, and names in other scripts are carried through to every report unchanged.
+// position, as are control characters YAML does not allow; names in other scripts are
+// carried through to every report unchanged.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -34,6 +35,20 @@ TEST(Utf8, InvalidBytesAreAnErrorWithTheirPosition) {
     EXPECT_NE(position_of_error(bad).find("is not UTF-8"), std::string::npos) << position_of_error(bad);
   // Column counts characters, not bytes: two 2-byte characters before the bad byte.
   EXPECT_EQ(position_of_error("name: \xC3\xA4\xC3\xB6\xFF\n").rfind("in.yaml:1:9:", 0), 0u);
+}
+
+TEST(Utf8, ControlCharactersAreAnError) {
+  // yaml-cpp turned "leg3 <0x11> <NUL> _upper" into a name with a lone byte 0xA0 (found by the
+  // fuzzer, fuzz/seeds/model/regression-nul-in-name.yaml). YAML allows no C0 controls but tab,
+  // line feed and carriage return.
+  EXPECT_EQ(position_of_error(std::string("name: leg3\x11\0_upper\n", 19)).rfind("in.yaml:1:11: error: control character U+0011", 0), 0u)
+      << position_of_error(std::string("name: leg3\x11\0_upper\n", 19));
+  EXPECT_NE(position_of_error("name: a\x7F\n").find("control character U+007F"), std::string::npos);
+  EXPECT_EQ(position_of_error("kinestat: 1\r\nname:\tx\r\n"), "accepted");  // tabs and CRLF are fine
+  const auto run = testing::run_cli("analyze --json " + std::string(KINESTAT_SOURCE_DIR) + "/fuzz/seeds/model/regression-nul-in-name.yaml");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_EQ(run.out, "");
+  EXPECT_NE(run.err.find("control character U+0011"), std::string::npos) << run.err;
 }
 
 TEST(Utf8, WellFormedNamesInOtherScriptsAreKept) {

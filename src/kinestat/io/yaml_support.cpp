@@ -22,15 +22,19 @@ constexpr std::size_t kMaxInputBytes = std::size_t{64} << 20;  // 64 MiB
 // tree, so its expanded size is bounded.
 constexpr std::size_t kMaxExpandedNodes = std::size_t{4} << 20;
 
-// Where the first byte that is not part of well-formed UTF-8 stands (1-based line and column,
-// columns counted in characters, and its offset), or line 0. yaml-cpp passes such bytes through into names, and a
-// name must be printable in every report, JSON included. Rejects overlong forms, surrogates and
-// code points above U+10FFFF, as RFC 3629 does.
+// Where the first character a model file may not contain stands (1-based line and column,
+// columns counted in characters, and its byte offset), or line 0: bytes that are not
+// well-formed UTF-8 (overlong forms, surrogates and code points above U+10FFFF rejected, as in
+// RFC 3629), and C0 control characters other than tab, line feed and carriage return, and DEL,
+// which YAML does not allow either. yaml-cpp passes both through into names (it even turns a
+// NUL and the next character into a lone byte 0xA0), and a name must be printable in every
+// report, JSON included.
 struct TextPosition {
   int line = 0, column = 0;
   std::size_t offset = 0;
+  bool control = false;  ///< a control character, not a UTF-8 error
 };
-TextPosition first_invalid_utf8(const std::string& text) {
+TextPosition first_unreadable_character(const std::string& text) {
   int line = 1, column = 1;
   std::size_t i = 0;
   while (i < text.size()) {
@@ -45,12 +49,13 @@ TextPosition first_invalid_utf8(const std::string& text) {
     else if (byte == 0xF0) length = 4, low = 0x90;
     else if (byte >= 0xF1 && byte <= 0xF3) length = 4;
     else if (byte == 0xF4) length = 4, high = 0x8F;
-    else return {line, column, i};
-    if (i + length > text.size()) return {line, column, i};
+    else return {line, column, i, false};
+    if (i + length > text.size()) return {line, column, i, false};
     for (std::size_t k = 1; k < length; ++k) {
       const auto next = static_cast<unsigned char>(text[i + k]);
-      if (next < (k == 1 ? low : 0x80) || next > (k == 1 ? high : 0xBF)) return {line, column, i};
+      if (next < (k == 1 ? low : 0x80) || next > (k == 1 ? high : 0xBF)) return {line, column, i, false};
     }
+    if ((byte < 0x20 && byte != '\t' && byte != '\n' && byte != '\r') || byte == 0x7F) return {line, column, i, true};
     if (byte == '\n') {
       ++line;
       column = 1;
@@ -209,10 +214,13 @@ YamlFile YamlFile::parse(std::string path, const std::string& text) {
   if (text.size() > kMaxInputBytes) {
     throw InputError({path, 1, 1}, fmt::format("file is larger than the {} MiB limit", kMaxInputBytes >> 20));
   }
-  if (const TextPosition bad = first_invalid_utf8(text); bad.line > 0) {
+  if (const TextPosition bad = first_unreadable_character(text); bad.line > 0) {
+    const auto byte = static_cast<unsigned char>(text[bad.offset]);
     throw InputError({path, bad.line, bad.column},
-                     fmt::format("byte 0x{:02X} is not UTF-8: model files are UTF-8 text (save UTF-16 or Latin-1 files as UTF-8)",
-                                 static_cast<unsigned char>(text[bad.offset])));
+                     bad.control ? fmt::format("control character U+{:04X} is not allowed in a model file", byte)
+                                 : fmt::format("byte 0x{:02X} is not UTF-8: model files are UTF-8 text (save UTF-16 "
+                                               "or Latin-1 files as UTF-8)",
+                                               byte));
   }
   if (auto [line, column] = excessive_flow_nesting(text); line > 0) {
     throw InputError({path, line, column}, fmt::format("nesting deeper than {} levels", kMaxFlowNesting));
