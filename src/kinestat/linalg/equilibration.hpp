@@ -36,7 +36,7 @@ Equilibration equilibrate(const std::vector<EntryMagnitude>& pattern, Eigen::Ind
 
 /// Convergence tolerance of `equilibrate` on log2 of the row and column maxima.
 inline constexpr double kEquilibrationTolerance = 1e-3;
-/// Iteration cap of `equilibrate` (each iteration halves the spread left).
+/// Iteration cap of `equilibrate` (each iteration roughly halves the spread left in log2).
 inline constexpr int kMaxEquilibrationIterations = 100;
 
 }  // namespace kinestat::linalg
