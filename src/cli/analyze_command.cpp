@@ -1,6 +1,7 @@
 // `kinestat analyze FILE`: nett freedom and constraint of a coupling network or a framework.
 
 #include "cli/commands.hpp"
+#include "cli/option_checks.hpp"
 #include "kinestat/io/yaml_support.hpp"
 
 namespace kinestat::cli {
@@ -14,7 +15,7 @@ void register_analyze(CLI::App& app, Action& action) {
   command->add_option("-o,--output", options->output_path, "Write the report to this file instead of standard output");
   command->add_option("--tolerance", options->tolerance,
                       "Relative rank tolerance (fraction of the largest singular value); default max(rows,cols)*eps")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_finite_number());
   register_network_options(*command);
   register_framework_options(*command);
   command->callback([options, &action] {

@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "cli/commands.hpp"
+#include "cli/option_checks.hpp"
 #include "kinestat/framework/framework_analysis.hpp"
 #include "kinestat/io/framework_reader.hpp"
 #include "kinestat/report/framework_report.hpp"
@@ -18,7 +19,7 @@ long long dense_limit = 1500;
 void register_framework_options(CLI::App& analyze) {
   analyze.add_option("--dense-limit", dense_limit,
                      "Frameworks: largest matrix dimension analysed with the dense SVD (larger: sparse QR counts only); default 1500")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_whole_number());
 }
 
 int run_framework_analysis(const CommonOptions& options, const io::YamlFile& model_file) {

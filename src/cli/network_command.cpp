@@ -2,7 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include "cli/commands.hpp"
+#include "cli/option_checks.hpp"
 #include "kinestat/io/network_reader.hpp"
 #include "kinestat/network/analyse_network.hpp"
 #include "kinestat/report/json_text.hpp"
@@ -33,6 +36,12 @@ std::vector<std::pair<std::string, screw::Rational>> parse_values(const std::vec
     const auto number = equals == std::string::npos ? std::nullopt : io::parse_exact_decimal(text.substr(equals + 1));
     if (equals == 0 || !number)
       throw io::InputError({"--value", 0, 0}, fmt::format("expected NAME=NUMBER (e.g. sa=1.5), found '{}'", text));
+    const double value = number->get_d();
+    if (!std::isfinite(value) || (value == 0 && sgn(*number) != 0)) {
+      throw io::InputError({"--value", 0, 0}, fmt::format("'{}' is out of range: a value must lie within about 1e-308 "
+                                                           "to 1e308 in magnitude",
+                                                           text));
+    }
     values.emplace_back(text.substr(0, equals), *number);
   }
   return values;
@@ -69,6 +78,15 @@ int run_network_analysis(const CommonOptions& common, const io::YamlFile& file) 
     if (error.field() == "primary" && !o.primary.empty()) throw io::InputError({"--primary", 0, 0}, error.what());
     if (error.field() == "values" && !o.values.empty()) throw io::InputError({"--value", 0, 0}, error.what());
     throw io::locate(error, loaded, file.path());
+  }
+  if (const auto overflowing = first_non_finite_result(result)) {
+    const auto values = loaded.field_locations.find("values");
+    const io::SourceLocation where = !o.values.empty() ? io::SourceLocation{"--value", 0, 0}
+                                     : values != loaded.field_locations.end() ? values->second
+                                                                              : io::SourceLocation{file.path(), 0, 0};
+    throw io::InputError(where, fmt::format("{} overflows a double (beyond about 1e308): the values or coordinates are "
+                                            "too large; scale them down (units do not change the counts)",
+                                            *overflowing));
   }
   report::NetworkReportOptions report_options;
   report_options.matrices = o.matrices;

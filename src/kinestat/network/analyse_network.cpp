@@ -202,7 +202,11 @@ graph::SpanningTree choose_tree(const Model& model, const graph::CouplingGraph& 
   try {
     return graph.tree_with_chords(chords);
   } catch (const graph::TreeError& error) {
-    throw ModelError("chords", -1, fmt::format("these chords do not leave a spanning tree: {}", error.what()));
+    const std::string closing =
+        error.edge() < 0 ? std::string()
+                         : fmt::format(", closed by coupling '{}' (make one coupling of that circuit a chord)",
+                                       model.couplings[static_cast<std::size_t>(error.edge())].name);
+    throw ModelError("chords", -1, fmt::format("these chords do not leave a spanning tree: {}{}", error.what(), closing));
   }
 }
 

@@ -5,7 +5,8 @@
 
 namespace kinestat::report {
 
-/// `text` with &, <, > and " replaced by entities, safe in element content and quoted attributes.
+/// `text` with &, <, > and " replaced by entities, safe in element content and quoted
+/// attributes; control characters other than tab and line ends become U+FFFD.
 std::string markup_escape(const std::string& text);
 
 }  // namespace kinestat::report
