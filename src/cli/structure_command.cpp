@@ -8,6 +8,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/option_checks.hpp"
+#include "kinestat/design/structure_verdict.hpp"
 #include "kinestat/io/network_reader.hpp"
 #include "kinestat/io/network_structure.hpp"
 #include "kinestat/io/structure_reader.hpp"
@@ -88,7 +89,8 @@ int run(const StructureOptions& options) {
     transformations = std::make_unique<structure::TransformationSet>(
         structure::structural_transformations(model, options.max_transformations));
   }
-  const report::StructureReport report{model, decomposition, transformations.get(), method};
+  const design::Verdict verdict = design::structure_verdict(model, decomposition);
+  const report::StructureReport report{model, decomposition, transformations.get(), method, &verdict, model.units};
   emit(options.common, options.common.json ? report::structure_json(report) : report::structure_text(report));
   return 0;
 }

@@ -1,5 +1,7 @@
 #include "kinestat/io/structure_reader.hpp"
 
+#include "kinestat/io/model_vocabulary.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -221,15 +223,14 @@ StructureModel read_pairs(const YamlFile& file, const TreeNode& bodies_node, con
 StructureModel read_structure_model(const YamlFile& file) {
   const TreeNode& root = file.root();
   file.check_keys(root, "a structure model",
-                  {"kinestat", "kind", "name", "description", "space", "bodies", "adjacency", "pairs"});
+                  {"kinestat", "kind", "name", "description", "dimension", "space", "units", "bodies", "adjacency", "pairs"});
   if (model_kind(file) != "structure") file.fail(root, "expected 'kind: structure'");
-  int dimension = 3;
-  const TreeNode space = file.optional(root, "space");
-  if (space.defined()) {
-    const std::string s = file.string(space, "'space'");
-    if (s == "spatial") dimension = 6;
-    else if (s != "planar") file.fail(space, fmt::format("unknown space '{}'; expected planar or spatial", s));
-  }
+  const TreeNode space = file.optional(root, "dimension");
+  if (const TreeNode old = file.optional(root, "space"); old.defined())
+    file.fail(old, fmt::format("'space' is now 'dimension', as in every model kind: write 'dimension: {}'",
+                               old.is_scalar() && old.scalar() == "spatial" ? "spatial" : "planar"));
+  const int dimension = read_planar(file, root, "structure", true) ? 3 : 6;
+  const std::string units = read_units(file, root);
   const TreeNode adjacency = file.optional(root, "adjacency");
   const TreeNode pairs = file.optional(root, "pairs");
   const TreeNode bodies = file.optional(root, "bodies");
@@ -255,6 +256,7 @@ StructureModel read_structure_model(const YamlFile& file) {
   }
   const TreeNode name = file.optional(root, "name");
   if (name.defined()) model.name = file.string(name, "'name'");
+  model.units = units;
   return model;
 }
 
