@@ -5,8 +5,7 @@
 
 namespace kinestat::report {
 
-/// `text` with &, <, > and " replaced by entities, safe in element content and quoted
-/// attributes; control characters other than tab and line ends become U+FFFD.
+/// `text` with &, <, > and " replaced by entities, safe in element content and quoted attributes.
 std::string markup_escape(const std::string& text);
 
 }  // namespace kinestat::report
