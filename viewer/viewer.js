@@ -252,7 +252,7 @@
   (S.supports || []).forEach((sp) => {
     if (light) return;
     const at = base(sp.node);
-    const h = radius * 6;
+    const h = radius * 3.5;
     const mesh = sp.kind === 'fixed'
       ? new THREE.Mesh(new THREE.BoxGeometry(h * 1.6, h * 1.6, h * 1.6), new THREE.MeshLambertMaterial({ color: 0x555555 }))
       : new THREE.Mesh(new THREE.ConeGeometry(h * 0.7, h, 4), new THREE.MeshLambertMaterial({ color: sp.kind === 'roller' ? 0x9e9e9e : 0x555555 }));
@@ -299,10 +299,16 @@
   const placeLabels = () => {
     if (labelLayer.style.display === 'none') return;
     const w = canvas.clientWidth, h = canvas.clientHeight;
+    // Labels that land on one spot (couplings at one point) are stacked 13 px apart.
+    const taken = new Map();
     labels.forEach((l) => {
       const v = l.where().project(camera);
-      l.e.style.left = ((v.x + 1) / 2 * w).toFixed(1) + 'px';
-      l.e.style.top = ((1 - v.y) / 2 * h).toFixed(1) + 'px';
+      const x = (v.x + 1) / 2 * w, y = (1 - v.y) / 2 * h;
+      const key = Math.round(x / 8) + ',' + Math.round(y / 8);
+      const k = taken.get(key) || 0;
+      taken.set(key, k + 1);
+      l.e.style.left = x.toFixed(1) + 'px';
+      l.e.style.top = (y + 13 * k).toFixed(1) + 'px';
     });
   };
 
@@ -372,10 +378,17 @@
         $('resultants').appendChild(text('h2', 'Wrench of each coupling'));
         $('resultants').appendChild(table);
       } else {
-        legend.appendChild(text('span', 'compression '));
-        legend.appendChild(text('span', '', 'bar'));
-        legend.appendChild(text('span', ' tension (tension positive)' + (seen.has('bending') ? '; bending purple' : '') + (seen.has('torsion') ? '; torsion green' : '') +
-          (seen.has('rigid') ? '; rigid-body constraint brown' : '') + '. Each element by its dominant resultant; largest = ' + largest.toPrecision(4) + ' (unit-norm stress state)'));
+        const kindsShown = [];
+        if (seen.has('elongation')) {
+          legend.appendChild(text('span', 'elongation: compression '));
+          legend.appendChild(text('span', '', 'bar'));
+          legend.appendChild(text('span', ' tension (tension positive)'));
+        }
+        if (seen.has('bending')) kindsShown.push('bending purple');
+        if (seen.has('torsion')) kindsShown.push('torsion green');
+        if (seen.has('rigid')) kindsShown.push('rigid-body constraint brown');
+        legend.appendChild(text('span', (seen.has('elongation') && kindsShown.length ? '; ' : '') + kindsShown.join('; ') +
+          '. ' + st.label + ': each element by its dominant resultant, shade by magnitude; largest = ' + largest.toPrecision(4) + ' (unit-norm stress state)'));
         resultantTable(st);
       }
     } else if (v.kind === 'mode') {

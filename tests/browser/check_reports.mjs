@@ -63,14 +63,16 @@ const pixels = () => {
   const g = c.getContext('2d');
   g.drawImage(source, 0, 0);
   const data = g.getImageData(0, 0, c.width, c.height).data;
-  let ink = 0, red = 0, blue = 0;
+  let ink = 0, red = 0, blue = 0, grey = 0;
   for (let i = 0; i < data.length; i += 4) {
     const r = data[i], gr = data[i + 1], b = data[i + 2];
     if (r < 235 || gr < 235 || b < 235) ink++;
     if (r > gr + 60 && r > b + 60) red++;
     if (b > r + 60 && b > gr + 20) blue++;
+    // The undeformed shape's light grey (#b0b0b0).
+    if (Math.abs(r - 176) < 20 && Math.abs(gr - 176) < 20 && Math.abs(b - 176) < 20) grey++;
   }
-  return { total: data.length / 4, ink, red, blue, url: source.toDataURL() };
+  return { total: data.length / 4, ink, red, blue, grey, url: source.toDataURL() };
 };
 
 // Opens a report and waits for the viewer to draw a few frames. Returns the page, the console
@@ -152,19 +154,7 @@ for (const file of files) {
     });
     check(a !== b, name + ': moving the amplitude slider of ' + views[mode] + ' does not change the picture');
     // The undeformed shape stays in grey under the displaced one.
-    const grey = await page.evaluate(() => {
-      const c = document.createElement('canvas');
-      const source = document.getElementById('view');
-      c.width = source.width;
-      c.height = source.height;
-      const g = c.getContext('2d');
-      g.drawImage(source, 0, 0);
-      const data = g.getImageData(0, 0, c.width, c.height).data;
-      let n = 0;
-      for (let i = 0; i < data.length; i += 4)
-        if (Math.abs(data[i] - 176) < 20 && Math.abs(data[i + 1] - 176) < 20 && Math.abs(data[i + 2] - 176) < 20) n++;
-      return { shown: window.kinestatViewer.ghostShown(), pixels: n };
-    });
+    const grey = { shown: await page.evaluate(() => window.kinestatViewer.ghostShown()), pixels: (await page.evaluate(pixels)).grey };
     check(grey.shown && grey.pixels > 20, name + ': no undeformed shape under ' + views[mode] + ' (' + JSON.stringify(grey) + ')');
     if (moving === 1) await page.screenshot({ path: path.join(out, name + '-mode.png') });
   }
@@ -229,6 +219,9 @@ for (const file of files) {
       await page.evaluate((i) => { const v = window.kinestatViewer; v.setView(i); v.render(); }, stress);
     }
     if (name === 'truss-12') {
+      await page.evaluate(() => window.kinestatViewer.setLabels(true));
+      await page.screenshot({ path: path.join(out, name + '-stress-labels.png') });
+      await page.evaluate(() => window.kinestatViewer.setLabels(false));
       check(result.length === 12, name + ': expected 12 bars, found ' + result.length);
       check(new Set(result).size === 2, name + ': the self-stress should colour the bars with two colours, found ' + [...new Set(result)].join(', '));
       check(seen.red > 100 && seen.blue > 100, name + ': tension (red) and compression (blue) not both visible (' + seen.red + ' red, ' + seen.blue + ' blue pixels)');

@@ -41,15 +41,15 @@ constexpr double kShown = 1e-4;
 
 int sign(double v) { return v > 0 ? 1 : (v < 0 ? -1 : 0); }
 
-/// "element.deformation" -> value of stress state `k` (1-based) in the text report.
-std::map<std::string, double> text_resultants(const std::string& text, int k) {
+/// "label value" lines (indented) of the text report's section whose heading starts with
+/// `head` and mentions `about`: label -> value.
+std::map<std::string, double> text_section(const std::string& text, const std::string& head, const std::string& about) {
   std::map<std::string, double> out;
   std::istringstream in(text);
   std::string line;
   bool inside = false;
-  const std::string head = "stress state " + std::to_string(k) + " ";
   while (std::getline(in, line)) {
-    if (line.find(head) != std::string::npos && line.find("resultants") != std::string::npos) {
+    if (line.rfind(head, 0) == 0 && line.find(about) != std::string::npos) {
       inside = true;
       continue;
     }
@@ -63,26 +63,14 @@ std::map<std::string, double> text_resultants(const std::string& text, int k) {
   return out;
 }
 
+/// "element.deformation" -> value of stress state `k` (1-based) in the text report.
+std::map<std::string, double> text_resultants(const std::string& text, int k) {
+  return text_section(text, "stress state " + std::to_string(k) + " ", "resultants");
+}
+
 /// "node.slot" -> velocity of mode `k` (1-based) in the text report.
 std::map<std::string, double> text_velocities(const std::string& text, int k) {
-  std::map<std::string, double> out;
-  std::istringstream in(text);
-  std::string line;
-  bool inside = false;
-  const std::string head = "mode " + std::to_string(k) + " ";
-  while (std::getline(in, line)) {
-    if (line.rfind(head, 0) == 0 && line.find("velocities") != std::string::npos) {
-      inside = true;
-      continue;
-    }
-    if (!inside) continue;
-    if (line.rfind("  ", 0) != 0) break;
-    std::istringstream words(line);
-    std::string label;
-    double value = 0;
-    if (words >> label >> value) out[label] = value;
-  }
-  return out;
+  return text_section(text, "mode " + std::to_string(k) + " ", "velocities");
 }
 
 struct SvgLine {
