@@ -203,6 +203,16 @@ for (const file of files) {
       check(coloured >= 10, name + ': the flexure self-stress colours only ' + coloured + ' elements');
     }
     if (name === 'davies-2-circuit') {
+      // Screenshots of the wrenches alone, with labels: hide the coupling screws and the pair.
+      await page.evaluate(() => {
+        const box = document.getElementById('screws');
+        box.checked = false;
+        box.dispatchEvent(new Event('change'));
+        const pair = document.getElementById('pair');
+        pair.selectedIndex = 0;
+        pair.dispatchEvent(new Event('change'));
+        window.kinestatViewer.setLabels(true);
+      });
       const wrenches = [];
       for (let i = 0; i < views.length; i++) {
         if (!views[i].startsWith('self-stress')) continue;
@@ -216,6 +226,7 @@ for (const file of files) {
         twists.push(await page.evaluate((k) => { const v = window.kinestatViewer; v.setView(k); v.render(); return v.twistCount(); }, i));
       }
       check(twists.length === 3 && twists.every((t) => t > 0), name + ': expected three modes with body twists, got ' + JSON.stringify(twists));
+      await page.evaluate(() => window.kinestatViewer.setLabels(false));
       await page.evaluate((i) => { const v = window.kinestatViewer; v.setView(i); v.render(); }, stress);
     }
     if (name === 'truss-12') {
