@@ -213,6 +213,18 @@
     });
   }
 
+  // Sheets (leaf springs): a light quadrilateral along each, following its nodes.
+  const sheetMeshes = [];
+  if (!light) {
+    (S.elements.sheets || []).forEach((sh) => {
+      const g = new THREE.BufferGeometry();
+      g.setAttribute('position', new THREE.BufferAttribute(new Float32Array(12), 3));
+      g.setIndex([0, 1, 2, 0, 2, 3]);
+      const mesh = new THREE.Mesh(g, new THREE.MeshLambertMaterial({ color: 0xe8d9b5, side: THREE.DoubleSide, transparent: true, opacity: 0.75 }));
+      scene.add(mesh);
+      sheetMeshes.push({ mesh, e: sh.element, across: new THREE.Vector3(sh.across[0], sh.across[1], sh.across[2]) });
+    });
+  }
   // The undeformed shape in light grey, shown under every mode.
   const ghost = (() => {
     const g = new THREE.BufferGeometry();
@@ -439,6 +451,15 @@
       bar.scale.set(baseRadius(e), length, baseRadius(e));
     });
     spheres.forEach((s, i) => s.position.copy(at(i)));
+    sheetMeshes.forEach((sh) => {
+      const a = at(E[2 * sh.e]), b = at(E[2 * sh.e + 1]);
+      const half = sh.across.clone().multiplyScalar(0.5 * S.elements.sheet_width * a.distanceTo(b));
+      const p = sh.mesh.geometry.attributes.position;
+      [a.clone().add(half), b.clone().add(half), b.clone().sub(half), a.clone().sub(half)].forEach((v, k) => p.setXYZ(k, v.x, v.y, v.z));
+      p.needsUpdate = true;
+      sh.mesh.geometry.computeVertexNormals();
+      sh.mesh.geometry.computeBoundingSphere();
+    });
     glyphs.forEach((g) => g.group.position.copy(at(g.node)));
   };
 

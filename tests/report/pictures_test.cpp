@@ -62,6 +62,18 @@ TEST(Pictures, FoldedSheetGuideSelfStressColoursEverySheet) {
   EXPECT_EQ(kind_of.size(), 12u) << "every sheet carries a visible resultant";
   for (const auto& [sheet, kind] : kind_of) EXPECT_EQ(kind, "bending") << sheet;
   EXPECT_NE(with.find("bending purple"), std::string::npos) << "the legend names the kind";
+  // The sheets are drawn as sheets: elongation and bending_xz held, torsion and bending_xy
+  // released in the model, so each lies in its element's x-z plane (z given as orientation).
+  EXPECT_EQ(count(with, "class=\"sheet\""), 12);
+  for (const auto& element : scene.elements) {
+    ASSERT_TRUE(element.sheet_across.has_value()) << element.name;
+    const Eigen::Vector3d along = scene.nodes[static_cast<std::size_t>(element.b)].position - scene.nodes[static_cast<std::size_t>(element.a)].position;
+    EXPECT_NEAR(element.sheet_across->dot(along), 0.0, 1e-9 * along.norm());
+    EXPECT_NEAR(std::abs(element.sheet_across->z()), 0.0, 1e-9) << "fold lines lie in horizontal planes";
+  }
+  // Wires are not sheets.
+  const std::string wires = report::mechanism_svg(framework_scene_of("wire-flexure-guide.yaml"));
+  EXPECT_EQ(count(wires, "class=\"sheet\""), 0);
   // The HTML scene carries the same: a non-zero value on every sheet, the kind, the table.
   const auto json = report::scene_json(scene);
   double smallest = 1e300;
@@ -175,6 +187,11 @@ TEST(Pictures, VerdictAndUnitsAreShownWhenPresent) {
   EXPECT_EQ(json["verdict"]["changes"][0]["target"], "bar 7 elongation");
   scene.units.clear();
   EXPECT_NE(report::mechanism_svg(scene).find(" model units</text>"), std::string::npos);
+  // The coupling graph of a network carries the verdict under the model's name.
+  auto network = network_scene_of("davies-2-circuit.yaml");
+  EXPECT_EQ(report::graph_svg(network).find("class=\"verdict\""), std::string::npos);
+  network.verdict = verdict;
+  EXPECT_NE(report::graph_svg(network).find("Verdict: 1 extra motion, 1 redundant constraint."), std::string::npos);
 }
 
 TEST(Pictures, SupportsAreDrawnByKind) {

@@ -108,12 +108,16 @@ nlohmann::ordered_json scene_json(const Scene& scene) {
   }
   auto element_types = nlohmann::ordered_json::array();
   auto element_labels = nlohmann::ordered_json::array();
+  auto sheets = nlohmann::ordered_json::array();
   if (!scene.large)
-    for (const auto& element : scene.elements) {
+    for (std::size_t e = 0; e < scene.elements.size(); ++e) {
+      const auto& element = scene.elements[e];
       element_types.push_back(element.type);
       element_labels.push_back(element.label ? 1 : 0);
+      if (element.sheet_across) sheets.push_back({{"element", e}, {"across", vector_json(*element.sheet_across)}});
     }
-  j["elements"] = {{"count", scene.elements.size()}, {"pairs", pairs}, {"name", element_names}, {"type", element_types}, {"label", element_labels}};
+  j["elements"] = {{"count", scene.elements.size()}, {"pairs", pairs}, {"name", element_names}, {"type", element_types},
+                   {"label", element_labels}, {"sheets", sheets}, {"sheet_width", kSheetWidth}};
   j["units"] = length_unit(scene);
   j["verdict"] = scene.verdict ? verdict_json(*scene.verdict) : nlohmann::ordered_json(nullptr);
   auto supports = nlohmann::ordered_json::array();

@@ -75,6 +75,19 @@ std::string deformation_kind(framework::ElementType type, const std::string& nam
   return "elongation";
 }
 
+/// A spatial beam is a sheet when its deformation roles say so (seed 002, folded-sheet
+/// flexures): elongation and bending in one element plane held, torsion and bending in the other
+/// plane free. The sheet lies in the held plane: returns its in-plane direction across the beam.
+std::optional<Vector3d> sheet_across(const framework::FrameworkModel& model, const framework::Element& element) {
+  if (model.dimension != 3 || element.type != framework::ElementType::beam || element.roles.size() != 6) return std::nullopt;
+  const auto held = [&](std::size_t k) { return element.roles[k] == framework::DeformationRole::fixed; };
+  if (!held(0) || held(1)) return std::nullopt;
+  // Deformations: elongation, torsion, bending_xz_p, bending_xz_q, bending_xy_p, bending_xy_q.
+  if (held(2) && held(3) && !held(4) && !held(5)) return Vector3d(element.frame.col(2));  // sheet in the x-z plane
+  if (held(4) && held(5) && !held(2) && !held(3)) return Vector3d(element.frame.col(1));  // sheet in the x-y plane
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::string length_unit(const Scene& scene) { return scene.units.empty() ? std::string("model units") : scene.units; }
@@ -137,7 +150,7 @@ Scene network_scene(const network::Model& model, const network::NetworkResult& r
     const Vector3d p = to_vector(c.geometry.point);
     for (int b : {c.from, c.to}) {
       scene.nodes.push_back({c.name + "@" + model.bodies[static_cast<std::size_t>(b)], p, b, b == r.ground, {}, {}});
-      scene.elements.push_back({c.name, "link", b, static_cast<int>(scene.nodes.size()) - 1, false});
+      scene.elements.push_back({c.name, "link", b, static_cast<int>(scene.nodes.size()) - 1, false, std::nullopt});
     }
     SceneGlyph glyph;
     glyph.name = c.name;
@@ -184,7 +197,7 @@ Scene network_scene(const network::Model& model, const network::NetworkResult& r
     for (int axis = 0; axis < arms; ++axis) {
       scene.nodes.push_back({model.bodies[b] + ".marker" + std::to_string(axis), centre[b] + arm * Vector3d::Unit(axis),
                              static_cast<int>(b), static_cast<int>(b) == r.ground, {}, {}});
-      scene.elements.push_back({model.bodies[b] + ".marker", "link", static_cast<int>(b), static_cast<int>(scene.nodes.size()) - 1, false});
+      scene.elements.push_back({model.bodies[b] + ".marker", "link", static_cast<int>(b), static_cast<int>(scene.nodes.size()) - 1, false, std::nullopt});
     }
 
   // The motion of every body relative to the ground, per motion primary.
@@ -306,10 +319,10 @@ Scene framework_scene(const framework::FrameworkModel& model, const framework::F
     if (element.nodes.empty()) continue;
     if (element.type == framework::ElementType::rigid_body) {
       for (std::size_t i = 1; i < element.nodes.size(); ++i)
-        scene.elements.push_back({element.name, "rigid", static_cast<int>(element.nodes[0]), static_cast<int>(element.nodes[i]), i == 1});
+        scene.elements.push_back({element.name, "rigid", static_cast<int>(element.nodes[0]), static_cast<int>(element.nodes[i]), i == 1, std::nullopt});
     } else if (element.nodes.size() >= 2) {
       scene.elements.push_back({element.name, element.type == framework::ElementType::beam ? "beam" : "truss",
-                                static_cast<int>(element.nodes[0]), static_cast<int>(element.nodes[1]), true});
+                                static_cast<int>(element.nodes[0]), static_cast<int>(element.nodes[1]), true, sheet_across(model, element)});
     }
   }
   // Signs are the analysis' own (linalg/sign_convention.hpp): the scene never flips a mode or
@@ -411,7 +424,7 @@ Scene structure_scene(const structure::StructureModel& model, const structure::D
   }
   for (std::size_t p = 0; p < model.pairs.size(); ++p) {
     const auto& pair = model.pairs[p];
-    scene.elements.push_back({"pair " + std::to_string(p + 1), "pair", pair.a, pair.b, true});
+    scene.elements.push_back({"pair " + std::to_string(p + 1), "pair", pair.a, pair.b, true, std::nullopt});
     GraphEdge edge;
     edge.name = "p" + std::to_string(p + 1);
     edge.from = pair.a;

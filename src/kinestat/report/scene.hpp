@@ -48,7 +48,14 @@ struct SceneElement {
   int a = 0;
   int b = 0;
   bool label = true;  ///< name this line in pictures (a rigid body or body star is named once)
+  /// Beams the model makes sheets (leaf springs): in-plane bending and elongation held, torsion
+  /// and out-of-plane bending free. The unit direction across the sheet, in its plane; the
+  /// model gives no width, so pictures draw the sheet kSheetWidth times its length wide.
+  std::optional<Eigen::Vector3d> sheet_across;
 };
+
+/// Width of a drawn sheet as a share of its length (the model has no width).
+inline constexpr double kSheetWidth = 0.3;
 
 /// A screw drawn as its axis (networks): a wrench a coupling transmits in a self-stress, or the
 /// twist of a body in a mode. `point` is the point of the axis nearest to `anchor`.

@@ -411,9 +411,14 @@ std::vector<std::string> verdict_lines(const Scene& scene) {
 std::string graph_svg(const Scene& scene) {
   const double size = 380;
   const bool network = scene.kind == "network";
-  const double width = network ? 3 * size : size + 160, height = size + 40;
+  const double width = network ? 3 * size : size + 160;
+  // The verdict, when the analysis gave one, under the model's name.
+  const std::vector<std::string> verdict = scene.verdict ? verdict_lines(scene) : std::vector<std::string>{};
+  const double height = size + 40 + 16.0 * static_cast<double>(verdict.size());
   std::string out = header(width, height);
-  text(out, P{width / 2, height - 12}, scene.name, "middle", "font-size=\"12\" fill=\"#333\"");
+  text(out, P{width / 2, size + 28}, scene.name, "middle", "font-size=\"12\" fill=\"#333\"");
+  for (std::size_t i = 0; i < verdict.size(); ++i)
+    text(out, P{width / 2, size + 46 + 16.0 * static_cast<double>(i)}, verdict[i], "middle", "class=\"verdict\" font-size=\"12\" fill=\"#333\"");
   coupling_graph_panel(out, scene, P{network ? 0.0 : 80.0, 0}, size);
   if (network) {
     expanded_graph_panel(out, scene, P{size, 0}, size, true);
@@ -478,7 +483,9 @@ std::string mechanism_svg(const Scene& scene, const MechanismDrawing& drawing) {
     }
   }
   const double width = 640, margin = 50, top = 40 + 16.0 * static_cast<double>(verdict.size());
-  const double legend = 48 + 20.0 * ((mode ? 3 : 0) + (stress ? 3 : 0));
+  bool any_sheet = false;
+  for (const auto& element : scene.elements) any_sheet = any_sheet || element.sheet_across.has_value();
+  const double legend = 48 + 20.0 * ((mode ? 3 : 0) + (stress ? 3 : 0) + (any_sheet ? 1 : 0));
   const double drawing_height = 420;
   const double height = top + drawing_height + legend;
   std::vector<P> at;
@@ -564,6 +571,19 @@ std::string mechanism_svg(const Scene& scene, const MechanismDrawing& drawing) {
     for (const auto& element : scene.elements)
       line(fit(at[static_cast<std::size_t>(element.a)]), fit(at[static_cast<std::size_t>(element.b)]), "#cccccc",
            element.type == "rigid" ? "6" : "2", " class=\"undeformed\"");
+  }
+  // Sheets (leaf springs) as light quadrilaterals under their centre lines.
+  bool sheets = false;
+  for (const auto& element : scene.elements) {
+    if (!element.sheet_across) continue;
+    sheets = true;
+    const auto ia = static_cast<std::size_t>(element.a), ib = static_cast<std::size_t>(element.b);
+    const Eigen::Vector3d pa = scene.nodes[ia].position, pb = scene.nodes[ib].position;
+    const Eigen::Vector3d half = 0.5 * kSheetWidth * (pb - pa).norm() * *element.sheet_across;
+    const P a1 = fit(view.project(pa + half) + shift * arrow[ia]), a2 = fit(view.project(pa - half) + shift * arrow[ia]);
+    const P b1 = fit(view.project(pb + half) + shift * arrow[ib]), b2 = fit(view.project(pb - half) + shift * arrow[ib]);
+    out += fmt::format("<path class=\"sheet\" data-element=\"{}\" d=\"M{} L{} L{} L{} z\" fill=\"#efe3c8\" fill-opacity=\"0.85\" stroke=\"#b59b6a\" stroke-width=\"0.8\"/>\n",
+                       escape(element.name), pt(a1), pt(b1), pt(b2), pt(a2));
   }
   for (std::size_t e = 0; e < scene.elements.size(); ++e) {
     const auto& element = scene.elements[e];
@@ -757,6 +777,11 @@ std::string mechanism_svg(const Scene& scene, const MechanismDrawing& drawing) {
       text(out, P{20, y}, "width by |resultant| (unit-norm stress state, non-dimensional)", "start", "font-size=\"11\" fill=\"#555\"");
       y += 20;
     }
+  }
+  if (sheets) {
+    out += fmt::format("<rect x=\"20\" y=\"{}\" width=\"30\" height=\"9\" fill=\"#efe3c8\" stroke=\"#b59b6a\" stroke-width=\"0.8\"/>\n", f2(y - 9));
+    text(out, P{58, y}, fmt::format("sheets (beams the model makes leaf springs), drawn {}% of their length wide", fixed(100 * kSheetWidth, 0)), "start");
+    y += 20;
   }
   if (!mode && !stress) text(out, P{20, y}, scene.modes.empty() && scene.stresses.empty() ? "no kinematic modes and no self-stress" : "configuration only", "start");
   out += "</svg>\n";
