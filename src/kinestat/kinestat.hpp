@@ -2,6 +2,9 @@
 // kinestat: every public header. Layers: screw, graph, linalg -> network, framework, structure,
 // design -> io -> report (docs/architecture.md). The installed-package check
 // (tests/consumer) fails when a public header is missing here.
+#include "kinestat/design/framework_verdict.hpp"
+#include "kinestat/design/network_verdict.hpp"
+#include "kinestat/design/structure_verdict.hpp"
 #include "kinestat/design/verdict.hpp"
 #include "kinestat/framework/deformation_functions.hpp"
 #include "kinestat/framework/framework_analysis.hpp"
@@ -35,6 +38,7 @@
 #include "kinestat/report/scene.hpp"
 #include "kinestat/report/structure_report.hpp"
 #include "kinestat/report/svg_writer.hpp"
+#include "kinestat/report/verdict_report.hpp"
 #include "kinestat/screw/coupling_basis.hpp"
 #include "kinestat/screw/coupling_type.hpp"
 #include "kinestat/screw/screw_space.hpp"
