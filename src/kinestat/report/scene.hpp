@@ -153,10 +153,10 @@ struct Scene {
   std::vector<int> group_of;
   /// The model had more elements than a picture can show one by one.
   bool large = false;
-  /// Length unit of the model (`units:` key); empty: "model units".
-  std::string units;
-  /// The verdict every picture leads with, when the design functions gave one.
+  /// The verdict every picture leads with (design layer; filled by whoever loads the model).
   std::optional<design::Verdict> verdict;
+  /// The model's length unit (`units:`), empty when the file names none ("model units").
+  std::string units;
 };
 
 /// The unit text of a scene: its `units`, or "model units" when none was given.
