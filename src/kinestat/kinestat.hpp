@@ -15,6 +15,7 @@
 #include "kinestat/io/input_error.hpp"
 #include "kinestat/io/loaded_network.hpp"
 #include "kinestat/io/model_file.hpp"
+#include "kinestat/io/model_tree.hpp"
 #include "kinestat/io/network_structure.hpp"
 #include "kinestat/io/output_file.hpp"
 #include "kinestat/linalg/equilibration.hpp"
