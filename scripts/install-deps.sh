@@ -3,10 +3,11 @@
 set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
-  libeigen3-dev libsuitesparse-dev libgmp-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libfmt-dev
+  libeigen3-dev libsuitesparse-dev libopenblas-dev libgmp-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   clang libclang-rt-14-dev
   chromium
+  python3-numpy
 )
 # Node.js and npm build the HTML report viewer. Machines that already have them (for example
 # NodeSource's nodejs, which conflicts with Debian's npm package) keep their own.

@@ -13,11 +13,16 @@ namespace kinestat::cli {
 namespace {
 // Framework-only options; filled by register_framework_options before the action runs.
 long long dense_limit = 1500;
+long long sparse_vectors = 0;
 }  // namespace
 
 void register_framework_options(CLI::App& analyze) {
   analyze.add_option("--dense-limit", dense_limit,
                      "Frameworks: largest matrix dimension analysed with the dense SVD (larger: sparse QR counts only); default 1500")
+      ->check(CLI::NonNegativeNumber);
+  analyze.add_option("--vectors", sparse_vectors,
+                     "Frameworks above --dense-limit: also the first K modes and K stress states (from the sparse QR) "
+                     "and the release proposal; default 0 (counts only)")
       ->check(CLI::NonNegativeNumber);
 }
 
@@ -26,6 +31,7 @@ int run_framework_analysis(const CommonOptions& options, const io::YamlFile& mod
   framework::AnalysisOptions analysis_options;
   analysis_options.tolerance.relative = options.tolerance;
   analysis_options.dense_limit = static_cast<Eigen::Index>(dense_limit);
+  analysis_options.sparse_vectors = static_cast<Eigen::Index>(sparse_vectors);
   const framework::FrameworkAnalysis analysis = framework::analyse_framework(model, analysis_options);
   if (options.json) {
     emit(options, report::json_text(report::framework_report_json(model, analysis)));
