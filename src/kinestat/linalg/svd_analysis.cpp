@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "kinestat/linalg/blas_threads.hpp"
@@ -42,28 +43,32 @@ Eigen::MatrixXd probes(Eigen::Index rows, Eigen::Index count) {
 bool factors_check(const Eigen::MatrixXd& a, const ThinFactors& f) {
   const double scale = std::max(1.0, a.norm());
   const auto p = f.s.size();
-  const Eigen::MatrixXd x = probes(a.cols(), kSvdProbes), y = probes(p, kSvdProbes);
-  const double x_norm = x.norm(), y_norm = y.norm();
-  const double residual = (a * x - f.u * (f.s.asDiagonal() * (f.v.transpose() * x))).norm() / x_norm;
-  const double u_orthogonality = (f.u.transpose() * (f.u * y) - y).norm() / y_norm;
-  const double v_orthogonality = (f.v.transpose() * (f.v * y) - y).norm() / y_norm;
-  return residual <= kSvdResidualTolerance * scale && u_orthogonality <= kSvdResidualTolerance * std::max<double>(1.0, static_cast<double>(p)) &&
-         v_orthogonality <= kSvdResidualTolerance * std::max<double>(1.0, static_cast<double>(p));
+  const Eigen::MatrixXd x = probes(a.cols(), kSvdProbes);
+  const double residual =
+      (a * x - f.u.leftCols(p) * (f.s.asDiagonal() * (f.v.leftCols(p).transpose() * x))).norm() / x.norm();
+  auto orthogonality = [](const Eigen::MatrixXd& q) {
+    const Eigen::MatrixXd y = probes(q.cols(), kSvdProbes);
+    return (q.transpose() * (q * y) - y).norm() / y.norm();
+  };
+  const double limit = kSvdResidualTolerance * std::max<double>(1.0, static_cast<double>(std::max(f.u.cols(), f.v.cols())));
+  return residual <= kSvdResidualTolerance * scale && orthogonality(f.u) <= limit && orthogonality(f.v) <= limit;
 }
 
-// Thin SVD by LAPACK's divide and conquer (dgesdd, from the optimised LAPACK kinestat links:
-// OpenBLAS); false when LAPACK reports a failure.
-bool lapack_thin_svd(const Eigen::MatrixXd& a, ThinFactors& f) {
+// SVD by LAPACK's divide and conquer (dgesdd, from the optimised LAPACK kinestat links:
+// OpenBLAS): thin (jobz 'S') or with U and V completed to full orthonormal bases (jobz 'A');
+// false when LAPACK reports a failure.
+bool lapack_svd(const Eigen::MatrixXd& a, bool full, ThinFactors& f) {
   int m = static_cast<int>(a.rows()), n = static_cast<int>(a.cols());
   const int p = std::min(m, n);
+  const int u_cols = full ? m : p, vt_rows = full ? n : p;
   Eigen::MatrixXd work_a = a;
   f.s.resize(p);
-  f.u.resize(m, p);
-  Eigen::MatrixXd vt(p, n);
-  int lda = std::max(1, m), ldu = std::max(1, m), ldvt = std::max(1, p), info = 0, lwork = -1;
+  f.u.resize(m, u_cols);
+  Eigen::MatrixXd vt(vt_rows, n);
+  int lda = std::max(1, m), ldu = std::max(1, m), ldvt = std::max(1, vt_rows), info = 0, lwork = -1;
   std::vector<int> iwork(static_cast<std::size_t>(8 * p));
   double query = 0.0;
-  const char jobz = 'S';
+  const char jobz = full ? 'A' : 'S';
   dgesdd_(&jobz, &m, &n, work_a.data(), &lda, f.s.data(), f.u.data(), &ldu, vt.data(), &ldvt, &query, &lwork, iwork.data(), &info, 1);
   if (info != 0) return false;
   lwork = static_cast<int>(query);
@@ -74,14 +79,16 @@ bool lapack_thin_svd(const Eigen::MatrixXd& a, ThinFactors& f) {
   return true;
 }
 
-ThinFactors thin_svd(const Eigen::MatrixXd& a) {
+// Checked SVD: LAPACK first, the one-sided Jacobi SVD when LAPACK fails or its factors fail the
+// check. `full`: U and V completed to square orthonormal matrices.
+ThinFactors checked_svd(const Eigen::MatrixXd& a, bool full) {
   pin_blas_threads();
   ThinFactors f;
-  if (lapack_thin_svd(a, f) && factors_check(a, f)) return f;
+  if (lapack_svd(a, full, f) && factors_check(a, f)) return f;
   Eigen::JacobiSVD<Eigen::MatrixXd, Eigen::ColPivHouseholderQRPreconditioner> svd(a, Eigen::ComputeFullU | Eigen::ComputeFullV);
   const auto p = std::min(a.rows(), a.cols());
-  f.u = svd.matrixU().leftCols(p);
-  f.v = svd.matrixV().leftCols(p);
+  f.u = full ? Eigen::MatrixXd(svd.matrixU()) : Eigen::MatrixXd(svd.matrixU().leftCols(p));
+  f.v = full ? Eigen::MatrixXd(svd.matrixV()) : Eigen::MatrixXd(svd.matrixV().leftCols(p));
   f.s = svd.singularValues();
   f.used_jacobi = true;
   return f;
@@ -109,18 +116,23 @@ SvdAnalysis analyse_svd(const Eigen::MatrixXd& a, const RankTolerance& tolerance
     result.v = Eigen::MatrixXd::Identity(a.cols(), a.cols());
     return result;
   }
-  ThinFactors f = thin_svd(a);
+  // Full V always (the null space is its last columns); full U only when asked for.
+  ThinFactors f = checked_svd(a, vectors == SvdVectors::both);
   result.singular_values = f.s;
   result.used_jacobi = f.used_jacobi;
   result.rank = decide_rank(result.singular_values, a.rows(), a.cols(), tolerance);
-  result.v = completed_basis(f.v);
-  if (vectors == SvdVectors::both) result.u = completed_basis(f.u);
+  if (vectors == SvdVectors::both) {
+    result.u = std::move(f.u);
+    result.v = std::move(f.v);
+  } else {
+    result.v = completed_basis(f.v);
+  }
   return result;
 }
 
 Eigen::VectorXd singular_values(const Eigen::MatrixXd& a) {
   if (a.rows() == 0 || a.cols() == 0) return {};
-  return thin_svd(a).s;
+  return checked_svd(a, false).s;
 }
 
 RankDecision numerical_rank(const Eigen::MatrixXd& a, const RankTolerance& tolerance) {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 
 namespace kinestat::report {
 
@@ -146,7 +147,7 @@ nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const 
     m["velocities"] = velocities_by_node(model, a, mode.velocities);
     m["moving"] = nlohmann::ordered_json::array();
     for (Eigen::Index col : mode.moving) m["moving"].push_back(framework_column_label(model, a, col));
-    j["modes"].push_back(m);
+    j["modes"].push_back(std::move(m));
   }
   j["stresses"] = nlohmann::ordered_json::array();
   for (const auto& state : a.stresses) {
@@ -159,11 +160,11 @@ nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const 
       entry["element"] = model.elements[ref.element].name;
       entry["deformation"] = deformation_name(model, ref);
       entry["value"] = rounded(state.resultants(i));
-      s["resultants"].push_back(entry);
+      s["resultants"].push_back(std::move(entry));
     }
     s["candidates"] = nlohmann::ordered_json::array();
     for (Eigen::Index row : state.candidates) s["candidates"].push_back(framework_row_label(model, a, row));
-    j["stresses"].push_back(s);
+    j["stresses"].push_back(std::move(s));
   }
   j["releases"] = nlohmann::ordered_json::array();
   for (Eigen::Index row : a.releases) {
