@@ -142,4 +142,36 @@ Eigen::MatrixXd SparseQr::null_vectors(Eigen::Index first, Eigen::Index count) c
   return result;
 }
 
+Eigen::VectorXd SparseQr::least_squares_residual(const Eigen::SparseMatrix<double>& a, const Eigen::VectorXd& g) const {
+  if (rank_ == 0) return g;
+  const SparseFactorView r = this->r();
+  // x over the live columns (in the order of P) from R11ᵀ R11 x = (A_live)ᵀ b.
+  auto solve = [&](const Eigen::VectorXd& b) {
+    const Eigen::VectorXd atb = a.transpose() * b;
+    Eigen::VectorXd w(rank_);
+    for (Eigen::Index j = 0; j < rank_; ++j) {  // R11ᵀ w = (A_live)ᵀ b: column j of R is row j of R11ᵀ
+      double sum = atb(permutation_[static_cast<std::size_t>(j)]), diagonal = 0.0;
+      for (SparseFactorView::InnerIterator it(r, j); it; ++it) {
+        if (it.row() < j) sum -= it.value() * w(it.row());
+        else if (it.row() == j) diagonal = it.value();
+      }
+      w(j) = sum / diagonal;
+    }
+    for (Eigen::Index j = rank_ - 1; j >= 0; --j) {  // R11 x = w
+      double diagonal = 0.0;
+      for (SparseFactorView::InnerIterator it(r, j); it; ++it)
+        if (it.row() == j) diagonal = it.value();
+      w(j) /= diagonal;
+      for (SparseFactorView::InnerIterator it(r, j); it; ++it)
+        if (it.row() < j) w(it.row()) -= it.value() * w(j);
+    }
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(cols_);
+    for (Eigen::Index k = 0; k < rank_; ++k) x(permutation_[static_cast<std::size_t>(k)]) = w(k);
+    return x;
+  };
+  Eigen::VectorXd residual = g - a * solve(g);
+  residual -= a * solve(residual);  // the correction step
+  return residual;
+}
+
 }  // namespace kinestat::linalg

@@ -48,6 +48,13 @@ class SparseQr {
   /// vector x with x_P = [−R11⁻¹ R12 e_k; e_k], so A x = 0 up to rounding. n × count.
   Eigen::MatrixXd null_vectors(Eigen::Index first, Eigen::Index count) const;
 
+  /// g − A x with x the least-squares solution of A_live x ≈ g over the live columns (A is the
+  /// matrix factored here, passed again because Q is not kept): g with its component in the
+  /// range of A removed, so a generic g gives a generic vector of the null space of Aᵀ with
+  /// entries of the size of g. Corrected seminormal equations (R11ᵀ R11 x = A_liveᵀ g with one
+  /// refinement step), stable with R alone.
+  Eigen::VectorXd least_squares_residual(const Eigen::SparseMatrix<double>& a, const Eigen::VectorXd& g) const;
+
  private:
   struct Factor;
   std::unique_ptr<Factor> factor_;

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <Eigen/Geometry>
 #include <Eigen/SparseCore>
 
 #include <algorithm>
@@ -30,17 +31,12 @@ double weight(Index k) {
   return (x & 1U) != 0 ? 0.5 + unit : -0.5 - unit;
 }
 
-// One generic vector of the null space of the factored matrix: the basic null vectors
-// combined with `weight`, in blocks so the work is one back substitution per block.
-Eigen::VectorXd combined_null_vector(const linalg::SparseQr& qr) {
-  const Index dead = qr.cols() - qr.rank();
-  Eigen::VectorXd combined = Eigen::VectorXd::Zero(qr.cols());
-  constexpr Index kBlock = 256;
-  for (Index first = 0; first < dead; first += kBlock) {
-    const Eigen::MatrixXd block = qr.null_vectors(first, std::min(kBlock, dead - first));
-    for (Index j = 0; j < block.cols(); ++j) combined += weight(first + j) * block.col(j);
-  }
-  return combined;
+// A generic vector of the null space of aᵀ: fixed pseudo-random weights with their component in
+// the range of a removed (qr factors a).
+Eigen::VectorXd generic_left_null_vector(const Eigen::SparseMatrix<double>& a, const linalg::SparseQr& qr) {
+  Eigen::VectorXd g(a.rows());
+  for (Index k = 0; k < g.size(); ++k) g(k) = weight(k);
+  return qr.least_squares_residual(a, g);
 }
 
 int components(int bodies, const std::vector<Coupling>& couplings) {
@@ -80,14 +76,20 @@ SparseNetworkResult analyse_network_sparse(const Model& model, const linalg::Ran
   // Column block of each body's twist; the ground has none.
   auto block = [&r, d](int body) -> Index { return body == r.ground ? -1 : (body < r.ground ? body : body - 1) * d; };
 
+  // The conditioned frame of the dense path (centroid, extent), applied in floating point: the
+  // bases are built exactly in the user's frame from its short decimals, while the centroid's
+  // large denominators would make exact arithmetic in the frame itself slow.
   const AnalysisFrame frame = AnalysisFrame::of(model);
+  const Eigen::Vector3d origin(frame.origin[0].get_d(), frame.origin[1].get_d(), frame.origin[2].get_d());
+  const double scale = frame.scale.get_d();
+  const std::vector<int>& components = model.space.components;
   std::vector<Eigen::Triplet<double>> entries;
   std::vector<int> row_coupling;
   for (std::size_t i = 0; i < model.couplings.size(); ++i) {
     const Coupling& c = model.couplings[i];
     screw::CouplingBasis basis;
     try {
-      basis = screw::coupling_basis(c.type, frame.to_frame(c.geometry, model.space), model.space);
+      basis = screw::coupling_basis(c.type, c.geometry, model.space);
     } catch (const screw::GeometryError& error) {
       throw ModelError("couplings", static_cast<int>(i), fmt::format("coupling '{}': {}", c.name, error.what()));
     }
@@ -95,8 +97,14 @@ SparseNetworkResult analyse_network_sparse(const Model& model, const linalg::Ran
     for (const auto& action : basis.actions) {
       const auto row = static_cast<Index>(row_coupling.size());
       row_coupling.push_back(static_cast<int>(i));
+      // Ray formation (moment at the origin; force): moment about the frame's origin, in
+      // lengths of the frame's scale.
+      Eigen::Matrix<double, 6, 1> full = Eigen::Matrix<double, 6, 1>::Zero();
+      for (Index k = 0; k < d; ++k) full(components[static_cast<std::size_t>(k)]) = action.coordinates[static_cast<std::size_t>(k)].get_d();
+      const Eigen::Vector3d force = full.tail<3>();
+      full.head<3>() = (full.head<3>() - origin.cross(force)) / scale;
       for (Index k = 0; k < d; ++k) {
-        const double value = action.coordinates[static_cast<std::size_t>(k)].get_d();
+        const double value = full(components[static_cast<std::size_t>(k)]);
         if (value == 0.0) continue;
         if (const Index to = block(c.to); to >= 0) entries.emplace_back(row, to + k, value);
         if (const Index from = block(c.from); from >= 0) entries.emplace_back(row, from + k, -value);
@@ -112,11 +120,13 @@ SparseNetworkResult analyse_network_sparse(const Model& model, const linalg::Ran
   r.rank = linalg::sparse_rank_threshold(k, tolerance);
   std::vector<bool> stressed(static_cast<std::size_t>(r.e), false), moving(static_cast<std::size_t>(r.e), false);
   if (k.rows() > 0 && k.cols() > 0) {
+    const Eigen::SparseMatrix<double> kt = k.transpose();
     {
-      // Motions: a generic body-twist vector with K T = 0; a coupling moves when T_to ≠ T_from.
-      const linalg::SparseQr qr(k, r.rank.threshold);
+      // Motions: a generic body-twist vector with K T = 0 (the null space of (Kᵀ)ᵀ, from the QR
+      // of Kᵀ); a coupling moves when T_to ≠ T_from.
+      const linalg::SparseQr qr(kt, r.rank.threshold);
       linalg::record_rank(r.rank, qr);
-      const Eigen::VectorXd twists = combined_null_vector(qr);
+      const Eigen::VectorXd twists = generic_left_null_vector(kt, qr);
       if (twists.size() > 0 && twists.norm() > 0) {
         r.residual = std::max(r.residual, (k * twists).norm() / (r.rank.largest * twists.norm()));
         const double zero = kSupportZero * twists.cwiseAbs().maxCoeff();
@@ -131,10 +141,10 @@ SparseNetworkResult analyse_network_sparse(const Model& model, const linalg::Ran
       }
     }
     {
-      // Self-stresses: generic action magnitudes λ with Kᵀ λ = 0 (every body in equilibrium).
-      const Eigen::SparseMatrix<double> kt = k.transpose();
-      const linalg::SparseQr qr(kt, r.rank.threshold);
-      const Eigen::VectorXd actions = combined_null_vector(qr);
+      // Self-stresses: generic action magnitudes λ with Kᵀ λ = 0 (every body in equilibrium),
+      // from the QR of K.
+      const linalg::SparseQr qr(k, r.rank.threshold);
+      const Eigen::VectorXd actions = generic_left_null_vector(k, qr);
       if (actions.size() > 0 && actions.norm() > 0) {
         r.residual = std::max(r.residual, (kt * actions).norm() / (r.rank.largest * actions.norm()));
         const double zero = kSupportZero * actions.cwiseAbs().maxCoeff();
