@@ -1,4 +1,4 @@
-// Exact-constraint analysis of generated pin-jointed frameworks (framework/lattice_generator):
+// Exact-constraint analysis of generated pin-jointed frameworks (tests/support/lattice_generator.hpp):
 // planar triangulated and square lattices and a 3-D cubic lattice, 10² to 10⁶ bars, dense SVD
 // and sparse QR paths, and — on the same matrices, in the same run — the reference the sparse
 // path is measured against: a CHOLMOD nested-dissection factorisation of DᵀD.
@@ -13,7 +13,7 @@
 #include <stdexcept>
 
 #include "kinestat/framework/framework_analysis.hpp"
-#include "kinestat/framework/lattice_generator.hpp"
+#include "support/lattice_generator.hpp"
 #include "kinestat/io/framework_reader.hpp"
 #include "kinestat/io/yaml_support.hpp"
 #include "kinestat/linalg/blas_threads.hpp"

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Writes the lattices of src/kinestat/framework/lattice_generator.cpp as framework model files
+"""Writes the lattices of tests/support/lattice_generator.cpp as framework model files
 (same nodes, bars and supports, same order), for whole-command runs of `kinestat analyze`, and
 builds their D(c) for numpy (rows: bars, columns: x, y[, z] of the free nodes, entries the
 direction cosines, the same matrix as kinestat's up to the diagonal length scaling).

@@ -4,8 +4,8 @@
 #include <benchmark/benchmark.h>
 
 #include "kinestat/structure/decomposition.hpp"
-#include "kinestat/structure/mechanism_generator.hpp"
 #include "kinestat/structure/transformations.hpp"
+#include "support/mechanism_generator.hpp"
 
 namespace {
 

@@ -1,8 +1,11 @@
 // `kinestat analyze FILE` for `kind: framework`: exact-constraint analysis of seed 002.
 
+#include <fmt/format.h>
+
 #include <memory>
 
 #include "cli/commands.hpp"
+#include "kinestat/design/framework_verdict.hpp"
 #include "kinestat/framework/framework_analysis.hpp"
 #include "kinestat/io/framework_reader.hpp"
 #include "kinestat/report/framework_report.hpp"
@@ -14,29 +17,47 @@ namespace {
 // Framework-only options; filled by register_framework_options before the action runs.
 long long dense_limit = 1500;
 long long sparse_vectors = 0;
+CLI::Option* dense_limit_option = nullptr;
+CLI::Option* vectors_option = nullptr;
 }  // namespace
 
+std::vector<std::string> given_framework_options() {
+  std::vector<std::string> given;
+  for (const CLI::Option* option : {dense_limit_option, vectors_option})
+    if (option != nullptr && option->count() > 0) given.push_back(option->get_name());
+  return given;
+}
+
+void reject_options(const std::vector<std::string>& given, const std::string& kind, const std::string& path) {
+  if (given.empty()) return;
+  throw io::InputError({path, 1, 1}, fmt::format("{} {} not used by {} model; remove {}", fmt::join(given, ", "),
+                                                 given.size() == 1 ? "is an option that is" : "are options that are", kind,
+                                                 given.size() == 1 ? "it" : "them"));
+}
+
 void register_framework_options(CLI::App& analyze) {
-  analyze.add_option("--dense-limit", dense_limit,
+  dense_limit_option = analyze.add_option("--dense-limit", dense_limit,
                      "Frameworks: largest matrix dimension analysed with the dense SVD (larger: sparse QR counts only); default 1500")
       ->check(CLI::NonNegativeNumber);
-  analyze.add_option("--vectors", sparse_vectors,
+  vectors_option = analyze.add_option("--vectors", sparse_vectors,
                      "Frameworks above --dense-limit: also the first K modes and K stress states (from the sparse QR) "
                      "and the release proposal; default 0 (counts only)")
       ->check(CLI::NonNegativeNumber);
 }
 
 int run_framework_analysis(const CommonOptions& options, const io::YamlFile& model_file) {
+  reject_options(given_network_options(), "a framework", model_file.path());
   const framework::FrameworkModel model = io::read_framework(model_file);
   framework::AnalysisOptions analysis_options;
   analysis_options.tolerance.relative = options.tolerance;
   analysis_options.dense_limit = static_cast<Eigen::Index>(dense_limit);
   analysis_options.sparse_vectors = static_cast<Eigen::Index>(sparse_vectors);
   const framework::FrameworkAnalysis analysis = framework::analyse_framework(model, analysis_options);
+  const design::Verdict verdict = design::framework_verdict(model, analysis, analysis_options);
   if (options.json) {
-    emit(options, report::json_text(report::framework_report_json(model, analysis)));
+    emit(options, report::json_text(report::framework_report_json(model, analysis, &verdict)));
   } else {
-    emit(options, report::framework_report_text(model, analysis));
+    emit(options, report::framework_report_text(model, analysis, &verdict));
   }
   return 0;
 }

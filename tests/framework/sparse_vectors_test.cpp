@@ -9,7 +9,7 @@
 #include <string>
 
 #include "framework/framework_test_support.hpp"
-#include "kinestat/framework/lattice_generator.hpp"
+#include "support/lattice_generator.hpp"
 
 namespace kinestat::framework {
 namespace {

@@ -3,7 +3,7 @@
 
 #include <random>
 
-#include "kinestat/structure/mechanism_generator.hpp"
+#include "support/mechanism_generator.hpp"
 #include "kinestat/structure/transformations.hpp"
 #include "test_support.hpp"
 

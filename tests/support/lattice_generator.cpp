@@ -1,4 +1,4 @@
-#include "kinestat/framework/lattice_generator.hpp"
+#include "support/lattice_generator.hpp"
 
 #include <cmath>
 #include <string>
