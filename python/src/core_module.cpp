@@ -102,7 +102,7 @@ std::string json_report(const Analysed& a) {
   if (!a.decomposition) throw py::value_error("the model has not been analysed");
   const report::StructureReport structure_report{*a.structure_model, *a.decomposition,
                                                  a.transformations ? &*a.transformations : nullptr,
-                                                 structure::SearchMethod::matching};
+                                                 structure::SearchMethod::matching, nullptr, {}};
   return report::structure_json(structure_report);
 }
 
