@@ -8,6 +8,7 @@
 
 #include "kinestat/framework/physical_scaling.hpp"
 #include "kinestat/linalg/homogeneous_solution.hpp"
+#include "kinestat/linalg/sign_convention.hpp"
 #include "kinestat/linalg/sparse_qr.hpp"
 #include "kinestat/linalg/sparse_rank.hpp"
 #include "kinestat/linalg/svd_analysis.hpp"
@@ -15,23 +16,6 @@
 namespace kinestat::framework {
 
 namespace {
-
-// Unit 2-norm; the largest-magnitude component positive, ties (within kModeZero) broken by the
-// first index, so that the sign does not depend on SVD internals.
-void normalise(Eigen::Ref<Eigen::VectorXd> v) {
-  const double norm = v.norm();
-  if (norm == 0.0) return;
-  v /= norm;
-  const double largest = v.cwiseAbs().maxCoeff();
-  for (Eigen::Index i = 0; i < v.size(); ++i) {
-    if (std::abs(v(i)) >= largest - kModeZero) {
-      if (v(i) < 0) v = -v;
-      break;
-    }
-  }
-  for (Eigen::Index i = 0; i < v.size(); ++i)
-    if (std::abs(v(i)) < kModeZero) v(i) = 0.0;
-}
 
 // A deterministic basis of the null space of `a`: reduced echelon form with the earliest
 // possible free variables (linalg::echelon_null_basis, the rule of solve_homogeneous), so it
@@ -47,7 +31,8 @@ Eigen::MatrixXd deterministic_null_space(const Eigen::MatrixXd& svd_basis, const
   const Eigen::MatrixXd echelon = linalg::echelon_null_basis(svd_basis, free_variables);
   Eigen::MatrixXd basis = echelon.cols() == svd_basis.cols() ? echelon : svd_basis;
   basis = unscale.asDiagonal() * basis;
-  for (Eigen::Index j = 0; j < basis.cols(); ++j) normalise(basis.col(j));
+  // The one sign convention (linalg/sign_convention.hpp): every report shows this sign.
+  for (Eigen::Index j = 0; j < basis.cols(); ++j) linalg::orient_unit_vector(basis.col(j), kModeZero);
   return basis;
 }
 
@@ -121,7 +106,7 @@ void sparse_vectors(FrameworkAnalysis& result, const Eigen::SparseMatrix<double>
     Eigen::MatrixXd modes = qr.null_vectors(0, limit);
     result.null_space_residual = std::max(result.null_space_residual, relative_residual(jacobian, modes, largest));
     modes = result.column_scale.asDiagonal() * modes;
-    for (Eigen::Index j = 0; j < modes.cols(); ++j) normalise(modes.col(j));
+    for (Eigen::Index j = 0; j < modes.cols(); ++j) linalg::orient_unit_vector(modes.col(j), kModeZero);
     collect_modes(result, modes);
   }
   const auto fixed_rows = static_cast<Eigen::Index>(result.partition.fixed_deformations.size());
@@ -143,7 +128,7 @@ void sparse_vectors(FrameworkAnalysis& result, const Eigen::SparseMatrix<double>
     Eigen::MatrixXd stresses = used.asDiagonal() * qr.null_vectors(0, limit);
     result.null_space_residual = std::max(result.null_space_residual, relative_residual(transposed, stresses, largest));
     stresses = result.row_scale.asDiagonal() * stresses;
-    for (Eigen::Index j = 0; j < stresses.cols(); ++j) normalise(stresses.col(j));
+    for (Eigen::Index j = 0; j < stresses.cols(); ++j) linalg::orient_unit_vector(stresses.col(j), kModeZero);
     collect_stresses(result, stresses);
     auto [live, dead] = qr.live_and_dead_columns();
     kept_rows = std::move(live);
