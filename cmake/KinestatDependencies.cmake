@@ -12,6 +12,10 @@ find_path(SUITESPARSE_INCLUDE_DIR SuiteSparseQR.hpp PATH_SUFFIXES suitesparse RE
 find_library(SPQR_LIBRARY spqr REQUIRED)
 find_library(CHOLMOD_LIBRARY cholmod REQUIRED)
 find_library(SUITESPARSECONFIG_LIBRARY suitesparseconfig REQUIRED)
+# Debian's OpenBLAS (libopenblas-dev) is the BLAS/LAPACK that SuiteSparse's dense kernels run
+# on (through the libblas.so.3 alternative); kinestat links it directly to pin its threads.
+find_library(OPENBLAS_LIBRARY openblas REQUIRED)
 add_library(kinestat_suitesparse INTERFACE)
 target_include_directories(kinestat_suitesparse SYSTEM INTERFACE ${SUITESPARSE_INCLUDE_DIR})
-target_link_libraries(kinestat_suitesparse INTERFACE ${SPQR_LIBRARY} ${CHOLMOD_LIBRARY} ${SUITESPARSECONFIG_LIBRARY})
+target_link_libraries(kinestat_suitesparse INTERFACE ${SPQR_LIBRARY} ${CHOLMOD_LIBRARY} ${SUITESPARSECONFIG_LIBRARY}
+  ${OPENBLAS_LIBRARY})

@@ -9,6 +9,7 @@
 #include "kinestat/design/network_verdict.hpp"
 #include "kinestat/io/network_reader.hpp"
 #include "kinestat/network/analyse_network.hpp"
+#include "kinestat/network/sparse_network.hpp"
 #include "kinestat/report/json_text.hpp"
 #include "kinestat/report/network_report.hpp"
 
@@ -21,6 +22,8 @@ struct NetworkOptions {
   bool floating = false;
   bool matrices = false;
   bool coupled_pairs_only = false;
+  bool sparse = false;
+  bool dense = false;
   std::vector<std::string> primary;
   std::vector<std::string> values;  // name=number
   std::vector<CLI::Option*> given;  // the options above, to tell whether any was used
@@ -60,7 +63,13 @@ void register_network_options(CLI::App& analyze) {
   auto* exact = analyze.add_flag("--exact", o.exact, "Networks: exact rational arithmetic (GMP)");
   auto* floating = analyze.add_flag("--float", o.floating, "Networks: floating point (SVD ranks with the tolerance)");
   exact->excludes(floating);
-  o.given = {exact, floating,
+  auto* sparse = analyze.add_flag("--sparse", o.sparse,
+                                  fmt::format("Networks: sparse body-twist path (FN, CN, stressed and moving couplings); "
+                                              "the default above {} couplings",
+                                              network::kDenseNetworkLimit));
+  auto* dense = analyze.add_flag("--dense", o.dense, "Networks: Davies' dense matrices at any size");
+  sparse->excludes(dense);
+  o.given = {exact, floating, sparse, dense,
              analyze.add_flag("--matrices", o.matrices, "Networks: also print B, Q, BM, QA and the unit matrices"),
              analyze.add_flag("--coupled-pairs", o.coupled_pairs_only, "Networks: list only directly coupled pairs of bodies"),
              analyze.add_option("--primary", o.primary, "Networks: primary variables, e.g. --primary sa,ta,vc,Ub,We")->delimiter(','),
@@ -85,6 +94,19 @@ int run_network_analysis(const CommonOptions& common, const io::YamlFile& file) 
   if (!o.primary.empty()) options.primary = o.primary;
   options.values = parse_values(o.values);
   options.all_pairs = !o.coupled_pairs_only;
+  // The sparse path for large networks unless something only the dense path gives was asked for.
+  const bool dense_request = o.dense || o.exact || o.matrices || !o.primary.empty() || !o.values.empty();
+  if (o.sparse || (!dense_request && static_cast<int>(loaded.model.couplings.size()) > network::kDenseNetworkLimit)) {
+    network::SparseNetworkResult sparse;
+    try {
+      sparse = network::analyse_network_sparse(loaded.model, options.tolerance);
+    } catch (const network::ModelError& error) {
+      throw io::locate(error, loaded, file.path());
+    }
+    emit(common, common.json ? report::json_text(report::sparse_network_json(loaded.model, sparse))
+                             : report::sparse_network_text(loaded.model, sparse));
+    return 0;
+  }
   network::NetworkResult result;
   try {
     result = network::analyse_network(loaded.model, options);

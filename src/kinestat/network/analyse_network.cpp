@@ -338,8 +338,7 @@ NetworkResult analyse_network(const Model& model, const AnalysisOptions& options
   r.a = static_cast<int>(r.cutset_law.solution.rank.rank);
   r.FN = r.F - r.m;
   r.CN = r.C - r.a;
-  r.classification = r.FN == 0 ? (r.CN == 0 ? NetworkClass::simply_stiff : NetworkClass::overconstrained_structure)
-                               : (r.CN == 0 ? NetworkClass::kinematic_chain : NetworkClass::overconstrained_chain);
+  r.classification = classify(r.FN, r.CN);
   r.identities_hold = r.FN - r.CN == r.F - d * r.l && r.CN - r.FN == r.C - d * r.k && r.FN == d * r.k - r.a &&
                       r.CN == d * r.l - r.m && r.cutset_motion.solution.nullity() == r.FN &&
                       r.circuit_action.solution.nullity() == r.CN;

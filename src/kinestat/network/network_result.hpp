@@ -25,6 +25,8 @@ enum class NetworkClass {
 };
 
 std::string class_id(NetworkClass c);
+/// The subset of Table 2 that FN and CN put a network in.
+NetworkClass classify(int FN, int CN);
 std::string class_description(NetworkClass c);
 
 /// Linear forms in the primary variables: row i of `values` gives quantity i as

@@ -389,4 +389,59 @@ Json network_json(const network::Model& model, const NetworkResult& r, const Net
   return j;
 }
 
+namespace {
+
+// What the sparse path does not compute, said in every sparse report.
+constexpr const char* kSparseLeftOut[] = {"spanning tree, circuits and cutsets", "unit and contracted matrices",
+                                          "primary variables and magnitudes", "pair systems (fij, cij)"};
+
+std::vector<std::string> coupling_names(const network::Model& model, const std::vector<int>& couplings) {
+  std::vector<std::string> names;
+  names.reserve(couplings.size());
+  for (int c : couplings) names.push_back(model.couplings[static_cast<std::size_t>(c)].name);
+  return names;
+}
+
+}  // namespace
+
+std::string sparse_network_text(const network::Model& model, const network::SparseNetworkResult& r) {
+  std::string t;
+  t += fmt::format("{}\n", model.name.empty() ? "Coupling network" : model.name);
+  t += fmt::format("  coupling network, {} (d = {}); sparse body-twist form, floating point\n", r.d == 6 ? "spatial" : "planar", r.d);
+  t += fmt::format("  bodies n = {}, couplings e = {}, circuits l = {}\n", r.bodies, r.e, r.l);
+  t += fmt::format("  gross degree of freedom F = {}, gross degree of constraint C = {}\n", r.F, r.C);
+  t += fmt::format("  rank of the body-twist constraint matrix K (C x d(n-1)): {}\n", rank_text("rank K", r.rank));
+  t += fmt::format("  nett degree of freedom    FN = d(n-1) - rank K = {}\n", r.FN);
+  t += fmt::format("  nett degree of constraint CN = C - rank K = {}\n", r.CN);
+  t += fmt::format("  class: {}\n", network::class_description(r.classification));
+  t += fmt::format("Couplings that carry a self-stress ({}): {}\n", r.stressed.size(), joined_or_dash(coupling_names(model, r.stressed)));
+  t += fmt::format("Couplings that move ({}): {}\n", r.moving.size(), joined_or_dash(coupling_names(model, r.moving)));
+  t += fmt::format("Not computed on the sparse path (use the dense path for these): {}\n", fmt::join(kSparseLeftOut, "; "));
+  if (r.rank.close()) t += "Warning: the rank of K is a close decision: the geometry is near one with a different FN and CN\n";
+  return t;
+}
+
+nlohmann::ordered_json sparse_network_json(const network::Model& model, const network::SparseNetworkResult& r) {
+  Json j;
+  j["kind"] = "network";
+  if (!model.name.empty()) j["name"] = model.name;
+  j["method"] = "sparse_body_twist";
+  j["d"] = r.d;
+  j["n"] = r.bodies;
+  j["e"] = r.e;
+  j["F"] = r.F;
+  j["C"] = r.C;
+  j["l"] = r.l;
+  j["FN"] = r.FN;
+  j["CN"] = r.CN;
+  j["classification"] = network::class_id(r.classification);
+  j["classification_description"] = network::class_description(r.classification);
+  j["rank_evidence"] = {{"body_twist", rank_json(r.rank)}};
+  j["stressed_couplings"] = coupling_names(model, r.stressed);
+  j["moving_couplings"] = coupling_names(model, r.moving);
+  j["null_space_residual"] = r.residual;
+  j["not_computed"] = kSparseLeftOut;
+  return j;
+}
+
 }  // namespace kinestat::report
