@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
-# Installs kinestat's build and test dependencies from Debian 12 packages.
+# Installs kinestat's build and test dependencies from Debian 12 packages. The readers of
+# other formats are optional (docs/formats.md): libtinyxml2-dev for URDF, libsdformat-dev for
+# SDFormat, libmujoco-dev for MJCF; CI installs them so that every reader is tested.
 set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
   libeigen3-dev libsuitesparse-dev libgmp-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  libtinyxml2-dev libsdformat-dev libmujoco-dev
   clang libclang-rt-14-dev
   chromium
 )

@@ -4,7 +4,6 @@
 
 #include "cli/commands.hpp"
 #include "kinestat/framework/framework_analysis.hpp"
-#include "kinestat/io/framework_reader.hpp"
 #include "kinestat/report/framework_report.hpp"
 #include "kinestat/report/json_text.hpp"
 
@@ -21,8 +20,7 @@ void register_framework_options(CLI::App& analyze) {
       ->check(CLI::NonNegativeNumber);
 }
 
-int run_framework_analysis(const CommonOptions& options, const io::YamlFile& model_file) {
-  const framework::FrameworkModel model = io::read_framework(model_file);
+int run_framework_analysis(const CommonOptions& options, const framework::FrameworkModel& model) {
   framework::AnalysisOptions analysis_options;
   analysis_options.tolerance.relative = options.tolerance;
   analysis_options.dense_limit = static_cast<Eigen::Index>(dense_limit);

@@ -52,9 +52,8 @@ void register_network_options(CLI::App& analyze) {
   analyze.add_option("--value", o.values, "Networks: numeric value of a primary variable, NAME=NUMBER (repeatable)");
 }
 
-int run_network_analysis(const CommonOptions& common, const io::YamlFile& file) {
+int run_network_analysis(const CommonOptions& common, const io::LoadedNetwork& loaded, const std::string& path) {
   const NetworkOptions& o = network_options();
-  const io::LoadedNetwork loaded = io::read_network_model(file);
   network::AnalysisOptions options;
   options.arithmetic = o.exact ? network::Arithmetic::exact
                                : (o.floating ? network::Arithmetic::floating : network::Arithmetic::automatic);
@@ -68,7 +67,7 @@ int run_network_analysis(const CommonOptions& common, const io::YamlFile& file) 
   } catch (const network::ModelError& error) {
     if (error.field() == "primary" && !o.primary.empty()) throw io::InputError({"--primary", 0, 0}, error.what());
     if (error.field() == "values" && !o.values.empty()) throw io::InputError({"--value", 0, 0}, error.what());
-    throw io::locate(error, loaded, file.path());
+    throw io::locate(error, loaded, path);
   }
   report::NetworkReportOptions report_options;
   report_options.matrices = o.matrices;
