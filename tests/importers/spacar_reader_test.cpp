@@ -109,13 +109,14 @@ TEST(SpacarReader, EveryKeywordGivesTheHandDerivedModel) {
   EXPECT_EQ(m.nodes[node(m, "5")].roles, (Roles{d, d, d, i, d, d}));       // INPUTX 6 2: λ1, rotation about x
   EXPECT_EQ(m.nodes[node(m, "11")].roles, (Roles{d, d, d, d, d, d}));      // FIX 12 1: λ0 ignored
 
-  // One notice each: OUTLEVEL, λ0, BEAMW's warping, and what followed END.
-  ASSERT_EQ(imported.notices.size(), 4u);
+  // One notice each: OUTLEVEL, λ0, FIX of a warping node, BEAMW's warping, what followed END.
+  ASSERT_EQ(imported.notices.size(), 5u);
   EXPECT_NE(imported.notices[0].find("OUTLEVEL"), std::string::npos);
   EXPECT_NE(imported.notices[1].find("λ0"), std::string::npos);
-  EXPECT_NE(imported.notices[2].find("BEAMW element(s) 3"), std::string::npos);
-  EXPECT_NE(imported.notices[3].find("line 32"), std::string::npos) << imported.notices[3];
-  EXPECT_NE(imported.notices[3].find("ESTIFF XM"), std::string::npos) << imported.notices[3];
+  EXPECT_NE(imported.notices[2].find("FIX of warping node 13 ignored"), std::string::npos) << imported.notices[2];
+  EXPECT_NE(imported.notices[3].find("BEAMW element(s) 3"), std::string::npos);
+  EXPECT_NE(imported.notices[4].find("line 33"), std::string::npos) << imported.notices[4];
+  EXPECT_NE(imported.notices[4].find("ESTIFF XM"), std::string::npos) << imported.notices[4];
 }
 
 TEST(SpacarReader, PlanarFourBarIsExactlyConstrained) {

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <memory>
+#include <vector>
 #include <regex>
 
 #include "kinestat/io/text_file.hpp"
@@ -30,6 +31,17 @@ struct VfsDeleter {
   }
 };
 
+/// MuJoCo's default warning handler prints to standard output and appends to MUJOCO_LOG.TXT
+/// in the working directory; kinestat collects the warnings as notices instead.
+thread_local std::vector<std::string>* warnings = nullptr;
+void collect_warning(const char* message) {
+  if (warnings && warnings->size() < 16) warnings->push_back(message);
+}
+
+/// Largest mjData a model may ask for (stack plus buffer): mj_makeData ends the process when
+/// an allocation fails, so a model asking for more is refused first.
+constexpr double kMaxDataBytes = 1 << 30;
+
 class MjcfReader {
  public:
   MjcfReader(std::string path, std::string text) : path_(std::move(path)), text_(std::move(text)) {}
@@ -48,6 +60,8 @@ class MjcfReader {
     }
     const std::unique_ptr<mjModel, ModelDeleter> model(raw);
     const mjModel* m = model.get();
+    if (static_cast<double>(m->nstack) * sizeof(mjtNum) + static_cast<double>(m->nbuffer) > kMaxDataBytes)
+      throw InputError({path_, 0, 0}, "the model asks MuJoCo for more than 1 GiB of data (<size memory=...>)");
     const std::unique_ptr<mjData, DataDeleter> data(mj_makeData(m));
     mj_kinematics(m, data.get());  // world poses at the reference configuration qpos0
     const mjData* d = data.get();
@@ -114,6 +128,7 @@ class MjcfReader {
                      body_name(m, b2), g, locate(type == mjEQ_CONNECT ? "connect" : "weld", eq));
     }
     ImportedNetwork out{builder.finish(), {}};
+    for (const std::string& w : warnings_) out.notices.push_back(fmt::format("{}: note: MuJoCo: {}", path_, w));
     if (!ignored.empty())
       out.notices.push_back(fmt::format("{}: note: equality constraint(s) {} ignored: only active connect and weld "
                                         "constraints are kinematic couplings", path_, ignored));
@@ -149,17 +164,29 @@ class MjcfReader {
 
   std::string path_;
   std::string text_;
+
+ public:
+  std::vector<std::string> warnings_;
 };
+
+// Loads through MuJoCo with its warnings collected into `reader`.
+mjModel* load(const char* file, const mjVFS* vfs, char (&error)[1024], MjcfReader& reader) {
+  warnings = &reader.warnings_;
+  mju_user_warning = collect_warning;
+  mjModel* m = mj_loadXML(file, vfs, error, sizeof error);
+  warnings = nullptr;
+  return m;
+}
 
 }  // namespace
 
 bool mjcf_reader_built_in() { return true; }
 
 ImportedNetwork read_mjcf(const std::string& path) {
-  std::string text = read_text_file(path);
+  MjcfReader reader(path, read_text_file(path));
   char error[1024] = "";
-  mjModel* m = mj_loadXML(path.c_str(), nullptr, error, sizeof error);
-  return MjcfReader(path, std::move(text)).read(m, error);
+  mjModel* m = load(path.c_str(), nullptr, error, reader);
+  return reader.read(m, error);
 }
 
 ImportedNetwork parse_mjcf(const std::string& path, const std::string& text) {
@@ -169,9 +196,10 @@ ImportedNetwork parse_mjcf(const std::string& path, const std::string& text) {
     throw InputError({path, 0, 0}, "MuJoCo: cannot hold the model in memory");
   const int index = mj_findFileVFS(vfs.get(), "model.xml");
   std::copy(text.begin(), text.end(), static_cast<char*>(vfs->filedata[index]));
+  MjcfReader reader(path, text);
   char error[1024] = "";
-  mjModel* m = mj_loadXML("model.xml", vfs.get(), error, sizeof error);
-  return MjcfReader(path, text).read(m, error);
+  mjModel* m = load("model.xml", vfs.get(), error, reader);
+  return reader.read(m, error);
 }
 
 #else

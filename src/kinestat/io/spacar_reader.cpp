@@ -11,7 +11,6 @@
 #include <map>
 #include <optional>
 #include <set>
-#include <sstream>
 
 #include "kinestat/io/input_error.hpp"
 #include "kinestat/io/spacar_format.hpp"
@@ -281,9 +280,9 @@ class SpacarReader {
       e.rq = orientation_node(r.values[2 + stride]);
       e.node_tokens = {r.values[1], r.values[2], r.values[1 + stride], r.values[2 + stride]};
       if (e.warping) {
-        // Warping nodes are neither position nor orientation nodes of any other element.
-        integer(r.values[3], "a warping node number");
-        integer(r.values[6], "a warping node number");
+        // Warping nodes carry the warping deformation only; FIX or INPUTX on them is ignored.
+        warping_nodes_.insert(integer(r.values[3], "a warping node number"));
+        warping_nodes_.insert(integer(r.values[6], "a warping node number"));
         warped_ += (warped_.empty() ? "" : ", ") + std::to_string(e.number);
       }
       const std::size_t y_at = 1 + 2 * stride;
@@ -439,6 +438,11 @@ class SpacarReader {
       // Spatial orientation nodes are Euler parameters λ0..λ3: λ1, λ2, λ3 follow the rotations
       // about x, y, z (SPACAR Light writes INPUTX n 4 for rot_x... see docs/formats.md).
       available = model_.dimension == 2 ? std::vector<int>{5} : std::vector<int>{-1, 3, 4, 5};
+    } else if (warping_nodes_.count(n)) {
+      if (ignored_kinematic_.insert("warping " + k).second)
+        notices_.push_back(fmt::format("{}:{}:{}: note: {} of warping node {} ignored (warping is not modelled)", path_,
+                                       r.keyword.line, r.keyword.column, k, n));
+      return;
     } else {
       fail(r.values[0], fmt::format("{}: node {} is neither an X position node nor an orientation node of a beam", k, n));
     }
@@ -472,6 +476,7 @@ class SpacarReader {
   Token end_;
   std::set<std::string> ignored_;
   std::set<std::string> ignored_kinematic_;
+  std::set<long> warping_nodes_;
   std::vector<std::string> notices_;
   std::string warped_;
   FrameworkModel model_;

@@ -98,8 +98,7 @@ class SpacarWriter {
                           orientation(q), comment);
     } else {
       out_ += fmt::format("BEAM  {:4}  {:4} {:4}  {:4} {:4}  {}  {}  {}  # {}\n", number, position_[p], orientation(p),
-                          position_[q], orientation(q), fmt::format("{:.17g}", y.x()), fmt::format("{:.17g}", y.y()),
-                          fmt::format("{:.17g}", y.z()), comment);
+                          position_[q], orientation(q), number(y.x()), number(y.y()), number(y.z()), comment);
     }
   }
 

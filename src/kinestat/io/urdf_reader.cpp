@@ -8,7 +8,6 @@
 #include <cmath>
 #include <map>
 #include <set>
-#include <sstream>
 
 #include "kinestat/io/text_file.hpp"
 
@@ -65,7 +64,7 @@ class UrdfReader {
       for (const std::string* link : {&j.parent, &j.child})
         if (!links_.count(*link)) fail(j.element, fmt::format("joint '{}' names link '{}', which is not a <link> of the robot", j.name, *link));
     build_tree();
-    for (const auto& [name, e] : links_) (void)e, builder.body(name);
+    for (const std::string& name : link_order_) builder.body(name);
     builder.set_ground(root_);
     for (const UrdfJoint& j : joints_) couple(builder, j);
 
@@ -160,6 +159,7 @@ class UrdfReader {
   void read_link(const XMLElement* e) {
     const std::string name = required(e, "name");
     if (!links_.emplace(name, e).second) fail(e, fmt::format("duplicate link name '{}'", name));
+    link_order_.push_back(name);
   }
 
   UrdfJoint read_joint(const XMLElement* e, bool loop) {
@@ -203,11 +203,10 @@ class UrdfReader {
       if (!tree_joint.emplace(j.child, k).second) j.loop = true;
     }
     std::vector<std::string> roots;
-    for (const auto& [name, e] : links_)
+    for (const std::string& name : link_order_)
       if (!tree_joint.count(name)) roots.push_back(name);
     if (roots.empty()) fail(joints_.front().element, "every link is the child of a joint: the tree has no root link (the ground)");
     if (roots.size() > 1) {
-      // `world` is the ground when it is one of them; any other root must hang from a loop joint.
       fail(links_.at(roots[1]), fmt::format("links '{}' and '{}' are both roots (neither is the child of a joint): a URDF "
                                             "tree has one root, the ground", roots[0], roots[1]));
     }
@@ -267,6 +266,7 @@ class UrdfReader {
   std::string path_;
   const std::string& text_;
   std::map<std::string, const XMLElement*> links_;
+  std::vector<std::string> link_order_;  // bodies in file order
   std::vector<UrdfJoint> joints_;
   std::map<std::string, Frame> frames_;
   std::string root_;

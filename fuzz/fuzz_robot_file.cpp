@@ -1,15 +1,19 @@
-// libFuzzer harness: any bytes as a sdformat file, through its reader and, for small models, the
-// network analysis and the YAML writer, whose output must read back. Input errors are
-// expected; any other exception, crash, hang or sanitizer report is a bug.
+// libFuzzer harness: any bytes as a robot description (built three times, as fuzz_urdf_file,
+// fuzz_sdformat_file and fuzz_mjcf_file, with KINESTAT_FUZZ_READ naming the reader), through
+// the reader and, for small models, the network analysis and the YAML writer, whose output
+// must read back. Input errors are expected; any other exception, crash, hang or sanitizer
+// report is a bug.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
 #include <string>
 
-#include "kinestat/io/sdformat_reader.hpp"
 #include "kinestat/io/input_error.hpp"
+#include "kinestat/io/mjcf_reader.hpp"
 #include "kinestat/io/network_reader.hpp"
 #include "kinestat/io/network_yaml_writer.hpp"
+#include "kinestat/io/sdformat_reader.hpp"
+#include "kinestat/io/urdf_reader.hpp"
 #include "kinestat/io/yaml_support.hpp"
 #include "kinestat/network/analyse_network.hpp"
 
@@ -23,7 +27,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string text(reinterpret_cast<const char*>(data), size);
   kinestat::io::ImportedNetwork imported;
   try {
-    imported = kinestat::io::parse_sdformat("fuzz.sdformat", text);
+    imported = kinestat::io::KINESTAT_FUZZ_READ("fuzz.input", text);
   } catch (const kinestat::io::InputError&) {
     return 0;
   }
@@ -32,7 +36,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     try {
       (void)kinestat::network::analyse_network(model);
     } catch (const kinestat::network::ModelError&) {
-      // e.g. a link joined to nothing: reported at the file by the command
+      // e.g. a link joined to nothing: the command reports it at the file
     }
   }
   // What the reader accepted, the YAML writer must express and the YAML reader read back.

@@ -1,5 +1,5 @@
-// The `kinestat` command with SPACAR files: analyze / report / draw read .dat by extension,
-// `convert` writes YAML and SPACAR, and bad files exit 2 with one located line.
+// The `kinestat` command with other programs' files: analyze / draw / structure read them by
+// extension, `convert` writes YAML and SPACAR, and bad files exit 2 with one located line.
 
 #include <gtest/gtest.h>
 
@@ -84,6 +84,48 @@ TEST(SpacarCli, ConvertRefusesUnknownOutputAndNetworks) {
   const CliRun n = run_cli("convert " + example_path("davies-2-circuit.yaml") + " out.dat");
   EXPECT_EQ(n.exit_code, 2);
   EXPECT_NE(n.err.find("is of kind 'network'"), std::string::npos) << n.err;
+}
+
+TEST(RobotCli, ConvertWritesYamlThatAnalysesTheSame) {
+  for (const char* file : {"robots/delta.urdf", "robots/delta.sdf", "robots/delta.xml"}) {
+    const CliRun direct = run_cli("analyze --json " + example_path(file));
+    if (direct.exit_code == 2 && direct.err.find("not built in") != std::string::npos) continue;  // reader not built
+    ASSERT_EQ(direct.exit_code, 0) << file << ": " << direct.err;
+    const std::string out = write_temp_file("delta.yaml", "");
+    const CliRun c = run_cli("convert " + example_path(file) + " " + out);
+    ASSERT_EQ(c.exit_code, 0) << c.err;
+    const CliRun again = run_cli("analyze --json " + out);
+    ASSERT_EQ(again.exit_code, 0) << again.err;
+    const auto a = nlohmann::json::parse(direct.out), b = nlohmann::json::parse(again.out);
+    EXPECT_EQ(a["FN"], 3) << file;
+    EXPECT_EQ(a["CN"], 12) << file;
+    EXPECT_EQ(a["FN"], b["FN"]) << file;
+    EXPECT_EQ(a["CN"], b["CN"]) << file;
+    std::filesystem::remove(out);
+  }
+}
+
+TEST(RobotCli, StructureAndDrawAcceptRobotFiles) {
+  const CliRun s = run_cli("structure " + example_path("robots/four-bar.urdf"));
+  if (s.exit_code == 2 && s.err.find("not built in") != std::string::npos) GTEST_SKIP();
+  EXPECT_EQ(s.exit_code, 0) << s.err;
+  const CliRun d = run_cli("draw " + example_path("robots/four-bar.urdf"));
+  EXPECT_EQ(d.exit_code, 0) << d.err;
+  EXPECT_NE(d.out.find("<svg"), std::string::npos);
+}
+
+TEST(RobotCli, BadFilesExitTwoWithOneLocatedLine) {
+  const std::string urdf = write_temp_file("bad.urdf", "<robot name='r'>\n  <link name='a'/>\n  <joint name='j' type='revolute'>\n"
+                                                       "    <parent link='a'/><child link='b'/>\n  </joint>\n</robot>\n");
+  const CliRun r = run_cli("analyze " + urdf);
+  if (r.err.find("not built in") != std::string::npos) GTEST_SKIP();
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, urdf + ":3:3: error: joint 'j' names link 'b', which is not a <link> of the robot\n");
+  const std::string xml = write_temp_file("bad.xml", "<?xml version='1.0'?>\n<scene/>\n");
+  const CliRun x = run_cli("analyze " + xml);
+  EXPECT_EQ(x.exit_code, 2);
+  EXPECT_EQ(x.err, xml + ":1:1: error: an .xml file with a <scene> root is not a format kinestat reads; expected <mujoco>, "
+                         "<robot> or <sdf>\n");
 }
 
 }  // namespace
