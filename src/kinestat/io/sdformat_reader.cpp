@@ -12,6 +12,17 @@
 #include <sdf/World.hh>
 
 #include <Eigen/Geometry>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <iostream>
+
+#include "kinestat/io/text_file.hpp"
+#if KINESTAT_HAVE_TINYXML2
+#include <tinyxml2.h>
+#endif
 #endif
 
 namespace kinestat::io {
@@ -19,6 +30,34 @@ namespace kinestat::io {
 #if KINESTAT_HAVE_SDFORMAT
 
 namespace {
+
+/// libsdformat prints every problem to standard error (and urdfdom, which it tries on files
+/// that are not SDFormat, does too), besides returning it. kinestat reports the returned
+/// error as its one located line, so standard error is muted while the library reads.
+class MutedStandardError {
+ public:
+  MutedStandardError() {
+    std::cerr.flush();
+    std::fflush(stderr);
+    saved_ = ::dup(2);
+    const int null = ::open("/dev/null", O_WRONLY);
+    if (saved_ >= 0 && null >= 0) ::dup2(null, 2);
+    if (null >= 0) ::close(null);
+  }
+  ~MutedStandardError() {
+    std::cerr.flush();
+    std::fflush(stderr);
+    if (saved_ >= 0) {
+      ::dup2(saved_, 2);
+      ::close(saved_);
+    }
+  }
+  MutedStandardError(const MutedStandardError&) = delete;
+  MutedStandardError& operator=(const MutedStandardError&) = delete;
+
+ private:
+  int saved_ = -1;
+};
 
 Eigen::Vector3d vector(const ignition::math::Vector3d& v) { return {v.X(), v.Y(), v.Z()}; }
 
@@ -69,8 +108,8 @@ class SdformatReader {
 
  private:
   [[noreturn]] void fail(const sdf::Error& error) const {
-    throw InputError({error.FilePath().value_or(path_), error.LineNumber().value_or(0), error.LineNumber() ? 1 : 0},
-                     error.Message());
+    const std::string file = error.FilePath().value_or("");
+    throw InputError({file.empty() ? path_ : file, error.LineNumber().value_or(0), error.LineNumber() ? 1 : 0}, error.Message());
   }
 
   SourceLocation where(const sdf::ElementPtr& element) const {
@@ -165,15 +204,36 @@ class SdformatReader {
 
 bool sdformat_reader_built_in() { return true; }
 
+// libsdformat reports malformed XML only as "Unable to read file" (the line goes to its
+// console), and tries a URDF conversion on other roots: check both first, with positions.
+void check_xml(const std::string& path, const std::string& text) {
+#if KINESTAT_HAVE_TINYXML2
+  tinyxml2::XMLDocument document;
+  if (document.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS)
+    throw InputError({path, document.ErrorLineNum(), 1}, fmt::format("malformed XML: {}", document.ErrorStr()));
+#endif
+  if (xml_root_name(text) != "sdf") throw InputError({path, 1, 1}, "an SDFormat file has an <sdf> root element");
+}
+
 ImportedNetwork read_sdformat(const std::string& path) {
+  check_xml(path, read_text_file(path));
   sdf::Root root;
-  const sdf::Errors errors = root.Load(path);
+  sdf::Errors errors;
+  {
+    const MutedStandardError muted;
+    errors = root.Load(path);
+  }
   return SdformatReader(path).read(root, errors);
 }
 
 ImportedNetwork parse_sdformat(const std::string& path, const std::string& text) {
+  check_xml(path, text);
   sdf::Root root;
-  const sdf::Errors errors = root.LoadSdfString(text);
+  sdf::Errors errors;
+  {
+    const MutedStandardError muted;
+    errors = root.LoadSdfString(text);
+  }
   return SdformatReader(path).read(root, errors);
 }
 
