@@ -4,7 +4,7 @@
 #include <benchmark/benchmark.h>
 
 #include "kinestat/structure/decomposition.hpp"
-#include "kinestat/structure/mechanism_generator.hpp"
+#include "support/mechanism_generator.hpp"
 
 namespace {
 

@@ -1,18 +1,31 @@
 # Run with cmake -P at build time: installs three.js from the npm registry (npm ci with the
-# committed package-lock.json) when npm was found, and writes a C++ file with the viewer's
+# committed package-lock.json) when npm is found now, and writes a C++ file with the viewer's
 # JavaScript and CSS as raw string literals, split into chunks below compilers' literal limits.
-# Variables: NPM (may be empty), VIEWER_SOURCE (viewer/), WORK (build folder), OUTPUT (.cpp).
+# Variables: WANT_VIEWER (KINESTAT_VIEWER), VIEWER_SOURCE (viewer/), WORK (build folder),
+# OUTPUT (.cpp). Writes WORK/viewer_built_in.cmake for the installed package, and the stamp
+# WORK/viewer.complete only when nothing is left to try: the viewer is in, or not wanted.
+# Without the stamp the build step stays out of date, so the next build tries npm again.
 set(three "${WORK}/node_modules/three/build/three.min.js")
-if(NPM AND NOT EXISTS "${three}")
-  file(COPY "${VIEWER_SOURCE}/package.json" "${VIEWER_SOURCE}/package-lock.json" DESTINATION "${WORK}")
-  execute_process(COMMAND "${NPM}" ci --no-audit --no-fund --loglevel=error
-                  WORKING_DIRECTORY "${WORK}" RESULT_VARIABLE npm_result)
-  if(NOT npm_result EQUAL 0)
-    message(WARNING "kinestat: 'npm ci' failed (${npm_result}); HTML reports are not built in")
+set(stamp "${WORK}/viewer.complete")
+file(REMOVE "${stamp}")
+if(WANT_VIEWER AND NOT EXISTS "${three}")
+  find_program(NPM npm)
+  if(NPM)
+    file(COPY "${VIEWER_SOURCE}/package.json" "${VIEWER_SOURCE}/package-lock.json" DESTINATION "${WORK}")
+    execute_process(COMMAND "${NPM}" ci --no-audit --no-fund --loglevel=error
+                    WORKING_DIRECTORY "${WORK}" RESULT_VARIABLE npm_result)
+    if(NOT npm_result EQUAL 0)
+      # npm ci may leave a partial node_modules; the next build starts clean.
+      file(REMOVE_RECURSE "${WORK}/node_modules")
+      message(WARNING "kinestat: 'npm ci' failed (${npm_result}); HTML reports are not built in this time, "
+                      "the next build tries again")
+    endif()
+  else()
+    message(STATUS "kinestat: npm not found; HTML reports are not built in (the next build looks again)")
   endif()
 endif()
 set(have 0)
-if(EXISTS "${three}")
+if(WANT_VIEWER AND EXISTS "${three}")
   set(have 1)
 endif()
 
@@ -70,3 +83,8 @@ std::string viewer_css() { return joined(kStyle); }
 }  // namespace kinestat::report::viewer_assets
 ")
 file(COPY_FILE "${OUTPUT}.tmp" "${OUTPUT}" ONLY_IF_DIFFERENT)
+file(WRITE "${WORK}/viewer_built_in.cmake.tmp" "set(KINESTAT_VIEWER_BUILT_IN ${have})\n")
+file(COPY_FILE "${WORK}/viewer_built_in.cmake.tmp" "${WORK}/viewer_built_in.cmake" ONLY_IF_DIFFERENT)
+if(have OR NOT WANT_VIEWER)
+  file(TOUCH "${stamp}")
+endif()

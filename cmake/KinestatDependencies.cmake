@@ -18,7 +18,7 @@ target_link_libraries(kinestat_suitesparse INTERFACE ${SPQR_LIBRARY} ${CHOLMOD_L
 
 # Optional readers of other programs' formats (docs/formats.md). Each option is ON when its
 # Debian package is found; without it the format is refused with "rebuild with ...".
-#   libtinyxml2-dev -> URDF (and recognising MJCF files), libsdformat-dev -> SDFormat,
+#   libtinyxml2-dev -> URDF (and line numbers for malformed SDFormat), libsdformat-dev -> SDFormat,
 #   libmujoco-dev -> MJCF.
 find_package(tinyxml2 QUIET)
 find_package(sdformat12 QUIET)
@@ -26,24 +26,26 @@ find_package(mujoco QUIET)
 option(KINESTAT_WITH_TINYXML2 "URDF reader (libtinyxml2-dev)" ${tinyxml2_FOUND})
 option(KINESTAT_WITH_SDFORMAT "SDFormat reader (libsdformat-dev)" ${sdformat12_FOUND})
 option(KINESTAT_WITH_MUJOCO "MJCF reader (libmujoco-dev)" ${mujoco_FOUND})
-add_library(kinestat_importers INTERFACE)
-foreach(importer TINYXML2 SDFORMAT MUJOCO)
-  if(KINESTAT_WITH_${importer})
-    target_compile_definitions(kinestat_importers INTERFACE KINESTAT_HAVE_${importer}=1)
-  else()
-    target_compile_definitions(kinestat_importers INTERFACE KINESTAT_HAVE_${importer}=0)
+# Adds the readers' libraries to `target` (kinestat), privately, with KINESTAT_HAVE_<reader>
+# = 0 or 1 for its sources. kinestat is a static library, so the libraries travel with it: the
+# installed package finds them again (kinestatReaders.cmake, included by kinestatConfig.cmake).
+function(kinestat_add_readers target)
+  set(dependencies "include(CMakeFindDependencyMacro)\n")
+  foreach(reader package imported IN ZIP_LISTS
+          "TINYXML2;SDFORMAT;MUJOCO" "tinyxml2;sdformat12;mujoco" "tinyxml2::tinyxml2;sdformat12::sdformat12;mujoco::mujoco")
+    if(KINESTAT_WITH_${reader})
+      find_package(${package} REQUIRED)
+      target_compile_definitions(${target} PRIVATE KINESTAT_HAVE_${reader}=1)
+      target_link_libraries(${target} PRIVATE ${imported})
+      string(APPEND dependencies "find_dependency(${package})\n")
+    else()
+      target_compile_definitions(${target} PRIVATE KINESTAT_HAVE_${reader}=0)
+    endif()
+  endforeach()
+  if(KINESTAT_INSTALL)
+    include(GNUInstallDirs)
+    file(WRITE ${PROJECT_BINARY_DIR}/kinestatReaders.cmake "# The libraries of kinestat's optional readers.\n${dependencies}")
+    install(FILES ${PROJECT_BINARY_DIR}/kinestatReaders.cmake DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/kinestat)
   endif()
-endforeach()
-if(KINESTAT_WITH_TINYXML2)
-  find_package(tinyxml2 REQUIRED)
-  target_link_libraries(kinestat_importers INTERFACE tinyxml2::tinyxml2)
-endif()
-if(KINESTAT_WITH_SDFORMAT)
-  find_package(sdformat12 REQUIRED)
-  target_link_libraries(kinestat_importers INTERFACE sdformat12::sdformat12)
-endif()
-if(KINESTAT_WITH_MUJOCO)
-  find_package(mujoco REQUIRED)
-  target_link_libraries(kinestat_importers INTERFACE mujoco::mujoco)
-endif()
+endfunction()
 message(STATUS "kinestat readers: URDF ${KINESTAT_WITH_TINYXML2}, SDFormat ${KINESTAT_WITH_SDFORMAT}, MJCF ${KINESTAT_WITH_MUJOCO}")

@@ -53,7 +53,7 @@ FIG6_LINES = [tangential(a, H) for a in (90, 210, 330)] + [tangential(a, -H) for
 
 def header(name, comment):
     return "".join("# " + line + "\n" for line in comment.strip().splitlines()) + \
-        f"kinestat: 1\nkind: framework\nname: {name}\ndimension: 3\n"
+        f"kinestat: 1\nkind: framework\nname: {name}\ndimension: spatial\n"
 
 
 def folded_sheet_guide(name, lines, comment):

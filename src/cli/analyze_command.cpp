@@ -21,13 +21,13 @@ void register_analyze(CLI::App& app, Action& action) {
   command->callback([options, &action] {
     action = [options] {
       const InputFormat format = input_format(options->model_path);
-      if (format == InputFormat::spacar) return run_framework_analysis(*options, read_spacar_model(options->model_path));
+      if (format == InputFormat::spacar) return run_framework_analysis(*options, read_spacar_model(options->model_path), options->model_path);
       if (format != InputFormat::kinestat)
         return run_network_analysis(*options, read_imported_network(options->model_path, format), options->model_path);
       const io::YamlFile model = io::YamlFile::load(options->model_path);
       const std::string kind = io::model_kind(model);
       if (kind == "network") return run_network_analysis(*options, io::read_network_model(model), model.path());
-      if (kind == "framework") return run_framework_analysis(*options, io::read_framework(model));
+      if (kind == "framework") return run_framework_analysis(*options, io::read_framework(model), model.path());
       throw io::InputError({options->model_path, 0, 0},
                            "a model of kind 'structure' is analysed with 'kinestat structure'");
     };

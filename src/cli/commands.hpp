@@ -7,6 +7,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "kinestat/framework/framework_model.hpp"
 #include "kinestat/io/network_reader.hpp"
@@ -63,6 +64,12 @@ LoadedScene load_scene(const std::string& path, std::optional<double> tolerance)
 void register_network_options(CLI::App& analyze);
 void register_framework_options(CLI::App& analyze);
 int run_network_analysis(const CommonOptions& options, const io::LoadedNetwork& model, const std::string& path);
-int run_framework_analysis(const CommonOptions& options, const framework::FrameworkModel& model);
+/// Names of the kind-specific options given on the command line (e.g. "--primary").
+std::vector<std::string> given_network_options();
+std::vector<std::string> given_framework_options();
+/// Exit 2 when options of another model kind were given: "--primary is an option that is not
+/// used by a framework model".
+void reject_options(const std::vector<std::string>& given, const std::string& kind, const std::string& path);
+int run_framework_analysis(const CommonOptions& options, const framework::FrameworkModel& model, const std::string& path);
 
 }  // namespace kinestat::cli

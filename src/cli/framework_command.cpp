@@ -1,8 +1,11 @@
 // `kinestat analyze FILE` for `kind: framework`: exact-constraint analysis of seed 002.
 
+#include <fmt/format.h>
+
 #include <memory>
 
 #include "cli/commands.hpp"
+#include "kinestat/design/framework_verdict.hpp"
 #include "kinestat/framework/framework_analysis.hpp"
 #include "kinestat/report/framework_report.hpp"
 #include "kinestat/report/json_text.hpp"
@@ -12,23 +15,38 @@ namespace kinestat::cli {
 namespace {
 // Framework-only options; filled by register_framework_options before the action runs.
 long long dense_limit = 1500;
+CLI::Option* dense_limit_option = nullptr;
 }  // namespace
 
+std::vector<std::string> given_framework_options() {
+  if (dense_limit_option && dense_limit_option->count() > 0) return {dense_limit_option->get_name()};
+  return {};
+}
+
+void reject_options(const std::vector<std::string>& given, const std::string& kind, const std::string& path) {
+  if (given.empty()) return;
+  throw io::InputError({path, 1, 1}, fmt::format("{} {} not used by {} model; remove {}", fmt::join(given, ", "),
+                                                 given.size() == 1 ? "is an option that is" : "are options that are", kind,
+                                                 given.size() == 1 ? "it" : "them"));
+}
+
 void register_framework_options(CLI::App& analyze) {
-  analyze.add_option("--dense-limit", dense_limit,
+  dense_limit_option = analyze.add_option("--dense-limit", dense_limit,
                      "Frameworks: largest matrix dimension analysed with the dense SVD (larger: sparse QR counts only); default 1500")
       ->check(CLI::NonNegativeNumber);
 }
 
-int run_framework_analysis(const CommonOptions& options, const framework::FrameworkModel& model) {
+int run_framework_analysis(const CommonOptions& options, const framework::FrameworkModel& model, const std::string& path) {
+  reject_options(given_network_options(), "a framework", path);
   framework::AnalysisOptions analysis_options;
   analysis_options.tolerance.relative = options.tolerance;
   analysis_options.dense_limit = static_cast<Eigen::Index>(dense_limit);
   const framework::FrameworkAnalysis analysis = framework::analyse_framework(model, analysis_options);
+  const design::Verdict verdict = design::framework_verdict(model, analysis, analysis_options);
   if (options.json) {
-    emit(options, report::json_text(report::framework_report_json(model, analysis)));
+    emit(options, report::json_text(report::framework_report_json(model, analysis, &verdict)));
   } else {
-    emit(options, report::framework_report_text(model, analysis));
+    emit(options, report::framework_report_text(model, analysis, &verdict));
   }
   return 0;
 }

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
+#include "kinestat/design/network_verdict.hpp"
 #include "kinestat/io/network_reader.hpp"
 #include "kinestat/network/analyse_network.hpp"
 #include "kinestat/report/json_text.hpp"
@@ -19,6 +20,7 @@ struct NetworkOptions {
   bool coupled_pairs_only = false;
   std::vector<std::string> primary;
   std::vector<std::string> values;  // name=number
+  std::vector<CLI::Option*> given;  // the options above, to tell whether any was used
 };
 
 NetworkOptions& network_options() {
@@ -33,7 +35,10 @@ std::vector<std::pair<std::string, screw::Rational>> parse_values(const std::vec
     const auto number = equals == std::string::npos ? std::nullopt : io::parse_exact_decimal(text.substr(equals + 1));
     if (equals == 0 || !number)
       throw io::InputError({"--value", 0, 0}, fmt::format("expected NAME=NUMBER (e.g. sa=1.5), found '{}'", text));
-    values.emplace_back(text.substr(0, equals), *number);
+    const std::string name = text.substr(0, equals);
+    for (const auto& [other, value] : values)
+      if (other == name) throw io::InputError({"--value", 0, 0}, fmt::format("'{}' is given a value twice", name));
+    values.emplace_back(name, *number);
   }
   return values;
 }
@@ -46,14 +51,23 @@ void register_network_options(CLI::App& analyze) {
   auto* exact = analyze.add_flag("--exact", o.exact, "Networks: exact rational arithmetic (GMP)");
   auto* floating = analyze.add_flag("--float", o.floating, "Networks: floating point (SVD ranks with the tolerance)");
   exact->excludes(floating);
-  analyze.add_flag("--matrices", o.matrices, "Networks: also print B, Q, BM, QA and the unit matrices");
-  analyze.add_flag("--coupled-pairs", o.coupled_pairs_only, "Networks: list only directly coupled pairs of bodies");
-  analyze.add_option("--primary", o.primary, "Networks: primary variables, e.g. --primary sa,ta,vc,Ub,We")->delimiter(',');
-  analyze.add_option("--value", o.values, "Networks: numeric value of a primary variable, NAME=NUMBER (repeatable)");
+  o.given = {exact, floating,
+             analyze.add_flag("--matrices", o.matrices, "Networks: also print B, Q, BM, QA and the unit matrices"),
+             analyze.add_flag("--coupled-pairs", o.coupled_pairs_only, "Networks: list only directly coupled pairs of bodies"),
+             analyze.add_option("--primary", o.primary, "Networks: primary variables, e.g. --primary sa,ta,vc,Ub,We")->delimiter(','),
+             analyze.add_option("--value", o.values, "Networks: numeric value of a primary variable, NAME=NUMBER (repeatable)")};
+}
+
+std::vector<std::string> given_network_options() {
+  std::vector<std::string> names;
+  for (const CLI::Option* option : network_options().given)
+    if (option->count() > 0) names.push_back(option->get_name());
+  return names;
 }
 
 int run_network_analysis(const CommonOptions& common, const io::LoadedNetwork& loaded, const std::string& path) {
   const NetworkOptions& o = network_options();
+  reject_options(given_framework_options(), "a network", path);
   network::AnalysisOptions options;
   options.arithmetic = o.exact ? network::Arithmetic::exact
                                : (o.floating ? network::Arithmetic::floating : network::Arithmetic::automatic);
@@ -69,8 +83,10 @@ int run_network_analysis(const CommonOptions& common, const io::LoadedNetwork& l
     if (error.field() == "values" && !o.values.empty()) throw io::InputError({"--value", 0, 0}, error.what());
     throw io::locate(error, loaded, path);
   }
+  const design::Verdict verdict = design::network_verdict(loaded.model, result, options);
   report::NetworkReportOptions report_options;
   report_options.matrices = o.matrices;
+  report_options.verdict = &verdict;
   emit(common, common.json ? report::json_text(report::network_json(loaded.model, result, report_options))
                            : report::network_text(loaded.model, result, report_options));
   return 0;

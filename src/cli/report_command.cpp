@@ -21,12 +21,13 @@ void register_report(CLI::App& app, Action& action) {
   command->add_option("--tolerance", options->tolerance, "Relative rank tolerance (as for analyze)")->check(CLI::PositiveNumber);
   command->callback([options, &action] {
     action = [options] {
+      // The model first: a bad model is reported as such whether or not the viewer is built in.
+      const LoadedScene loaded = load_scene(options->model_path, options->tolerance);
       if (!report::html_report_built_in()) {
         std::cerr << "kinestat: error: HTML output is not built in: this kinestat was built without npm, so three.js "
                      "could not be embedded (rebuild with npm available; 'kinestat draw' writes SVG)\n";
         return 2;
       }
-      const LoadedScene loaded = load_scene(options->model_path, options->tolerance);
       std::string figure, title;
       if (loaded.kind == "network" && !loaded.scene.large) {
         figure = report::graph_svg(loaded.scene);

@@ -2,6 +2,9 @@
 // picture.
 
 #include "cli/commands.hpp"
+#include "kinestat/design/framework_verdict.hpp"
+#include "kinestat/design/network_verdict.hpp"
+#include "kinestat/design/structure_verdict.hpp"
 #include "kinestat/framework/framework_analysis.hpp"
 #include "kinestat/io/framework_reader.hpp"
 #include "kinestat/io/network_reader.hpp"
@@ -16,7 +19,11 @@ namespace {
 report::Scene framework_scene(const framework::FrameworkModel& model, std::optional<double> tolerance) {
   framework::AnalysisOptions options;
   options.tolerance.relative = tolerance;
-  return report::framework_scene(model, framework::analyse_framework(model, options));
+  const framework::FrameworkAnalysis analysis = framework::analyse_framework(model, options);
+  report::Scene scene = report::framework_scene(model, analysis);
+  scene.verdict = design::framework_verdict(model, analysis, options);
+  scene.units = model.units;
+  return scene;
 }
 }  // namespace
 
@@ -42,12 +49,17 @@ LoadedScene load_scene(const std::string& path, std::optional<double> tolerance)
       throw io::locate(error, network, path);
     }
     loaded.scene = report::network_scene(network.model, result);
+    loaded.scene.verdict = design::network_verdict(network.model, result, options);
+    loaded.scene.units = network.model.units;
     loaded.structure_model = io::structure_of_network(network, path);
   } else if (loaded.kind == "framework") {
     loaded.scene = framework_scene(io::read_framework(*file), tolerance);
   } else {
     loaded.structure_model = io::read_structure_model(*file);
-    loaded.scene = report::structure_scene(*loaded.structure_model, structure::decompose(*loaded.structure_model));
+    const structure::Decomposition decomposition = structure::decompose(*loaded.structure_model);
+    loaded.scene = report::structure_scene(*loaded.structure_model, decomposition);
+    loaded.scene.verdict = design::structure_verdict(*loaded.structure_model, decomposition);
+    loaded.scene.units = loaded.structure_model->units;
   }
   return loaded;
 }

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "cli/commands.hpp"
+#include "kinestat/design/structure_verdict.hpp"
 #include "kinestat/io/network_reader.hpp"
 #include "kinestat/io/network_structure.hpp"
 #include "kinestat/io/structure_reader.hpp"
@@ -93,7 +94,8 @@ int run(const StructureOptions& options) {
     transformations = std::make_unique<structure::TransformationSet>(
         structure::structural_transformations(model, options.max_transformations));
   }
-  const report::StructureReport report{model, decomposition, transformations.get(), method};
+  const design::Verdict verdict = design::structure_verdict(model, decomposition);
+  const report::StructureReport report{model, decomposition, transformations.get(), method, &verdict, model.units};
   emit(options.common, options.common.json ? report::structure_json(report) : report::structure_text(report));
   return 0;
 }

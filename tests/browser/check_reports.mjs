@@ -178,7 +178,7 @@ for (const file of files) {
 // A generated planar strip of about 200 000 bars: the report opens and draws.
 if (!only || only === 'large') {
   const columns = 66700;
-  const lines = ['kinestat: 1', 'kind: framework', 'name: large strip', 'dimension: 2', 'nodes:'];
+  const lines = ['kinestat: 1', 'kind: framework', 'name: large strip', 'dimension: planar', 'nodes:'];
   for (let i = 0; i < columns; i++) lines.push('  a' + i + ': [' + i + ', 0]', '  b' + i + ': [' + i + ', 1]');
   lines.push('supports: {a0: fixed, b0: fixed}', 'elements:');
   for (let i = 0; i + 1 < columns; i++)

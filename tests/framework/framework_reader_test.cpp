@@ -30,7 +30,7 @@ Failure failure_of(const std::string& text) {
 const std::string kHead = "kinestat: 1\nkind: framework\n";
 
 TEST(FrameworkReader, ReadsTheMinimumSchemaWithDefaults) {
-  const FrameworkModel model = parse_model(kHead + R"(dimension: 3
+  const FrameworkModel model = parse_model(kHead + R"(dimension: spatial
 nodes: {A: [-1, -1, 0], E: [0, -1, 1]}
 supports: {A: fixed}
 elements:
@@ -73,7 +73,7 @@ elements:
 }
 
 TEST(FrameworkReader, PlanarBeamHasThreeDeformations) {
-  const FrameworkModel model = parse_model(kHead + R"(dimension: 2
+  const FrameworkModel model = parse_model(kHead + R"(dimension: planar
 nodes: {A: [0, 0], B: [3, 4]}
 supports: {A: fixed}
 elements: [{type: beam, nodes: [A, B], released: [bending]}]
@@ -133,7 +133,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"rotation_of_truss_node",
                  "nodes: {A: [0, 0, 0], B: [1, 0, 0]}\nsupports: {A: [rz]}\nelements:\n  - {type: truss, nodes: [A, B]}\n", 4,
                  16, "no rotational coordinate 'rz'"},
-        BadInput{"wrong_position_length", "dimension: 2\nnodes: {A: [0, 0, 0]}\nelements: []\n", 4, 12, "must have 2 numbers"},
+        BadInput{"wrong_position_length", "dimension: planar\nnodes: {A: [0, 0, 0]}\nelements: []\n", 4, 12, "must have 2 numbers"},
         BadInput{"unknown_type", "nodes: {A: [0, 0, 0], B: [1, 0, 0]}\nelements:\n  - {type: spring, nodes: [A, B]}\n", 5, 12,
                  "unknown element type 'spring'"},
         BadInput{"unknown_key", "nodes: {A: [0, 0, 0]}\nelemets: []\n", 4, 1, "unknown key 'elemets'"},

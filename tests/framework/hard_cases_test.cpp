@@ -21,7 +21,7 @@ constexpr double kAngle = 37.0 * std::numbers::pi / 180.0;  // no special angle:
 FrameworkModel two_bars(double offset, double length) {
   const double c = std::cos(kAngle), s = std::sin(kAngle);
   return testing::parse_model(fmt::format(
-      "kinestat: 1\nkind: framework\ndimension: 2\n"
+      "kinestat: 1\nkind: framework\ndimension: planar\n"
       "nodes: {{A: [0, 0], C: [{:.17g}, {:.17g}], B: [{:.17g}, {:.17g}]}}\n"
       "supports: {{A: fixed, B: fixed}}\n"
       "elements: [{{type: truss, nodes: [A, C]}}, {{type: truss, nodes: [C, B]}}]\n",
@@ -71,7 +71,7 @@ TEST(FrameworkHardCases, NearlyCollinearBarsAreReportedAsClose) {
 // A cantilever of two beams in line: A (fixed) to B is 1e3 long, B to C is 1e-6 long.
 std::string cantilever(double scale) {
   return fmt::format(
-      "kinestat: 1\nkind: framework\ndimension: 2\n"
+      "kinestat: 1\nkind: framework\ndimension: planar\n"
       "nodes: {{A: [0, 0], B: [{:.17g}, 0], C: [{:.17g}, {:.17g}]}}\n"
       "supports: {{A: fixed}}\n"
       "elements: [{{type: beam, nodes: [A, B]}}, {{type: beam, nodes: [B, C]}}]\n",
@@ -109,7 +109,7 @@ TEST(FrameworkHardCases, ScalingByLengthsDoesNotHideASingularTinyPart) {
   // one mechanism and one self-stress, both in the two-bar.
   const double c = std::cos(kAngle), s = std::sin(kAngle);
   const FrameworkModel model = testing::parse_model(fmt::format(
-      "kinestat: 1\nkind: framework\ndimension: 2\n"
+      "kinestat: 1\nkind: framework\ndimension: planar\n"
       "nodes: {{A: [0, 0], C: [{:.17g}, {:.17g}], B: [{:.17g}, {:.17g}], F: [0, 10], G: [1000, 10]}}\n"
       "supports: {{A: fixed, B: fixed, F: fixed}}\n"
       "elements: [{{type: truss, nodes: [A, C]}}, {{type: truss, nodes: [C, B]}}, {{type: beam, nodes: [F, G]}}]\n",

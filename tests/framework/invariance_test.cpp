@@ -82,14 +82,14 @@ TEST(Invariance, ReadingAScaledFileGivesTheSameJson) {
   // The same design in millimetres and in metres: identical report apart from lengths.
   const std::string mm = R"(kinestat: 1
 kind: framework
-dimension: 2
+dimension: planar
 nodes: {A: [0, 0], C: [1000, 0], B: [2000, 0]}
 supports: {A: fixed, B: fixed}
 elements: [{type: truss, nodes: [A, C]}, {type: truss, nodes: [C, B]}]
 )";
   const std::string m = R"(kinestat: 1
 kind: framework
-dimension: 2
+dimension: planar
 nodes: {A: [0, 0], C: [1, 0], B: [2, 0]}
 supports: {A: fixed, B: fixed}
 elements: [{type: truss, nodes: [A, C]}, {type: truss, nodes: [C, B]}]

@@ -178,7 +178,7 @@ TEST(StraightGuide, PlanarParallelLeafSpringGuide) {
   // stage node S without its declared x: 8 x 8.
   const std::string text = R"(kinestat: 1
 kind: framework
-dimension: 2
+dimension: planar
 nodes: {A: [0, 0], B: [2, 0], C: [0, 5], D: [2, 5], S: [1, 5]}
 supports: {A: fixed, B: fixed}
 independent: {S: [x]}

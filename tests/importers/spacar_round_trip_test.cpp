@@ -74,7 +74,7 @@ TEST(SpacarWriter, WritesSpacarLightNumberingAndRoles) {
   // Two nodes, one beam clamped at node a, torsion released, the tip's y translation prescribed.
   const FrameworkModel model = read_framework(YamlFile::parse("t.yaml", R"(kinestat: 1
 kind: framework
-dimension: 3
+dimension: spatial
 nodes: {a: [0, 0, 0], b: [10, 0, 0]}
 supports: {a: fixed}
 independent: {b: [y, rz]}
@@ -115,7 +115,7 @@ TEST(SpacarWriter, TheProposalMakesTheReReadModelExactlyConstrained) {
 TEST(SpacarWriter, RefusesRigidBodiesWithReleasesThatAreNotJoints) {
   const FrameworkModel model = read_framework(YamlFile::parse("t.yaml", R"(kinestat: 1
 kind: framework
-dimension: 2
+dimension: planar
 nodes: {a: [0, 0], b: [1, 0]}
 elements:
   - {name: body, type: rigid_body, nodes: [a, b], released: [b.x]}

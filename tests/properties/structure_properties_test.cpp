@@ -20,7 +20,7 @@
 #include "kinestat/io/yaml_support.hpp"
 #include "kinestat/structure/constraint_blocks.hpp"
 #include "kinestat/structure/decomposition.hpp"
-#include "kinestat/structure/mechanism_generator.hpp"
+#include "support/mechanism_generator.hpp"
 
 namespace kinestat::structure {
 namespace {

@@ -78,7 +78,7 @@ TEST(HtmlReport, ScriptTextCannotCloseTheScriptElement) {
 // A planar strip of about 200 000 bars: the report and the drawing are produced and bounded.
 TEST(LargeModel, TwoHundredThousandElementsGiveBoundedFiles) {
   const int columns = 66700;
-  std::string model = "kinestat: 1\nkind: framework\nname: large strip\ndimension: 2\nnodes:\n";
+  std::string model = "kinestat: 1\nkind: framework\nname: large strip\ndimension: planar\nnodes:\n";
   for (int i = 0; i < columns; ++i)
     model += "  a" + std::to_string(i) + ": [" + std::to_string(i) + ", 0]\n  b" + std::to_string(i) + ": [" + std::to_string(i) + ", 1]\n";
   model += "supports: {a0: fixed, b0: fixed}\nelements:\n";

@@ -7,7 +7,7 @@
 #include <random>
 
 #include "kinestat/structure/decomposition.hpp"
-#include "kinestat/structure/mechanism_generator.hpp"
+#include "support/mechanism_generator.hpp"
 
 namespace kinestat::structure {
 namespace {

@@ -99,7 +99,7 @@ TEST(StructureReader, OtherMistakes) {
   EXPECT_NE(error_of([] { parse("kinestat: 1\nkind: structure\nadjacency: [[0, 1], [1, 0]]\nextra: 1\n"); })
                 .find("unknown key 'extra'"),
             std::string::npos);
-  EXPECT_NE(error_of([] { parse("kinestat: 1\nkind: structure\nspace: spatial\nbodies: [f, a]\npairs:\n  - {between: [f, a], pair: higher}\n"); })
+  EXPECT_NE(error_of([] { parse("kinestat: 1\nkind: structure\ndimension: spatial\nbodies: [f, a]\npairs:\n  - {between: [f, a], pair: higher}\n"); })
                 .find("spatial higher pair needs 'freedoms'"),
             std::string::npos);
 }

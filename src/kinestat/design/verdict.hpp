@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace kinestat::design {
@@ -15,6 +16,14 @@ struct Participant {
   std::string kind;            ///< "coupling", "element", "deformation", "coordinate", "node", "body", "pair"
   std::string name;            ///< the user's name (with the deformation or direction, e.g. "sheet3 bending z")
   double participation = 0.0;  ///< share in [0, 1] of the state it takes part in; participants are ranked by it
+  std::string detail;          ///< what it does there, e.g. "force along (0, 0, 1) through (1, 0, 0)"
+};
+
+/// One extra motion or one self-stress (redundant constraint), with the parts taking part in it.
+struct VerdictState {
+  std::string kind;  ///< "extra motion" or "self-stress"
+  std::string description;  ///< one line, e.g. "idle spin of body 'link' about (0, 0, 1) through (1, 0, 0)"
+  std::vector<Participant> participants;  ///< ranked by participation (shares of this state)
 };
 
 /// One change of the design: `action` on `target`, after which the target `becomes` something.
@@ -24,6 +33,9 @@ struct DesignChange {
   std::string target;       ///< the user's name of what changes
   std::string becomes;      ///< e.g. "cylindrical", "released", "fixed"
   std::string reason;       ///< one line: which extra motion or self-stress this change removes
+  std::string from;         ///< what the target was before, e.g. "revolute" (empty when obvious)
+  /// Geometry of what the target becomes, e.g. {"axis", {0, 1, 0}}: model frame and length unit.
+  std::vector<std::pair<std::string, std::vector<double>>> geometry;
 };
 
 struct Verdict {
@@ -33,9 +45,19 @@ struct Verdict {
   std::string summary;             ///< one sentence in a designer's words
   std::vector<Participant> motion_participants;      ///< where the extra motions sit, ranked
   std::vector<Participant> constraint_participants;  ///< where the redundancy sits, ranked
+  std::vector<VerdictState> states;  ///< each extra motion and each self-stress, in that order
+  int intended_motions = 0;          ///< the motions the design is meant to have
+  std::string intended_basis;        ///< how intended_motions was decided (declared inputs, FN less idle spins, ...)
   std::vector<DesignChange> changes;  ///< one minimal set of changes
   bool changes_verified = false;      ///< the changed design was re-analysed and is exactly constrained
   std::string becomes;                ///< what the changed design is, e.g. "exactly constrained, 1 motion"
+  std::string note;                   ///< why no (verified) change is given, when that is so
 };
+
+/// "exactly constrained" or "1 extra motion, 2 redundant constraints" (the words of `summary`).
+std::string constraint_words(int extra_motions, int redundant_constraints);
+
+/// The one-sentence summary of a verdict from its counts and the intended motions.
+std::string summary_sentence(int extra_motions, int redundant_constraints, int intended_motions);
 
 }  // namespace kinestat::design

@@ -52,6 +52,7 @@ struct Element {
 
 struct FrameworkModel {
   std::string name;
+  std::string units;  ///< the length unit the file names (`units:`), empty if none; carried into reports
   int dimension = 3;  ///< 3 spatial, 2 planar (xy-plane)
   std::vector<Node> nodes;
   std::vector<Element> elements;

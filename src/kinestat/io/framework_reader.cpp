@@ -1,5 +1,7 @@
 #include "kinestat/io/framework_reader.hpp"
 
+#include "kinestat/io/model_vocabulary.hpp"
+
 #include <fmt/format.h>
 
 #include <Eigen/Geometry>
@@ -33,13 +35,10 @@ class FrameworkReader {
   FrameworkModel read() {
     const YAML::Node& root = file_.root();
     file_.check_keys(root, "the framework model",
-                     {"kinestat", "kind", "name", "description", "dimension", "nodes", "supports", "independent", "elements"});
+                     {"kinestat", "kind", "name", "description", "dimension", "units", "nodes", "supports", "independent", "elements"});
     if (auto name = file_.optional(root, "name"); name.IsDefined()) model_.name = file_.string(name, "'name'");
-    if (auto dimension = file_.optional(root, "dimension"); dimension.IsDefined()) {
-      const long long d = file_.integer(dimension, "'dimension'");
-      if (d != 2 && d != 3) file_.fail(dimension, "'dimension' must be 3 (spatial) or 2 (planar)");
-      model_.dimension = static_cast<int>(d);
-    }
+    model_.dimension = read_planar(file_, root, "framework", false) ? 2 : 3;
+    model_.units = read_units(file_, root);
     read_nodes(file_.required(root, "nodes", "the framework model"));
     const YAML::Node elements = file_.required(root, "elements", "the framework model");
     file_.expect_sequence(elements, "'elements'");

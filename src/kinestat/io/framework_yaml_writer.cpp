@@ -47,7 +47,8 @@ std::string framework_yaml(const FrameworkModel& model, const std::vector<std::s
   for (const auto& c : comments) out += "# " + c + "\n";
   out += "kinestat: 1\nkind: framework\n";
   if (!model.name.empty()) out += "name: " + quoted(model.name) + "\n";
-  out += fmt::format("dimension: {}\n", model.dimension);
+  out += model.dimension == 2 ? "dimension: planar\n" : "dimension: spatial\n";
+  if (!model.units.empty()) out += "units: " + quoted(model.units) + "\n";
   out += "nodes:\n";
   for (const auto& node : model.nodes) {
     if (node.triad) {

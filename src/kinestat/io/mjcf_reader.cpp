@@ -65,7 +65,8 @@ class MjcfReader {
     const std::unique_ptr<mjData, DataDeleter> data(mj_makeData(m));
     mj_kinematics(m, data.get());  // world poses at the reference configuration qpos0
     const mjData* d = data.get();
-    NetworkBuilder builder(path_, m->nnames > 0 ? std::string(m->names) : std::string());  // the model name comes first
+    // MuJoCo has no length unit of its own; the model name comes first in `names`.
+    NetworkBuilder builder(path_, m->nnames > 0 ? std::string(m->names) : std::string(), "");
     builder.set_ground(body_name(m, 0));
     for (int b = 1; b < m->nbody; ++b) {
       const std::string body = body_name(m, b);

@@ -16,8 +16,9 @@ namespace {
 constexpr double kNoise = 1e-12;
 }  // namespace
 
-NetworkBuilder::NetworkBuilder(std::string path, std::string name) : path_(std::move(path)) {
+NetworkBuilder::NetworkBuilder(std::string path, std::string name, std::string units) : path_(std::move(path)) {
   loaded_.model.name = std::move(name);
+  loaded_.model.units = std::move(units);
   loaded_.model.space = screw::ScrewSpace::spatial();
 }
 

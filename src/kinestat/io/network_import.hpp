@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "kinestat/io/input_error.hpp"
-#include "kinestat/io/network_reader.hpp"
+#include "kinestat/io/loaded_network.hpp"
 #include "kinestat/screw/coupling_basis.hpp"
 
 namespace kinestat::io {
@@ -33,7 +33,8 @@ struct JointGeometry {
 /// Builds a network model from bodies (links) and joints given with world-frame geometry.
 class NetworkBuilder {
  public:
-  NetworkBuilder(std::string path, std::string name);
+  /// `units` names the length unit of the file format ("m" for URDF and SDFormat), or "".
+  NetworkBuilder(std::string path, std::string name, std::string units);
 
   /// Adds a body (a link) if it is not there yet; returns its index.
   int body(const std::string& name);

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <set>
 
+#include "kinestat/io/model_vocabulary.hpp"
+
 namespace kinestat::io {
 
 namespace {
@@ -20,11 +22,12 @@ class NetworkReader {
   LoadedNetwork read() {
     const YAML::Node& root = file_.root();
     file_.check_keys(root, "the model file",
-                     {"kinestat", "kind", "name", "description", "dimension", "ground", "bodies", "couplings", "chords",
+                     {"kinestat", "kind", "name", "description", "dimension", "units", "ground", "bodies", "couplings", "chords",
                       "primary", "values", "inputs"});
     network::Model& model = loaded_.model;
     if (auto name = file_.optional(root, "name"); name.IsDefined()) model.name = file_.string(name, "'name'");
-    read_dimension(root);
+    if (read_planar(file_, root, "network", false)) model.space = screw::ScrewSpace::planar();
+    model.units = read_units(file_, root);
     if (auto bodies = file_.optional(root, "bodies"); bodies.IsDefined()) read_bodies(bodies);
     const YAML::Node couplings = file_.required(root, "couplings", "the model file");
     file_.expect_sequence(couplings, "'couplings'");
@@ -47,19 +50,6 @@ class NetworkReader {
   }
 
  private:
-  void read_dimension(const YAML::Node& root) {
-    const YAML::Node dimension = file_.optional(root, "dimension");
-    if (!dimension.IsDefined()) return;
-    const std::string text = dimension.IsScalar() ? dimension.Scalar() : "";
-    if (text == "6" || text == "spatial") {
-      loaded_.model.space = screw::ScrewSpace::spatial();
-    } else if (text == "3" || text == "planar") {
-      loaded_.model.space = screw::ScrewSpace::planar();
-    } else {
-      file_.fail(dimension, "'dimension' must be 6 (or spatial) or planar (or 3)");
-    }
-  }
-
   std::string body_name(const YAML::Node& node, std::string_view what) const {
     if (!node.IsScalar() || node.Scalar().empty()) file_.fail(node, fmt::format("{} must be a body name or number", what));
     return node.Scalar();
@@ -188,6 +178,13 @@ class NetworkReader {
     if (auto actions = file_.optional(node, "actions"); actions.IsDefined()) g.custom_actions = screw_list(actions, "a custom action");
 
     const bool planar = loaded_.model.space.is_planar();
+    // A planar model cannot have a coupling whose motions leave the plane: it is refused rather
+    // than projected (a spherical joint would silently become a revolute).
+    if (planar && (*type == CouplingType::spherical || *type == CouplingType::universal || *type == CouplingType::cylindrical ||
+                   *type == CouplingType::helical || *type == CouplingType::point_on_plane || *type == CouplingType::planar))
+      file_.fail(type_node, fmt::format("a planar model cannot have a {} coupling ('{}'); use revolute, prismatic, "
+                                        "point_on_line, rigid, free or custom, or write 'dimension: spatial'",
+                                        type_name, coupling.name));
     if (*type == CouplingType::revolute && !g.axis && !planar)
       file_.fail(node, fmt::format("revolute coupling '{}' needs an 'axis' in a spatial model", coupling.name));
     if (planar && *type == CouplingType::revolute && g.axis && (sgn((*g.axis)[0]) != 0 || sgn((*g.axis)[1]) != 0))

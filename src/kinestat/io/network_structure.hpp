@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "kinestat/io/network_reader.hpp"
+#include "kinestat/io/loaded_network.hpp"
 #include "kinestat/structure/structure_model.hpp"
 
 namespace kinestat::io {

@@ -38,7 +38,8 @@ std::string network_yaml(const network::Model& model, const std::vector<std::str
   for (const auto& c : comments) out += "# " + c + "\n";
   out += "kinestat: 1\nkind: network\n";
   if (!model.name.empty()) out += "name: " + quoted(model.name) + "\n";
-  out += model.space.is_planar() ? "dimension: planar\n" : "dimension: 6\n";
+  out += model.space.is_planar() ? "dimension: planar\n" : "dimension: spatial\n";
+  if (!model.units.empty()) out += "units: " + quoted(model.units) + "\n";
   out += "bodies: [";
   for (std::size_t b = 0; b < model.bodies.size(); ++b) out += (b ? ", " : "") + quoted(model.bodies[b]);
   out += "]\n";

@@ -98,7 +98,7 @@ class SdformatReader {
       }
     }
     if (models.empty()) throw InputError({path_, 1, 1}, "the file holds no <model>");
-    NetworkBuilder builder(path_, name);
+    NetworkBuilder builder(path_, name, "m");  // SDFormat lengths are metres
     for (const auto& [model, placed] : models) read_model(builder, *model, placed, world_ ? model->Name() + "::" : "");
     if (grounded_.empty()) grounded_ = ground_candidate_;
     builder.set_ground(grounded_);

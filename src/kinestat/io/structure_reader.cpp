@@ -1,5 +1,7 @@
 #include "kinestat/io/structure_reader.hpp"
 
+#include "kinestat/io/model_vocabulary.hpp"
+
 #include <fmt/format.h>
 
 #include <cctype>
@@ -168,15 +170,14 @@ StructureModel read_pairs(const YamlFile& file, const YAML::Node& bodies_node, c
 StructureModel read_structure_model(const YamlFile& file) {
   const YAML::Node& root = file.root();
   file.check_keys(root, "a structure model",
-                  {"kinestat", "kind", "name", "description", "space", "bodies", "adjacency", "pairs"});
+                  {"kinestat", "kind", "name", "description", "dimension", "space", "units", "bodies", "adjacency", "pairs"});
   if (model_kind(file) != "structure") file.fail(root, "expected 'kind: structure'");
-  int dimension = 3;
-  const YAML::Node space = file.optional(root, "space");
-  if (space.IsDefined()) {
-    const std::string s = file.string(space, "'space'");
-    if (s == "spatial") dimension = 6;
-    else if (s != "planar") file.fail(space, fmt::format("unknown space '{}'; expected planar or spatial", s));
-  }
+  const YAML::Node space = file.optional(root, "dimension");
+  if (const YAML::Node old = file.optional(root, "space"); old.IsDefined())
+    file.fail(old, fmt::format("'space' is now 'dimension', as in every model kind: write 'dimension: {}'",
+                               old.IsScalar() && old.Scalar() == "spatial" ? "spatial" : "planar"));
+  const int dimension = read_planar(file, root, "structure", true) ? 3 : 6;
+  const std::string units = read_units(file, root);
   const YAML::Node adjacency = file.optional(root, "adjacency");
   const YAML::Node pairs = file.optional(root, "pairs");
   const YAML::Node bodies = file.optional(root, "bodies");
@@ -202,6 +203,7 @@ StructureModel read_structure_model(const YamlFile& file) {
   }
   const YAML::Node name = file.optional(root, "name");
   if (name.IsDefined()) model.name = file.string(name, "'name'");
+  model.units = units;
   return model;
 }
 

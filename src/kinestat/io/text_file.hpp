@@ -1,6 +1,7 @@
 #pragma once
 // Whole input files as text, for the readers of other programs' formats (SPACAR, URDF, MJCF).
 
+#include <cstddef>
 #include <string>
 
 namespace kinestat::io {

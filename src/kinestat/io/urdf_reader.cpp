@@ -49,7 +49,7 @@ class UrdfReader {
     const XMLElement* robot = document.RootElement();
     if (!robot || std::string(robot->Name()) != "robot")
       throw InputError({path_, robot ? robot->GetLineNum() : 1, 1}, "a URDF file has a <robot> root element");
-    NetworkBuilder builder(path_, attribute_or(robot, "name", ""));
+    NetworkBuilder builder(path_, attribute_or(robot, "name", ""), "m");  // URDF lengths are metres
     std::set<std::string> ignored;
     for (const XMLElement* e = robot->FirstChildElement(); e; e = e->NextSiblingElement()) {
       const std::string tag = e->Name();

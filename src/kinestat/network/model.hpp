@@ -21,6 +21,7 @@ struct Coupling {
 
 struct Model {
   std::string name;
+  std::string units;  ///< the length unit the file names (`units:`), empty if none; carried into reports
   screw::ScrewSpace space = screw::ScrewSpace::spatial();
   std::vector<std::string> bodies;          ///< body names; index = body number used by couplings
   std::optional<int> ground;                ///< body whose motion is zero (default: the first body)

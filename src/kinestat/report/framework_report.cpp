@@ -7,6 +7,8 @@
 #include <limits>
 #include <string>
 
+#include "kinestat/report/verdict_report.hpp"
+
 namespace kinestat::report {
 
 using framework::FrameworkAnalysis;
@@ -81,10 +83,11 @@ std::string framework_classification(const FrameworkAnalysis& a) {
                      a.kinematically_determinate() ? "determinate" : "indeterminate");
 }
 
-nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const FrameworkAnalysis& a) {
+nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const FrameworkAnalysis& a, const design::Verdict* verdict) {
   nlohmann::ordered_json j;
   j["kind"] = "framework";
   if (!model.name.empty()) j["name"] = model.name;
+  j["space"] = model.dimension == 2 ? "planar" : "spatial";
   j["dimension"] = model.dimension;
   j["rows"] = a.m;
   j["cols"] = a.n;
@@ -165,14 +168,16 @@ nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const 
     j["constrain"].push_back(
         {{"node", model.nodes[ref.node].name}, {"coordinate", framework::kSlotNames[static_cast<std::size_t>(ref.slot)]}});
   }
+  if (verdict) return lead_with_verdict(*verdict, j, model.units);
   return j;
 }
 
-std::string framework_report_text(const FrameworkModel& model, const FrameworkAnalysis& a) {
-  std::string out;
+std::string framework_report_text(const FrameworkModel& model, const FrameworkAnalysis& a, const design::Verdict* verdict) {
+  std::string out = verdict ? verdict_text(*verdict) : std::string();
   auto line = [&out](const std::string& text) { out += text + "\n"; };
-  line(fmt::format("framework{} ({}-D): {} nodes, {} elements", model.name.empty() ? "" : " " + model.name, model.dimension,
-                   model.nodes.size(), model.elements.size()));
+  line(fmt::format("framework{} ({}, {} nodes, {} elements{})", model.name.empty() ? "" : " " + model.name,
+                   model.dimension == 2 ? "planar" : "spatial", model.nodes.size(), model.elements.size(),
+                   model.units.empty() ? "" : ", lengths in " + model.units));
   const auto& c = a.count;
   line(fmt::format("coordinates: {} = {} fixed + {} dependent + {} independent", c.coordinates, c.fixed_coordinates,
                    c.dependent_coordinates, c.independent_coordinates));

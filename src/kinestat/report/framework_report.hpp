@@ -7,6 +7,7 @@
 
 #include <string>
 
+#include "kinestat/design/verdict.hpp"
 #include "kinestat/framework/framework_analysis.hpp"
 #include "kinestat/framework/framework_model.hpp"
 
@@ -22,9 +23,12 @@ std::string framework_column_label(const framework::FrameworkModel& model, const
 std::string framework_classification(const framework::FrameworkAnalysis& analysis);
 
 /// The report as JSON (keys documented in docs/framework.md).
+/// With a `verdict`, the report leads with it (design::framework_verdict decides it).
 nlohmann::ordered_json framework_report_json(const framework::FrameworkModel& model,
-                                             const framework::FrameworkAnalysis& analysis);
-/// The report as readable text.
-std::string framework_report_text(const framework::FrameworkModel& model, const framework::FrameworkAnalysis& analysis);
+                                             const framework::FrameworkAnalysis& analysis,
+                                             const design::Verdict* verdict = nullptr);
+/// The report as readable text, the verdict block first when given.
+std::string framework_report_text(const framework::FrameworkModel& model, const framework::FrameworkAnalysis& analysis,
+                                  const design::Verdict* verdict = nullptr);
 
 }  // namespace kinestat::report

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "kinestat/report/linear_form_text.hpp"
+#include "kinestat/report/verdict_report.hpp"
 
 namespace kinestat::report {
 
@@ -170,20 +171,16 @@ std::string contracted_text(const network::Model& model, const NetworkResult& r,
 
 std::string joined_or_dash(const std::vector<std::string>& names) { return names.empty() ? "-" : fmt::format("{}", fmt::join(names, ", ")); }
 
-std::vector<std::string> one_based(const std::vector<Index>& rows) {
-  std::vector<std::string> out;
-  for (Index r : rows) out.push_back(std::to_string(r + 1));
-  return out;
-}
 
 }  // namespace
 
 std::string network_text(const network::Model& model, const NetworkResult& r, const NetworkReportOptions& options) {
   const auto motion_primaries = names_of(r.primary_motion, r.motions);
   const auto action_primaries = names_of(r.primary_action, r.actions);
-  std::string t;
+  std::string t = options.verdict ? verdict_text(*options.verdict) : std::string();
   t += fmt::format("{}\n", r.model_name.empty() ? "Coupling network" : r.model_name);
-  t += fmt::format("  coupling network, {} (d = {}); {}\n", r.d == 6 ? "spatial" : "planar", r.d, r.arithmetic_reason);
+  t += fmt::format("  coupling network, {} (d = {}){}; {}\n", r.d == 6 ? "spatial" : "planar", r.d,
+                   model.units.empty() ? "" : ", lengths in " + model.units, r.arithmetic_reason);
   t += fmt::format("  bodies n = {}, couplings e = {}, circuits l = {}, cutsets k = {}\n", r.bodies, r.e, r.l, r.k);
   t += fmt::format("  gross degree of freedom F = {}, gross degree of constraint C = {}\n", r.F, r.C);
   t += fmt::format("  rank of the network unit motion matrix: {}\n", rank_text("m", r.circulation.solution.rank));
@@ -199,9 +196,6 @@ std::string network_text(const network::Model& model, const NetworkResult& r, co
   for (int c : r.chords) chord_names.push_back(model.couplings[static_cast<std::size_t>(c)].name);
   t += fmt::format("Spanning tree: branches {}; chords {}\n", joined_or_dash(branch_names), joined_or_dash(chord_names));
   t += fmt::format("Primary variables: motions {}; actions {}\n", joined_or_dash(motion_primaries), joined_or_dash(action_primaries));
-  t += fmt::format("Redundant equations: rows {} of the circulation law (M^N c = 0); rows {} of the cutset law (A^N C = 0)\n",
-                   joined_or_dash(one_based(r.circulation.solution.redundant_rows)),
-                   joined_or_dash(one_based(r.cutset_law.solution.redundant_rows)));
   t += "\n";
 
   auto magnitude_lines = [&](const char* title, const std::vector<network::Magnitude>& magnitudes, const LinearForms& forms,
@@ -270,6 +264,7 @@ Json network_json(const network::Model& model, const NetworkResult& r, const Net
   Json j;
   j["kind"] = "network";
   j["name"] = r.model_name;
+  j["space"] = r.d == 6 ? "spatial" : "planar";
   j["dimension"] = r.d;
   j["arithmetic"] = r.exact ? "exact" : "floating";
   j["arithmetic_reason"] = r.arithmetic_reason;
@@ -318,8 +313,6 @@ Json network_json(const network::Model& model, const NetworkResult& r, const Net
   };
   j["unit_motions"] = screws_json(r.motions);
   j["unit_actions"] = screws_json(r.actions);
-  j["redundant_equations"] = {{"circulation", one_based(r.circulation.solution.redundant_rows)},
-                              {"cutset", one_based(r.cutset_law.solution.redundant_rows)}};
   auto contracted_json = [&](const LinearForms& forms, const std::vector<std::string>& primaries) {
     Json out = Json::object();
     for (int e = 0; e < r.e; ++e) out[model.couplings[static_cast<std::size_t>(e)].name] = expressions_json(forms, e * r.d, r.d, primaries);
@@ -376,6 +369,7 @@ Json network_json(const network::Model& model, const NetworkResult& r, const Net
                      {"MD", rational_matrix_json(r.MD)},   {"AD", rational_matrix_json(r.AD)},
                      {"MN", rational_matrix_json(r.MN)},   {"AN", rational_matrix_json(r.AN)}};
   }
+  if (options.verdict) return lead_with_verdict(*options.verdict, j, model.units);
   return j;
 }
 

@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "kinestat/design/verdict.hpp"
 #include "kinestat/network/model.hpp"
 #include "kinestat/network/network_result.hpp"
 
@@ -12,6 +13,7 @@ namespace kinestat::report {
 
 struct NetworkReportOptions {
   bool matrices = false;  ///< include B, Q, BM, QA, M^D, A^D, M^N, A^N
+  const design::Verdict* verdict = nullptr;  ///< printed first when given (design::network_verdict)
 };
 
 /// Human-readable report: summary with rank evidence, class, primaries, magnitudes,

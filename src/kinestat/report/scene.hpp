@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "kinestat/design/verdict.hpp"
 #include "kinestat/framework/framework_analysis.hpp"
 #include "kinestat/framework/framework_model.hpp"
 #include "kinestat/network/model.hpp"
@@ -111,6 +112,10 @@ struct Scene {
   std::vector<int> group_of;
   /// The model had more elements than a picture can show one by one.
   bool large = false;
+  /// The verdict every picture leads with (design layer; filled by whoever loads the model).
+  std::optional<design::Verdict> verdict;
+  /// The model's length unit (`units:`), empty when the file names none.
+  std::string units;
 };
 
 /// Above this many elements (or nodes) the writers switch to a lighter drawing: no glyphs,

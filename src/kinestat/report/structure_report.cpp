@@ -1,6 +1,7 @@
 #include "kinestat/report/structure_report.hpp"
 
 #include "kinestat/report/json_text.hpp"
+#include "kinestat/report/verdict_report.hpp"
 #include "kinestat/report/markup_escape.hpp"
 
 #include <fmt/format.h>
@@ -121,7 +122,9 @@ std::string structure_text(const StructureReport& report) {
   const StructureModel& model = report.model;
   const Decomposition& d = report.decomposition;
   std::string out;
+  if (report.verdict) out += verdict_text(*report.verdict);
   out += "Structural analysis" + (model.name.empty() ? std::string() : ": " + model.name) + "\n";
+  if (!report.units.empty()) out += fmt::format("  units: {}\n", report.units);
   out += fmt::format("  {} (d = {}), {} bodies (body 1 is the frame), {} pairs, {} input(s), mobility {}\n",
                      space_name(model), model.dimension, model.body_count(), model.pairs.size(), model.input_count(),
                      model.mobility());
@@ -269,6 +272,7 @@ std::string structure_json(const StructureReport& report) {
   } else {
     j["transformations"] = nullptr;
   }
+  if (report.verdict) return json_text(lead_with_verdict(*report.verdict, j, report.units));
   return json_text(j);
 }
 

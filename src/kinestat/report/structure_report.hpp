@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "kinestat/design/verdict.hpp"
 #include "kinestat/structure/decomposition.hpp"
 #include "kinestat/structure/structure_model.hpp"
 #include "kinestat/structure/transformations.hpp"
@@ -17,6 +18,8 @@ struct StructureReport {
   const structure::Decomposition& decomposition;
   const structure::TransformationSet* transformations = nullptr;
   structure::SearchMethod method = structure::SearchMethod::matching;
+  const design::Verdict* verdict = nullptr;  ///< printed first when given
+  std::string units;                         ///< the model's length unit, when it names one
 };
 
 /// Dense result matrices are printed up to this many bodies; larger models list the

@@ -27,6 +27,7 @@ struct Pair {
 /// generalised Eq. 1, S_c - n_c = d (P - N_m).
 struct StructureModel {
   std::string name;
+  std::string units;  ///< the length unit the file names (`units:`), empty if none; carried into reports
   int dimension = 3;
   std::vector<std::string> body_names;  ///< one per body; body_names[0] is the frame
   std::vector<Pair> pairs;

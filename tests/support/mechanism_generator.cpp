@@ -1,4 +1,4 @@
-#include "kinestat/structure/mechanism_generator.hpp"
+#include "support/mechanism_generator.hpp"
 
 #include <algorithm>
 #include <numeric>

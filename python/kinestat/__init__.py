@@ -1,0 +1,424 @@
+"""kinestat: how free and how constrained is a mechanism, a compliant mechanism or a structure?
+
+Python interface to the C++ library (docs/python.md). Three model kinds, as in model files:
+
+- ``network``: Davies' coupling networks (seed 000) -> :class:`NetworkResult`
+- ``framework``: exact-constraint analysis of frameworks and flexures (seed 002) -> :class:`FrameworkResult`
+- ``structure``: structural groups (Assur groups, seed 004) -> :class:`StructureResult`
+
+>>> import kinestat
+>>> result = kinestat.analyze("examples/davies-2-circuit.yaml")
+>>> result.FN, result.CN
+(3, 2)
+
+Models can also be built from numpy arrays (:class:`Framework`, :class:`Network`); they are
+checked by the same reader as model files, so the same errors, with the same positions, apply.
+Bad input raises :class:`InputError` with ``file``, ``line``, ``column`` and ``problem``.
+"""
+
+import json
+import math
+
+import numpy as np
+
+from . import _core
+from ._core import InputError
+
+__all__ = [
+    "InputError", "analyze", "analyse", "structural_groups", "Framework", "Network",
+    "NetworkResult", "FrameworkResult", "StructureResult", "html_built_in",
+]
+
+
+def html_built_in():
+    """True when the HTML report viewer (three.js) was embedded at build time."""
+    return _core.html_built_in()
+
+
+class _Result:
+    """What every result has: the kind, the JSON report as a dict, the HTML report, SVG drawings."""
+
+    def __init__(self, analysed):
+        self._analysed = analysed
+        self._dict = None
+
+    @property
+    def kind(self):
+        """The model's kind: "network", "framework" or "structure"."""
+        return self._analysed.kind
+
+    @property
+    def path(self):
+        """The model file (or the name given to a model built in code)."""
+        return self._analysed.path
+
+    def to_dict(self):
+        """The command's JSON report (``kinestat analyze --json``, ``kinestat structure --json``)
+        as Python data, key for key."""
+        if self._dict is None:
+            self._dict = json.loads(self._analysed.json())
+        return json.loads(json.dumps(self._dict))  # a copy the caller may change
+
+    def to_json(self):
+        """The JSON report text, byte for byte as the command writes it."""
+        return self._analysed.json()
+
+    def html(self):
+        """The self-contained interactive HTML report (``kinestat report``). Raises RuntimeError
+        when this kinestat was built without the viewer (npm was not reachable)."""
+        text = self._analysed.html()
+        if not text:
+            raise RuntimeError("HTML output is not built in: kinestat was built without npm")
+        return text
+
+    def _repr_html_(self):
+        # Jupyter shows the interactive report inline; without the viewer, the text repr.
+        text = self._analysed.html()
+        return text or None
+
+    def svg(self, what=None, mode=1, stress=1):
+        """An SVG drawing as ``kinestat draw`` makes it: ``what`` is "graph" (coupling, motion and
+        action graphs), "mechanism" (the model with kinematic mode ``mode`` and self-stress
+        ``stress``, 1-based, 0 for none) or "structure" (the structural diagram). Default: the
+        mechanism for frameworks, the graph otherwise."""
+        if what is None:
+            what = "mechanism" if self.kind == "framework" else "graph"
+        return self._analysed.svg(what, mode, stress)
+
+    def __repr__(self):
+        return f"<kinestat.{type(self).__name__} of {self.path!r}>"
+
+
+class NetworkResult(_Result):
+    """Nett freedom and constraint of a coupling network (seed 000). Matrices are numpy arrays;
+    screws are in the user's frame, d coordinates per coupling."""
+
+    def __init__(self, analysed):
+        super().__init__(analysed)
+        counts = analysed.network_counts()
+        #: dimension of the screw space (6 spatial, 3 planar), bodies, couplings, circuits, cutsets
+        self.d, self.n, self.e, self.l, self.k = (counts[key] for key in ("d", "n", "e", "l", "k"))
+        #: gross and nett degrees of freedom and of constraint, ranks of the unit matrices
+        self.F, self.C, self.m, self.a = (counts[key] for key in ("F", "C", "m", "a"))
+        self.FN, self.CN = counts["FN"], counts["CN"]
+        #: whether exact rational arithmetic was used
+        self.exact = counts["exact"]
+
+    def inf_flexes(self):
+        """Basis of the network's motions: F x FN, column j the magnitudes of all F coupling
+        freedoms (``motion_names``) when primary motion j is 1 and the others 0."""
+        return self._analysed.motion_basis()
+
+    def stresses(self):
+        """Basis of the internal actions (self-stress): C x CN, column j the magnitudes of all C
+        coupling constraints (``action_names``) when primary action j is 1."""
+        return self._analysed.action_basis()
+
+    def unit_motion_matrix(self):
+        """The network unit motion matrix [M̂N] (d l x F, eq. 5a); its rank is m."""
+        return self._analysed.unit_motion_matrix()
+
+    def unit_action_matrix(self):
+        """The network unit action matrix [ÂN] (d k x C, eq. 5b); its rank is a."""
+        return self._analysed.unit_action_matrix()
+
+    def circuit_matrix(self):
+        """The circuit matrix [B] (l x e, eq. 3a)."""
+        return self._analysed.circuit_matrix()
+
+    def cutset_matrix(self):
+        """The cutset matrix [Q] (k x e, eq. 3b)."""
+        return self._analysed.cutset_matrix()
+
+    @property
+    def motion_names(self):
+        """Names of the F motion magnitudes, e.g. "sa" (rows of ``inf_flexes()``)."""
+        return self._analysed.motion_names()
+
+    @property
+    def action_names(self):
+        """Names of the C action magnitudes, e.g. "Ub" (rows of ``stresses()``)."""
+        return self._analysed.action_names()
+
+    @property
+    def primary_motions(self):
+        """The FN primary motion variables (columns of ``inf_flexes()``)."""
+        return self._analysed.primary_motions()
+
+    @property
+    def primary_actions(self):
+        """The CN primary action variables (columns of ``stresses()``)."""
+        return self._analysed.primary_actions()
+
+    def rank_evidence(self):
+        """The evidence of the two rank decisions: {"motion": {...}, "action": {...}}."""
+        return {"motion": self._analysed.motion_rank(), "action": self._analysed.action_rank()}
+
+    def structural_groups(self):
+        """The network's structural groups (seed 004), as ``kinestat structure``."""
+        return structural_groups(self.path)
+
+
+class FrameworkResult(_Result):
+    """Exact-constraint analysis of a framework or flexure mechanism (seed 002). Vectors are
+    non-dimensional: translations divided by the characteristic length ``length``, rotations
+    in rad, deformations as in D(c)."""
+
+    def __init__(self, analysed):
+        super().__init__(analysed)
+        counts = analysed.framework_counts()
+        #: rank of D(c), its rows (fixed and independent deformations) and columns (dependent coordinates)
+        self.rank, self.rows, self.columns = counts["rank"], counts["rows"], counts["columns"]
+        #: kinematically indeterminate modes and statically indeterminate stress states
+        self.mechanisms, self.self_stresses = counts["mechanisms"], counts["self_stresses"]
+        #: characteristic length used to non-dimensionalise D(c)
+        self.length = counts["length"]
+
+    @property
+    def exactly_constrained(self):
+        return self.mechanisms == 0 and self.self_stresses == 0
+
+    def rigidity_matrix(self):
+        """D(c): rows deformations (``row_labels``), columns dependent coordinates
+        (``column_labels``), non-dimensional. Its null space holds ``inf_flexes()``, the null
+        space of its transpose ``stresses()``."""
+        return self._analysed.jacobian()
+
+    def singular_values(self):
+        """Singular values of the (element-length scaled) D(c), decreasing; the rank decision's evidence."""
+        return self._analysed.singular_values()
+
+    def inf_flexes(self):
+        """Kinematically indeterminate modes: columns x mechanisms, unit 2-norm (coordinate rates)."""
+        return self._analysed.modes()
+
+    def stresses(self):
+        """Statically indeterminate stress states: rows x self_stresses, unit 2-norm."""
+        return self._analysed.stress_states()
+
+    def rank_evidence(self):
+        """The rank decision: rank, threshold, smallest kept and largest dropped singular values."""
+        return self._analysed.rank_evidence()
+
+    @property
+    def row_labels(self):
+        return self._analysed.row_labels()
+
+    @property
+    def column_labels(self):
+        return self._analysed.column_labels()
+
+
+class StructureResult(_Result):
+    """Structural groups (Assur groups) of a mechanism, in order of formation (seed 004)."""
+
+    @property
+    def groups(self):
+        """One dict per group: number, bodies (names), Nm, nc, P, Sc, stage, after."""
+        return self._analysed.groups()
+
+    @property
+    def complete(self):
+        """True when every movable body belongs to a group."""
+        return self._analysed.complete()
+
+    def svg(self, what="structure", mode=1, stress=1):
+        return super().svg(what, mode, stress)
+
+
+_RESULTS = {"network": NetworkResult, "framework": FrameworkResult, "structure": StructureResult}
+
+
+def _source(model):
+    if isinstance(model, (Framework, Network)):
+        return model.name_for_errors, model.to_json()
+    return str(model), None
+
+
+def analyze(model, *, tolerance=None, arithmetic="auto", primary=None):
+    """Analyses a model file (path) or a :class:`Framework` / :class:`Network` built in code.
+
+    ``tolerance``: relative rank tolerance (as ``--tolerance``); ``arithmetic`` for networks:
+    "auto", "exact" or "float"; ``primary``: the networks' primary variables. A model of kind
+    structure gives its structural groups."""
+    path, text = _source(model)
+    analysed = _core.analyse(path, text, tolerance, arithmetic, list(primary or []))
+    if analysed.kind == "structure":
+        return structural_groups(model)
+    return _RESULTS[analysed.kind](analysed)
+
+
+analyse = analyze
+
+
+def structural_groups(model):
+    """Structural groups of a network or structure model (path or :class:`Network`), as
+    ``kinestat structure``: ``to_dict()`` equals its ``--json``."""
+    path, text = _source(model)
+    return StructureResult(_core.decompose(path, text))
+
+
+def _number(value):
+    # Integral values are written as integers, others as the shortest decimal that reads back
+    # as the same double: a model built in code and its file give the same exact numbers.
+    value = float(value)
+    if not math.isfinite(value):
+        raise ValueError(f"not a finite number: {value}")
+    return int(value) if value.is_integer() and abs(value) < 2**53 else value
+
+
+def _vector(row):
+    return [_number(x) for x in np.asarray(row, dtype=float).ravel()]
+
+
+class _Model:
+    """A model document built in code; analysed by the same reader as model files."""
+
+    name_for_errors = "<model>"
+
+    def to_dict(self):
+        raise NotImplementedError
+
+    def to_json(self):
+        """The model as a JSON model file (a valid ``kinestat: 1`` document)."""
+        return json.dumps(self.to_dict(), indent=1)
+
+    def analyze(self, **options):
+        return analyze(self, **options)
+
+    analyse = analyze
+
+
+class Framework(_Model):
+    """A framework (``kind: framework``) from numpy arrays.
+
+    nodes: (n, 2) or (n, 3) positions (planar or spatial); node_names: n names (default
+    "0", "1", ...); bars: (b, 2) node indices of trusses; beams: (k, 2) node indices of beams,
+    beam_z: (k, 3) the z axis of each spatial beam's cross-section; rigid_bodies: lists of
+    node indices (reference node first); supports: {node index or name: "fixed" | "pinned" |
+    list of coordinates such as ["x", "rz"]}; independent: the same for independent
+    coordinates; released: {element index: list of deformation names}.
+    Elements are numbered bars first, then beams, then rigid bodies."""
+
+    name_for_errors = "<framework>"
+
+    def __init__(self, nodes, bars=None, beams=None, beam_z=None, rigid_bodies=None, supports=None,
+                 independent=None, released=None, node_names=None, name=None):
+        self.nodes = np.atleast_2d(np.asarray(nodes, dtype=float))
+        if self.nodes.ndim != 2 or self.nodes.shape[1] not in (2, 3):
+            raise ValueError("nodes: an (n, 2) or (n, 3) array of positions")
+        self.node_names = [str(x) for x in (node_names if node_names is not None else range(len(self.nodes)))]
+        if len(self.node_names) != len(self.nodes):
+            raise ValueError("node_names: one name per node")
+        self.bars = np.zeros((0, 2), dtype=int) if bars is None else np.asarray(bars, dtype=int).reshape(-1, 2)
+        self.beams = np.zeros((0, 2), dtype=int) if beams is None else np.asarray(beams, dtype=int).reshape(-1, 2)
+        self.beam_z = None if beam_z is None else np.asarray(beam_z, dtype=float).reshape(-1, 3)
+        self.rigid_bodies = [list(map(int, body)) for body in (rigid_bodies or [])]
+        self.supports = dict(supports or {})
+        self.independent = dict(independent or {})
+        self.released = dict(released or {})
+        self.name = name
+
+    def _node(self, key):
+        if isinstance(key, (int, np.integer)):
+            return self.node_names[int(key)]
+        return str(key)
+
+    @staticmethod
+    def _coordinates(value):
+        return value if isinstance(value, str) else [str(x) for x in value]
+
+    def to_dict(self):
+        dimension = self.nodes.shape[1]
+        document = {"kinestat": 1, "kind": "framework"}
+        if self.name is not None:
+            document["name"] = self.name
+        document["dimension"] = dimension
+        document["nodes"] = {name: _vector(p) for name, p in zip(self.node_names, self.nodes)}
+        if self.supports:
+            document["supports"] = {self._node(k): self._coordinates(v) for k, v in self.supports.items()}
+        if self.independent:
+            document["independent"] = {self._node(k): self._coordinates(v) for k, v in self.independent.items()}
+        elements = [{"type": "truss", "nodes": [self._node(p), self._node(q)]} for p, q in self.bars]
+        for index, (p, q) in enumerate(self.beams):
+            beam = {"type": "beam", "nodes": [self._node(p), self._node(q)]}
+            if self.beam_z is not None:
+                beam["orientation"] = {"z": _vector(self.beam_z[index])}
+            elements.append(beam)
+        elements += [{"type": "rigid_body", "nodes": [self._node(i) for i in body]} for body in self.rigid_bodies]
+        for index, names in self.released.items():
+            elements[int(index)]["released"] = [str(x) for x in names]
+        document["elements"] = elements
+        return document
+
+
+class Network(_Model):
+    """A coupling network (``kind: network``) from numpy arrays.
+
+    types: e coupling type names ("revolute", "spherical", ...); between: (e, 2) body indices
+    into ``bodies`` (or names); points, axes, normals: (e, d') arrays, d' = 3 spatial or 2
+    planar, a row of NaN where the coupling type has no such key; pitches: e values (NaN where
+    unused); bodies: body names (default "1", "2", ...); coupling_names (default "A", "B", ...);
+    dimension: 6 (spatial) or 3 (planar); ground, chords, primary, inputs as in model files."""
+
+    name_for_errors = "<network>"
+
+    def __init__(self, types, between, points=None, axes=None, normals=None, pitches=None, bodies=None,
+                 coupling_names=None, dimension=6, ground=None, chords=None, primary=None, inputs=None, name=None):
+        self.types = [str(t) for t in types]
+        e = len(self.types)
+        self.between = np.asarray(between).reshape(e, 2)
+        if bodies is None:
+            count = int(np.max(self.between)) + 1 if e and np.issubdtype(self.between.dtype, np.integer) else 0
+            bodies = [str(i + 1) for i in range(count)]
+        self.bodies = [str(b) for b in bodies]
+        self.coupling_names = [str(c) for c in coupling_names] if coupling_names is not None else \
+            [_letters(i) for i in range(e)]
+        self.geometry = {}
+        for key, array in (("point", points), ("axis", axes), ("normal", normals)):
+            if array is not None:
+                self.geometry[key] = np.asarray(array, dtype=float).reshape(e, -1)
+        self.pitches = None if pitches is None else np.asarray(pitches, dtype=float).reshape(e)
+        self.dimension, self.ground, self.name = dimension, ground, name
+        self.chords, self.primary, self.inputs = chords, primary, inputs
+
+    def _body(self, key):
+        if isinstance(key, (int, np.integer)):
+            return self.bodies[int(key)]
+        return str(key)
+
+    def to_dict(self):
+        document = {"kinestat": 1, "kind": "network"}
+        if self.name is not None:
+            document["name"] = self.name
+        document["dimension"] = "planar" if self.dimension in (3, "planar") else self.dimension
+        if self.ground is not None:
+            document["ground"] = self._body(self.ground)
+        if self.bodies:
+            document["bodies"] = list(self.bodies)
+        couplings = []
+        for i, coupling_type in enumerate(self.types):
+            coupling = {"name": self.coupling_names[i], "type": coupling_type,
+                        "between": [self._body(b) for b in self.between[i]]}
+            for key, array in self.geometry.items():
+                if not np.all(np.isnan(array[i])):
+                    coupling[key] = _vector(array[i])
+            if self.pitches is not None and not np.isnan(self.pitches[i]):
+                coupling["pitch"] = _number(self.pitches[i])
+            couplings.append(coupling)
+        document["couplings"] = couplings
+        for key in ("chords", "primary", "inputs"):
+            value = getattr(self, key)
+            if value:
+                document[key] = [str(x) for x in value]
+        return document
+
+
+def _letters(index):
+    # Coupling names as in the seed's figures: A, B, ..., Z, AA, AB, ...
+    name = ""
+    index += 1
+    while index:
+        index, remainder = divmod(index - 1, 26)
+        name = chr(ord("A") + remainder) + name
+    return name

@@ -1,0 +1,289 @@
+// kinestat._core: the C++ library seen from Python. Thin: it reads models with io/, runs the
+// pure analyses and hands back their numbers (Eigen -> numpy) and the report layer's texts
+// (the JSON report is the command's own, so `to_dict()` equals `--json` by construction).
+// The Python classes users meet are in python/kinestat/__init__.py.
+
+#include <pybind11/eigen.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "kinestat/framework/framework_analysis.hpp"
+#include "kinestat/framework/framework_jacobian.hpp"
+#include "kinestat/io/model_file.hpp"
+#include "kinestat/io/network_structure.hpp"
+#include "kinestat/network/analyse_network.hpp"
+#include "kinestat/report/framework_report.hpp"
+#include "kinestat/report/html_writer.hpp"
+#include "kinestat/report/json_text.hpp"
+#include "kinestat/report/network_report.hpp"
+#include "kinestat/report/scene.hpp"
+#include "kinestat/report/structure_report.hpp"
+#include "kinestat/report/svg_writer.hpp"
+#include "kinestat/structure/decomposition.hpp"
+#include "kinestat/structure/transformations.hpp"
+
+namespace py = pybind11;
+using namespace kinestat;
+
+namespace {
+
+// What `kinestat structure` does by default: the polynomial search and up to this many other
+// placements of the inputs.
+constexpr std::uint64_t kTransformationLimit = 1000;
+
+/// A model file read, and its analysis once run. Results keep their model alive.
+struct Analysed {
+  io::ModelFile file;
+  std::optional<network::NetworkResult> network;
+  std::optional<framework::FrameworkAnalysis> framework;
+  std::optional<structure::StructureModel> structure_model;  ///< networks (from the couplings) and structures
+  std::optional<structure::Decomposition> decomposition;
+  std::optional<structure::TransformationSet> transformations;
+
+  report::Scene scene() const {
+    if (network) return report::network_scene(file.network->model, *network);
+    if (framework) return report::framework_scene(*file.framework, *framework);
+    return report::structure_scene(*structure_model, *decomposition);
+  }
+};
+
+std::shared_ptr<Analysed> read(const std::string& path, const std::optional<std::string>& text) {
+  auto analysed = std::make_shared<Analysed>();
+  analysed->file = text ? io::parse_model_text(path, *text) : io::read_model_file(path);
+  return analysed;
+}
+
+std::shared_ptr<Analysed> analyse(const std::string& path, const std::optional<std::string>& text,
+                                  std::optional<double> tolerance, const std::string& arithmetic,
+                                  const std::vector<std::string>& primary) {
+  std::shared_ptr<Analysed> analysed = read(path, text);
+  const io::ModelFile& file = analysed->file;
+  if (file.network) {
+    network::AnalysisOptions options;
+    options.tolerance.relative = tolerance;
+    if (arithmetic == "exact") options.arithmetic = network::Arithmetic::exact;
+    else if (arithmetic == "float") options.arithmetic = network::Arithmetic::floating;
+    else if (arithmetic != "auto") throw py::value_error("arithmetic is 'auto', 'exact' or 'float'");
+    if (!primary.empty()) options.primary = primary;
+    analysed->network = io::analyse_network_file(*file.network, file.path, options);
+  } else if (file.framework) {
+    framework::AnalysisOptions options;
+    options.tolerance.relative = tolerance;
+    analysed->framework = framework::analyse_framework(*file.framework, options);
+  } else {
+    analysed->structure_model = *file.structure;
+    analysed->decomposition = structure::decompose(*file.structure);
+  }
+  return analysed;
+}
+
+/// The structural groups of a network or structure model (seed 004), as `kinestat structure`.
+std::shared_ptr<Analysed> decompose(const std::string& path, const std::optional<std::string>& text) {
+  std::shared_ptr<Analysed> analysed = read(path, text);
+  const io::ModelFile& file = analysed->file;
+  if (file.framework) {
+    throw io::InputError({file.path, 1, 1}, "structural groups are found for models of kind 'structure' or 'network', "
+                                            "not 'framework'");
+  }
+  analysed->structure_model = file.network ? io::structure_of_network(*file.network, file.path) : *file.structure;
+  analysed->decomposition = structure::decompose(*analysed->structure_model);
+  analysed->transformations = structure::structural_transformations(*analysed->structure_model, kTransformationLimit);
+  return analysed;
+}
+
+std::string json_report(const Analysed& a) {
+  if (a.network) return report::json_text(report::network_json(a.file.network->model, *a.network, {}));
+  if (a.framework) return report::json_text(report::framework_report_json(*a.file.framework, *a.framework));
+  if (!a.decomposition) throw py::value_error("the model has not been analysed");
+  const report::StructureReport structure_report{*a.structure_model, *a.decomposition,
+                                                 a.transformations ? &*a.transformations : nullptr,
+                                                 structure::SearchMethod::matching};
+  return report::structure_json(structure_report);
+}
+
+/// The self-contained HTML report, as `kinestat report` writes it; empty without the viewer.
+std::string html_report(const Analysed& a) {
+  if (!report::html_report_built_in()) return {};
+  const report::Scene scene = a.scene();
+  if (a.network && !scene.large) return report::html_report(scene, report::graph_svg(scene), "Coupling, motion and action graphs");
+  if (!a.network && a.decomposition && !scene.large)
+    return report::html_report(scene, report::structure_svg(*a.structure_model, *a.decomposition), "Structural diagram");
+  return report::html_report(scene);
+}
+
+/// The SVG pictures of `kinestat draw`: "graph", "mechanism" (with a mode and a self-stress,
+/// 1-based, 0 for none) or "structure".
+std::string svg(const Analysed& a, const std::string& what, int mode, int stress) {
+  if (what == "structure") {
+    if (!a.structure_model) throw py::value_error("only networks and structures have a structural diagram");
+    return report::structure_svg(*a.structure_model, a.decomposition ? *a.decomposition : structure::decompose(*a.structure_model));
+  }
+  const report::Scene scene = a.scene();
+  if (what == "graph") {
+    if (a.framework) throw py::value_error("a framework has no coupling graph; draw it with what='mechanism'");
+    return report::graph_svg(scene);
+  }
+  if (what == "mechanism") {
+    if (!a.network && !a.framework) throw py::value_error("a model of kind 'structure' has no geometry to draw");
+    return report::mechanism_svg(scene, {mode, stress});
+  }
+  throw py::value_error("what is 'graph', 'mechanism' or 'structure'");
+}
+
+const network::NetworkResult& network_of(const Analysed& a) {
+  if (!a.network) throw py::value_error("not a coupling-network result");
+  return *a.network;
+}
+const framework::FrameworkAnalysis& framework_of(const Analysed& a) {
+  if (!a.framework) throw py::value_error("not a framework result");
+  return *a.framework;
+}
+
+py::dict rank_evidence(const linalg::RankDecision& d) {
+  py::dict evidence;
+  evidence["rank"] = d.rank;
+  evidence["exact"] = d.exact;
+  evidence["largest"] = d.largest;
+  evidence["threshold"] = d.threshold;
+  evidence["smallest_kept"] = d.smallest_kept;
+  evidence["largest_dropped"] = d.largest_dropped;
+  evidence["rounding_level"] = d.rounding_level;
+  return evidence;
+}
+
+/// Columns: one unit-norm vector per mode (or stress state), as in the report.
+template <class Items, class Get>
+Eigen::MatrixXd columns(const Items& items, Eigen::Index rows, Get get) {
+  Eigen::MatrixXd matrix(rows, static_cast<Eigen::Index>(items.size()));
+  for (std::size_t i = 0; i < items.size(); ++i) matrix.col(static_cast<Eigen::Index>(i)) = get(items[i]);
+  return matrix;
+}
+
+std::vector<std::string> magnitude_names(const std::vector<network::Magnitude>& magnitudes, const std::vector<int>& pick) {
+  std::vector<std::string> names;
+  for (int i : pick) names.push_back(magnitudes[static_cast<std::size_t>(i)].name);
+  return names;
+}
+
+std::vector<std::string> all_names(const std::vector<network::Magnitude>& magnitudes) {
+  std::vector<std::string> names;
+  for (const auto& magnitude : magnitudes) names.push_back(magnitude.name);
+  return names;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "kinestat's C++ library; use the `kinestat` package";
+
+  // Bad input: a Python exception that carries the file, line and column of the problem.
+  static py::exception<io::InputError> input_error(m, "InputError", PyExc_ValueError);
+  py::register_exception_translator([](std::exception_ptr pointer) {
+    try {
+      if (pointer) std::rethrow_exception(pointer);
+    } catch (const io::InputError& error) {
+      const auto type = py::reinterpret_borrow<py::object>(input_error.ptr());
+      py::object instance = type(error.what());
+      instance.attr("file") = error.where().file;
+      instance.attr("line") = error.where().line;
+      instance.attr("column") = error.where().column;
+      instance.attr("problem") = error.problem();
+      PyErr_SetObject(input_error.ptr(), instance.ptr());
+    }
+  });
+
+  py::class_<Analysed, std::shared_ptr<Analysed>>(m, "Analysed")
+      .def_property_readonly("kind", [](const Analysed& a) { return std::string(io::kind_name(a.file.kind)); })
+      .def_property_readonly("path", [](const Analysed& a) { return a.file.path; })
+      .def("json", &json_report, "The JSON report of `kinestat analyze --json` (or `structure --json`)")
+      .def("html", &html_report, "The self-contained HTML report; empty when the viewer is not built in")
+      .def("svg", &svg, py::arg("what"), py::arg("mode") = 1, py::arg("stress") = 1)
+      // Coupling networks (seed 000).
+      .def("network_counts", [](const Analysed& a) {
+        const auto& r = network_of(a);
+        py::dict counts;
+        counts["d"] = r.d, counts["n"] = r.bodies, counts["e"] = r.e, counts["l"] = r.l, counts["k"] = r.k;
+        counts["F"] = r.F, counts["C"] = r.C, counts["m"] = r.m, counts["a"] = r.a, counts["FN"] = r.FN, counts["CN"] = r.CN;
+        counts["exact"] = r.exact;
+        return counts;
+      })
+      .def("circuit_matrix", [](const Analysed& a) { return Eigen::MatrixXi(network_of(a).B); })
+      .def("cutset_matrix", [](const Analysed& a) { return Eigen::MatrixXi(network_of(a).Q); })
+      .def("unit_motion_matrix", [](const Analysed& a) { return network_of(a).MN.to_double(); })
+      .def("unit_action_matrix", [](const Analysed& a) { return network_of(a).AN.to_double(); })
+      .def("motion_basis", [](const Analysed& a) { return network_of(a).motion_magnitudes.values; })
+      .def("action_basis", [](const Analysed& a) { return network_of(a).action_magnitudes.values; })
+      .def("motion_names", [](const Analysed& a) { return all_names(network_of(a).motions); })
+      .def("action_names", [](const Analysed& a) { return all_names(network_of(a).actions); })
+      .def("primary_motions", [](const Analysed& a) { return magnitude_names(network_of(a).motions, network_of(a).primary_motion); })
+      .def("primary_actions", [](const Analysed& a) { return magnitude_names(network_of(a).actions, network_of(a).primary_action); })
+      .def("motion_rank", [](const Analysed& a) { return rank_evidence(network_of(a).circulation.solution.rank); })
+      .def("action_rank", [](const Analysed& a) { return rank_evidence(network_of(a).cutset_law.solution.rank); })
+      // Frameworks (seed 002).
+      .def("framework_counts", [](const Analysed& a) {
+        const auto& r = framework_of(a);
+        py::dict counts;
+        counts["rows"] = r.m, counts["columns"] = r.n, counts["rank"] = r.rank;
+        counts["mechanisms"] = r.mechanisms, counts["self_stresses"] = r.self_stresses;
+        counts["length"] = r.length, counts["vectors"] = r.vectors;
+        return counts;
+      })
+      .def("singular_values", [](const Analysed& a) { return framework_of(a).singular_values; })
+      .def("rank_evidence", [](const Analysed& a) { return rank_evidence(framework_of(a).decision); })
+      .def("modes", [](const Analysed& a) {
+        const auto& r = framework_of(a);
+        return columns(r.modes, r.n, [](const framework::KinematicMode& mode) { return mode.velocities; });
+      })
+      .def("stress_states", [](const Analysed& a) {
+        const auto& r = framework_of(a);
+        return columns(r.stresses, r.m, [](const framework::StressState& state) { return state.resultants; });
+      })
+      .def("jacobian", [](const Analysed& a) {
+        // D(c) as the analysis decided its rank on it: non-dimensional (lengths / the
+        // characteristic length), before the row and column scaling.
+        const auto& r = framework_of(a);
+        const framework::FrameworkModel& model = *a.file.framework;
+        const Eigen::SparseMatrix<double> d = framework::dependent_jacobian(
+            model, r.indexing, r.partition, framework::deformation_derivative(model, r.indexing), r.length);
+        return Eigen::MatrixXd(d);
+      })
+      .def("row_labels", [](const Analysed& a) {
+        std::vector<std::string> labels;
+        for (Eigen::Index i = 0; i < framework_of(a).m; ++i)
+          labels.push_back(report::framework_row_label(*a.file.framework, *a.framework, i));
+        return labels;
+      })
+      .def("column_labels", [](const Analysed& a) {
+        std::vector<std::string> labels;
+        for (Eigen::Index j = 0; j < framework_of(a).n; ++j)
+          labels.push_back(report::framework_column_label(*a.file.framework, *a.framework, j));
+        return labels;
+      })
+      // Structural groups (seed 004).
+      .def("groups", [](const Analysed& a) {
+        if (!a.decomposition) throw py::value_error("no structural decomposition");
+        py::list groups;
+        for (const auto& g : a.decomposition->groups) {
+          py::dict group;
+          std::vector<std::string> names;
+          for (int body : g.bodies) names.push_back(structure::body_label(*a.structure_model, body));
+          group["number"] = g.number, group["bodies"] = names, group["Nm"] = g.Nm, group["nc"] = g.nc;
+          group["P"] = g.P, group["Sc"] = g.Sc, group["stage"] = g.stage, group["after"] = g.after;
+          groups.append(group);
+        }
+        return groups;
+      })
+      .def("complete", [](const Analysed& a) { return a.decomposition && a.decomposition->complete(); });
+
+  m.def("analyse", &analyse, py::arg("path"), py::arg("text") = std::nullopt, py::arg("tolerance") = std::nullopt,
+        py::arg("arithmetic") = "auto", py::arg("primary") = std::vector<std::string>{},
+        "Reads a model file (or `text` named `path`) and runs the analysis of its kind");
+  m.def("decompose", &decompose, py::arg("path"), py::arg("text") = std::nullopt,
+        "Structural groups of a network or structure model, as `kinestat structure`");
+  m.def("html_built_in", &report::html_report_built_in);
+}

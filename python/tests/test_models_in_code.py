@@ -1,0 +1,87 @@
+"""Models built from numpy arrays give the results of their model files; errors carry positions."""
+
+import numpy as np
+import pytest
+
+import kinestat
+
+
+def test_braced_square_from_arrays_equals_its_file(examples):
+    square = kinestat.Framework(
+        nodes=np.array([[0, 0], [1, 0], [1, 1], [0, 1]]),
+        node_names=["A", "B", "C", "D"],
+        bars=np.array([[0, 1], [1, 2], [2, 3], [3, 0], [0, 2], [1, 3]]),
+        supports={0: "fixed", "B": ["y"]},
+        name="braced square")
+    result = square.analyze()
+    assert (result.mechanisms, result.self_stresses) == (0, 1)  # Maxwell, as in the file's comment
+    assert result.to_dict() == kinestat.analyze(examples / "braced-square.yaml").to_dict()
+
+
+def test_unbraced_square_is_a_mechanism():
+    # Without diagonals: 4 bars, 8 - 3 = 5 coordinates, rank 4: one mechanism (the shear of the square).
+    square = kinestat.Framework(nodes=[[0, 0], [1, 0], [1, 1], [0, 1]],
+                                bars=[[0, 1], [1, 2], [2, 3], [3, 0]], supports={0: "fixed", 1: ["y"]})
+    result = kinestat.analyze(square)
+    assert (result.mechanisms, result.self_stresses) == (1, 0)
+    flex = result.inf_flexes()[:, 0]
+    assert abs(result.rigidity_matrix() @ flex).max() < 1e-12
+    assert result.column_labels and len(result.column_labels) == 5
+
+
+def test_four_bar_from_arrays_equals_its_file(examples):
+    # examples/four-bar-planar.yaml: Grübler 3(4 - 1 - 4) + 4 = 1, so FN = 1, CN = 0.
+    four_bar = kinestat.Network(
+        types=["revolute"] * 4,
+        bodies=["ground", "crank", "coupler", "rocker"],
+        between=np.array([[0, 1], [1, 2], [2, 3], [3, 0]]),
+        points=np.array([[0, 0], [1, 2], [4, 3], [5, 0]]),
+        dimension="planar", ground="ground", name="Planar four-bar linkage")
+    result = four_bar.analyze()
+    assert (result.FN, result.CN) == (1, 0)
+    expected = kinestat.analyze(examples / "four-bar-planar.yaml").to_dict()
+    assert result.to_dict() == expected
+
+
+def test_davies_network_from_arrays_equals_its_file(examples):
+    nan = np.nan
+    network = kinestat.Network(
+        types=["spherical", "spherical", "planar", "cylindrical", "cylindrical"],
+        bodies=["1", "2", "3", "4"],
+        between=np.array([[2, 3], [1, 3], [0, 3], [0, 1], [0, 2]]),
+        points=np.array([[0, 0, 0], [0, 0, 1], [nan] * 3, [1, 0, 0], [0, 0, 0]]),
+        axes=np.array([[nan] * 3, [nan] * 3, [nan] * 3, [0, 1, 0], [0, 1, 0]]),
+        normals=np.array([[nan] * 3, [nan] * 3, [0, 0, 1], [nan] * 3, [nan] * 3]),
+        dimension=6, ground=0, chords=["B", "E"], primary=["sa", "ta", "vc", "Ub", "We"],
+        name="Davies 2-circuit network")
+    result = network.analyze()
+    assert (result.FN, result.CN) == (3, 2)  # seed 000
+    assert result.to_dict() == kinestat.analyze(examples / "davies-2-circuit.yaml").to_dict()
+
+
+def test_errors_carry_file_line_and_column(tmp_path):
+    model = tmp_path / "bad.yaml"
+    model.write_text("kinestat: 1\nkind: framework\nnodes: {A: [0, 0, 0], B: [1, 0, 0]}\nelements:\n  - {type: trus, nodes: [A, B]}\n")
+    with pytest.raises(kinestat.InputError) as raised:
+        kinestat.analyze(model)
+    error = raised.value
+    assert error.file == str(model)
+    assert (error.line, error.column) == (5, 12)  # the value of `type`: line 5, column 12 (counted by hand)
+    assert "trus" in error.problem
+    assert str(error).startswith(f"{model}:5:12: error:")
+    assert isinstance(error, ValueError)
+
+
+def test_missing_file_is_an_input_error():
+    with pytest.raises(kinestat.InputError) as raised:
+        kinestat.analyze("/nonexistent-model.yaml")
+    assert raised.value.file == "/nonexistent-model.yaml"
+
+
+def test_errors_in_models_built_in_code_name_the_item():
+    network = kinestat.Network(types=["revolute", "hinge"], between=[[0, 1], [1, 0]],
+                               points=[[0, 0, 0], [1, 0, 0]], axes=[[0, 0, 1], [0, 0, 1]])
+    with pytest.raises(kinestat.InputError) as raised:
+        network.analyze()
+    assert raised.value.file == "<network>"
+    assert raised.value.line > 0 and "hinge" in raised.value.problem

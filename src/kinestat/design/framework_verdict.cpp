@@ -1,0 +1,121 @@
+#include "kinestat/design/framework_verdict.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <map>
+
+namespace kinestat::design {
+
+namespace {
+
+using framework::FrameworkAnalysis;
+using framework::FrameworkModel;
+
+// Shares below this (of a unit-norm mode or stress state) are rounding, not participation.
+constexpr double kShareZero = 1e-12;
+
+void rank_participants(std::vector<Participant>& list) {
+  std::stable_sort(list.begin(), list.end(),
+                   [](const Participant& a, const Participant& b) { return a.participation > b.participation; });
+}
+
+// The largest share each part has in any of the states, ranked.
+std::vector<Participant> strongest(const std::vector<VerdictState>& states, const std::string& kind) {
+  std::map<std::string, Participant> best;
+  std::vector<std::string> order;
+  for (const auto& state : states) {
+    if (state.kind != kind) continue;
+    for (const auto& p : state.participants) {
+      auto [it, inserted] = best.emplace(p.name, p);
+      if (inserted) order.push_back(p.name);
+      else if (p.participation > it->second.participation) it->second = p;
+    }
+  }
+  std::vector<Participant> list;
+  for (const auto& name : order) list.push_back(best[name]);
+  rank_participants(list);
+  return list;
+}
+
+std::string counted(Eigen::Index n, const char* one, const char* many) { return fmt::format("{} {}", n, n == 1 ? one : many); }
+
+}  // namespace
+
+std::string framework_row_name(const FrameworkModel& model, const FrameworkAnalysis& analysis, Eigen::Index row) {
+  const auto& d = analysis.indexing.deformations[static_cast<std::size_t>(analysis.rows[static_cast<std::size_t>(row)])];
+  const auto& element = model.elements[d.element];
+  return element.name + "." + framework::deformation_names(model, element)[d.deformation];
+}
+
+std::string framework_column_name(const FrameworkModel& model, const FrameworkAnalysis& analysis, Eigen::Index column) {
+  const auto& c = analysis.indexing.coordinates[static_cast<std::size_t>(
+      analysis.partition.dependent_coordinates[static_cast<std::size_t>(column)])];
+  return model.nodes[c.node].name + "." + framework::kSlotNames[static_cast<std::size_t>(c.slot)];
+}
+
+Verdict framework_verdict(const FrameworkModel& model, const FrameworkAnalysis& a, const framework::AnalysisOptions& options) {
+  Verdict v;
+  v.extra_motions = static_cast<int>(a.mechanisms);
+  v.redundant_constraints = static_cast<int>(a.self_stresses);
+  v.exactly_constrained = a.exactly_constrained();
+  v.intended_motions = static_cast<int>(a.count.declared_dof());
+  v.intended_basis = "declared independent coordinates and deformations ('independent:')";
+  v.summary = summary_sentence(v.extra_motions, v.redundant_constraints, v.intended_motions);
+
+  for (std::size_t k = 0; k < a.modes.size(); ++k) {
+    VerdictState state{"extra motion", fmt::format("kinematically indeterminate mode {}", k + 1), {}};
+    const Eigen::VectorXd& velocity = a.modes[k].velocities;
+    for (Eigen::Index col : a.modes[k].moving) {
+      const double share = velocity(col) * velocity(col) / std::max(velocity.squaredNorm(), 1e-300);
+      if (share > kShareZero)
+        state.participants.push_back({"coordinate", framework_column_name(model, a, col), share,
+                                      velocity(col) > 0 ? "moves +" : "moves -"});
+    }
+    rank_participants(state.participants);
+    v.states.push_back(std::move(state));
+  }
+  for (std::size_t k = 0; k < a.stresses.size(); ++k) {
+    VerdictState state{"self-stress", fmt::format("statically indeterminate stress state {}", k + 1), {}};
+    const Eigen::VectorXd& stress = a.stresses[k].resultants;
+    for (Eigen::Index row = 0; row < stress.size(); ++row) {
+      const double share = stress(row) * stress(row) / std::max(stress.squaredNorm(), 1e-300);
+      if (share > kShareZero)
+        state.participants.push_back({"deformation", framework_row_name(model, a, row), share,
+                                      stress(row) > 0 ? "positive resultant" : "negative resultant"});
+    }
+    rank_participants(state.participants);
+    v.states.push_back(std::move(state));
+  }
+  v.motion_participants = strongest(v.states, "extra motion");
+  v.constraint_participants = strongest(v.states, "self-stress");
+
+  if (v.exactly_constrained) {
+    v.changes_verified = true;
+    v.becomes = "unchanged: already exactly constrained";
+    return v;
+  }
+  if (!a.vectors) {
+    v.note = "the model is too large for the dense SVD: no modes, stress states or proposal were computed";
+    return v;
+  }
+  for (Eigen::Index row : a.releases)
+    v.changes.push_back({"release", "deformation", framework_row_name(model, a, row), "released",
+                         "removes a redundant constraint (a state of self-stress)", "fixed", {}});
+  for (Eigen::Index col : a.constrain)
+    v.changes.push_back({"constrain", "coordinate", framework_column_name(model, a, col), "independent",
+                         "removes an extra motion: fix this coordinate or drive it as an input", "dependent", {}});
+
+  // Verified by re-analysis of the changed copy, never assumed.
+  const FrameworkModel changed = framework::apply_proposal(model, a);
+  framework::AnalysisOptions counts_only = options;
+  counts_only.vectors = false;
+  const FrameworkAnalysis after = framework::analyse_framework(changed, counts_only);
+  v.changes_verified = after.exactly_constrained();
+  v.becomes = fmt::format("{}: D(c) {} x {}, rank {}; {} declared", after.exactly_constrained() ? "exactly constrained" : "still not exactly constrained",
+                          after.m, after.n, after.rank,
+                          counted(after.count.declared_dof(), "degree of freedom", "degrees of freedom"));
+  return v;
+}
+
+}  // namespace kinestat::design

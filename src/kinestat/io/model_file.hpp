@@ -1,0 +1,45 @@
+#pragma once
+// Reads a model file of any kind (network, framework, structure; YAML or JSON) for programs
+// that use kinestat as a library. The YAML parser stays inside the library: this header is
+// the public way in, the per-kind readers (io/*_reader.hpp) are internal.
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "kinestat/framework/framework_model.hpp"
+#include "kinestat/io/input_error.hpp"
+#include "kinestat/io/loaded_network.hpp"
+#include "kinestat/structure/structure_model.hpp"
+
+namespace kinestat::io {
+
+/// The `kind:` of a model file.
+enum class ModelKind { network, framework, structure };
+
+/// The spelling of `kind` in model files and reports: "network", "framework" or "structure".
+std::string_view kind_name(ModelKind kind);
+
+/// A model file read and checked. Exactly one of `network`, `framework`, `structure` is set:
+/// the one named by `kind`. Lengths are in the file's units, positions in the file's frame.
+struct ModelFile {
+  std::string path;
+  ModelKind kind = ModelKind::network;
+  std::optional<LoadedNetwork> network;
+  std::optional<framework::FrameworkModel> framework;
+  std::optional<structure::StructureModel> structure;
+};
+
+/// Reads the model file at `path`. Throws InputError naming file, line and column for
+/// anything that is not a valid model (the message the command prints before exiting 2).
+ModelFile read_model_file(const std::string& path);
+
+/// Reads a model from `text`; `path` names it in error messages.
+ModelFile parse_model_text(const std::string& path, const std::string& text);
+
+/// Analyses a network read from a file; a problem the analysis finds (an unknown primary
+/// variable, a chord that closes no circuit, ...) becomes an InputError at its place in `path`.
+network::NetworkResult analyse_network_file(const LoadedNetwork& loaded, const std::string& path,
+                                            const network::AnalysisOptions& options = {});
+
+}  // namespace kinestat::io

@@ -1,0 +1,124 @@
+#include "kinestat/report/verdict_report.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace kinestat::report {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// Participations to four digits: enough to rank by eye, stable against last-bit noise.
+double share(double x) { return std::round(x * 1e4) / 1e4; }
+
+// Participants listed per state in the text report; JSON lists them all.
+constexpr std::size_t kTextParticipants = 6;
+
+Json participant_json(const design::Participant& p) {
+  Json j;
+  j["kind"] = p.kind;
+  j["name"] = p.name;
+  j["participation"] = share(p.participation);
+  if (!p.detail.empty()) j["detail"] = p.detail;
+  return j;
+}
+
+Json participants_json(const std::vector<design::Participant>& list) {
+  Json out = Json::array();
+  for (const auto& p : list) out.push_back(participant_json(p));
+  return out;
+}
+
+std::string vector_text(const std::vector<double>& v) {
+  std::vector<std::string> parts;
+  for (double x : v) {
+    std::string s = fmt::format("{:.6g}", std::abs(x) < 1e-12 ? 0.0 : x);
+    parts.push_back(s == "-0" ? "0" : s);
+  }
+  return fmt::format("({})", fmt::join(parts, ", "));
+}
+
+std::string change_text(const design::DesignChange& c) {
+  std::string text = fmt::format("{} {} {}", c.action, c.target_kind, c.target);
+  if (!c.from.empty() && c.becomes != "removed") text += fmt::format(": {} -> {}", c.from, c.becomes);
+  else text += fmt::format(" -> {}", c.becomes);
+  std::vector<std::string> geometry;
+  for (const auto& [key, value] : c.geometry)
+    if (key != "point") geometry.push_back(fmt::format("{} {}", key, vector_text(value)));
+  if (!geometry.empty()) text += fmt::format(" ({})", fmt::join(geometry, ", "));
+  if (!c.reason.empty()) text += ": " + c.reason;
+  return text;
+}
+
+}  // namespace
+
+Json verdict_json(const design::Verdict& v) {
+  Json j;
+  j["exactly_constrained"] = v.exactly_constrained;
+  j["extra_motions"] = v.extra_motions;
+  j["redundant_constraints"] = v.redundant_constraints;
+  j["summary"] = v.summary;
+  j["intended_motions"] = v.intended_motions;
+  j["intended_from"] = v.intended_basis;
+  j["where"] = {{"extra_motions", participants_json(v.motion_participants)},
+                {"redundant_constraints", participants_json(v.constraint_participants)}};
+  Json states = Json::array();
+  for (const auto& s : v.states)
+    states.push_back({{"kind", s.kind}, {"description", s.description}, {"participants", participants_json(s.participants)}});
+  j["states"] = states;
+  Json changes = Json::array();
+  for (const auto& c : v.changes) {
+    Json change;
+    change["action"] = c.action;
+    change["target_kind"] = c.target_kind;
+    change["target"] = c.target;
+    if (!c.from.empty()) change["from"] = c.from;
+    change["becomes"] = c.becomes;
+    if (!c.geometry.empty()) {
+      Json geometry = Json::object();
+      for (const auto& [key, value] : c.geometry) geometry[key] = value;
+      change["geometry"] = geometry;
+    }
+    change["reason"] = c.reason;
+    changes.push_back(change);
+  }
+  j["changes"] = changes;
+  j["changes_verified"] = v.changes_verified;
+  j["becomes"] = v.becomes;
+  if (!v.note.empty()) j["note"] = v.note;
+  return j;
+}
+
+Json lead_with_verdict(const design::Verdict& verdict, const Json& report, const std::string& units) {
+  Json j;
+  j["verdict"] = verdict_json(verdict);
+  if (!units.empty()) j["units"] = units;
+  for (const auto& [key, value] : report.items()) j[key] = value;
+  return j;
+}
+
+std::string verdict_text(const design::Verdict& v) {
+  std::string t = fmt::format("Verdict: {}\n", v.summary);
+  for (const auto& s : v.states) {
+    t += fmt::format("  {}: {}\n", s.kind, s.description);
+    for (std::size_t i = 0; i < s.participants.size() && i < kTextParticipants; ++i) {
+      const auto& p = s.participants[i];
+      t += fmt::format("    {:>3.0f}%  {} {}{}\n", 100.0 * p.participation, p.kind, p.name, p.detail.empty() ? "" : ": " + p.detail);
+    }
+    if (s.participants.size() > kTextParticipants)
+      t += fmt::format("    ... and {} more (see --json)\n", s.participants.size() - kTextParticipants);
+  }
+  if (!v.changes.empty()) {
+    t += fmt::format("  {} ({}):\n", v.changes.size() == 1 ? "change" : "changes",
+                     v.changes_verified ? "one minimal set, verified by re-analysis" : "NOT verified: the re-analysis is not exactly constrained");
+    for (const auto& c : v.changes) t += "    - " + change_text(c) + "\n";
+  }
+  if (!v.becomes.empty() && !v.exactly_constrained) t += fmt::format("  becomes: {}\n", v.becomes);
+  if (!v.note.empty()) t += fmt::format("  note: {}\n", v.note);
+  t += "\n";
+  return t;
+}
+
+}  // namespace kinestat::report

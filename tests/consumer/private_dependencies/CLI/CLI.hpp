@@ -1,0 +1,1 @@
+#error "a public kinestat header includes <CLI/CLI.hpp>, a private dependency"

@@ -1,0 +1,1 @@
+#error "a public kinestat header includes <SuiteSparseQR.hpp>, a private dependency"

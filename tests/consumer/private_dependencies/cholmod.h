@@ -1,0 +1,1 @@
+#error "a public kinestat header includes <cholmod.h>, a private dependency"

@@ -1,0 +1,1 @@
+#error "a public kinestat header includes <fmt/core.h>, a private dependency"

@@ -1,0 +1,1 @@
+#error "a public kinestat header includes <fmt/format.h>, a private dependency"

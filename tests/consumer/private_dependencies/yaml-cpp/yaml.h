@@ -1,0 +1,1 @@
+#error "a public kinestat header includes <yaml-cpp/yaml.h>, a private dependency"

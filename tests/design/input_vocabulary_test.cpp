@@ -1,0 +1,82 @@
+// No silent guesses in the input (issue 10, item 6): one `dimension` vocabulary, planar models
+// refuse spatial couplings, `units:` reaches every report, and options or values that a model
+// does not use, or that are given twice, are errors with exit code 2.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "support/cli_run.hpp"
+
+namespace kinestat {
+namespace {
+
+using testing::run_cli;
+using testing::write_temp_file;
+
+const std::string kRssr =
+    "kinestat: 1\nkind: network\nname: RSSR\ndimension: 3\ncouplings:\n"
+    "  - {name: A, type: revolute, between: [0, 1], point: [0, 0, 0], axis: [0, 0, 1]}\n"
+    "  - {name: B, type: spherical, between: [1, 2], point: [1, 0, 0]}\n"
+    "  - {name: C, type: spherical, between: [2, 3], point: [2, 2, 1]}\n"
+    "  - {name: D, type: revolute, between: [3, 0], point: [3, 0, 0], axis: [1, 0, 0]}\n";
+
+TEST(InputVocabulary, BareDimensionNumberInANetworkExitsTwoWithTheWord) {
+  const auto run = run_cli("analyze " + write_temp_file("rssr3.yaml", kRssr));
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_TRUE(run.out.empty());
+  EXPECT_NE(run.err.find(":4:12:"), std::string::npos) << run.err;  // line 4, column of the value
+  EXPECT_NE(run.err.find("dimension: spatial"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("dimension: planar"), std::string::npos) << run.err;
+}
+
+TEST(InputVocabulary, EveryKindTakesTheWordsAndRefusesNumbers) {
+  const std::string framework = "kinestat: 1\nkind: framework\ndimension: {}\nnodes: {A: [0, 0], B: [1, 0]}\n"
+                                "supports: {A: [x, y], B: [y]}\nelements:\n  - {type: truss, nodes: [A, B]}\n";
+  auto with = [](std::string text, const std::string& word) { return text.replace(text.find("{}"), 2, word); };
+  EXPECT_EQ(run_cli("analyze " + write_temp_file("fw-planar.yaml", with(framework, "planar"))).exit_code, 0);
+  const auto two = run_cli("analyze " + write_temp_file("fw-2.yaml", with(framework, "2")));
+  EXPECT_EQ(two.exit_code, 2);
+  EXPECT_NE(two.err.find("dimension: planar"), std::string::npos) << two.err;
+  const std::string structure = "kinestat: 1\nkind: structure\ndimension: {}\nbodies: [f, a]\npairs:\n  - {between: [f, a], pair: lower, inputs: 1}\n";
+  EXPECT_EQ(run_cli("structure " + write_temp_file("st-planar.yaml", with(structure, "planar"))).exit_code, 0);
+  const auto six = run_cli("structure " + write_temp_file("st-6.yaml", with(structure, "6")));
+  EXPECT_EQ(six.exit_code, 2);
+  EXPECT_NE(six.err.find("dimension: spatial"), std::string::npos) << six.err;
+}
+
+TEST(InputVocabulary, PlanarModelRefusesASphericalCoupling) {
+  std::string planar = kRssr;
+  planar.replace(planar.find("dimension: 3"), 12, "dimension: planar");
+  planar.replace(planar.find("axis: [1, 0, 0]"), 15, "axis: [0, 0, 1]");
+  const auto run = run_cli("analyze " + write_temp_file("planar-s.yaml", planar));
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("planar model cannot have a spherical coupling"), std::string::npos) << run.err;
+}
+
+TEST(InputVocabulary, UnitsReachTextAndJson) {
+  std::string model = kRssr;
+  model.replace(model.find("dimension: 3"), 12, "dimension: spatial\nunits: mm");
+  const std::string path = write_temp_file("units.yaml", model);
+  const auto text = run_cli("analyze " + path);
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_NE(text.out.find("lengths in mm"), std::string::npos);
+  const auto json = run_cli("analyze --json " + path);
+  ASSERT_EQ(json.exit_code, 0);
+  EXPECT_EQ(nlohmann::json::parse(json.out)["units"], "mm");
+}
+
+TEST(InputVocabulary, OptionsAModelKindDoesNotUseAreErrors) {
+  const auto primary = run_cli("analyze " + testing::example_path("truss-12.yaml") + " --primary sa");
+  EXPECT_EQ(primary.exit_code, 2);
+  EXPECT_NE(primary.err.find("--primary"), std::string::npos) << primary.err;
+  EXPECT_EQ(run_cli("analyze " + testing::example_path("truss-12.yaml") + " --value sa=1").exit_code, 2);
+  EXPECT_EQ(run_cli("analyze " + testing::example_path("davies-2-circuit.yaml") + " --dense-limit 10").exit_code, 2);
+}
+
+TEST(InputVocabulary, AValueGivenTwiceIsAnError) {
+  const auto run = run_cli("analyze " + testing::example_path("davies-2-circuit.yaml") + " --value sa=1 --value sa=2");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("twice"), std::string::npos) << run.err;
+}
+
+}  // namespace
+}  // namespace kinestat
