@@ -90,14 +90,14 @@ class SpacarWriter {
     out_ += "\n";
   }
 
-  void beam(long number, std::size_t p, std::size_t q, const Eigen::Vector3d& y, const std::string& comment) {
+  void beam(long element, std::size_t p, std::size_t q, const Eigen::Vector3d& y, const std::string& comment) {
     used_orientations_.insert(p);
     used_orientations_.insert(q);
     if (planar_) {
-      out_ += fmt::format("PLBEAM  {:4}  {:4} {:4}  {:4} {:4}  # {}\n", number, position_[p], orientation(p), position_[q],
+      out_ += fmt::format("PLBEAM  {:4}  {:4} {:4}  {:4} {:4}  # {}\n", element, position_[p], orientation(p), position_[q],
                           orientation(q), comment);
     } else {
-      out_ += fmt::format("BEAM  {:4}  {:4} {:4}  {:4} {:4}  {}  {}  {}  # {}\n", number, position_[p], orientation(p),
+      out_ += fmt::format("BEAM  {:4}  {:4} {:4}  {:4} {:4}  {}  {}  {}  # {}\n", element, position_[p], orientation(p),
                           position_[q], orientation(q), number(y.x()), number(y.y()), number(y.z()), comment);
     }
   }
