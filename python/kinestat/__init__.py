@@ -59,6 +59,12 @@ class _Result:
             self._dict = json.loads(self._analysed.json())
         return json.loads(json.dumps(self._dict))  # a copy the caller may change
 
+    @property
+    def verdict(self):
+        """The verdict every report leads with (exactly constrained or not, where, one change
+        that fixes it), as in the JSON report's "verdict"."""
+        return self.to_dict().get("verdict")
+
     def to_json(self):
         """The JSON report text, byte for byte as the command writes it."""
         return self._analysed.json()
@@ -333,7 +339,7 @@ class Framework(_Model):
         document = {"kinestat": 1, "kind": "framework"}
         if self.name is not None:
             document["name"] = self.name
-        document["dimension"] = dimension
+        document["dimension"] = "planar" if dimension == 2 else "spatial"
         document["nodes"] = {name: _vector(p) for name, p in zip(self.node_names, self.nodes)}
         if self.supports:
             document["supports"] = {self._node(k): self._coordinates(v) for k, v in self.supports.items()}
@@ -359,12 +365,12 @@ class Network(_Model):
     into ``bodies`` (or names); points, axes, normals: (e, d') arrays, d' = 3 spatial or 2
     planar, a row of NaN where the coupling type has no such key; pitches: e values (NaN where
     unused); bodies: body names (default "1", "2", ...); coupling_names (default "A", "B", ...);
-    dimension: 6 (spatial) or 3 (planar); ground, chords, primary, inputs as in model files."""
+    dimension: "spatial" (or 6) or "planar" (or 3); ground, chords, primary, inputs as in model files."""
 
     name_for_errors = "<network>"
 
     def __init__(self, types, between, points=None, axes=None, normals=None, pitches=None, bodies=None,
-                 coupling_names=None, dimension=6, ground=None, chords=None, primary=None, inputs=None, name=None):
+                 coupling_names=None, dimension="spatial", ground=None, chords=None, primary=None, inputs=None, name=None):
         self.types = [str(t) for t in types]
         e = len(self.types)
         self.between = np.asarray(between).reshape(e, 2)
@@ -391,7 +397,7 @@ class Network(_Model):
         document = {"kinestat": 1, "kind": "network"}
         if self.name is not None:
             document["name"] = self.name
-        document["dimension"] = "planar" if self.dimension in (3, "planar") else self.dimension
+        document["dimension"] = "planar" if self.dimension in (3, "planar") else "spatial"
         if self.ground is not None:
             document["ground"] = self._body(self.ground)
         if self.bodies:

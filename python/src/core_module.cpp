@@ -1,6 +1,7 @@
 // kinestat._core: the C++ library seen from Python. Thin: it reads models with io/, runs the
 // pure analyses and hands back their numbers (Eigen -> numpy) and the report layer's texts
-// (the JSON report is the command's own, so `to_dict()` equals `--json` by construction).
+// (the JSON report is written by the command's own report functions from the same analysis and
+// verdict; python/tests checks `to_dict()` against `--json` for every example).
 // The Python classes users meet are in python/kinestat/__init__.py.
 
 #include <pybind11/eigen.h>
@@ -12,6 +13,9 @@
 #include <string>
 #include <vector>
 
+#include "kinestat/design/framework_verdict.hpp"
+#include "kinestat/design/network_verdict.hpp"
+#include "kinestat/design/structure_verdict.hpp"
 #include "kinestat/framework/framework_analysis.hpp"
 #include "kinestat/framework/framework_jacobian.hpp"
 #include "kinestat/io/model_file.hpp"
@@ -44,11 +48,23 @@ struct Analysed {
   std::optional<structure::StructureModel> structure_model;  ///< networks (from the couplings) and structures
   std::optional<structure::Decomposition> decomposition;
   std::optional<structure::TransformationSet> transformations;
+  design::Verdict verdict;  ///< what every report leads with (design layer)
 
+  /// The scene of `kinestat draw` and `kinestat report` (src/cli/scene_loading.cpp).
   report::Scene scene() const {
-    if (network) return report::network_scene(file.network->model, *network);
-    if (framework) return report::framework_scene(*file.framework, *framework);
-    return report::structure_scene(*structure_model, *decomposition);
+    report::Scene scene;
+    if (network) {
+      scene = report::network_scene(file.network->model, *network);
+      scene.units = file.network->model.units;
+    } else if (framework) {
+      scene = report::framework_scene(*file.framework, *framework);
+      scene.units = file.framework->units;
+    } else {
+      scene = report::structure_scene(*structure_model, *decomposition);
+      scene.units = structure_model->units;
+    }
+    scene.verdict = verdict;
+    return scene;
   }
 };
 
@@ -71,13 +87,16 @@ std::shared_ptr<Analysed> analyse(const std::string& path, const std::optional<s
     else if (arithmetic != "auto") throw py::value_error("arithmetic is 'auto', 'exact' or 'float'");
     if (!primary.empty()) options.primary = primary;
     analysed->network = io::analyse_network_file(*file.network, file.path, options);
+    analysed->verdict = design::network_verdict(file.network->model, *analysed->network, options);
   } else if (file.framework) {
     framework::AnalysisOptions options;
     options.tolerance.relative = tolerance;
     analysed->framework = framework::analyse_framework(*file.framework, options);
+    analysed->verdict = design::framework_verdict(*file.framework, *analysed->framework, options);
   } else {
     analysed->structure_model = *file.structure;
     analysed->decomposition = structure::decompose(*file.structure);
+    analysed->verdict = design::structure_verdict(*analysed->structure_model, *analysed->decomposition);
   }
   return analysed;
 }
@@ -93,16 +112,22 @@ std::shared_ptr<Analysed> decompose(const std::string& path, const std::optional
   analysed->structure_model = file.network ? io::structure_of_network(*file.network, file.path) : *file.structure;
   analysed->decomposition = structure::decompose(*analysed->structure_model);
   analysed->transformations = structure::structural_transformations(*analysed->structure_model, kTransformationLimit);
+  analysed->verdict = design::structure_verdict(*analysed->structure_model, *analysed->decomposition);
   return analysed;
 }
 
 std::string json_report(const Analysed& a) {
-  if (a.network) return report::json_text(report::network_json(a.file.network->model, *a.network, {}));
-  if (a.framework) return report::json_text(report::framework_report_json(*a.file.framework, *a.framework));
+  // As src/cli/network_command.cpp, framework_command.cpp and structure_command.cpp write them.
+  if (a.network) {
+    report::NetworkReportOptions options;
+    options.verdict = &a.verdict;
+    return report::json_text(report::network_json(a.file.network->model, *a.network, options));
+  }
+  if (a.framework) return report::json_text(report::framework_report_json(*a.file.framework, *a.framework, &a.verdict));
   if (!a.decomposition) throw py::value_error("the model has not been analysed");
   const report::StructureReport structure_report{*a.structure_model, *a.decomposition,
                                                  a.transformations ? &*a.transformations : nullptr,
-                                                 structure::SearchMethod::matching};
+                                                 structure::SearchMethod::matching, &a.verdict, a.structure_model->units};
   return report::structure_json(structure_report);
 }
 

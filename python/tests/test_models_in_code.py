@@ -52,7 +52,7 @@ def test_davies_network_from_arrays_equals_its_file(examples):
         points=np.array([[0, 0, 0], [0, 0, 1], [nan] * 3, [1, 0, 0], [0, 0, 0]]),
         axes=np.array([[nan] * 3, [nan] * 3, [nan] * 3, [0, 1, 0], [0, 1, 0]]),
         normals=np.array([[nan] * 3, [nan] * 3, [0, 0, 1], [nan] * 3, [nan] * 3]),
-        dimension=6, ground=0, chords=["B", "E"], primary=["sa", "ta", "vc", "Ub", "We"],
+        dimension="spatial", ground=0, chords=["B", "E"], primary=["sa", "ta", "vc", "Ub", "We"],
         name="Davies 2-circuit network")
     result = network.analyze()
     assert (result.FN, result.CN) == (3, 2)  # seed 000

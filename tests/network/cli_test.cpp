@@ -58,7 +58,10 @@ TEST(NetworkCli, PrimaryAndValuesOnTheCommandLine) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["motions"]["sa"], "-se");
-  EXPECT_FALSE(j.contains("values"));  // tb and ve have no values
+  // Issue 10: partial values evaluate what they determine (sa = -se = -2) and name the
+  // primaries still without a value; they used to print nothing.
+  EXPECT_EQ(j["values"]["motions"]["sa"], -2.0);
+  EXPECT_EQ(j["values"]["missing"], nlohmann::json::array({"tb", "ve"}));
   const CliRun bad = run("analyze --primary sa,tb,tc " + example("davies-2-circuit.yaml"));
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.err.find("--primary: error: 'tc' cannot be a primary"), std::string::npos) << bad.err;

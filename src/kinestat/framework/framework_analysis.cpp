@@ -8,29 +8,13 @@
 
 #include "kinestat/framework/physical_scaling.hpp"
 #include "kinestat/linalg/homogeneous_solution.hpp"
+#include "kinestat/linalg/sign_convention.hpp"
 #include "kinestat/linalg/sparse_rank.hpp"
 #include "kinestat/linalg/svd_analysis.hpp"
 
 namespace kinestat::framework {
 
 namespace {
-
-// Unit 2-norm; the largest-magnitude component positive, ties (within kModeZero) broken by the
-// first index, so that the sign does not depend on SVD internals.
-void normalise(Eigen::Ref<Eigen::VectorXd> v) {
-  const double norm = v.norm();
-  if (norm == 0.0) return;
-  v /= norm;
-  const double largest = v.cwiseAbs().maxCoeff();
-  for (Eigen::Index i = 0; i < v.size(); ++i) {
-    if (std::abs(v(i)) >= largest - kModeZero) {
-      if (v(i) < 0) v = -v;
-      break;
-    }
-  }
-  for (Eigen::Index i = 0; i < v.size(); ++i)
-    if (std::abs(v(i)) < kModeZero) v(i) = 0.0;
-}
 
 // A deterministic basis of the null space of `a`: reduced echelon form with the earliest
 // possible free variables (linalg::solve_homogeneous), so it does not depend on how the SVD
@@ -46,7 +30,8 @@ Eigen::MatrixXd deterministic_null_space(const Eigen::MatrixXd& a, const Eigen::
   const linalg::HomogeneousSolution solution = linalg::solve_homogeneous(a, tolerance);
   Eigen::MatrixXd basis = solution.coefficients.cols() == svd_basis.cols() ? solution.coefficients : svd_basis;
   basis = unscale.asDiagonal() * basis;
-  for (Eigen::Index j = 0; j < basis.cols(); ++j) normalise(basis.col(j));
+  // The one sign convention (linalg/sign_convention.hpp): every report shows this sign.
+  for (Eigen::Index j = 0; j < basis.cols(); ++j) linalg::orient_unit_vector(basis.col(j), kModeZero);
   return basis;
 }
 

@@ -169,6 +169,11 @@ std::string contracted_text(const network::Model& model, const NetworkResult& r,
   return text;
 }
 
+// A numeric value, or "?" when it depends on a primary that was given no value.
+std::string value_text(double value) { return std::isnan(value) ? "?" : number_text(value); }
+// The same in JSON: null when undetermined.
+Json value_json(double value) { return std::isnan(value) ? Json(nullptr) : Json(value); }
+
 std::string joined_or_dash(const std::vector<std::string>& names) { return names.empty() ? "-" : fmt::format("{}", fmt::join(names, ", ")); }
 
 
@@ -204,7 +209,7 @@ std::string network_text(const network::Model& model, const NetworkResult& r, co
     const double noise = noise_level(forms);
     for (std::size_t i = 0; i < magnitudes.size(); ++i) {
       t += fmt::format("  {:<10} = {}", magnitudes[i].name, linear_form_text(forms, static_cast<Index>(i), primaries, noise));
-      if (values) t += fmt::format("   = {}", number_text((*values)(static_cast<Index>(i))));
+      if (values) t += fmt::format("   = {}", value_text((*values)(static_cast<Index>(i))));
       t += "\n";
     }
   };
@@ -218,12 +223,18 @@ std::string network_text(const network::Model& model, const NetworkResult& r, co
     t += fmt::format("\n{}\n", title);
     for (int e = 0; e < r.e; ++e) {
       std::vector<std::string> coordinates;
-      for (int c = 0; c < r.d; ++c) coordinates.push_back(number_text(columns(c, e)));
+      for (int c = 0; c < r.d; ++c) coordinates.push_back(value_text(columns(c, e)));
       t += fmt::format("  {:<10} ({})\n", model.couplings[static_cast<std::size_t>(e)].name, fmt::join(coordinates, ", "));
     }
   };
   if (r.coupling_motion_values) numeric_screws("Numeric motion of each coupling (axis formation):", *r.coupling_motion_values);
   if (r.coupling_action_values) numeric_screws("Numeric action of each coupling (ray formation):", *r.coupling_action_values);
+  if (!r.missing_motion_values.empty())
+    t += fmt::format("\nValues: no value for the motion primaries {}; what depends on them is shown as ?\n",
+                     fmt::join(r.missing_motion_values, ", "));
+  if (!r.missing_action_values.empty())
+    t += fmt::format("\nValues: no value for the action primaries {}; what depends on them is shown as ?\n",
+                     fmt::join(r.missing_action_values, ", "));
   t += fmt::format("\nMethods agree: circulation law and cutset motions {}; cutset law and circuit actions {}\n",
                    r.motion_methods_agree ? "yes" : "NO", r.action_methods_agree ? "yes" : "NO");
 
@@ -344,14 +355,14 @@ Json network_json(const network::Model& model, const NetworkResult& r, const Net
     Json values = Json::object();
     auto numeric = [&](const std::vector<network::Magnitude>& magnitudes, const Eigen::VectorXd& v) {
       Json out = Json::object();
-      for (std::size_t i = 0; i < magnitudes.size(); ++i) out[magnitudes[i].name] = v(static_cast<Index>(i));
+      for (std::size_t i = 0; i < magnitudes.size(); ++i) out[magnitudes[i].name] = value_json(v(static_cast<Index>(i)));
       return out;
     };
     auto screws = [&](const Eigen::MatrixXd& columns) {
       Json out = Json::object();
       for (int e = 0; e < r.e; ++e) {
         Json coordinates = Json::array();
-        for (int c = 0; c < r.d; ++c) coordinates.push_back(columns(c, e));
+        for (int c = 0; c < r.d; ++c) coordinates.push_back(value_json(columns(c, e)));
         out[model.couplings[static_cast<std::size_t>(e)].name] = coordinates;
       }
       return out;
@@ -360,6 +371,11 @@ Json network_json(const network::Model& model, const NetworkResult& r, const Net
     if (r.coupling_motion_values) values["coupling_motions"] = screws(*r.coupling_motion_values);
     if (r.action_values) values["actions"] = numeric(r.actions, *r.action_values);
     if (r.coupling_action_values) values["coupling_actions"] = screws(*r.coupling_action_values);
+    if (!r.missing_motion_values.empty() || !r.missing_action_values.empty()) {
+      std::vector<std::string> missing = r.missing_motion_values;
+      missing.insert(missing.end(), r.missing_action_values.begin(), r.missing_action_values.end());
+      values["missing"] = missing;
+    }
     j["values"] = values;
   }
   j["warnings"] = warnings(r);
