@@ -8,7 +8,6 @@
 #include "cli/option_checks.hpp"
 #include "kinestat/design/framework_verdict.hpp"
 #include "kinestat/framework/framework_analysis.hpp"
-#include "kinestat/io/framework_reader.hpp"
 #include "kinestat/report/framework_report.hpp"
 #include "kinestat/report/json_text.hpp"
 
@@ -46,9 +45,8 @@ void register_framework_options(CLI::App& analyze) {
       ->check(non_negative_whole_number());
 }
 
-int run_framework_analysis(const CommonOptions& options, const io::YamlFile& model_file) {
-  reject_options(given_network_options(), "a framework", model_file.path());
-  const framework::FrameworkModel model = io::read_framework(model_file);
+int run_framework_analysis(const CommonOptions& options, const framework::FrameworkModel& model, const std::string& path) {
+  reject_options(given_network_options(), "a framework", path);
   framework::AnalysisOptions analysis_options;
   analysis_options.tolerance.relative = options.tolerance;
   analysis_options.dense_limit = static_cast<Eigen::Index>(dense_limit);

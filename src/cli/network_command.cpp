@@ -83,10 +83,9 @@ std::vector<std::string> given_network_options() {
   return names;
 }
 
-int run_network_analysis(const CommonOptions& common, const io::YamlFile& file) {
+int run_network_analysis(const CommonOptions& common, const io::LoadedNetwork& loaded, const std::string& path) {
   const NetworkOptions& o = network_options();
-  reject_options(given_framework_options(), "a network", file.path());
-  const io::LoadedNetwork loaded = io::read_network_model(file);
+  reject_options(given_framework_options(), "a network", path);
   network::AnalysisOptions options;
   options.arithmetic = o.exact ? network::Arithmetic::exact
                                : (o.floating ? network::Arithmetic::floating : network::Arithmetic::automatic);
@@ -113,7 +112,7 @@ int run_network_analysis(const CommonOptions& common, const io::YamlFile& file) 
   } catch (const network::ModelError& error) {
     if (error.field() == "primary" && !o.primary.empty()) throw io::InputError({"--primary", 0, 0}, error.what());
     if (error.field() == "values" && !o.values.empty()) throw io::InputError({"--value", 0, 0}, error.what());
-    throw io::locate(error, loaded, file.path());
+    throw io::locate(error, loaded, path);
   }
   if (const auto overflowing = first_non_finite_result(result)) {
     const auto values = loaded.field_locations.find("values");

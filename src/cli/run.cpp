@@ -27,6 +27,7 @@ int run(int argc, const char* const* argv) {
   register_structure(app, action);
   register_draw(app, action);
   register_report(app, action);
+  register_convert(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& success) {

@@ -56,6 +56,12 @@ structure::StructureModel read_model(const StructureOptions& options) {
     }
     return io::read_adjacency_text(text, "<stdin>");
   }
+  const InputFormat format = input_format(options.common.model_path);
+  if (format != InputFormat::kinestat && format != InputFormat::spacar)
+    return io::structure_of_network(read_imported_network(options.common.model_path, format), options.common.model_path);
+  if (format == InputFormat::spacar)
+    throw io::InputError({options.common.model_path, 1, 1}, "a SPACAR file is a framework of nodes and elements; "
+                                                            "'kinestat structure' reads mechanisms (kind: structure or network)");
   const io::YamlFile file = io::YamlFile::load(options.common.model_path);
   const std::string kind = io::model_kind(file);
   if (kind == "network") return io::structure_of_network(io::read_network_model(file), file.path());
