@@ -282,7 +282,10 @@ std::string structure_dot(const StructureModel& model, const Decomposition& d) {
   std::string title;
   for (char c : model.name.empty() ? std::string("structural diagram") : model.name) {
     if (c == '"' || c == '\\') title += '\\';
-    if (c != '\n' && c != '\r') title += c;
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '\n' || c == '\r') continue;
+    if (byte < 0x20 || byte == 0x7F) title += "\xEF\xBF\xBD";  // no control character in a DOT label
+    else title += c;
   }
   out += "  label=\"" + title + "\";\n  labelloc=t;\n";
   out += "  rankdir=TB;\n  node [shape=circle, fontname=\"Helvetica\"];\n";
