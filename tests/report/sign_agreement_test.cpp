@@ -351,7 +351,7 @@ TEST(SignAgreement, WarrenTrussWithAnExtraDiagonal) {
   // diagonal A-E: one self-stress.
   const auto model = read_model("warren.yaml", R"(kinestat: 1
 kind: framework
-dimension: 2
+dimension: planar
 nodes: {A: [0, 0], B: [2, 0], C: [4, 0], D: [1, 1.7], E: [3, 1.7]}
 supports: {A: pinned, C: [y]}
 elements:
@@ -376,7 +376,7 @@ TEST(SignAgreement, RandomPlanarFrameworks) {
   for (int trial = 0; trial < 40; ++trial) {
     const int nodes = 4 + trial % 5;
     std::ostringstream yaml;
-    yaml << "kinestat: 1\nkind: framework\ndimension: 2\nnodes:\n";
+    yaml << "kinestat: 1\nkind: framework\ndimension: planar\nnodes:\n";
     for (int i = 0; i < nodes; ++i) yaml << "  n" << i << ": [" << coordinate(random) << ", " << coordinate(random) << "]\n";
     yaml << "supports: {n0: pinned, n1: [y]}\nelements:\n";
     // A chain n0-n1-...-n(last) and every node to two earlier ones, plus a few random bars:
