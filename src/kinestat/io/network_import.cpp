@@ -46,7 +46,10 @@ screw::Vec3 NetworkBuilder::exact(const Eigen::Vector3d& v) {
       if (text.back() == '.') text.pop_back();
     }
     if (text == "-0") text = "0";
-    digits_ = std::max(digits_, significant_digits(text));
+    // A component that still has 12 significant digits was a genuinely long number (0.8660254…),
+    // not a short decimal with rounding noise: such models are analysed in floating point.
+    const int digits = significant_digits(text);
+    digits_ = std::max(digits_, digits >= 12 ? 17 : digits);
     const auto decimal = parse_exact_decimal(text);
     out[static_cast<std::size_t>(i)] = decimal ? *decimal : screw::Rational(c);
   }
