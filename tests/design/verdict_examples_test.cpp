@@ -169,7 +169,9 @@ TEST(NetworkVerdict, CountsAndVerifiedChangesOfEveryExample) {
     // Kutzbach's count must follow the freedoms changed: (FN - CN) changes by delta F - d delta l.
     const int removed = static_cast<int>(before.e - after.e);
     EXPECT_EQ((after.FN - after.CN) - (before.FN - before.CN), (after.F - before.F) - after.d * (-removed));
-    if (removed == 0) EXPECT_EQ(delta_f, expected.redundant - expected.extra);
+    if (removed == 0) {
+      EXPECT_EQ(delta_f, expected.redundant - expected.extra);
+    }
     EXPECT_EQ(after.F - before.F, delta_f);
   }
 }

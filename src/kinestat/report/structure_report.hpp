@@ -19,7 +19,7 @@ struct StructureReport {
   const structure::TransformationSet* transformations = nullptr;
   structure::SearchMethod method = structure::SearchMethod::matching;
   const design::Verdict* verdict = nullptr;  ///< printed first when given
-  std::string units;                         ///< the model's length unit, when it names one
+  std::string units{};                       ///< the model's length unit, when it names one
 };
 
 /// Dense result matrices are printed up to this many bodies; larger models list the
