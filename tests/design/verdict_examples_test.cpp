@@ -20,7 +20,7 @@
 namespace kinestat {
 namespace {
 
-using nlohmann::json;
+using json = nlohmann::ordered_json;  // key order is part of the contract (verdict first)
 using testing::example_path;
 using testing::run_cli;
 
