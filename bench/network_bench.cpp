@@ -8,11 +8,13 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 #include <random>
 #include <string>
 
 #include "kinestat/network/analyse_network.hpp"
+#include "kinestat/network/sparse_network.hpp"
 
 namespace {
 
@@ -115,6 +117,76 @@ Model random_graph(int couplings) {
   return m;
 }
 
+// R-S-S chain: unit i is the closed loop base_{i-1} -R- a_i -S- b_i -S- base_{i-1}, and b_i is
+// the base of unit i + 1: 3 couplings, 2 bodies and 1 circuit per unit.
+Model rss_chain(int couplings) {
+  const int units = std::max(1, couplings / 3);
+  Model m;
+  m.name = "R-S-S chain";
+  m.bodies.push_back("ground");
+  m.ground = 0;
+  std::mt19937 random(99);
+  auto coordinate = [&random] { return std::uniform_int_distribution<int>(-20, 20)(random); };
+  int base = 0;
+  for (int i = 0; i < units; ++i) {
+    const int a = static_cast<int>(m.bodies.size()), b = a + 1;
+    m.bodies.push_back("a" + std::to_string(i));
+    m.bodies.push_back("b" + std::to_string(i));
+    auto add = [&](CouplingType type, int from, int to) {
+      Coupling c;
+      c.name = "J" + std::to_string(m.couplings.size());
+      c.type = type;
+      c.from = from;
+      c.to = to;
+      c.geometry.point = {coordinate(), coordinate(), coordinate()};
+      if (type == CouplingType::revolute) {
+        Vec3 axis{0, 0, 0};
+        while (kinestat::screw::is_zero(axis)) axis = {coordinate() % 5, coordinate() % 5, coordinate() % 5};
+        c.geometry.axis = axis;
+      }
+      m.couplings.push_back(c);
+    };
+    add(CouplingType::revolute, base, a);
+    add(CouplingType::spherical, a, b);
+    add(CouplingType::spherical, b, base);
+    base = b;
+  }
+  return m;
+}
+
+// Planar lattice: a side × side grid of bodies in the plane, each joined to its right and upper
+// neighbour by a revolute at a slightly perturbed midpoint (so rows of joints are not collinear).
+Model planar_lattice(int couplings) {
+  const int side = std::max(2, static_cast<int>(std::lround(std::sqrt(couplings / 2.0))) + 1);
+  Model m;
+  m.name = "planar lattice";
+  m.space = kinestat::screw::ScrewSpace::planar();
+  for (int j = 0; j < side; ++j)
+    for (int i = 0; i < side; ++i) m.bodies.push_back("b" + std::to_string(j * side + i));
+  m.ground = 0;
+  std::mt19937 random(31);
+  auto jitter = [&random] { return kinestat::screw::Rational(std::uniform_int_distribution<int>(-3, 3)(random), 10); };
+  auto add = [&](int from, int to, int x2, int y2) {
+    Coupling c;
+    c.name = "R" + std::to_string(m.couplings.size());
+    c.type = CouplingType::revolute;
+    c.from = from;
+    c.to = to;
+    kinestat::screw::Rational x(x2, 2), y(y2, 2);
+    x.canonicalize();
+    y.canonicalize();
+    c.geometry.point = {x + jitter(), y + jitter(), 0};
+    m.couplings.push_back(c);
+  };
+  for (int j = 0; j < side; ++j)
+    for (int i = 0; i < side; ++i) {
+      const int b = j * side + i;
+      if (i + 1 < side) add(b, b + 1, 2 * i + 1, 2 * j);
+      if (j + 1 < side) add(b, b + side, 2 * i, 2 * j + 1);
+    }
+  return m;
+}
+
 void run(benchmark::State& state, const Model& model) {
   AnalysisOptions options;
   options.arithmetic = state.range(1) != 0 ? Arithmetic::exact : Arithmetic::floating;
@@ -136,6 +208,26 @@ void BM_DaviesTwoCircuit(benchmark::State& state) { run(state, davies_two_circui
 void BM_Ladder(benchmark::State& state) { run(state, ladder(static_cast<int>(state.range(0)))); }
 void BM_RandomGraph(benchmark::State& state) { run(state, random_graph(static_cast<int>(state.range(0)))); }
 
+// The sparse body-twist path (analyse_network_sparse): FN, CN, stressed and moving couplings.
+void run_sparse(benchmark::State& state, const Model& model) {
+  kinestat::network::SparseNetworkResult r;
+  for (auto _ : state) {
+    r = kinestat::network::analyse_network_sparse(model);
+    benchmark::DoNotOptimize(r.FN);
+  }
+  state.counters["couplings"] = static_cast<double>(model.couplings.size());
+  state.counters["bodies"] = static_cast<double>(model.bodies.size());
+  state.counters["FN"] = r.FN;
+  state.counters["CN"] = r.CN;
+  state.counters["stressed"] = static_cast<double>(r.stressed.size());
+  state.counters["moving"] = static_cast<double>(r.moving.size());
+}
+
+void BM_SparseLadder(benchmark::State& state) { run_sparse(state, ladder(static_cast<int>(state.range(0)))); }
+void BM_SparseRandomGraph(benchmark::State& state) { run_sparse(state, random_graph(static_cast<int>(state.range(0)))); }
+void BM_SparseRssChain(benchmark::State& state) { run_sparse(state, rss_chain(static_cast<int>(state.range(0)))); }
+void BM_SparsePlanarLattice(benchmark::State& state) { run_sparse(state, planar_lattice(static_cast<int>(state.range(0)))); }
+
 }  // namespace
 
 BENCHMARK(BM_DaviesTwoCircuit)->Args({5, 1, 1})->Args({5, 0, 1})->Unit(benchmark::kMicrosecond);
@@ -151,3 +243,8 @@ BENCHMARK(BM_RandomGraph)
 // --benchmark_filter='/1000/'.
 BENCHMARK(BM_Ladder)->ArgsProduct({{300, 1000}, {0}, {1, 0}})->Iterations(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RandomGraph)->ArgsProduct({{300, 1000}, {0}, {1, 0}})->Iterations(1)->Unit(benchmark::kMillisecond);
+// The sparse path at 10³, 10⁴ and 10⁵ couplings.
+BENCHMARK(BM_SparseLadder)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SparseRandomGraph)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SparseRssChain)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SparsePlanarLattice)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);

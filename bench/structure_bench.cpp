@@ -4,6 +4,7 @@
 #include <benchmark/benchmark.h>
 
 #include "kinestat/structure/decomposition.hpp"
+#include "kinestat/structure/transformations.hpp"
 #include "support/mechanism_generator.hpp"
 
 namespace {
@@ -26,6 +27,22 @@ void BM_ChainMatching(benchmark::State& state) {
   run(state, g.model, SearchMethod::matching);
 }
 BENCHMARK(BM_ChainMatching)->Arg(10)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond)->Complexity();
+
+// What `kinestat structure` computes besides the report: the decomposition and the count of
+// other input placements (stopped at the CLI's limit of 1,000), at 10⁵ and 10⁶ bodies.
+void BM_ChainWithPlacements(benchmark::State& state) {
+  const auto g = generate_group_chain(static_cast<int>(state.range(0)), 42, {}, /*shuffle=*/true);
+  std::uint64_t placements = 0;
+  for (auto _ : state) {
+    Decomposition d = decompose(g.model, SearchMethod::matching);
+    if (!d.complete()) state.SkipWithError("generated mechanism did not decompose");
+    placements = structural_transformations(g.model, 1000).placements;
+    benchmark::DoNotOptimize(d.groups.data());
+  }
+  state.counters["bodies"] = g.model.body_count();
+  state.counters["placements"] = static_cast<double>(placements);
+}
+BENCHMARK(BM_ChainWithPlacements)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
 
 void BM_ChainSeedSearch(benchmark::State& state) {
   const auto g = generate_group_chain(static_cast<int>(state.range(0)), 42, {}, /*shuffle=*/true);

@@ -12,6 +12,98 @@ find_path(SUITESPARSE_INCLUDE_DIR SuiteSparseQR.hpp PATH_SUFFIXES suitesparse RE
 find_library(SPQR_LIBRARY spqr REQUIRED)
 find_library(CHOLMOD_LIBRARY cholmod REQUIRED)
 find_library(SUITESPARSECONFIG_LIBRARY suitesparseconfig REQUIRED)
+# Debian's OpenBLAS (libopenblas-dev) is the BLAS/LAPACK that SuiteSparse's dense kernels run
+# on (through the libblas.so.3 alternative); kinestat links it directly to pin its threads.
+find_library(OPENBLAS_LIBRARY openblas REQUIRED)
 add_library(kinestat_suitesparse INTERFACE)
 target_include_directories(kinestat_suitesparse SYSTEM INTERFACE ${SUITESPARSE_INCLUDE_DIR})
-target_link_libraries(kinestat_suitesparse INTERFACE ${SPQR_LIBRARY} ${CHOLMOD_LIBRARY} ${SUITESPARSECONFIG_LIBRARY})
+target_link_libraries(kinestat_suitesparse INTERFACE ${SPQR_LIBRARY} ${CHOLMOD_LIBRARY} ${SUITESPARSECONFIG_LIBRARY}
+  ${OPENBLAS_LIBRARY})
+
+# Optional readers of other programs' formats (docs/formats.md). Each option is ON when its
+# Debian package is found; without it the format is refused with "rebuild with ...".
+#   libtinyxml2-dev -> URDF (and line numbers for malformed SDFormat), libsdformat-dev -> SDFormat,
+#   libmujoco-dev -> MJCF.
+find_package(tinyxml2 QUIET)
+find_package(sdformat12 QUIET)
+find_package(mujoco QUIET)
+# Debian's libmujoco-dev names /usr/include/libqhull_r (package libqhull-dev) among its include
+# folders without depending on it; CMake refuses a target with a missing include folder.
+if(mujoco_FOUND)
+  get_target_property(mujoco_include_dirs mujoco::mujoco INTERFACE_INCLUDE_DIRECTORIES)
+  foreach(dir IN LISTS mujoco_include_dirs)
+    if(NOT EXISTS ${dir})
+      message(STATUS "MJCF reader off: ${dir} (named by libmujoco-dev) is missing; install libqhull-dev")
+      set(mujoco_FOUND FALSE)
+    endif()
+  endforeach()
+endif()
+option(KINESTAT_WITH_TINYXML2 "URDF reader (libtinyxml2-dev)" ${tinyxml2_FOUND})
+option(KINESTAT_WITH_SDFORMAT "SDFormat reader (libsdformat-dev)" ${sdformat12_FOUND})
+option(KINESTAT_WITH_MUJOCO "MJCF reader (libmujoco-dev)" ${mujoco_FOUND})
+# The include folders of imported target `imported` and of the imported targets it links,
+# without the compiler's own /usr/include (naming it breaks libstdc++'s #include_next).
+function(kinestat_include_folders imported out)
+  set(folders "")
+  set(pending ${imported})
+  set(seen "")
+  while(pending)
+    list(POP_FRONT pending current)
+    if(NOT TARGET ${current} OR current IN_LIST seen)
+      continue()
+    endif()
+    list(APPEND seen ${current})
+    get_target_property(dirs ${current} INTERFACE_INCLUDE_DIRECTORIES)
+    if(dirs)
+      list(APPEND folders ${dirs})
+    endif()
+    get_target_property(links ${current} INTERFACE_LINK_LIBRARIES)
+    if(links)
+      list(APPEND pending ${links})
+    endif()
+  endwhile()
+  list(FILTER folders EXCLUDE REGEX "^/usr/include/?$|\\$<")
+  list(REMOVE_DUPLICATES folders)
+  set(${out} ${folders} PARENT_SCOPE)
+endfunction()
+
+# Adds the readers' libraries to `target` (kinestat), privately: KINESTAT_HAVE_<reader> = 0 or
+# 1 and the libraries' include folders go to the reader sources only (so that the rest of the
+# library compiles as without them), the libraries to the link. kinestat is a static library,
+# so they travel with it: the installed package finds them again (kinestatReaders.cmake,
+# included by kinestatConfig.cmake).
+function(kinestat_add_readers target)
+  set(dir ${PROJECT_SOURCE_DIR}/src/kinestat/io)
+  set(readers TINYXML2 SDFORMAT MUJOCO)
+  set(packages tinyxml2 sdformat12 mujoco)
+  set(imported_targets tinyxml2::tinyxml2 sdformat12::sdformat12 mujoco::mujoco)
+  # Which sources use which library (the SDFormat reader checks XML with tinyxml2).
+  set(TINYXML2_sources ${dir}/urdf_reader.cpp ${dir}/sdformat_reader.cpp)
+  set(SDFORMAT_sources ${dir}/sdformat_reader.cpp)
+  set(MUJOCO_sources ${dir}/mjcf_reader.cpp)
+  set(dependencies "include(CMakeFindDependencyMacro)\n")
+  foreach(reader package imported IN ZIP_LISTS readers packages imported_targets)
+    set(have 0)
+    if(KINESTAT_WITH_${reader})
+      set(have 1)
+      find_package(${package} REQUIRED)
+      # As system headers (-isystem), so that their warnings do not stop a -Werror build.
+      kinestat_include_folders(${imported} folders)
+      set(options "")
+      foreach(folder IN LISTS folders)
+        list(APPEND options "-isystem${folder}")
+      endforeach()
+      set_property(SOURCE ${${reader}_sources} TARGET_DIRECTORY ${target} APPEND PROPERTY COMPILE_OPTIONS ${options})
+      target_link_libraries(${target} PRIVATE $<LINK_ONLY:${imported}>)
+      string(APPEND dependencies "find_dependency(${package})\n")
+    endif()
+    set_property(SOURCE ${dir}/urdf_reader.cpp ${dir}/sdformat_reader.cpp ${dir}/mjcf_reader.cpp TARGET_DIRECTORY ${target}
+                 APPEND PROPERTY COMPILE_DEFINITIONS KINESTAT_HAVE_${reader}=${have})
+  endforeach()
+  if(KINESTAT_INSTALL)
+    include(GNUInstallDirs)
+    file(WRITE ${PROJECT_BINARY_DIR}/kinestatReaders.cmake "# The libraries of kinestat's optional readers.\n${dependencies}")
+    install(FILES ${PROJECT_BINARY_DIR}/kinestatReaders.cmake DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/kinestat)
+  endif()
+endfunction()
+message(STATUS "kinestat readers: URDF ${KINESTAT_WITH_TINYXML2}, SDFormat ${KINESTAT_WITH_SDFORMAT}, MJCF ${KINESTAT_WITH_MUJOCO}")

@@ -1,11 +1,15 @@
 #!/usr/bin/env bash
 # Installs kinestat's build and test dependencies from Debian 12 packages. Run it as root, or
 # as a user who may use sudo; anything else stops here with a message.
+# The readers of other formats are optional (docs/formats.md): libtinyxml2-dev for URDF,
+# libsdformat-dev for SDFormat, libmujoco-dev for MJCF (its CMake package names the headers of
+# libqhull-dev, which it does not depend on); CI installs them so every reader is tested.
 set -euo pipefail
 packages=(
   git build-essential cmake ninja-build pkg-config
-  libeigen3-dev libsuitesparse-dev libgmp-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libfmt-dev
+  libeigen3-dev libsuitesparse-dev libopenblas-dev libgmp-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  libtinyxml2-dev libsdformat-dev libmujoco-dev libqhull-dev
   clang libclang-rt-14-dev
   chromium
   # The Python module (pybind11) and its tests, for Debian's /usr/bin/python3.

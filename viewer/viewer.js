@@ -23,6 +23,32 @@
     row.appendChild(text('td', value));
     table.appendChild(row);
   }
+  // Verdict first: what a designer acts on. Without a computed verdict, the classification.
+  const verdictBox = $('verdict');
+  const fact = (key) => { const f = S.summary.find((x) => x[0] === key); return f ? f[1] : ''; };
+  if (S.verdict) {
+    const v = S.verdict;
+    verdictBox.appendChild(text('p', v.summary, 'verdict-summary'));
+    verdictBox.appendChild(text('p', (v.exactly_constrained ? 'exactly constrained' : 'not exactly constrained') + ': ' +
+      v.extra_motions + ' extra motion(s), ' + v.redundant_constraints + ' redundant constraint(s)', 'note'));
+    const where = (title, list) => {
+      if (!list.length) return;
+      verdictBox.appendChild(text('p', title + ': ' + list.slice(0, 8).map((p) => p.name + ' (' + Math.round(100 * p.participation) + '%)').join(', ') +
+        (list.length > 8 ? ', ...' : ''), 'note'));
+    };
+    where('Extra motion in', v.motion_participants);
+    where('Redundancy in', v.constraint_participants);
+    if (v.changes.length) {
+      verdictBox.appendChild(text('p', 'Change' + (v.changes_verified ? ' (verified by re-analysis)' : ' (not verified)') + ':', 'verdict-head'));
+      const list = document.createElement('ul');
+      v.changes.forEach((c) => list.appendChild(text('li', c.action + ' ' + c.target + (c.becomes ? ' \u2192 ' + c.becomes : '') + (c.reason ? ' \u2014 ' + c.reason : ''))));
+      verdictBox.appendChild(list);
+      if (v.becomes) verdictBox.appendChild(text('p', 'The design becomes: ' + v.becomes, 'note'));
+    }
+  } else {
+    verdictBox.appendChild(text('p', fact('class') || fact('complete decomposition') || S.kind, 'verdict-summary'));
+  }
+  verdictBox.appendChild(text('p', 'Lengths in ' + S.units + '. Signs as in the text report: modes and self-stresses as the analysis decided them (tension positive).', 'note'));
   const viewSelect = $('mode');
   const views = [{ kind: 'configuration', label: 'configuration' }];
   S.modes.forEach((m, i) => views.push({ kind: 'mode', index: i, label: m.label + ' (kinematic)' }));
@@ -72,8 +98,12 @@
   const grey = new THREE.Color(0x444444);
   const current = new Float32Array(3 * n);
   current.set(P);
+  // Rigid bodies as thick light bars, flexures (beams) as thin dark rods, trusses in between.
+  const types = S.elements.type || [];
+  const baseColour = (e) => new THREE.Color(types[e] === 'rigid' ? 0x9fb3c8 : types[e] === 'beam' ? 0x222222 : types[e] === 'link' ? 0x555555 : 0x444444);
+  const baseRadius = (e) => radius * (types[e] === 'rigid' ? 2.4 : types[e] === 'beam' ? 0.8 : 1);
   const colours = [];
-  for (let e = 0; e < m; e++) colours.push(grey.clone());
+  for (let e = 0; e < m; e++) colours.push(baseColour(e));
 
   // Elements: cylinders for ordinary models, one line set for large ones.
   let lineSet = null;
@@ -183,8 +213,119 @@
     });
   }
 
+  // Sheets (leaf springs): a light quadrilateral along each, following its nodes.
+  const sheetMeshes = [];
+  if (!light) {
+    (S.elements.sheets || []).forEach((sh) => {
+      const g = new THREE.BufferGeometry();
+      g.setAttribute('position', new THREE.BufferAttribute(new Float32Array(12), 3));
+      g.setIndex([0, 1, 2, 0, 2, 3]);
+      const mesh = new THREE.Mesh(g, new THREE.MeshLambertMaterial({ color: 0xe8d9b5, side: THREE.DoubleSide, transparent: true, opacity: 0.75 }));
+      scene.add(mesh);
+      sheetMeshes.push({ mesh, e: sh.element, across: new THREE.Vector3(sh.across[0], sh.across[1], sh.across[2]) });
+    });
+  }
+  // The undeformed shape in light grey, shown under every mode.
+  const ghost = (() => {
+    const g = new THREE.BufferGeometry();
+    const p = new Float32Array(6 * m);
+    for (let e = 0; e < m; e++) for (let k = 0; k < 3; k++) { p[6 * e + k] = P[3 * E[2 * e] + k]; p[6 * e + 3 + k] = P[3 * E[2 * e + 1] + k]; }
+    g.setAttribute('position', new THREE.BufferAttribute(p, 3));
+    return new THREE.LineSegments(g, new THREE.LineBasicMaterial({ color: 0xb0b0b0 }));
+  })();
+  ghost.visible = false;
+  scene.add(ghost);
+  // Screw axes: a rod along the axis with an arrow (force or ω), or an arrow for a pure
+  // couple / translation; used for coupling wrenches and body twists.
+  const wrenchGroup = new THREE.Group(), twistGroup = new THREE.Group();
+  scene.add(wrenchGroup);
+  scene.add(twistGroup);
+  const rodGeometry = new THREE.CylinderGeometry(1, 1, 1, 8);
+  const screwAxis = (w, colour) => {
+    const g = new THREE.Group();
+    const d = new THREE.Vector3(w.direction[0], w.direction[1], w.direction[2]).normalize();
+    if (w.pure) {
+      const at = new THREE.Vector3(w.anchor[0], w.anchor[1], w.anchor[2]);
+      g.add(new THREE.ArrowHelper(d, at, size * 0.2, colour, size * 0.05, size * 0.03));
+      return g;
+    }
+    const p = new THREE.Vector3(w.point[0], w.point[1], w.point[2]);
+    const rod = new THREE.Mesh(rodGeometry, new THREE.MeshLambertMaterial({ color: colour }));
+    rod.position.copy(p);
+    rod.quaternion.setFromUnitVectors(yAxis, d);
+    rod.scale.set(radius * 0.7, size * 0.6, radius * 0.7);
+    g.add(rod);
+    g.add(new THREE.ArrowHelper(d, p.clone().addScaledVector(d, size * 0.2), size * 0.12, colour, size * 0.05, size * 0.03));
+    return g;
+  };
+  // Supports (frameworks): fixed a block, pinned a cone, roller a cone with arrows along the
+  // free directions; placed below the node (against z in space, y in the plane).
+  const down = S.dimension === 2 ? new THREE.Vector3(0, -1, 0) : new THREE.Vector3(0, 0, -1);
+  (S.supports || []).forEach((sp) => {
+    if (light) return;
+    const at = base(sp.node);
+    const h = radius * 3.5;
+    const mesh = sp.kind === 'fixed'
+      ? new THREE.Mesh(new THREE.BoxGeometry(h * 1.6, h * 1.6, h * 1.6), new THREE.MeshLambertMaterial({ color: 0x555555 }))
+      : new THREE.Mesh(new THREE.ConeGeometry(h * 0.7, h, 4), new THREE.MeshLambertMaterial({ color: sp.kind === 'roller' ? 0x9e9e9e : 0x555555 }));
+    mesh.position.copy(at).addScaledVector(down, h * 0.8);
+    mesh.quaternion.setFromUnitVectors(yAxis, down.clone().negate());
+    scene.add(mesh);
+    (sp.free || []).forEach((f) => {
+      const d = new THREE.Vector3(f[0], f[1], f[2]);
+      const c = at.clone().addScaledVector(down, h * 1.8);
+      scene.add(new THREE.ArrowHelper(d, c, h * 2, 0x222222, h * 0.6, h * 0.4));
+      scene.add(new THREE.ArrowHelper(d.clone().negate(), c, h * 2, 0x222222, h * 0.6, h * 0.4));
+    });
+  });
+  // Axes of a round length at the corner of the model: x red, y green, z blue.
+  const roundLength = (t) => { const dec = Math.pow(10, Math.floor(Math.log10(t))); for (const s of [1, 2, 5]) if (s * dec >= 0.75 * t) return s * dec; return 10 * dec; };
+  const axisLength = roundLength(size * 0.15);
+  const corner = box.min.clone().addScaledVector(new THREE.Vector3(1, 1, S.dimension === 2 ? 0 : 1), -size * 0.08);
+  [[1, 0, 0, 0xd62728], [0, 1, 0, 0x2ca02c], [0, 0, 1, 0x1f77b4]].forEach(([x, y, z, c], k) => {
+    if (S.dimension === 2 && k === 2) return;
+    scene.add(new THREE.ArrowHelper(new THREE.Vector3(x, y, z), corner, axisLength, c, axisLength * 0.2, axisLength * 0.1));
+  });
+  $('scale').textContent = 'axes x red, y green' + (S.dimension === 2 ? '' : ', z blue') + ': each ' + axisLength + ' ' + S.units + ' long';
+  // Labels: nodes (bodies for networks), elements once each, couplings; HTML text over the canvas.
+  const labelLayer = $('labelLayer');
+  const labels = [];
+  const addLabel = (content, where, cls) => {
+    const e = text('div', content, 'label ' + cls);
+    labelLayer.appendChild(e);
+    labels.push({ e, where });
+  };
+  if (!light) {
+    const nodeCount = S.kind === 'network' ? S.bodies.length : n;
+    for (let i = 0; i < nodeCount && i < 400; i++) addLabel(S.nodes.name[i] || '', () => new THREE.Vector3(current[3 * i], current[3 * i + 1], current[3 * i + 2]), 'node');
+    if (S.kind !== 'network')
+      for (let e = 0; e < m && e < 400; e++)
+        if (!S.elements.label || S.elements.label[e]) addLabel(S.elements.name[e] || '', () => {
+          const a = E[2 * e], b = E[2 * e + 1];
+          return new THREE.Vector3((current[3 * a] + current[3 * b]) / 2, (current[3 * a + 1] + current[3 * b + 1]) / 2, (current[3 * a + 2] + current[3 * b + 2]) / 2);
+        }, 'element');
+    S.glyphs.forEach((g) => addLabel(g.name + ' (' + g.type + ')', () => new THREE.Vector3(g.point[0], g.point[1], g.point[2]), 'coupling'));
+  }
+  labelLayer.style.display = 'none';
+  $('labels').addEventListener('change', () => { labelLayer.style.display = $('labels').checked ? '' : 'none'; });
+  const placeLabels = () => {
+    if (labelLayer.style.display === 'none') return;
+    const w = canvas.clientWidth, h = canvas.clientHeight;
+    // Labels that land on one spot (couplings at one point) are stacked 13 px apart.
+    const taken = new Map();
+    labels.forEach((l) => {
+      const v = l.where().project(camera);
+      const x = (v.x + 1) / 2 * w, y = (1 - v.y) / 2 * h;
+      const key = Math.round(x / 8) + ',' + Math.round(y / 8);
+      const k = taken.get(key) || 0;
+      taken.set(key, k + 1);
+      l.e.style.left = x.toFixed(1) + 'px';
+      l.e.style.top = (y + 13 * k).toFixed(1) + 'px';
+    });
+  };
+
   // ---- view state
-  const state = { view: 0, amplitude: 0.5, frozen: null, start: performance.now() };
+  const state = { view: 0, amplitude: 0.5, frozen: null, start: performance.now(), largest: 0 };
   const velocityScale = (mode) => {
     let largest = 0;
     for (let i = 0; i < n; i++)
@@ -192,30 +333,88 @@
     return largest > 0 ? size * 0.25 / largest : 0;
   };
   const red = new THREE.Color(0xc0392b), blue = new THREE.Color(0x2166ac), light_grey = new THREE.Color(0xdddddd);
+  const purple = new THREE.Color(0x7b3294), green = new THREE.Color(0x1b9e77), brown = new THREE.Color(0x8c510a);
+  const row = (cells, head) => {
+    const r = document.createElement('tr');
+    cells.forEach((c) => r.appendChild(text(head ? 'th' : 'td', String(c))));
+    return r;
+  };
+  // The over-constraint as SPACAR users read it: element x deformation of the resultants.
+  const resultantTable = (st) => {
+    if (!st.resultants || !st.resultants.length) return;
+    const columns = [...new Set(st.resultants.map((r) => r[1]))];
+    const rows = [...new Set(st.resultants.map((r) => r[0]))];
+    const table = document.createElement('table');
+    table.className = 'resultants';
+    table.appendChild(row(['element'].concat(columns), true));
+    rows.forEach((el) => table.appendChild(row([el].concat(columns.map((c) => {
+      const r = st.resultants.find((x) => x[0] === el && x[1] === c);
+      return r ? r[2].toFixed(3) : '';
+    })))));
+    $('resultants').appendChild(text('h2', 'Resultants (element \u00d7 deformation)'));
+    $('resultants').appendChild(table);
+  };
   const applyColours = () => {
     const v = views[state.view];
     const legend = $('legend');
     legend.textContent = '';
-    for (let e = 0; e < m; e++) colours[e].copy(grey);
+    for (let e = 0; e < m; e++) colours[e].copy(baseColour(e));
+    wrenchGroup.clear();
+    twistGroup.clear();
+    ghost.visible = v.kind === 'mode';
+    $('moving').textContent = '';
+    $('resultants').textContent = '';
     if (v.kind === 'stress') {
-      const values = S.stresses[v.index].value;
+      const st = S.stresses[v.index];
+      const values = st.value;
+      const kinds = st.kind || [];
       let largest = 0;
       for (const x of values) largest = Math.max(largest, Math.abs(x));
+      state.largest = largest;
+      const seen = new Set();
       for (let e = 0; e < m; e++) {
         const x = values[e] || 0;
         const t = largest > 0 ? Math.abs(x) / largest : 0;
-        colours[e].copy(light_grey).lerp(x > 0 ? red : blue, t);
+        const kind = kinds[e] || 'elongation';
+        if (x !== 0) seen.add(kind);
+        const hue = kind === 'bending' ? purple : kind === 'torsion' ? green : kind === 'rigid' ? brown : (x > 0 ? red : blue);
+        colours[e].copy(light_grey).lerp(hue, t);
       }
-      legend.appendChild(text('span', 'compression '));
-      legend.appendChild(text('span', '', 'bar'));
-      legend.appendChild(text('span', ' tension; largest |N| = ' + largest.toPrecision(4) + ' (unit-norm stress state)'));
+      if (st.wrenches && st.wrenches.length) {
+        st.wrenches.forEach((w) => wrenchGroup.add(screwAxis(w, 0x7b3294)));
+        state.largest = Math.max(...st.wrenches.map((w) => w.magnitude));
+        legend.textContent = st.label + ': purple lines are the lines of action of the wrench each coupling transmits, the arrow the force for the primary = +1 (sign as in the text report); largest |F| = ' + state.largest.toPrecision(4);
+        const table = document.createElement('table');
+        table.appendChild(row(['coupling', '|F| or |M|', 'pitch']));
+        st.wrenches.forEach((w) => table.appendChild(row([w.name, (w.pure ? 'couple ' : '') + w.magnitude.toPrecision(4), w.pure ? '\u221e' : w.pitch.toPrecision(4)])));
+        $('resultants').appendChild(text('h2', 'Wrench of each coupling'));
+        $('resultants').appendChild(table);
+      } else {
+        const kindsShown = [];
+        if (seen.has('elongation')) {
+          legend.appendChild(text('span', 'elongation: compression '));
+          legend.appendChild(text('span', '', 'bar'));
+          legend.appendChild(text('span', ' tension (tension positive)'));
+        }
+        if (seen.has('bending')) kindsShown.push('bending purple');
+        if (seen.has('torsion')) kindsShown.push('torsion green');
+        if (seen.has('rigid')) kindsShown.push('rigid-body constraint brown');
+        legend.appendChild(text('span', (seen.has('elongation') && kindsShown.length ? '; ' : '') + kindsShown.join('; ') +
+          '. ' + st.label + ': each element by its dominant resultant, shade by magnitude; largest = ' + largest.toPrecision(4) + ' (unit-norm stress state)'));
+        resultantTable(st);
+      }
     } else if (v.kind === 'mode') {
+      const mode = S.modes[v.index];
+      (mode.twists || []).forEach((t) => twistGroup.add(screwAxis(t, 0xe66101)));
+      if (mode.moving && mode.moving.length) $('moving').appendChild(text('p', 'Moving coordinates: ' + mode.moving.join(', '), 'note'));
       legend.textContent = velocityScale(S.modes[v.index]) === 0
         ? S.modes[v.index].label + ': moves no drawn point (only rotations, or rotation about an axis through every point of the moving bodies)'
         : S.modes[v.index].label + ': amplitude ' + state.amplitude.toFixed(2) + ' (largest displacement ' +
           (state.amplitude * 25).toFixed(0) + '% of the model size)';
     } else {
       legend.textContent = 'drag to rotate, wheel to zoom';
+      const lines = S.modes.filter((md) => md.moving && md.moving.length).map((md) => md.label + ' moves ' + md.moving.join(', '));
+      if (lines.length) $('moving').appendChild(text('p', 'Moving coordinates: ' + lines.join('; '), 'note'));
     }
     if (lineSet) {
       const c = lineSet.geometry.attributes.color.array;
@@ -249,9 +448,18 @@
       const length = Math.max(d.length(), 1e-12);
       bar.position.copy(a).add(b).multiplyScalar(0.5);
       bar.quaternion.setFromUnitVectors(yAxis, d.divideScalar(length));
-      bar.scale.set(radius, length, radius);
+      bar.scale.set(baseRadius(e), length, baseRadius(e));
     });
     spheres.forEach((s, i) => s.position.copy(at(i)));
+    sheetMeshes.forEach((sh) => {
+      const a = at(E[2 * sh.e]), b = at(E[2 * sh.e + 1]);
+      const half = sh.across.clone().multiplyScalar(0.5 * S.elements.sheet_width * a.distanceTo(b));
+      const p = sh.mesh.geometry.attributes.position;
+      [a.clone().add(half), b.clone().add(half), b.clone().sub(half), a.clone().sub(half)].forEach((v, k) => p.setXYZ(k, v.x, v.y, v.z));
+      p.needsUpdate = true;
+      sh.mesh.geometry.computeVertexNormals();
+      sh.mesh.geometry.computeBoundingSphere();
+    });
     glyphs.forEach((g) => g.group.position.copy(at(g.node)));
   };
 
@@ -291,6 +499,7 @@
     place(phase);
     placeCamera();
     renderer.render(scene, camera);
+    placeLabels();
     api.frames++;
     requestAnimationFrame(frame);
   };
@@ -305,7 +514,13 @@
   api.freeze = (phase) => { state.frozen = phase; };
   api.modeMoves = (i) => velocityScale(S.modes[i]) > 0;
   api.elementColours = () => colours.map((c) => '#' + c.getHexString());
-  api.render = () => { place(state.frozen !== null ? state.frozen : 0); placeCamera(); renderer.render(scene, camera); };
+  api.setLabels = (on) => { $('labels').checked = on; $('labels').dispatchEvent(new Event('change')); placeLabels(); };
+  api.labelsShown = () => labelLayer.style.display !== 'none' ? labels.length : 0;
+  api.ghostShown = () => ghost.visible;
+  api.stressRange = () => state.largest;
+  api.wrenchCount = () => wrenchGroup.children.length;
+  api.twistCount = () => twistGroup.children.length;
+  api.render = () => { place(state.frozen !== null ? state.frozen : 0); placeCamera(); renderer.render(scene, camera); placeLabels(); };
   applyColours();
   placeCamera();
   requestAnimationFrame(frame);

@@ -1,6 +1,8 @@
 // `kinestat analyze FILE`: nett freedom and constraint of a coupling network or a framework.
 
 #include "cli/commands.hpp"
+#include "cli/option_checks.hpp"
+#include "kinestat/io/framework_reader.hpp"
 #include "kinestat/io/yaml_support.hpp"
 
 namespace kinestat::cli {
@@ -9,20 +11,24 @@ void register_analyze(CLI::App& app, Action& action) {
   auto options = std::make_shared<CommonOptions>();
   CLI::App* command = app.add_subcommand(
       "analyze", "Nett degree of freedom and of constraint of a model (kind: network or framework)");
-  command->add_option("model", options->model_path, "Model file (YAML or JSON)")->required();
+  command->add_option("model", options->model_path, "Model file: kinestat YAML / JSON, SPACAR .dat, URDF .urdf, SDFormat .sdf or MJCF .xml")->required();
   command->add_flag("--json", options->json, "Machine-readable JSON instead of text");
   command->add_option("-o,--output", options->output_path, "Write the report to this file instead of standard output");
   command->add_option("--tolerance", options->tolerance,
                       "Relative rank tolerance (fraction of the largest singular value); default max(rows,cols)*eps")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_finite_number());
   register_network_options(*command);
   register_framework_options(*command);
   command->callback([options, &action] {
     action = [options] {
+      const InputFormat format = input_format(options->model_path);
+      if (format == InputFormat::spacar) return run_framework_analysis(*options, read_spacar_model(options->model_path), options->model_path);
+      if (format != InputFormat::kinestat)
+        return run_network_analysis(*options, read_imported_network(options->model_path, format), options->model_path);
       const io::YamlFile model = io::YamlFile::load(options->model_path);
       const std::string kind = io::model_kind(model);
-      if (kind == "network") return run_network_analysis(*options, model);
-      if (kind == "framework") return run_framework_analysis(*options, model);
+      if (kind == "network") return run_network_analysis(*options, io::read_network_model(model), model.path());
+      if (kind == "framework") return run_framework_analysis(*options, io::read_framework(model), model.path());
       throw io::InputError({options->model_path, 0, 0},
                            "a model of kind 'structure' is analysed with 'kinestat structure'");
     };

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "kinestat/framework/framework_model.hpp"
+#include "kinestat/io/network_reader.hpp"
 #include "kinestat/io/yaml_support.hpp"
 #include "kinestat/report/scene.hpp"
 #include "kinestat/structure/structure_model.hpp"
@@ -38,6 +40,17 @@ void register_analyze(CLI::App& app, Action& action);
 void register_structure(CLI::App& app, Action& action);
 void register_draw(CLI::App& app, Action& action);
 void register_report(CLI::App& app, Action& action);
+void register_convert(CLI::App& app, Action& action);
+
+/// The format of a model file, from its extension (docs/formats.md): `.dat` SPACAR, `.urdf`
+/// URDF, `.sdf` / `.world` SDFormat, `.xml` by its root element (<mujoco> MJCF, <robot> URDF,
+/// <sdf> SDFormat); anything else kinestat YAML / JSON.
+enum class InputFormat { kinestat, spacar, urdf, sdformat, mjcf };
+InputFormat input_format(const std::string& path);
+/// Reads a SPACAR file; its notices (what was ignored) go to standard error, one line each.
+framework::FrameworkModel read_spacar_model(const std::string& path);
+/// Reads a URDF, SDFormat or MJCF file; notices go to standard error, one line each.
+io::LoadedNetwork read_imported_network(const std::string& path, InputFormat format);
 
 /// A model of any kind, analysed and turned into a scene for `draw` and `report`.
 struct LoadedScene {
@@ -50,13 +63,13 @@ LoadedScene load_scene(const std::string& path, std::optional<double> tolerance)
 // `analyze` dispatches on the model's kind to one of these; each kind adds its own options.
 void register_network_options(CLI::App& analyze);
 void register_framework_options(CLI::App& analyze);
-int run_network_analysis(const CommonOptions& options, const io::YamlFile& model);
+int run_network_analysis(const CommonOptions& options, const io::LoadedNetwork& model, const std::string& path);
 /// Names of the kind-specific options given on the command line (e.g. "--primary").
 std::vector<std::string> given_network_options();
 std::vector<std::string> given_framework_options();
 /// Exit 2 when options of another model kind were given: "--primary is an option that is not
 /// used by a framework model".
 void reject_options(const std::vector<std::string>& given, const std::string& kind, const std::string& path);
-int run_framework_analysis(const CommonOptions& options, const io::YamlFile& model);
+int run_framework_analysis(const CommonOptions& options, const framework::FrameworkModel& model, const std::string& path);
 
 }  // namespace kinestat::cli

@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "cli/commands.hpp"
+#include "cli/option_checks.hpp"
 #include "kinestat/io/input_error.hpp"
 #include "kinestat/report/structure_report.hpp"
 #include "kinestat/report/svg_writer.hpp"
@@ -59,13 +60,13 @@ void register_draw(CLI::App& app, Action& action) {
       ->check(CLI::IsMember({"graph", "mechanism", "structure"}));
   command->add_option("-o,--output", options->common.output_path, "Write the SVG to this file instead of standard output");
   command->add_option("--mode", options->mode, "Mechanism: kinematic mode drawn as arrows, 1-based (0: none)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(non_negative_whole_number())
       ->capture_default_str();
   command->add_option("--stress", options->stress, "Mechanism: self-stress drawn as colours, 1-based (0: none)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(non_negative_whole_number())
       ->capture_default_str();
   command->add_option("--tolerance", options->common.tolerance, "Relative rank tolerance (as for analyze)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_finite_number());
   command->callback([options, &action] { action = [options] { return run(*options); }; });
 }
 

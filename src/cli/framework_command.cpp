@@ -5,9 +5,9 @@
 #include <memory>
 
 #include "cli/commands.hpp"
+#include "cli/option_checks.hpp"
 #include "kinestat/design/framework_verdict.hpp"
 #include "kinestat/framework/framework_analysis.hpp"
-#include "kinestat/io/framework_reader.hpp"
 #include "kinestat/report/framework_report.hpp"
 #include "kinestat/report/json_text.hpp"
 
@@ -16,12 +16,16 @@ namespace kinestat::cli {
 namespace {
 // Framework-only options; filled by register_framework_options before the action runs.
 long long dense_limit = 1500;
+long long sparse_vectors = 0;
 CLI::Option* dense_limit_option = nullptr;
+CLI::Option* vectors_option = nullptr;
 }  // namespace
 
 std::vector<std::string> given_framework_options() {
-  if (dense_limit_option && dense_limit_option->count() > 0) return {dense_limit_option->get_name()};
-  return {};
+  std::vector<std::string> given;
+  for (const CLI::Option* option : {dense_limit_option, vectors_option})
+    if (option != nullptr && option->count() > 0) given.push_back(option->get_name());
+  return given;
 }
 
 void reject_options(const std::vector<std::string>& given, const std::string& kind, const std::string& path) {
@@ -34,15 +38,19 @@ void reject_options(const std::vector<std::string>& given, const std::string& ki
 void register_framework_options(CLI::App& analyze) {
   dense_limit_option = analyze.add_option("--dense-limit", dense_limit,
                      "Frameworks: largest matrix dimension analysed with the dense SVD (larger: sparse QR counts only); default 1500")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_whole_number());
+  vectors_option = analyze.add_option("--vectors", sparse_vectors,
+                     "Frameworks above --dense-limit: also the first K modes and K stress states (from the sparse QR) "
+                     "and the release proposal; default 0 (counts only)")
+      ->check(non_negative_whole_number());
 }
 
-int run_framework_analysis(const CommonOptions& options, const io::YamlFile& model_file) {
-  reject_options(given_network_options(), "a framework", model_file.path());
-  const framework::FrameworkModel model = io::read_framework(model_file);
+int run_framework_analysis(const CommonOptions& options, const framework::FrameworkModel& model, const std::string& path) {
+  reject_options(given_network_options(), "a framework", path);
   framework::AnalysisOptions analysis_options;
   analysis_options.tolerance.relative = options.tolerance;
   analysis_options.dense_limit = static_cast<Eigen::Index>(dense_limit);
+  analysis_options.sparse_vectors = static_cast<Eigen::Index>(sparse_vectors);
   const framework::FrameworkAnalysis analysis = framework::analyse_framework(model, analysis_options);
   const design::Verdict verdict = design::framework_verdict(model, analysis, analysis_options);
   if (options.json) {

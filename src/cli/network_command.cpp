@@ -2,10 +2,14 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include "cli/commands.hpp"
+#include "cli/option_checks.hpp"
 #include "kinestat/design/network_verdict.hpp"
 #include "kinestat/io/network_reader.hpp"
 #include "kinestat/network/analyse_network.hpp"
+#include "kinestat/network/sparse_network.hpp"
 #include "kinestat/report/json_text.hpp"
 #include "kinestat/report/network_report.hpp"
 
@@ -18,6 +22,8 @@ struct NetworkOptions {
   bool floating = false;
   bool matrices = false;
   bool coupled_pairs_only = false;
+  bool sparse = false;
+  bool dense = false;
   std::vector<std::string> primary;
   std::vector<std::string> values;  // name=number
   std::vector<CLI::Option*> given;  // the options above, to tell whether any was used
@@ -38,6 +44,12 @@ std::vector<std::pair<std::string, screw::Rational>> parse_values(const std::vec
     const std::string name = text.substr(0, equals);
     for (const auto& [other, value] : values)
       if (other == name) throw io::InputError({"--value", 0, 0}, fmt::format("'{}' is given a value twice", name));
+    const double value = number->get_d();
+    if (!std::isfinite(value) || (value == 0 && sgn(*number) != 0)) {
+      throw io::InputError({"--value", 0, 0}, fmt::format("'{}' is out of range: a value must lie within about 1e-308 "
+                                                           "to 1e308 in magnitude",
+                                                           text));
+    }
     values.emplace_back(name, *number);
   }
   return values;
@@ -51,7 +63,13 @@ void register_network_options(CLI::App& analyze) {
   auto* exact = analyze.add_flag("--exact", o.exact, "Networks: exact rational arithmetic (GMP)");
   auto* floating = analyze.add_flag("--float", o.floating, "Networks: floating point (SVD ranks with the tolerance)");
   exact->excludes(floating);
-  o.given = {exact, floating,
+  auto* sparse = analyze.add_flag("--sparse", o.sparse,
+                                  fmt::format("Networks: sparse body-twist path (FN, CN, stressed and moving couplings); "
+                                              "the default above {} couplings",
+                                              network::kDenseNetworkLimit));
+  auto* dense = analyze.add_flag("--dense", o.dense, "Networks: Davies' dense matrices at any size");
+  sparse->excludes(dense);
+  o.given = {exact, floating, sparse, dense,
              analyze.add_flag("--matrices", o.matrices, "Networks: also print B, Q, BM, QA and the unit matrices"),
              analyze.add_flag("--coupled-pairs", o.coupled_pairs_only, "Networks: list only directly coupled pairs of bodies"),
              analyze.add_option("--primary", o.primary, "Networks: primary variables, e.g. --primary sa,ta,vc,Ub,We")->delimiter(','),
@@ -65,10 +83,9 @@ std::vector<std::string> given_network_options() {
   return names;
 }
 
-int run_network_analysis(const CommonOptions& common, const io::YamlFile& file) {
+int run_network_analysis(const CommonOptions& common, const io::LoadedNetwork& loaded, const std::string& path) {
   const NetworkOptions& o = network_options();
-  reject_options(given_framework_options(), "a network", file.path());
-  const io::LoadedNetwork loaded = io::read_network_model(file);
+  reject_options(given_framework_options(), "a network", path);
   network::AnalysisOptions options;
   options.arithmetic = o.exact ? network::Arithmetic::exact
                                : (o.floating ? network::Arithmetic::floating : network::Arithmetic::automatic);
@@ -76,13 +93,35 @@ int run_network_analysis(const CommonOptions& common, const io::YamlFile& file) 
   if (!o.primary.empty()) options.primary = o.primary;
   options.values = parse_values(o.values);
   options.all_pairs = !o.coupled_pairs_only;
+  // The sparse path for large networks unless something only the dense path gives was asked for.
+  const bool dense_request = o.dense || o.exact || o.matrices || !o.primary.empty() || !o.values.empty();
+  if (o.sparse || (!dense_request && static_cast<int>(loaded.model.couplings.size()) > network::kDenseNetworkLimit)) {
+    network::SparseNetworkResult sparse;
+    try {
+      sparse = network::analyse_network_sparse(loaded.model, options.tolerance);
+    } catch (const network::ModelError& error) {
+      throw io::locate(error, loaded, file.path());
+    }
+    emit(common, common.json ? report::json_text(report::sparse_network_json(loaded.model, sparse))
+                             : report::sparse_network_text(loaded.model, sparse));
+    return 0;
+  }
   network::NetworkResult result;
   try {
     result = network::analyse_network(loaded.model, options);
   } catch (const network::ModelError& error) {
     if (error.field() == "primary" && !o.primary.empty()) throw io::InputError({"--primary", 0, 0}, error.what());
     if (error.field() == "values" && !o.values.empty()) throw io::InputError({"--value", 0, 0}, error.what());
-    throw io::locate(error, loaded, file.path());
+    throw io::locate(error, loaded, path);
+  }
+  if (const auto overflowing = first_non_finite_result(result)) {
+    const auto values = loaded.field_locations.find("values");
+    const io::SourceLocation where = !o.values.empty() ? io::SourceLocation{"--value", 0, 0}
+                                     : values != loaded.field_locations.end() ? values->second
+                                                                              : io::SourceLocation{file.path(), 0, 0};
+    throw io::InputError(where, fmt::format("{} overflows a double (beyond about 1e308): the values or coordinates are "
+                                            "too large; scale them down (units do not change the counts)",
+                                            *overflowing));
   }
   const design::Verdict verdict = design::network_verdict(loaded.model, result, options);
   report::NetworkReportOptions report_options;

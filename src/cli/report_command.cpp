@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "cli/commands.hpp"
+#include "cli/option_checks.hpp"
 #include "kinestat/io/input_error.hpp"
 #include "kinestat/report/html_writer.hpp"
 #include "kinestat/report/structure_report.hpp"
@@ -18,7 +19,7 @@ void register_report(CLI::App& app, Action& action) {
       "report", "Write a self-contained interactive HTML report (summary, 3D view, modes, self-stress)");
   command->add_option("model", options->model_path, "Model file (YAML or JSON, any kind)")->required();
   command->add_option("-o,--output", options->output_path, "Write the HTML to this file instead of standard output");
-  command->add_option("--tolerance", options->tolerance, "Relative rank tolerance (as for analyze)")->check(CLI::PositiveNumber);
+  command->add_option("--tolerance", options->tolerance, "Relative rank tolerance (as for analyze)")->check(positive_finite_number());
   command->callback([options, &action] {
     action = [options] {
       // The model first: a bad model is reported as such whether or not the viewer is built in.

@@ -5,6 +5,7 @@
 #include "cli/commands.hpp"
 #include "kinestat/io/input_error.hpp"
 #include "kinestat/io/output_file.hpp"
+#include "kinestat/linalg/gmp_allocation.hpp"
 
 namespace kinestat::cli {
 
@@ -26,6 +27,7 @@ int run(int argc, const char* const* argv) {
   register_structure(app, action);
   register_draw(app, action);
   register_report(app, action);
+  register_convert(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& success) {
@@ -34,6 +36,7 @@ int run(int argc, const char* const* argv) {
     app.exit(error);
     return 2;
   }
+  linalg::install_throwing_gmp_allocation();
   try {
     return action ? action() : 2;
   } catch (const io::InputError& error) {

@@ -15,34 +15,47 @@
 
 namespace kinestat::cli {
 
+namespace {
+report::Scene framework_scene(const framework::FrameworkModel& model, std::optional<double> tolerance) {
+  framework::AnalysisOptions options;
+  options.tolerance.relative = tolerance;
+  const framework::FrameworkAnalysis analysis = framework::analyse_framework(model, options);
+  report::Scene scene = report::framework_scene(model, analysis);
+  scene.verdict = design::framework_verdict(model, analysis, options);
+  scene.units = model.units;
+  return scene;
+}
+}  // namespace
+
 LoadedScene load_scene(const std::string& path, std::optional<double> tolerance) {
-  const io::YamlFile file = io::YamlFile::load(path);
+  const InputFormat format = input_format(path);
+  if (format == InputFormat::spacar) return {"framework", framework_scene(read_spacar_model(path), tolerance), {}};
+  std::optional<io::YamlFile> file;
   LoadedScene loaded;
-  loaded.kind = io::model_kind(file);
+  if (format == InputFormat::kinestat) {
+    file = io::YamlFile::load(path);
+    loaded.kind = io::model_kind(*file);
+  } else {
+    loaded.kind = "network";
+  }
   if (loaded.kind == "network") {
-    const io::LoadedNetwork network = io::read_network_model(file);
+    const io::LoadedNetwork network = file ? io::read_network_model(*file) : read_imported_network(path, format);
     network::AnalysisOptions options;
     options.tolerance.relative = tolerance;
     network::NetworkResult result;
     try {
       result = network::analyse_network(network.model, options);
     } catch (const network::ModelError& error) {
-      throw io::locate(error, network, file.path());
+      throw io::locate(error, network, path);
     }
     loaded.scene = report::network_scene(network.model, result);
     loaded.scene.verdict = design::network_verdict(network.model, result, options);
     loaded.scene.units = network.model.units;
-    loaded.structure_model = io::structure_of_network(network, file.path());
+    loaded.structure_model = io::structure_of_network(network, path);
   } else if (loaded.kind == "framework") {
-    const framework::FrameworkModel model = io::read_framework(file);
-    framework::AnalysisOptions options;
-    options.tolerance.relative = tolerance;
-    const framework::FrameworkAnalysis analysis = framework::analyse_framework(model, options);
-    loaded.scene = report::framework_scene(model, analysis);
-    loaded.scene.verdict = design::framework_verdict(model, analysis, options);
-    loaded.scene.units = model.units;
+    loaded.scene = framework_scene(io::read_framework(*file), tolerance);
   } else {
-    loaded.structure_model = io::read_structure_model(file);
+    loaded.structure_model = io::read_structure_model(*file);
     const structure::Decomposition decomposition = structure::decompose(*loaded.structure_model);
     loaded.scene = report::structure_scene(*loaded.structure_model, decomposition);
     loaded.scene.verdict = design::structure_verdict(*loaded.structure_model, decomposition);

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "cli/commands.hpp"
+#include "cli/option_checks.hpp"
 #include "kinestat/design/structure_verdict.hpp"
 #include "kinestat/io/network_reader.hpp"
 #include "kinestat/io/network_structure.hpp"
@@ -46,7 +47,7 @@ bool starts_with_matrix(const std::string& text) {
 
 structure::StructureModel read_model(const StructureOptions& options) {
   if (options.from_stdin || options.common.model_path == "-") {
-    const std::string text{std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>()};
+    const std::string text = io::read_model_text(std::cin, "<stdin>");
     // A bare matrix starts with a code (after blank lines and '#' comments); anything else
     // is read as a YAML model.
     if (!starts_with_matrix(text)) {
@@ -55,6 +56,12 @@ structure::StructureModel read_model(const StructureOptions& options) {
     }
     return io::read_adjacency_text(text, "<stdin>");
   }
+  const InputFormat format = input_format(options.common.model_path);
+  if (format != InputFormat::kinestat && format != InputFormat::spacar)
+    return io::structure_of_network(read_imported_network(options.common.model_path, format), options.common.model_path);
+  if (format == InputFormat::spacar)
+    throw io::InputError({options.common.model_path, 1, 1}, "a SPACAR file is a framework of nodes and elements; "
+                                                            "'kinestat structure' reads mechanisms (kind: structure or network)");
   const io::YamlFile file = io::YamlFile::load(options.common.model_path);
   const std::string kind = io::model_kind(file);
   if (kind == "network") return io::structure_of_network(io::read_network_model(file), file.path());
@@ -112,7 +119,7 @@ void register_structure(CLI::App& app, Action& action) {
       ->check(CLI::IsMember({"matching", "seed"}));
   command->add_option("--transformations", options->max_transformations,
                       "Analyse the other placements of the inputs when there are at most this many (0: skip)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(non_negative_whole_number())
       ->capture_default_str();
   command->callback([options, &action] {
     if (options->common.model_path.empty() && !options->from_stdin) {

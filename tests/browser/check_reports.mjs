@@ -1,7 +1,10 @@
 // Browser tests of the HTML reports: headless Chromium (Debian's `chromium`) driven by
 // playwright-core from the npm registry. For every shipped example: the report opens without
-// console errors and the 3D canvas is not blank; a kinematic mode at two amplitudes gives two
-// different pictures; the 12-truss self-stress colours its twelve bars with two colours.
+// console errors, the 3D canvas is not blank, the verdict panel leads the side panel and the
+// labels toggle shows and hides labels; a kinematic mode at two amplitudes gives two different
+// pictures with the undeformed shape in grey under it; the 12-truss self-stress colours its
+// twelve bars with two colours; Davies' network shows its self-stresses as coupling wrenches
+// and its modes as body twists; the folded-sheet guide's self-stress has a non-zero range.
 // Screenshots go to --out. Exit 0 all passed, 1 failures, 77 skipped (no playwright-core).
 //
 // node tests/browser/check_reports.mjs --cli build/release/kinestat \
@@ -60,14 +63,16 @@ const pixels = () => {
   const g = c.getContext('2d');
   g.drawImage(source, 0, 0);
   const data = g.getImageData(0, 0, c.width, c.height).data;
-  let ink = 0, red = 0, blue = 0;
+  let ink = 0, red = 0, blue = 0, grey = 0;
   for (let i = 0; i < data.length; i += 4) {
     const r = data[i], gr = data[i + 1], b = data[i + 2];
     if (r < 235 || gr < 235 || b < 235) ink++;
     if (r > gr + 60 && r > b + 60) red++;
     if (b > r + 60 && b > gr + 20) blue++;
+    // The undeformed shape's light grey (#b0b0b0).
+    if (Math.abs(r - 176) < 20 && Math.abs(gr - 176) < 20 && Math.abs(b - 176) < 20) grey++;
   }
-  return { total: data.length / 4, ink, red, blue, url: source.toDataURL() };
+  return { total: data.length / 4, ink, red, blue, grey, url: source.toDataURL() };
 };
 
 // Opens a report and waits for the viewer to draw a few frames. Returns the page, the console
@@ -102,6 +107,30 @@ for (const file of files) {
   check(still.ink > still.total * 0.002, name + ': the 3D canvas is blank (' + still.ink + ' inked pixels)');
   await page.screenshot({ path: path.join(out, name + '.png') });
   const views = await page.evaluate(() => window.kinestatViewer.views);
+  // The verdict panel comes first in the side panel and says something.
+  const verdict = await page.evaluate(() => {
+    const box = document.getElementById('verdict');
+    const side = document.getElementById('side');
+    return { text: box ? box.textContent.trim() : '', first: box && [...side.children].indexOf(box) <= 1 };
+  });
+  check(verdict.text.length > 10 && verdict.first, name + ': no verdict panel at the top of the side panel');
+  // Labels: hidden by default, shown by the toggle, hidden again.
+  const labels = await page.evaluate(() => {
+    const v = window.kinestatViewer;
+    const before = v.labelsShown();
+    v.setLabels(true);
+    const shown = v.labelsShown();
+    const visible = [...document.querySelectorAll('#labelLayer .label')].filter((e) => e.getBoundingClientRect().width > 0).length;
+    v.setLabels(false);
+    return { before, shown, visible, after: v.labelsShown() };
+  });
+  check(labels.before === 0 && labels.shown > 0 && labels.visible > 0 && labels.after === 0,
+        name + ': the labels toggle does not show and hide labels (' + JSON.stringify(labels) + ')');
+  if (['truss-12', 'davies-2-circuit'].includes(name)) {
+    await page.evaluate(() => window.kinestatViewer.setLabels(true));
+    await page.screenshot({ path: path.join(out, name + '-labels.png') });
+    await page.evaluate(() => window.kinestatViewer.setLabels(false));
+  }
   // Every mode that moves a drawn point must change the picture when the slider moves.
   let moving = 0;
   for (let mode = 0; mode < views.length; mode++) {
@@ -124,6 +153,9 @@ for (const file of files) {
       return document.getElementById('view').toDataURL();
     });
     check(a !== b, name + ': moving the amplitude slider of ' + views[mode] + ' does not change the picture');
+    // The undeformed shape stays in grey under the displaced one.
+    const grey = { shown: await page.evaluate(() => window.kinestatViewer.ghostShown()), pixels: (await page.evaluate(pixels)).grey };
+    check(grey.shown && grey.pixels > 20, name + ': no undeformed shape under ' + views[mode] + ' (' + JSON.stringify(grey) + ')');
     if (moving === 1) await page.screenshot({ path: path.join(out, name + '-mode.png') });
   }
   if (['truss-12', 'davies-2-circuit', 'four-bar-linkage'].includes(name))
@@ -164,7 +196,43 @@ for (const file of files) {
       return v.elementColours();
     }, stress);
     const seen = await page.evaluate(pixels);
+    const range = await page.evaluate(() => window.kinestatViewer.stressRange());
+    check(range > 0, name + ': the self-stress view has a zero range');
+    if (name.startsWith('folded-sheet-guide')) {
+      const coloured = result.filter((c) => !['#222222', '#444444', '#9fb3c8', '#dddddd', '#555555'].includes(c)).length;
+      check(coloured >= 10, name + ': the flexure self-stress colours only ' + coloured + ' elements');
+    }
+    if (name === 'davies-2-circuit') {
+      // Screenshots of the wrenches alone, with labels: hide the coupling screws and the pair.
+      await page.evaluate(() => {
+        const box = document.getElementById('screws');
+        box.checked = false;
+        box.dispatchEvent(new Event('change'));
+        const pair = document.getElementById('pair');
+        pair.selectedIndex = 0;
+        pair.dispatchEvent(new Event('change'));
+        window.kinestatViewer.setLabels(true);
+      });
+      const wrenches = [];
+      for (let i = 0; i < views.length; i++) {
+        if (!views[i].startsWith('self-stress')) continue;
+        wrenches.push(await page.evaluate((k) => { const v = window.kinestatViewer; v.setView(k); v.render(); return v.wrenchCount(); }, i));
+        await page.screenshot({ path: path.join(out, name + '-stress' + wrenches.length + '.png') });
+      }
+      check(wrenches.length === 2 && wrenches.every((w) => w > 0), name + ': expected two self-stress views with coupling wrenches, got ' + JSON.stringify(wrenches));
+      const twists = [];
+      for (let i = 0; i < views.length; i++) {
+        if (!views[i].startsWith('mode')) continue;
+        twists.push(await page.evaluate((k) => { const v = window.kinestatViewer; v.setView(k); v.render(); return v.twistCount(); }, i));
+      }
+      check(twists.length === 3 && twists.every((t) => t > 0), name + ': expected three modes with body twists, got ' + JSON.stringify(twists));
+      await page.evaluate(() => window.kinestatViewer.setLabels(false));
+      await page.evaluate((i) => { const v = window.kinestatViewer; v.setView(i); v.render(); }, stress);
+    }
     if (name === 'truss-12') {
+      await page.evaluate(() => window.kinestatViewer.setLabels(true));
+      await page.screenshot({ path: path.join(out, name + '-stress-labels.png') });
+      await page.evaluate(() => window.kinestatViewer.setLabels(false));
       check(result.length === 12, name + ': expected 12 bars, found ' + result.length);
       check(new Set(result).size === 2, name + ': the self-stress should colour the bars with two colours, found ' + [...new Set(result)].join(', '));
       check(seen.red > 100 && seen.blue > 100, name + ': tension (red) and compression (blue) not both visible (' + seen.red + ' red, ' + seen.blue + ' blue pixels)');

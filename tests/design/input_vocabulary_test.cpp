@@ -80,3 +80,23 @@ TEST(InputVocabulary, AValueGivenTwiceIsAnError) {
 
 }  // namespace
 }  // namespace kinestat
+
+namespace kinestat {
+namespace {
+
+// Davies' network has the motion primaries sa, ta, vc (seed 000); a value for sa alone
+// determines sa itself and the couplings' motions that depend on sa only, and names ta, vc.
+TEST(InputVocabulary, PartialValuesEvaluateWhatTheyDetermineAndNameTheRest) {
+  const auto text = testing::run_cli("analyze " + testing::example_path("davies-2-circuit.yaml") + " --value sa=1.5");
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_NE(text.out.find("no value for the motion primaries ta, vc"), std::string::npos);
+  const auto json = testing::run_cli("analyze --json " + testing::example_path("davies-2-circuit.yaml") + " --value sa=1.5");
+  ASSERT_EQ(json.exit_code, 0);
+  const auto values = nlohmann::json::parse(json.out)["values"];
+  EXPECT_EQ(values["missing"], nlohmann::json::array({"ta", "vc"}));
+  EXPECT_EQ(values["motions"]["sa"], 1.5);
+  EXPECT_TRUE(values["motions"]["ta"].is_null());
+}
+
+}  // namespace
+}  // namespace kinestat

@@ -20,7 +20,7 @@
 namespace kinestat {
 namespace {
 
-using json = nlohmann::ordered_json;  // key order is part of the contract (verdict first)
+using json = nlohmann::ordered_json;
 using testing::example_path;
 using testing::run_cli;
 
@@ -187,10 +187,11 @@ const std::vector<FrameworkCase>& framework_cases() {
   // From each file's header: seed 002 (Table 2, Figs. 3-6) and Maxwell's rule with the geometry.
   static const std::vector<FrameworkCase> cases{
       {"truss-12.yaml", 1, 1, 0},                      // one mechanism (top square), one self-stress
-      {"folded-sheet-guide-5-symmetric.yaml", 1, 1, 1},  // rank 34 of 35 x 35
-      {"folded-sheet-guide-5.yaml", 0, 0, 6},          // non-singular: exactly constrained
-      {"folded-sheet-guide-6.yaml", 0, 1, 1},          // 42 x 41 of rank 41
+      {"folded-sheet-guide-5-symmetric.yaml", 1, 1, 6},  // rank 34 of 35 x 35; C.z and 5 bendings declared
+      {"folded-sheet-guide-5.yaml", 0, 0, 6},          // non-singular; C.z and 5 bendings declared
+      {"folded-sheet-guide-6.yaml", 0, 1, 7},          // 42 x 41 of rank 41; C.z and 6 bendings declared
       {"folded-sheet-double-clamped.yaml", 1, 1, 0},   // 6 x 6 of rank 5
+      {"folded-sheet-flexure.yaml", 6, 0, 0},          // 6 x 12 of rank 6: B's five free motions and F's turn
       {"wire-flexure-guide.yaml", 0, 0, 1},            // square, non-singular
       {"braced-square.yaml", 0, 1, 0},                 // Maxwell: s - m = 1, rigid
       {"pellegrino-calladine-two-bar.yaml", 1, 1, 0},  // m = s = 1

@@ -103,6 +103,26 @@ TEST(FrameworkCli, OutputFileAndSparsePath) {
   EXPECT_EQ(j["mechanisms"], 0);
 }
 
+TEST(FrameworkCli, SparsePathWithVectors) {
+  // folded-sheet-guide-6 (seed 002, Fig. 6): one state of self-stress, in the sheets' in-plane
+  // bending (the published result); --vectors 3 asks for at most three of each.
+  const auto path = temp_dir() / "report.json";
+  const CliRun r =
+      run("analyze --json --dense-limit 5 --vectors 3 -o " + path.string() + " " + example("folded-sheet-guide-6.yaml"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(slurp(path));
+  EXPECT_EQ(j["method"], "sparse_qr");
+  EXPECT_EQ(j["vectors"], true);
+  EXPECT_EQ(j["vector_limit"], 3);
+  EXPECT_EQ(j["modes"].size(), 0u);
+  ASSERT_EQ(j["stresses"].size(), 1u);
+  EXPECT_EQ(j["releases"].size(), 1u);  // one self-stress: one release
+  EXPECT_EQ(j["constrain"].size(), 0u);
+  EXPECT_LT(j["null_space_residual"].get<double>(), 1e-12);
+  // Compact: only non-zero resultants are written.
+  for (const auto& entry : j["stresses"][0]["resultants"]) EXPECT_NE(entry["value"].get<double>(), 0.0);
+}
+
 struct BadFile {
   const char* name;
   const char* text;

@@ -58,7 +58,10 @@ TEST(NetworkCli, PrimaryAndValuesOnTheCommandLine) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["motions"]["sa"], "-se");
-  EXPECT_FALSE(j.contains("values"));  // tb and ve have no values
+  // Issue 10: partial values evaluate what they determine (sa = -se = -2) and name the
+  // primaries still without a value; they used to print nothing.
+  EXPECT_EQ(j["values"]["motions"]["sa"], -2.0);
+  EXPECT_EQ(j["values"]["missing"], nlohmann::json::array({"tb", "ve"}));
   const CliRun bad = run("analyze --primary sa,tb,tc " + example("davies-2-circuit.yaml"));
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.err.find("--primary: error: 'tc' cannot be a primary"), std::string::npos) << bad.err;
@@ -111,50 +114,50 @@ INSTANTIATE_TEST_SUITE_P(
                  "kinestat: 1\ncouplings:\n  - {name: A, type: prismatic, between: [1, 2]}\n", "3:5",
                  "missing the key 'axis'"},
         BadInput{"extra_key",
-                 "kinestat: 1\ncouplings:\n  - {name: A, type: spherical, between: [1, 2], axis: [0, 0, 1]}\n",
+                 "kinestat: 1\ncouplings:\n  - {name: A, type: spherical, between: [1, 2], axis: [0, 0, 1], point: [0, 0, 0]}\n",
                  "3:49", "unknown key 'axis'"},
         BadInput{"zero_axis",
-                 "kinestat: 1\ncouplings:\n  - {name: A, type: revolute, between: [1, 2], axis: [0, 0, 0]}\n",
+                 "kinestat: 1\ncouplings:\n  - {name: A, type: revolute, between: [1, 2], axis: [0, 0, 0], point: [0, 0, 0]}\n",
                  "3:54", "must not be the zero vector"},
         BadInput{"nan",
-                 "kinestat: 1\ncouplings:\n  - {name: A, type: revolute, between: [1, 2], axis: [0, .nan, 1]}\n",
+                 "kinestat: 1\ncouplings:\n  - {name: A, type: revolute, between: [1, 2], axis: [0, .nan, 1], point: [0, 0, 0]}\n",
                  "3:58", "must be a finite number"},
         BadInput{"infinity",
                  "kinestat: 1\ncouplings:\n  - {name: A, type: spherical, between: [1, 2], point: [1e999, 0, 0]}\n",
                  "3:57", "out of range"},
-        BadInput{"self_coupling", "kinestat: 1\ncouplings:\n  - {name: A, type: spherical, between: [1, 1]}\n",
+        BadInput{"self_coupling", "kinestat: 1\ncouplings:\n  - {name: A, type: spherical, between: [1, 1], point: [0, 0, 0]}\n",
                  "3:41", "joins body '1' to itself"},
         BadInput{"duplicate_name",
-                 "kinestat: 1\ncouplings:\n  - {name: A, type: spherical, between: [1, 2]}\n"
-                 "  - {name: A, type: spherical, between: [2, 3]}\n",
+                 "kinestat: 1\ncouplings:\n  - {name: A, type: spherical, between: [1, 2], point: [0, 0, 0]}\n"
+                 "  - {name: A, type: spherical, between: [2, 3], point: [0, 0, 0]}\n",
                  "4:12", "duplicate coupling name 'A'"},
         BadInput{"duplicate_key", "kinestat: 1\nname: x\nname: y\ncouplings: []\n", "3:1", "duplicate key 'name'"},
         BadInput{"empty_model", "kinestat: 1\ncouplings: []\n", "2:12", "no couplings"},
         BadInput{"empty_file", "", "1:1", "empty model file"},
         BadInput{"wrong_version", "kinestat: 2\ncouplings: []\n", "1:11", "unsupported format version"},
         BadInput{"disconnected",
-                 "kinestat: 1\ncouplings:\n  - {name: A, type: spherical, between: [1, 2]}\n"
-                 "  - {name: B, type: spherical, between: [3, 4]}\n",
+                 "kinestat: 1\ncouplings:\n  - {name: A, type: spherical, between: [1, 2], point: [0, 0, 0]}\n"
+                 "  - {name: B, type: spherical, between: [3, 4], point: [0, 0, 0]}\n",
                  "3:3", "not all connected"},
         BadInput{"unknown_primary",
-                 "kinestat: 1\ncouplings:\n  - {name: A, type: spherical, between: [1, 2]}\nprimary: [sa, qq]\n",
+                 "kinestat: 1\ncouplings:\n  - {name: A, type: spherical, between: [1, 2], point: [0, 0, 0]}\nprimary: [sa, qq]\n",
                  "4:15", "'qq' is not a motion or action magnitude"},
         BadInput{"dependent_primary",
-                 "kinestat: 1\ncouplings:\n  - {name: A, type: spherical, between: [1, 2]}\n"
+                 "kinestat: 1\ncouplings:\n  - {name: A, type: spherical, between: [1, 2], point: [0, 0, 0]}\n"
                  "  - {name: B, type: spherical, between: [1, 2], point: [0, 0, 1]}\nprimary: [ra]\n",
                  "5:11", "cannot be a primary variable"},
         BadInput{"unknown_chord",
-                 "kinestat: 1\ncouplings:\n  - {name: A, type: spherical, between: [1, 2]}\nchords: [Z]\n", "4:10",
+                 "kinestat: 1\ncouplings:\n  - {name: A, type: spherical, between: [1, 2], point: [0, 0, 0]}\nchords: [Z]\n", "4:10",
                  "unknown coupling 'Z'"},
         BadInput{"parallel_universal",
                  "kinestat: 1\ncouplings:\n  - {name: U, type: universal, between: [1, 2], axis: [0, 0, 1], "
-                 "axis2: [0, 0, 2]}\n",
+                 "axis2: [0, 0, 2], point: [0, 0, 0]}\n",
                  "3:5", "must not be parallel"},
         BadInput{"deep_nesting", "kinestat: 1\ncouplings: [[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[["
                                  "[[[[[[[[[[]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]\n",
                  "2:76", "nesting deeper"},
         BadInput{"values_not_primary",
-                 "kinestat: 1\ncouplings:\n  - {name: A, type: spherical, between: [1, 2]}\n"
+                 "kinestat: 1\ncouplings:\n  - {name: A, type: spherical, between: [1, 2], point: [0, 0, 0]}\n"
                  "  - {name: B, type: spherical, between: [1, 2], point: [0, 0, 1]}\nvalues: {ra: 1}\n",
                  "5:10", "'ra' is not a primary variable"}),
     [](const ::testing::TestParamInfo<BadInput>& param_info) { return std::string(param_info.param.name); });

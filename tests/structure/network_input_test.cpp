@@ -53,7 +53,7 @@ TEST(StructureOfNetwork, RigidCouplingIsNotAPair) {
 TEST(StructureOfNetwork, UnknownInput) {
   const std::string path = write_temp_file(
       "network-bad-input.yaml",
-      "kinestat: 1\ncouplings:\n  - {name: A, type: spherical, between: [1, 2]}\ninputs: [Z]\n");
+      "kinestat: 1\ncouplings:\n  - {name: A, type: spherical, between: [1, 2], point: [0, 0, 0]}\ninputs: [Z]\n");
   const auto run = run_cli("structure " + path);
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_NE(run.err.find(path + ":4:10: error: 'inputs' names 'Z'"), std::string::npos) << run.err;

@@ -1,6 +1,9 @@
 // Structural transformations (the seed's AMPLIACION) of the mechanism of Fig. 4.
 #include <gtest/gtest.h>
 
+#include <random>
+
+#include "support/mechanism_generator.hpp"
 #include "kinestat/structure/transformations.hpp"
 #include "test_support.hpp"
 
@@ -69,6 +72,38 @@ TEST(Transformations, LimitSkipsHugeEnumerations) {
   EXPECT_FALSE(set.enumerated);
   EXPECT_TRUE(set.ranked.empty());
   EXPECT_GT(set.placements, 10u);
+}
+
+TEST(Transformations, PlacementCountsByBruteForce) {
+  // Counts against enumerating every vector of per-pair inputs: random capacities 0..3 on up to
+  // 7 pairs, 0..8 inputs, caps that do and do not bind.
+  std::mt19937 rng(17);
+  for (int trial = 0; trial < 500; ++trial) {
+    const int pairs = 1 + static_cast<int>(rng() % 7), total = static_cast<int>(rng() % 9);
+    std::vector<int> capacity;
+    for (int k = 0; k < pairs; ++k) capacity.push_back(static_cast<int>(rng() % 4));
+    std::uint64_t brute = 0;
+    std::vector<int> x(static_cast<std::size_t>(pairs), 0);
+    while (true) {
+      int sum = 0;
+      for (int v : x) sum += v;
+      if (sum == total) ++brute;
+      std::size_t k = 0;
+      while (k < x.size() && x[k] == capacity[k]) x[k++] = 0;
+      if (k == x.size()) break;
+      ++x[k];
+    }
+    const std::uint64_t cap = 1 + rng() % 40;
+    EXPECT_EQ(count_placements(capacity, total, cap), std::min(brute, cap)) << "trial " << trial;
+  }
+}
+
+TEST(Transformations, HugeMechanismStopsCountingAtTheLimit) {
+  // 100,000 bodies: far more than 1,000 placements, known after looking at a few pairs.
+  const GeneratedMechanism generated = generate_group_chain(100000, 5);
+  const TransformationSet set = structural_transformations(generated.model, 1000);
+  EXPECT_FALSE(set.enumerated);
+  EXPECT_EQ(set.placements, 1001u);
 }
 
 }  // namespace

@@ -110,6 +110,7 @@ Verdict framework_verdict(const FrameworkModel& model, const FrameworkAnalysis& 
   const FrameworkModel changed = framework::apply_proposal(model, a);
   framework::AnalysisOptions counts_only = options;
   counts_only.vectors = false;
+  counts_only.sparse_vectors = 0;
   const FrameworkAnalysis after = framework::analyse_framework(changed, counts_only);
   v.changes_verified = after.exactly_constrained();
   v.becomes = fmt::format("{}: D(c) {} x {}, rank {}; {} declared", after.exactly_constrained() ? "exactly constrained" : "still not exactly constrained",

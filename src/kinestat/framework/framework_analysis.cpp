@@ -8,6 +8,8 @@
 
 #include "kinestat/framework/physical_scaling.hpp"
 #include "kinestat/linalg/homogeneous_solution.hpp"
+#include "kinestat/linalg/sign_convention.hpp"
+#include "kinestat/linalg/sparse_qr.hpp"
 #include "kinestat/linalg/sparse_rank.hpp"
 #include "kinestat/linalg/svd_analysis.hpp"
 
@@ -15,38 +17,22 @@ namespace kinestat::framework {
 
 namespace {
 
-// Unit 2-norm; the largest-magnitude component positive, ties (within kModeZero) broken by the
-// first index, so that the sign does not depend on SVD internals.
-void normalise(Eigen::Ref<Eigen::VectorXd> v) {
-  const double norm = v.norm();
-  if (norm == 0.0) return;
-  v /= norm;
-  const double largest = v.cwiseAbs().maxCoeff();
-  for (Eigen::Index i = 0; i < v.size(); ++i) {
-    if (std::abs(v(i)) >= largest - kModeZero) {
-      if (v(i) < 0) v = -v;
-      break;
-    }
-  }
-  for (Eigen::Index i = 0; i < v.size(); ++i)
-    if (std::abs(v(i)) < kModeZero) v(i) = 0.0;
-}
-
 // A deterministic basis of the null space of `a`: reduced echelon form with the earliest
-// possible free variables (linalg::solve_homogeneous), so it does not depend on how the SVD
-// happened to rotate a multi-dimensional null space. Falls back to the SVD's own basis when
-// the two rank decisions disagree (only possible right at the tolerance).
-// `a` is the scaled matrix S_r D̂ S_c; a null vector w of it is S_c⁻¹ times one of D̂, so
-// `unscale` (S_c, or S_r for the left null space) brings it back before normalising. The
-// echelon basis maps to the echelon basis of D̂ itself (same free variables), so the result is
-// the one an unscaled analysis would print.
-Eigen::MatrixXd deterministic_null_space(const Eigen::MatrixXd& a, const Eigen::MatrixXd& svd_basis,
-                                         const Eigen::VectorXd& unscale, const linalg::RankTolerance& tolerance) {
+// possible free variables (linalg::echelon_null_basis, the rule of solve_homogeneous), so it
+// does not depend on how the SVD happened to rotate a multi-dimensional null space. Falls back
+// to the SVD's own basis when fewer free variables pass the test (only right at the tolerance).
+// `svd_basis` spans the null space of the scaled matrix S_r D̂ S_c; a null vector w of it is
+// S_c⁻¹ times one of D̂, so `unscale` (S_c, or S_r for the left null space) brings it back
+// before normalising. The echelon basis maps to the echelon basis of D̂ itself (same free
+// variables), so the result is the one an unscaled analysis would print.
+Eigen::MatrixXd deterministic_null_space(const Eigen::MatrixXd& svd_basis, const Eigen::VectorXd& unscale) {
   if (svd_basis.cols() == 0) return svd_basis;
-  const linalg::HomogeneousSolution solution = linalg::solve_homogeneous(a, tolerance);
-  Eigen::MatrixXd basis = solution.coefficients.cols() == svd_basis.cols() ? solution.coefficients : svd_basis;
+  std::vector<Eigen::Index> free_variables;
+  const Eigen::MatrixXd echelon = linalg::echelon_null_basis(svd_basis, free_variables);
+  Eigen::MatrixXd basis = echelon.cols() == svd_basis.cols() ? echelon : svd_basis;
   basis = unscale.asDiagonal() * basis;
-  for (Eigen::Index j = 0; j < basis.cols(); ++j) normalise(basis.col(j));
+  // The one sign convention (linalg/sign_convention.hpp): every report shows this sign.
+  for (Eigen::Index j = 0; j < basis.cols(); ++j) linalg::orient_unit_vector(basis.col(j), kModeZero);
   return basis;
 }
 
@@ -64,6 +50,103 @@ std::pair<std::vector<Eigen::Index>, std::vector<Eigen::Index>> pivot_columns(co
   return {kept, rest};
 }
 
+// Modes from a basis of the null space of D(c) (columns, already in D̂'s units and normalised).
+void collect_modes(FrameworkAnalysis& result, const Eigen::MatrixXd& basis) {
+  for (Eigen::Index j = 0; j < basis.cols(); ++j) {
+    KinematicMode mode{basis.col(j), {}};
+    for (Eigen::Index i = 0; i < mode.velocities.size(); ++i)
+      if (mode.velocities(i) != 0.0) mode.moving.push_back(i);
+    result.modes.push_back(std::move(mode));
+  }
+}
+
+// Stress states from a basis of the null space of D(c)ᵀ; candidates are the fixed rows.
+void collect_stresses(FrameworkAnalysis& result, const Eigen::MatrixXd& basis) {
+  const auto fixed_rows = static_cast<Eigen::Index>(result.partition.fixed_deformations.size());
+  for (Eigen::Index j = 0; j < basis.cols(); ++j) {
+    StressState state{basis.col(j), {}};
+    for (Eigen::Index i = 0; i < fixed_rows; ++i)
+      if (state.resultants(i) != 0.0) state.candidates.push_back(i);
+    result.stresses.push_back(std::move(state));
+  }
+}
+
+// Rows of independent deformations (ε^m) are weighted up so that a pivoting QR keeps them
+// whenever it has a choice: the proposal should release rigid deformations, not demote a
+// generalised coordinate. Weighting changes neither rank nor spans.
+Eigen::VectorXd proposal_row_weights(Eigen::Index rows, Eigen::Index fixed_rows, double largest_entry) {
+  Eigen::VectorXd weights = Eigen::VectorXd::Ones(rows);
+  weights.tail(rows - fixed_rows).setConstant(1e3 * std::max(1.0, largest_entry));
+  return weights;
+}
+
+// The largest ‖a x_j‖ / (σ_max ‖x_j‖) over the columns of `basis`: how well the sparse null
+// vectors satisfy their equations.
+double relative_residual(const Eigen::SparseMatrix<double>& a, const Eigen::MatrixXd& basis, double largest) {
+  double worst = 0.0;
+  for (Eigen::Index j = 0; j < basis.cols(); ++j) {
+    const double norm = basis.col(j).norm();
+    if (norm == 0.0 || largest == 0.0) continue;
+    worst = std::max(worst, (a * basis.col(j)).norm() / (largest * norm));
+  }
+  return worst;
+}
+
+// Sparse path with vectors: the first `limit` modes from the QR of D(c), the first `limit`
+// stress states and the releases from the QR of the row-weighted D(c)ᵀ, and the coordinates
+// to constrain from the QR of the kept rows. Same threshold for all three.
+void sparse_vectors(FrameworkAnalysis& result, const Eigen::SparseMatrix<double>& jacobian, Eigen::Index limit) {
+  const double threshold = result.decision.threshold;
+  const double largest = result.decision.largest;
+  result.vector_limit = limit;
+  {
+    const linalg::SparseQr qr(jacobian, threshold);
+    linalg::record_rank(result.decision, qr);
+    result.factor_memory = std::max(result.factor_memory, qr.peak_memory());
+    Eigen::MatrixXd modes = qr.null_vectors(0, limit);
+    result.null_space_residual = std::max(result.null_space_residual, relative_residual(jacobian, modes, largest));
+    modes = result.column_scale.asDiagonal() * modes;
+    for (Eigen::Index j = 0; j < modes.cols(); ++j) linalg::orient_unit_vector(modes.col(j), kModeZero);
+    collect_modes(result, modes);
+  }
+  const auto fixed_rows = static_cast<Eigen::Index>(result.partition.fixed_deformations.size());
+  double largest_entry = 0.0;
+  for (Eigen::Index k = 0; k < jacobian.nonZeros(); ++k) largest_entry = std::max(largest_entry, std::abs(jacobian.valuePtr()[k]));
+  const Eigen::VectorXd weights = proposal_row_weights(result.m, fixed_rows, largest_entry);
+  std::vector<Eigen::Index> kept_rows;
+  {
+    const Eigen::SparseMatrix<double> transposed = jacobian.transpose();
+    linalg::SparseQr qr(transposed * weights.asDiagonal(), threshold);
+    // Heath's rule on columns weighted by 10³ can keep a dependent one (its rounding residual
+    // is weighted too): then the weights are dropped rather than the rank changed.
+    Eigen::VectorXd used = weights;
+    if (qr.rank() != result.decision.rank) {
+      qr = linalg::SparseQr(transposed, threshold);
+      used.setOnes();
+    }
+    result.factor_memory = std::max(result.factor_memory, qr.peak_memory());
+    Eigen::MatrixXd stresses = used.asDiagonal() * qr.null_vectors(0, limit);
+    result.null_space_residual = std::max(result.null_space_residual, relative_residual(transposed, stresses, largest));
+    stresses = result.row_scale.asDiagonal() * stresses;
+    for (Eigen::Index j = 0; j < stresses.cols(); ++j) linalg::orient_unit_vector(stresses.col(j), kModeZero);
+    collect_stresses(result, stresses);
+    auto [live, dead] = qr.live_and_dead_columns();
+    kept_rows = std::move(live);
+    result.releases = std::move(dead);
+  }
+  // Kept rows of D(c), by a selection matrix (rows of a column-major sparse matrix).
+  Eigen::SparseMatrix<double> selection(static_cast<Eigen::Index>(kept_rows.size()), result.m);
+  std::vector<Eigen::Triplet<double>> ones;
+  ones.reserve(kept_rows.size());
+  for (std::size_t i = 0; i < kept_rows.size(); ++i) ones.emplace_back(static_cast<Eigen::Index>(i), kept_rows[i], 1.0);
+  selection.setFromTriplets(ones.begin(), ones.end());
+  const Eigen::SparseMatrix<double> kept = selection * jacobian;
+  const linalg::SparseQr qr(kept, threshold);
+  result.factor_memory = std::max(result.factor_memory, qr.peak_memory());
+  result.constrain = qr.live_and_dead_columns().second;
+  result.vectors = true;
+}
+
 }  // namespace
 
 double FrameworkAnalysis::relative_smallest_singular_value() const {
@@ -73,8 +156,7 @@ double FrameworkAnalysis::relative_smallest_singular_value() const {
   return singular_values(singular_values.size() - 1) / singular_values(0);
 }
 
-FrameworkAnalysis analyse_framework(const FrameworkModel& model, const AnalysisOptions& options) {
-  FrameworkAnalysis result;
+Eigen::SparseMatrix<double> prepare_analysis(const FrameworkModel& model, FrameworkAnalysis& result) {
   result.indexing = index_framework(model);
   result.partition = partition_framework(model, result.indexing);
   result.count = count_constraints(result.partition);
@@ -86,14 +168,24 @@ FrameworkAnalysis analyse_framework(const FrameworkModel& model, const AnalysisO
   const linalg::Equilibration scaling = physical_scaling(model, result.indexing, result.partition, result.length);
   result.row_scale = scaling.rows;
   result.column_scale = scaling.cols;
-  const Eigen::SparseMatrix<double> jacobian =
-      scaling.rows.asDiagonal() * nondimensional * scaling.cols.asDiagonal();
+  Eigen::SparseMatrix<double> jacobian = scaling.rows.asDiagonal() * nondimensional * scaling.cols.asDiagonal();
   result.m = jacobian.rows();
   result.n = jacobian.cols();
+  return jacobian;
+}
+
+FrameworkAnalysis analyse_framework(const FrameworkModel& model, const AnalysisOptions& options) {
+  FrameworkAnalysis result;
+  const Eigen::SparseMatrix<double> jacobian = prepare_analysis(model, result);
 
   if (std::max(result.m, result.n) > options.dense_limit) {
     result.method = RankMethod::sparse_qr;
-    result.decision = linalg::sparse_numerical_rank(jacobian, options.tolerance);
+    if (options.sparse_vectors > 0 && result.m > 0 && result.n > 0) {
+      result.decision = linalg::sparse_rank_threshold(jacobian, options.tolerance);
+      sparse_vectors(result, jacobian, options.sparse_vectors);
+    } else {
+      result.decision = linalg::sparse_numerical_rank(jacobian, options.tolerance, &result.factor_memory);
+    }
   } else if (!options.vectors) {
     // Counts only: singular values without singular vectors.
     if (result.m > 0 && result.n > 0) {
@@ -109,32 +201,16 @@ FrameworkAnalysis analyse_framework(const FrameworkModel& model, const AnalysisO
     const Eigen::Index rank = svd.rank.rank;
 
     // Kinematic modes: V columns of zero singular values and those in excess of the rows.
-    const Eigen::MatrixXd modes = deterministic_null_space(dense, svd.null_space(), scaling.cols, options.tolerance);
-    for (Eigen::Index j = 0; j < modes.cols(); ++j) {
-      KinematicMode mode{modes.col(j), {}};
-      for (Eigen::Index i = 0; i < mode.velocities.size(); ++i)
-        if (mode.velocities(i) != 0.0) mode.moving.push_back(i);
-      result.modes.push_back(std::move(mode));
-    }
+    collect_modes(result, deterministic_null_space(svd.null_space(), result.column_scale));
     // Stress states: U columns of zero singular values and those in excess of the columns.
     const Eigen::MatrixXd transposed = dense.transpose();
-    const Eigen::MatrixXd stresses = deterministic_null_space(transposed, svd.left_null_space(), scaling.rows, options.tolerance);
+    collect_stresses(result, deterministic_null_space(svd.left_null_space(), result.row_scale));
     const auto fixed_rows = static_cast<Eigen::Index>(result.partition.fixed_deformations.size());
-    for (Eigen::Index j = 0; j < stresses.cols(); ++j) {
-      StressState state{stresses.col(j), {}};
-      for (Eigen::Index i = 0; i < fixed_rows; ++i)
-        if (state.resultants(i) != 0.0) state.candidates.push_back(i);
-      result.stresses.push_back(std::move(state));
-    }
     // One minimal set of releases: the rows a column-pivoted QR of D(c)ᵀ leaves out of a basis
     // of the row space; then, among the kept rows, the columns left out of a column basis are
     // the coordinates to constrain. Removing both leaves a square non-singular D(c).
-    // Rows of independent deformations (ε^m) are weighted up so that the pivoting keeps them
-    // whenever it has a choice: the proposal should release rigid deformations, not demote a
-    // generalised coordinate. Weighting columns changes neither rank nor spans.
-    Eigen::MatrixXd weighted = transposed;
-    const double weight = 1e3 * std::max(1.0, transposed.cwiseAbs().maxCoeff());
-    for (Eigen::Index i = fixed_rows; i < weighted.cols(); ++i) weighted.col(i) *= weight;
+    const Eigen::MatrixXd weighted =
+        transposed * proposal_row_weights(result.m, fixed_rows, transposed.cwiseAbs().maxCoeff()).asDiagonal();
     auto [kept_rows, released] = pivot_columns(weighted, rank);
     result.releases = released;
     Eigen::MatrixXd kept(static_cast<Eigen::Index>(kept_rows.size()), dense.cols());

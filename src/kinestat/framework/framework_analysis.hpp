@@ -5,6 +5,7 @@
 // constrain (or declare independent) to reach exact constraint.
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 
 #include <vector>
 
@@ -20,6 +21,10 @@ struct AnalysisOptions {
   /// (no singular values, modes or stress states).
   Eigen::Index dense_limit = 1500;
   bool vectors = true;  ///< compute modes, stress states and the design proposal (dense path only)
+  /// Sparse path (above dense_limit): 0 gives counts only; k > 0 also gives the first k modes
+  /// and the first k stress states (null vectors from the sparse R factors) and the release
+  /// proposal, at the cost of three sparse QR factorisations (D(c), D(c)ᵀ, kept rows of D(c)).
+  Eigen::Index sparse_vectors = 0;
 };
 
 enum class RankMethod { dense_svd, sparse_qr };
@@ -61,6 +66,13 @@ struct FrameworkAnalysis {
   std::vector<StressState> stresses;
   std::vector<Eigen::Index> releases;   ///< rows of D(c) to release (make dependent)
   std::vector<Eigen::Index> constrain;  ///< columns of D(c) to fix or declare independent
+  /// Sparse path: the number of modes and stress states asked for (0: counts only), and the
+  /// largest ‖D x‖ / (σ_max ‖x‖) (or ‖D(c)ᵀ y‖ …) of the vectors computed — rounding level when
+  /// the sparse rank decision is sound.
+  Eigen::Index vector_limit = 0;
+  double null_space_residual = 0.0;
+  /// Sparse path: peak memory of the largest sparse QR factorisation, bytes (SuiteSparse's count).
+  std::size_t factor_memory = 0;
 
   bool statically_determinate() const { return self_stresses == 0; }
   bool kinematically_determinate() const { return mechanisms == 0; }
@@ -72,6 +84,11 @@ struct FrameworkAnalysis {
 
 /// Component magnitudes below this (of a unit-norm mode or stress state) count as zero.
 inline constexpr double kModeZero = 1e-9;
+
+/// The first stage of analyse_framework: fills indexing, partition, counts, rows, the
+/// characteristic length and the length scaling of `result`, and returns the matrix every rank
+/// decision is made on, S_r D̂ S_c (non-dimensional, m × n).
+Eigen::SparseMatrix<double> prepare_analysis(const FrameworkModel& model, FrameworkAnalysis& result);
 
 /// Runs the analysis of seed 002 on `model`.
 FrameworkAnalysis analyse_framework(const FrameworkModel& model, const AnalysisOptions& options = {});

@@ -88,7 +88,7 @@ SpanningTree CouplingGraph::tree_with_chords(const std::vector<int>& chords) con
       tree.chords.push_back(e);
     } else {
       if (!sets.unite(edge(e).from, edge(e).to))
-        throw TreeError("the couplings that are not chords contain a circuit (coupling index " + std::to_string(e) + ")");
+        throw TreeError("the couplings that are not chords contain a circuit", e);
       tree.branches.push_back(e);
     }
   }

@@ -34,7 +34,12 @@ struct TreeWalk {
 /// The tree requested by the user is not a spanning tree; the message says why.
 class TreeError : public std::invalid_argument {
  public:
-  using std::invalid_argument::invalid_argument;
+  explicit TreeError(const std::string& what, int edge = -1) : std::invalid_argument(what), edge_(edge) {}
+  /// The edge that closes a circuit among the non-chords, or -1.
+  int edge() const { return edge_; }
+
+ private:
+  int edge_ = -1;
 };
 
 class CouplingGraph {

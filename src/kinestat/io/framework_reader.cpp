@@ -33,32 +33,32 @@ class FrameworkReader {
   explicit FrameworkReader(const YamlFile& file) : file_(file) {}
 
   FrameworkModel read() {
-    const YAML::Node& root = file_.root();
+    const TreeNode& root = file_.root();
     file_.check_keys(root, "the framework model",
                      {"kinestat", "kind", "name", "description", "dimension", "units", "nodes", "supports", "independent", "elements"});
-    if (auto name = file_.optional(root, "name"); name.IsDefined()) model_.name = file_.string(name, "'name'");
+    if (auto name = file_.optional(root, "name"); name.defined()) model_.name = file_.string(name, "'name'");
     model_.dimension = read_planar(file_, root, "framework", false) ? 2 : 3;
     model_.units = read_units(file_, root);
     read_nodes(file_.required(root, "nodes", "the framework model"));
-    const YAML::Node elements = file_.required(root, "elements", "the framework model");
+    const TreeNode elements = file_.required(root, "elements", "the framework model");
     file_.expect_sequence(elements, "'elements'");
     element_nodes_.clear();
-    for (const auto& item : elements) read_element(item);
+    for (const auto& item : elements.items()) read_element(item);
     for (std::size_t e = 0; e < model_.elements.size(); ++e) set_frame(e);
-    if (auto supports = file_.optional(root, "supports"); supports.IsDefined()) read_supports(supports);
-    if (auto independent = file_.optional(root, "independent"); independent.IsDefined()) read_independent(independent);
+    if (auto supports = file_.optional(root, "supports"); supports.defined()) read_supports(supports);
+    if (auto independent = file_.optional(root, "independent"); independent.defined()) read_independent(independent);
     return model_;
   }
 
  private:
-  Eigen::Vector3d vector3(const YAML::Node& node, std::string_view what) const {
+  Eigen::Vector3d vector3(const TreeNode& node, std::string_view what) const {
     const auto values = file_.numbers(node, what, {3});
     return {values[0].value, values[1].value, values[2].value};
   }
 
   // A triad given as three rows: the x, y and z axes in global coordinates. Returns the
   // matrix whose columns are those axes.
-  Eigen::Matrix3d triad(const YAML::Node& node, std::string_view what) const {
+  Eigen::Matrix3d triad(const TreeNode& node, std::string_view what) const {
     file_.expect_sequence(node, what);
     if (node.size() != 3) file_.fail(node, fmt::format("{} must be three axes [[x], [y], [z]], found {} entries", what, node.size()));
     Eigen::Matrix3d axes;
@@ -72,21 +72,20 @@ class FrameworkReader {
     return axes;
   }
 
-  void read_nodes(const YAML::Node& nodes) {
+  void read_nodes(const TreeNode& nodes) {
     file_.expect_map(nodes, "'nodes'");
     if (nodes.size() == 0) file_.fail(nodes, "'nodes' is empty: a framework needs at least one node");
-    for (const auto& entry : nodes) {
+    for (const auto& entry : nodes.entries()) {
       const std::string name = file_.string(entry.first, "a node name");
       if (index_.count(name)) file_.fail(entry.first, fmt::format("duplicate node name '{}'", name));
       Node node;
       node.name = name;
-      // (yaml-cpp nodes have reference semantics: never assign one node over another.)
-      const bool detailed = entry.second.IsMap();
+      const bool detailed = entry.second.is_map();
       if (detailed) file_.check_keys(entry.second, fmt::format("node '{}'", name), {"position", "orientation"});
-      const YAML::Node position =
+      const TreeNode position =
           detailed ? file_.required(entry.second, "position", fmt::format("node '{}'", name)) : entry.second;
       if (detailed) {
-        if (auto orientation = file_.optional(entry.second, "orientation"); orientation.IsDefined()) {
+        if (auto orientation = file_.optional(entry.second, "orientation"); orientation.defined()) {
           if (model_.dimension == 2) file_.fail(orientation, "a planar node has no orientation: its rotation is about z");
           node.triad = triad(orientation, fmt::format("the orientation of node '{}'", name));
           node.rotational = true;
@@ -101,7 +100,7 @@ class FrameworkReader {
     length_ = framework::characteristic_length(model_);
   }
 
-  std::size_t node_index(const YAML::Node& item) const {
+  std::size_t node_index(const TreeNode& item) const {
     const std::string name = file_.string(item, "a node name");
     const auto found = index_.find(name);
     if (found == index_.end()) file_.fail(item, fmt::format("unknown node '{}'", name));
@@ -132,10 +131,10 @@ class FrameworkReader {
     return groups;
   }
 
-  void read_roles(const YAML::Node& list, Element& element, DeformationRole role, std::string_view what) {
+  void read_roles(const TreeNode& list, Element& element, DeformationRole role, std::string_view what) {
     file_.expect_sequence(list, what);
     const auto groups = deformation_groups(element);
-    for (const auto& item : list) {
+    for (const auto& item : list.items()) {
       const std::string name = file_.string(item, "a deformation name");
       const auto found = groups.find(name);
       if (found == groups.end()) {
@@ -160,23 +159,23 @@ class FrameworkReader {
     return "element";
   }
 
-  void read_element(const YAML::Node& item) {
+  void read_element(const TreeNode& item) {
     const std::string label = fmt::format("element {}", model_.elements.size() + 1);
     file_.check_keys(item, label, {"type", "name", "nodes", "released", "independent", "orientation", "torsion_coupling"});
     Element element;
     element.name = std::to_string(model_.elements.size() + 1);
-    if (auto name = file_.optional(item, "name"); name.IsDefined()) element.name = file_.string(name, "an element name");
+    if (auto name = file_.optional(item, "name"); name.defined()) element.name = file_.string(name, "an element name");
     if (!element_names_.insert(element.name).second) file_.fail(item, fmt::format("duplicate element name '{}'", element.name));
-    const YAML::Node type = file_.required(item, "type", label);
+    const TreeNode type = file_.required(item, "type", label);
     const std::string type_text = file_.string(type, "an element type");
     if (type_text == "truss") element.type = ElementType::truss;
     else if (type_text == "beam") element.type = ElementType::beam;
     else if (type_text == "rigid_body") element.type = ElementType::rigid_body;
     else file_.fail(type, fmt::format("unknown element type '{}'; expected truss, beam or rigid_body", type_text));
 
-    const YAML::Node nodes = file_.required(item, "nodes", label);
+    const TreeNode nodes = file_.required(item, "nodes", label);
     file_.expect_sequence(nodes, fmt::format("the nodes of element '{}'", element.name));
-    for (const auto& n : nodes) {
+    for (const auto& n : nodes.items()) {
       const std::size_t index = node_index(n);
       if (std::find(element.nodes.begin(), element.nodes.end(), index) != element.nodes.end())
         file_.fail(n, fmt::format("node '{}' appears twice in element '{}'", model_.nodes[index].name, element.name));
@@ -196,15 +195,15 @@ class FrameworkReader {
     if (element.type != ElementType::truss)
       for (std::size_t n : element.nodes) model_.nodes[n].rotational = true;
 
-    if (auto c = file_.optional(item, "torsion_coupling"); c.IsDefined()) {
+    if (auto c = file_.optional(item, "torsion_coupling"); c.defined()) {
       if (element.type != ElementType::beam || model_.dimension != 3)
         file_.fail(c, "'torsion_coupling' applies to spatial beams only");
       element.torsion_coupling = file_.number(c, "'torsion_coupling'").value;
     }
     element.roles.assign(framework::deformation_count(model_.dimension, element), DeformationRole::fixed);
-    if (auto independent = file_.optional(item, "independent"); independent.IsDefined())
+    if (auto independent = file_.optional(item, "independent"); independent.defined())
       read_roles(independent, element, DeformationRole::independent, "'independent' deformations");
-    if (auto released = file_.optional(item, "released"); released.IsDefined())
+    if (auto released = file_.optional(item, "released"); released.defined())
       read_roles(released, element, DeformationRole::released, "'released' deformations");
     orientations_.push_back(file_.optional(item, "orientation"));
     element_nodes_.push_back(nodes);
@@ -214,24 +213,24 @@ class FrameworkReader {
   // The element triad of a beam (eq 4): local x from p to q, y and z across the section.
   void set_frame(std::size_t e) {
     Element& element = model_.elements[e];
-    const YAML::Node& orientation = orientations_[e];
+    const TreeNode& orientation = orientations_[e];
     if (element.type != ElementType::beam) {
-      if (orientation.IsDefined()) file_.fail(orientation, "only beams have an orientation");
+      if (orientation.defined()) file_.fail(orientation, "only beams have an orientation");
       return;
     }
     const Node& p = model_.nodes[element.nodes[0]];
     const Eigen::Vector3d x = (model_.nodes[element.nodes[1]].position - p.position).normalized();
     if (model_.dimension == 2) {
-      if (orientation.IsDefined()) file_.fail(orientation, "a planar beam takes its orientation from the plane (local z = global z)");
+      if (orientation.defined()) file_.fail(orientation, "a planar beam takes its orientation from the plane (local z = global z)");
       element.frame << x, Eigen::Vector3d::UnitZ().cross(x), Eigen::Vector3d::UnitZ();
       return;
     }
     const std::string what = fmt::format("the orientation of element '{}'", element.name);
-    if (orientation.IsDefined() && orientation.IsMap()) {
+    if (orientation.defined() && orientation.is_map()) {
       file_.check_keys(orientation, what, {"y", "z"});
       if (orientation.size() != 1) file_.fail(orientation, fmt::format("{} gives exactly one of y or z", what));
-      const bool is_y = file_.optional(orientation, "y").IsDefined();
-      const YAML::Node axis_node = is_y ? file_.optional(orientation, "y") : file_.optional(orientation, "z");
+      const bool is_y = file_.optional(orientation, "y").defined();
+      const TreeNode axis_node = is_y ? file_.optional(orientation, "y") : file_.optional(orientation, "z");
       const Eigen::Vector3d axis = vector3(axis_node, what);
       if (!(axis.norm() > 0)) file_.fail(axis_node, fmt::format("{}: the axis is the zero vector", what));
       const Eigen::Vector3d unit = axis.normalized();
@@ -244,7 +243,7 @@ class FrameworkReader {
       else element.frame << x, unit.cross(x), unit;
       return;
     }
-    if (orientation.IsDefined()) {
+    if (orientation.defined()) {
       element.frame = triad(orientation, what);
       check_along(element.frame.col(0), x, orientation, what, element);
       return;
@@ -261,7 +260,7 @@ class FrameworkReader {
     element.frame << x, z.cross(x), z;
   }
 
-  void check_along(const Eigen::Vector3d& axis, const Eigen::Vector3d& x, const YAML::Node& where, const std::string& what,
+  void check_along(const Eigen::Vector3d& axis, const Eigen::Vector3d& x, const TreeNode& where, const std::string& what,
                    const Element& element) const {
     if (!((axis - x).cwiseAbs().maxCoeff() <= kOrientationTolerance)) {
       file_.fail(where, fmt::format("{}: its x axis must point along element '{}' from '{}' to '{}' (give the element an "
@@ -271,10 +270,10 @@ class FrameworkReader {
   }
 
   // Slots named in a support or independent list.
-  std::vector<int> slots(const YAML::Node& value, const Node& node, bool allow_keywords) const {
+  std::vector<int> slots(const TreeNode& value, const Node& node, bool allow_keywords) const {
     const std::vector<int> available = framework::node_slots(model_.dimension, node);
-    if (allow_keywords && value.IsScalar()) {
-      const std::string word = value.Scalar();
+    if (allow_keywords && value.is_scalar()) {
+      const std::string_view word = value.scalar();
       if (word == "fixed") return available;
       if (word == "pinned") {
         std::vector<int> translations;
@@ -286,7 +285,7 @@ class FrameworkReader {
     }
     file_.expect_sequence(value, fmt::format("the coordinates of node '{}'", node.name));
     std::vector<int> result;
-    for (const auto& item : value) {
+    for (const auto& item : value.items()) {
       const std::string name = file_.string(item, "a coordinate name");
       const auto found = std::find(framework::kSlotNames.begin(), framework::kSlotNames.end(), name);
       const int slot = found == framework::kSlotNames.end() ? -1 : static_cast<int>(found - framework::kSlotNames.begin());
@@ -302,10 +301,10 @@ class FrameworkReader {
     return result;
   }
 
-  void read_supports(const YAML::Node& supports) {
+  void read_supports(const TreeNode& supports) {
     file_.expect_map(supports, "'supports'");
     std::set<std::size_t> seen;
-    for (const auto& entry : supports) {
+    for (const auto& entry : supports.entries()) {
       const std::size_t n = node_index(entry.first);
       if (!seen.insert(n).second) file_.fail(entry.first, fmt::format("duplicate support for node '{}'", model_.nodes[n].name));
       for (int s : slots(entry.second, model_.nodes[n], true))
@@ -313,10 +312,10 @@ class FrameworkReader {
     }
   }
 
-  void read_independent(const YAML::Node& independent) {
+  void read_independent(const TreeNode& independent) {
     file_.expect_map(independent, "'independent'");
     std::set<std::size_t> seen;
-    for (const auto& entry : independent) {
+    for (const auto& entry : independent.entries()) {
       const std::size_t n = node_index(entry.first);
       Node& node = model_.nodes[n];
       if (!seen.insert(n).second) file_.fail(entry.first, fmt::format("duplicate entry for node '{}'", node.name));
@@ -336,8 +335,8 @@ class FrameworkReader {
   FrameworkModel model_;
   std::map<std::string, std::size_t> index_;
   std::set<std::string> element_names_;
-  std::vector<YAML::Node> orientations_;
-  std::vector<YAML::Node> element_nodes_;
+  std::vector<TreeNode> orientations_;
+  std::vector<TreeNode> element_nodes_;
   double length_ = 1.0;
 };
 

@@ -4,10 +4,10 @@
 
 namespace kinestat::io {
 
-bool read_planar(const YamlFile& file, const YAML::Node& root, std::string_view kind, bool planar_default) {
-  const YAML::Node dimension = file.optional(root, "dimension");
-  if (!dimension.IsDefined()) return planar_default;
-  const std::string text = dimension.IsScalar() ? dimension.Scalar() : "";
+bool read_planar(const YamlFile& file, const TreeNode& root, std::string_view kind, bool planar_default) {
+  const TreeNode dimension = file.optional(root, "dimension");
+  if (!dimension.defined()) return planar_default;
+  const std::string text(dimension.is_scalar() ? dimension.scalar() : "");
   if (text == "spatial") return false;
   if (text == "planar") return true;
   // The old numbers meant different things in different kinds (3 was planar for a network,
@@ -23,9 +23,9 @@ bool read_planar(const YamlFile& file, const YAML::Node& root, std::string_view 
   file.fail(dimension, "'dimension' must be 'spatial' or 'planar'");
 }
 
-std::string read_units(const YamlFile& file, const YAML::Node& root) {
-  const YAML::Node units = file.optional(root, "units");
-  if (!units.IsDefined()) return "";
+std::string read_units(const YamlFile& file, const TreeNode& root) {
+  const TreeNode units = file.optional(root, "units");
+  if (!units.defined()) return "";
   return file.string(units, "'units' (the name of the length unit, e.g. mm)");
 }
 

@@ -13,9 +13,9 @@ namespace kinestat::io {
 /// Reads `dimension:` of `root` when present: true for `planar`, false for `spatial`,
 /// `planar_default` when absent. A number or any other word is an InputError that says which
 /// word to write. `kind` ("network", "framework", "structure") words the message.
-bool read_planar(const YamlFile& file, const YAML::Node& root, std::string_view kind, bool planar_default);
+bool read_planar(const YamlFile& file, const TreeNode& root, std::string_view kind, bool planar_default);
 
 /// Reads `units:` of `root` when present (a non-empty name such as `mm`), else "".
-std::string read_units(const YamlFile& file, const YAML::Node& root);
+std::string read_units(const YamlFile& file, const TreeNode& root);
 
 }  // namespace kinestat::io

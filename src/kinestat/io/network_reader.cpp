@@ -20,22 +20,22 @@ class NetworkReader {
   explicit NetworkReader(const YamlFile& file) : file_(file) {}
 
   LoadedNetwork read() {
-    const YAML::Node& root = file_.root();
+    const TreeNode& root = file_.root();
     file_.check_keys(root, "the model file",
                      {"kinestat", "kind", "name", "description", "dimension", "units", "ground", "bodies", "couplings", "chords",
                       "primary", "values", "inputs"});
     network::Model& model = loaded_.model;
-    if (auto name = file_.optional(root, "name"); name.IsDefined()) model.name = file_.string(name, "'name'");
+    if (auto name = file_.optional(root, "name"); name.defined()) model.name = file_.string(name, "'name'");
     if (read_planar(file_, root, "network", false)) model.space = screw::ScrewSpace::planar();
     model.units = read_units(file_, root);
-    if (auto bodies = file_.optional(root, "bodies"); bodies.IsDefined()) read_bodies(bodies);
-    const YAML::Node couplings = file_.required(root, "couplings", "the model file");
+    if (auto bodies = file_.optional(root, "bodies"); bodies.defined()) read_bodies(bodies);
+    const TreeNode couplings = file_.required(root, "couplings", "the model file");
     file_.expect_sequence(couplings, "'couplings'");
     if (couplings.size() == 0) file_.fail(couplings, "the model has no couplings: 'couplings' is empty");
     loaded_.field_locations["couplings"] = file_.where(couplings);
-    for (const auto& coupling : couplings) read_coupling(coupling);
+    for (const auto& coupling : couplings.items()) read_coupling(coupling);
     order_bodies();
-    if (auto ground = file_.optional(root, "ground"); ground.IsDefined()) {
+    if (auto ground = file_.optional(root, "ground"); ground.defined()) {
       const std::string name = body_name(ground, "'ground'");
       const auto it = std::find(model.bodies.begin(), model.bodies.end(), name);
       if (it == model.bodies.end()) file_.fail(ground, fmt::format("ground body '{}' is not a body of the model", name));
@@ -44,15 +44,15 @@ class NetworkReader {
     read_name_list(root, "chords", model.chords);
     read_name_list(root, "primary", model.primary);
     read_inputs(root);
-    if (auto values = file_.optional(root, "values"); values.IsDefined()) read_values(values);
+    if (auto values = file_.optional(root, "values"); values.defined()) read_values(values);
     model.max_significant_digits = max_digits_;
     return std::move(loaded_);
   }
 
  private:
-  std::string body_name(const YAML::Node& node, std::string_view what) const {
-    if (!node.IsScalar() || node.Scalar().empty()) file_.fail(node, fmt::format("{} must be a body name or number", what));
-    return node.Scalar();
+  std::string body_name(const TreeNode& node, std::string_view what) const {
+    if (!node.is_scalar() || node.scalar().empty()) file_.fail(node, fmt::format("{} must be a body name or number", what));
+    return std::string(node.scalar());
   }
 
   int body_index(const std::string& name) {
@@ -63,10 +63,10 @@ class NetworkReader {
     return static_cast<int>(bodies.size() - 1);
   }
 
-  void read_bodies(const YAML::Node& bodies) {
+  void read_bodies(const TreeNode& bodies) {
     file_.expect_sequence(bodies, "'bodies'");
     std::set<std::string> seen;
-    for (const auto& body : bodies) {
+    for (const auto& body : bodies.items()) {
       const std::string name = body_name(body, "a body");
       if (!seen.insert(name).second) file_.fail(body, fmt::format("duplicate body '{}'", name));
       body_index(name);
@@ -104,14 +104,14 @@ class NetworkReader {
     }
   }
 
-  Rational number(const YAML::Node& node, std::string_view what) {
+  Rational number(const TreeNode& node, std::string_view what) {
     const ExactNumber n = file_.number(node, what);
-    max_digits_ = std::max(max_digits_, significant_digits(node.Scalar()));
+    max_digits_ = std::max(max_digits_, significant_digits(node.scalar()));
     return *n.exact;
   }
 
   // A 3-vector; planar models also accept [x, y] and require z = 0 for points.
-  Vec3 vector(const YAML::Node& node, std::string_view what, bool nonzero, bool in_plane) {
+  Vec3 vector(const TreeNode& node, std::string_view what, bool nonzero, bool in_plane) {
     const bool planar = loaded_.model.space.is_planar();
     if (planar) {
       file_.numbers(node, what, {2, 3});  // checks shape and finiteness
@@ -125,22 +125,22 @@ class NetworkReader {
     return v;
   }
 
-  std::vector<std::vector<Rational>> screw_list(const YAML::Node& node, std::string_view what) {
+  std::vector<std::vector<Rational>> screw_list(const TreeNode& node, std::string_view what) {
     file_.expect_sequence(node, what);
     const std::size_t d = static_cast<std::size_t>(loaded_.model.space.dimension());
     std::vector<std::vector<Rational>> screws;
-    for (const auto& item : node) {
+    for (const auto& item : node.items()) {
       file_.numbers(item, what, {d});
       std::vector<Rational> s;
-      for (const auto& x : item) s.push_back(number(x, what));
+      for (const auto& x : item.items()) s.push_back(number(x, what));
       screws.push_back(s);
     }
     return screws;
   }
 
-  void read_coupling(const YAML::Node& node) {
+  void read_coupling(const TreeNode& node) {
     file_.expect_map(node, "a coupling");
-    const YAML::Node type_node = file_.required(node, "type", "a coupling");
+    const TreeNode type_node = file_.required(node, "type", "a coupling");
     const std::string type_name = file_.string(type_node, "'type'");
     const auto type = screw::parse_coupling_type(type_name);
     if (!type) {
@@ -150,16 +150,24 @@ class NetworkReader {
     std::vector<std::string> allowed{"name", "type", "between", "point"};
     for (auto key : screw::geometry_keys(*type)) allowed.emplace_back(key);
     file_.check_keys(node, fmt::format("a {} coupling", type_name), allowed);
-    for (auto key : screw::required_geometry_keys(*type)) file_.required(node, key, fmt::format("a {} coupling", type_name));
+    for (auto key : screw::required_geometry_keys(*type)) {
+      if (key == "point" && !file_.optional(node, key).defined()) {
+        const TreeNode name = file_.optional(node, "name");
+        file_.fail(node, fmt::format("{} coupling{} needs a 'point' (on its axis, or its centre or contact point): its "
+                                     "motions depend on where it is; write point: [0, 0, 0] if it is at the origin",
+                                     type_name, name.is_scalar() ? fmt::format(" '{}'", name.scalar()) : ""));
+      }
+      file_.required(node, key, fmt::format("a {} coupling", type_name));
+    }
 
     network::Coupling coupling;
     coupling.type = *type;
-    const YAML::Node name = file_.required(node, "name", "a coupling");
+    const TreeNode name = file_.required(node, "name", "a coupling");
     coupling.name = file_.string(name, "a coupling name");
     for (const auto& other : loaded_.model.couplings)
       if (other.name == coupling.name) file_.fail(name, fmt::format("duplicate coupling name '{}'", coupling.name));
 
-    const YAML::Node between = file_.required(node, "between", "a coupling");
+    const TreeNode between = file_.required(node, "between", "a coupling");
     file_.expect_sequence(between, "'between'");
     if (between.size() != 2) file_.fail(between, "'between' must name exactly two bodies, e.g. [1, 2]");
     const std::string from = body_name(between[0], "a body in 'between'");
@@ -169,13 +177,13 @@ class NetworkReader {
     coupling.to = body_index(to);
 
     screw::CouplingGeometry& g = coupling.geometry;
-    if (auto point = file_.optional(node, "point"); point.IsDefined()) g.point = vector(point, "'point'", false, true);
-    if (auto axis = file_.optional(node, "axis"); axis.IsDefined()) g.axis = vector(axis, "'axis'", true, false);
-    if (auto axis2 = file_.optional(node, "axis2"); axis2.IsDefined()) g.axis2 = vector(axis2, "'axis2'", true, false);
-    if (auto normal = file_.optional(node, "normal"); normal.IsDefined()) g.normal = vector(normal, "'normal'", true, false);
-    if (auto pitch = file_.optional(node, "pitch"); pitch.IsDefined()) g.pitch = number(pitch, "'pitch'");
-    if (auto motions = file_.optional(node, "motions"); motions.IsDefined()) g.custom_motions = screw_list(motions, "a custom motion");
-    if (auto actions = file_.optional(node, "actions"); actions.IsDefined()) g.custom_actions = screw_list(actions, "a custom action");
+    if (auto point = file_.optional(node, "point"); point.defined()) g.point = vector(point, "'point'", false, true);
+    if (auto axis = file_.optional(node, "axis"); axis.defined()) g.axis = vector(axis, "'axis'", true, false);
+    if (auto axis2 = file_.optional(node, "axis2"); axis2.defined()) g.axis2 = vector(axis2, "'axis2'", true, false);
+    if (auto normal = file_.optional(node, "normal"); normal.defined()) g.normal = vector(normal, "'normal'", true, false);
+    if (auto pitch = file_.optional(node, "pitch"); pitch.defined()) g.pitch = number(pitch, "'pitch'");
+    if (auto motions = file_.optional(node, "motions"); motions.defined()) g.custom_motions = screw_list(motions, "a custom motion");
+    if (auto actions = file_.optional(node, "actions"); actions.defined()) g.custom_actions = screw_list(actions, "a custom action");
 
     const bool planar = loaded_.model.space.is_planar();
     // A planar model cannot have a coupling whose motions leave the plane: it is refused rather
@@ -200,13 +208,13 @@ class NetworkReader {
     loaded_.model.couplings.push_back(std::move(coupling));
   }
 
-  void read_name_list(const YAML::Node& root, const char* field, std::vector<std::string>& names) {
-    const YAML::Node list = file_.optional(root, field);
-    if (!list.IsDefined()) return;
+  void read_name_list(const TreeNode& root, const char* field, std::vector<std::string>& names) {
+    const TreeNode list = file_.optional(root, field);
+    if (!list.defined()) return;
     file_.expect_sequence(list, fmt::format("'{}'", field));
     loaded_.field_locations[field] = file_.where(list);
     std::set<std::string> seen;
-    for (const auto& item : list) {
+    for (const auto& item : list.items()) {
       const std::string name = file_.string(item, fmt::format("an entry of '{}'", field));
       if (!seen.insert(name).second) file_.fail(item, fmt::format("'{}' appears twice in '{}'", name, field));
       names.push_back(name);
@@ -215,12 +223,12 @@ class NetworkReader {
   }
 
   // Driven couplings: names of couplings, a name given twice for a pair driven twice.
-  void read_inputs(const YAML::Node& root) {
-    const YAML::Node list = file_.optional(root, "inputs");
-    if (!list.IsDefined()) return;
+  void read_inputs(const TreeNode& root) {
+    const TreeNode list = file_.optional(root, "inputs");
+    if (!list.defined()) return;
     file_.expect_sequence(list, "'inputs'");
     loaded_.field_locations["inputs"] = file_.where(list);
-    for (const auto& item : list) {
+    for (const auto& item : list.items()) {
       const std::string name = file_.string(item, "an entry of 'inputs'");
       const auto& couplings = loaded_.model.couplings;
       if (std::none_of(couplings.begin(), couplings.end(), [&](const network::Coupling& c) { return c.name == name; }))
@@ -230,11 +238,11 @@ class NetworkReader {
     }
   }
 
-  void read_values(const YAML::Node& values) {
+  void read_values(const TreeNode& values) {
     file_.expect_map(values, "'values'");
     loaded_.field_locations["values"] = file_.where(values);
     std::set<std::string> seen;
-    for (const auto& entry : values) {
+    for (const auto& entry : values.entries()) {
       const std::string name = file_.string(entry.first, "a primary variable name in 'values'");
       if (!seen.insert(name).second) file_.fail(entry.first, fmt::format("duplicate key '{}' in 'values'", name));
       loaded_.model.values.emplace_back(name, *file_.number(entry.second, fmt::format("the value of '{}'", name)).exact);

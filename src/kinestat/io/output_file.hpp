@@ -1,12 +1,15 @@
 #pragma once
-// Output files are written whole or not at all: a temporary file next to the target is
-// renamed over it, so a failure never leaves a partial report behind.
+// Output files are written whole or not at all. A regular file (or a new one) is written to a
+// uniquely named temporary file beside it and renamed over it, so a failure never leaves a
+// partial report behind and parallel runs never collide. A device or FIFO (/dev/null, a pipe)
+// is written directly, never replaced. Symbolic links are followed to their target.
 
 #include <string>
 
 namespace kinestat::io {
 
-/// Writes `content` to `path` atomically. Throws InputError naming `path` if it cannot.
+/// Writes `content` to `path` as described above. Throws InputError naming `path` and the
+/// reason (the system's error text) if it cannot; whatever it wrote to a regular file is removed.
 void write_file_atomically(const std::string& path, const std::string& content);
 
 }  // namespace kinestat::io

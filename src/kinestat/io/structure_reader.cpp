@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
 #include <map>
 #include <optional>
@@ -21,6 +22,41 @@ struct Cell {
   SourceLocation where;
 };
 using CellMatrix = std::vector<std::vector<Cell>>;
+
+// Bodies that no chain of pairs joins to the frame (body 0), in order; `joined[i]` lists the
+// bodies that share a pair with body i.
+std::vector<std::size_t> unreachable_from_frame(const std::vector<std::vector<std::size_t>>& joined) {
+  std::vector<bool> reached(joined.size(), false);
+  std::vector<std::size_t> stack{0};
+  reached[0] = true;
+  while (!stack.empty()) {
+    const std::size_t body = stack.back();
+    stack.pop_back();
+    for (std::size_t other : joined[body]) {
+      if (!reached[other]) {
+        reached[other] = true;
+        stack.push_back(other);
+      }
+    }
+  }
+  std::vector<std::size_t> missing;
+  for (std::size_t i = 0; i < joined.size(); ++i)
+    if (!reached[i]) missing.push_back(i);
+  return missing;
+}
+
+// "bodies 3, 4 and 5 are" / "body 3 is", with `name` giving each body's label.
+template <typename Name>
+std::string not_connected_message(const std::vector<std::size_t>& bodies, Name name) {
+  std::string list;
+  const std::size_t shown = std::min<std::size_t>(bodies.size(), 10);
+  for (std::size_t k = 0; k < shown; ++k) list += (k ? ", " : "") + name(bodies[k]);
+  if (bodies.size() > shown) list += fmt::format(" and {} more", bodies.size() - shown);
+  return fmt::format("{} {} not connected to the frame by any chain of pairs: a mechanism must hang from the frame "
+                     "(join {} to the rest, or remove {})",
+                     bodies.size() == 1 ? "body" : "bodies", list + (bodies.size() == 1 ? " is" : " are"),
+                     bodies.size() == 1 ? "it" : "them", bodies.size() == 1 ? "it" : "them");
+}
 
 // Checks the rules of Table 1 and of a mechanism's topology, naming row and column
 // (1-based, as the paper numbers bodies). `whole` locates the matrix itself.
@@ -67,6 +103,14 @@ void validate_adjacency(const CellMatrix& m, const SourceLocation& whole) {
     if (i == 0) throw InputError(at, "the frame (row 1) forms no pair: nothing is attached to it");
     throw InputError(at, fmt::format("body {} is isolated: row {} forms no pair", i + 1, i + 1));
   }
+  std::vector<std::vector<std::size_t>> joined(n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j)
+      if (m[i][j].value != 0) joined[i].push_back(j);
+  if (const auto missing = unreachable_from_frame(joined); !missing.empty()) {
+    throw InputError(m[missing.front()].front().where,
+                     not_connected_message(missing, [](std::size_t b) { return std::to_string(b + 1); }));
+  }
 }
 
 StructureModel model_from_cells(const CellMatrix& m) {
@@ -76,13 +120,13 @@ StructureModel model_from_cells(const CellMatrix& m) {
   return structure::model_from_adjacency(codes);
 }
 
-CellMatrix read_yaml_matrix(const YamlFile& file, const YAML::Node& node) {
+CellMatrix read_yaml_matrix(const YamlFile& file, const TreeNode& node) {
   file.expect_sequence(node, "'adjacency'");
   CellMatrix m;
-  for (const auto& row : node) {
+  for (const auto& row : node.items()) {
     file.expect_sequence(row, fmt::format("row {} of 'adjacency'", m.size() + 1));
     std::vector<Cell> cells;
-    for (const auto& item : row) {
+    for (const auto& item : row.items()) {
       const std::string what = fmt::format("adjacency row {}, column {}", m.size() + 1, cells.size() + 1);
       cells.push_back({file.integer(item, what), file.where(item)});
     }
@@ -91,11 +135,11 @@ CellMatrix read_yaml_matrix(const YamlFile& file, const YAML::Node& node) {
   return m;
 }
 
-std::vector<std::string> read_body_names(const YamlFile& file, const YAML::Node& node) {
+std::vector<std::string> read_body_names(const YamlFile& file, const TreeNode& node) {
   file.expect_sequence(node, "'bodies'");
   std::vector<std::string> names;
   std::map<std::string, int> seen;
-  for (const auto& item : node) {
+  for (const auto& item : node.items()) {
     const std::string name = file.string(item, "a body name");
     if (!seen.emplace(name, static_cast<int>(names.size())).second) {
       file.fail(item, fmt::format("duplicate body name '{}'", name));
@@ -106,7 +150,7 @@ std::vector<std::string> read_body_names(const YamlFile& file, const YAML::Node&
   return names;
 }
 
-StructureModel read_pairs(const YamlFile& file, const YAML::Node& bodies_node, const YAML::Node& pairs_node,
+StructureModel read_pairs(const YamlFile& file, const TreeNode& bodies_node, const TreeNode& pairs_node,
                           int dimension) {
   StructureModel model;
   model.dimension = dimension;
@@ -115,9 +159,9 @@ StructureModel read_pairs(const YamlFile& file, const YAML::Node& bodies_node, c
   for (std::size_t i = 0; i < model.body_names.size(); ++i) index[model.body_names[i]] = static_cast<int>(i);
   file.expect_sequence(pairs_node, "'pairs'");
   std::vector<int> degree(model.body_names.size(), 0);
-  for (const auto& item : pairs_node) {
+  for (const auto& item : pairs_node.items()) {
     file.check_keys(item, "a pair", {"between", "pair", "inputs", "freedoms", "name"});
-    const YAML::Node between = file.required(item, "between", "a pair");
+    const TreeNode between = file.required(item, "between", "a pair");
     file.expect_sequence(between, "'between'");
     if (between.size() != 2) file.fail(between, "'between' must name exactly two bodies");
     int ends[2];
@@ -128,15 +172,15 @@ StructureModel read_pairs(const YamlFile& file, const YAML::Node& bodies_node, c
       ends[s] = found->second;
     }
     if (ends[0] == ends[1]) file.fail(between, "a pair must join two different bodies");
-    const YAML::Node kind_node = file.required(item, "pair", "a pair");
+    const TreeNode kind_node = file.required(item, "pair", "a pair");
     const std::string kind = file.string(kind_node, "'pair'");
     if (kind != "lower" && kind != "higher") file.fail(kind_node, fmt::format("unknown pair '{}'; expected lower or higher", kind));
     structure::Pair p;
     p.a = std::min(ends[0], ends[1]);
     p.b = std::max(ends[0], ends[1]);
     p.kind = kind == "lower" ? PairKind::lower : PairKind::higher;
-    const YAML::Node freedoms = file.optional(item, "freedoms");
-    if (freedoms.IsDefined()) {
+    const TreeNode freedoms = file.optional(item, "freedoms");
+    if (freedoms.defined()) {
       const long long f = file.integer(freedoms, "'freedoms'");
       if (f < 1 || f >= dimension) file.fail(freedoms, fmt::format("'freedoms' must be 1 to {}, found {}", dimension - 1, f));
       p.freedoms = static_cast<int>(f);
@@ -145,14 +189,14 @@ StructureModel read_pairs(const YamlFile& file, const YAML::Node& bodies_node, c
     } else {
       p.freedoms = p.kind == PairKind::lower ? 1 : 2;  // the planar grades of Table 1
     }
-    const YAML::Node inputs = file.optional(item, "inputs");
-    if (inputs.IsDefined()) {
+    const TreeNode inputs = file.optional(item, "inputs");
+    if (inputs.defined()) {
       const long long n = file.integer(inputs, "'inputs'");
       if (n < 0 || n > p.freedoms) file.fail(inputs, fmt::format("'inputs' must be 0 to {} (the pair's freedoms), found {}", p.freedoms, n));
       p.inputs = static_cast<int>(n);
     }
-    const YAML::Node name = file.optional(item, "name");
-    if (name.IsDefined()) (void)file.string(name, "'name'");
+    const TreeNode name = file.optional(item, "name");
+    if (name.defined()) (void)file.string(name, "'name'");
     ++degree[p.a];
     ++degree[p.b];
     model.pairs.push_back(p);
@@ -162,35 +206,44 @@ StructureModel read_pairs(const YamlFile& file, const YAML::Node& bodies_node, c
     if (i == 0) file.fail(bodies_node[0], fmt::format("the frame '{}' forms no pair: nothing is attached to it", model.body_names[0]));
     file.fail(bodies_node[i], fmt::format("body '{}' (body {}) is isolated: it forms no pair", model.body_names[i], i + 1));
   }
+  std::vector<std::vector<std::size_t>> joined(model.body_names.size());
+  for (const structure::Pair& p : model.pairs) {
+    joined[static_cast<std::size_t>(p.a)].push_back(static_cast<std::size_t>(p.b));
+    joined[static_cast<std::size_t>(p.b)].push_back(static_cast<std::size_t>(p.a));
+  }
+  if (const auto missing = unreachable_from_frame(joined); !missing.empty()) {
+    file.fail(bodies_node[missing.front()],
+              not_connected_message(missing, [&](std::size_t b) { return fmt::format("'{}'", model.body_names[b]); }));
+  }
   return model;
 }
 
 }  // namespace
 
 StructureModel read_structure_model(const YamlFile& file) {
-  const YAML::Node& root = file.root();
+  const TreeNode& root = file.root();
   file.check_keys(root, "a structure model",
                   {"kinestat", "kind", "name", "description", "dimension", "space", "units", "bodies", "adjacency", "pairs"});
   if (model_kind(file) != "structure") file.fail(root, "expected 'kind: structure'");
-  const YAML::Node space = file.optional(root, "dimension");
-  if (const YAML::Node old = file.optional(root, "space"); old.IsDefined())
+  const TreeNode space = file.optional(root, "dimension");
+  if (const TreeNode old = file.optional(root, "space"); old.defined())
     file.fail(old, fmt::format("'space' is now 'dimension', as in every model kind: write 'dimension: {}'",
-                               old.IsScalar() && old.Scalar() == "spatial" ? "spatial" : "planar"));
+                               old.is_scalar() && old.scalar() == "spatial" ? "spatial" : "planar"));
   const int dimension = read_planar(file, root, "structure", true) ? 3 : 6;
   const std::string units = read_units(file, root);
-  const YAML::Node adjacency = file.optional(root, "adjacency");
-  const YAML::Node pairs = file.optional(root, "pairs");
-  const YAML::Node bodies = file.optional(root, "bodies");
+  const TreeNode adjacency = file.optional(root, "adjacency");
+  const TreeNode pairs = file.optional(root, "pairs");
+  const TreeNode bodies = file.optional(root, "bodies");
   StructureModel model;
-  if (adjacency.IsDefined() == pairs.IsDefined()) {
+  if (adjacency.defined() == pairs.defined()) {
     file.fail(root, "a structure model needs exactly one of 'adjacency' (a matrix) or 'pairs' (with 'bodies')");
   }
-  if (adjacency.IsDefined()) {
+  if (adjacency.defined()) {
     if (dimension != 3) file.fail(space, "an adjacency matrix of Table-1 codes is planar; describe a spatial mechanism with 'bodies' and 'pairs'");
     const CellMatrix cells = read_yaml_matrix(file, adjacency);
     validate_adjacency(cells, file.where(adjacency));
     model = model_from_cells(cells);
-    if (bodies.IsDefined()) {
+    if (bodies.defined()) {
       std::vector<std::string> names = read_body_names(file, bodies);
       if (names.size() != cells.size()) {
         file.fail(bodies, fmt::format("'bodies' names {} bodies but 'adjacency' has {} rows", names.size(), cells.size()));
@@ -198,11 +251,11 @@ StructureModel read_structure_model(const YamlFile& file) {
       model.body_names = std::move(names);
     }
   } else {
-    if (!bodies.IsDefined()) file.fail(pairs, "'pairs' needs 'bodies' (the frame first) to name the bodies");
+    if (!bodies.defined()) file.fail(pairs, "'pairs' needs 'bodies' (the frame first) to name the bodies");
     model = read_pairs(file, bodies, pairs, dimension);
   }
-  const YAML::Node name = file.optional(root, "name");
-  if (name.IsDefined()) model.name = file.string(name, "'name'");
+  const TreeNode name = file.optional(root, "name");
+  if (name.defined()) model.name = file.string(name, "'name'");
   model.units = units;
   return model;
 }

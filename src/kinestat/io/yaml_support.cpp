@@ -1,26 +1,24 @@
 #include "kinestat/io/yaml_support.hpp"
 
+#include <fcntl.h>
 #include <fmt/format.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <yaml-cpp/eventhandler.h>
+#include <yaml-cpp/yaml.h>
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
-#include <fstream>
+#include <cstring>
+#include <istream>
 #include <set>
-#include <sstream>
+#include <streambuf>
 
 namespace kinestat::io {
 
 namespace {
-
-// yaml-cpp parses recursively; bound the nesting so hostile input cannot overflow the stack.
-constexpr int kMaxFlowNesting = 64;
-// Block nesting shows as indentation and "- - -" runs at the start of a line.
-constexpr std::size_t kMaxLeadingIndicators = 512;
-constexpr std::size_t kMaxInputBytes = std::size_t{64} << 20;  // 64 MiB
-// Aliases let a small file stand for an enormous tree ("billion laughs"); readers walk the
-// tree, so its expanded size is bounded.
-constexpr std::size_t kMaxExpandedNodes = std::size_t{4} << 20;
 
 // Where the first character a model file may not contain stands (1-based line and column,
 // columns counted in characters, and its byte offset), or line 0: bytes that are not
@@ -28,13 +26,14 @@ constexpr std::size_t kMaxExpandedNodes = std::size_t{4} << 20;
 // RFC 3629), and C0 control characters other than tab, line feed and carriage return, and DEL,
 // which YAML does not allow either. yaml-cpp passes both through into names (it even turns a
 // NUL and the next character into a lone byte 0xA0), and a name must be printable in every
-// report, JSON included.
+// report, JSON included. With `strings`, the text is an unescaped string, where carriage
+// returns are not allowed either.
 struct TextPosition {
   int line = 0, column = 0;
   std::size_t offset = 0;
   bool control = false;  ///< a control character, not a UTF-8 error
 };
-TextPosition first_unreadable_character(const std::string& text) {
+TextPosition first_unreadable_character(std::string_view text, bool unescaped = false) {
   int line = 1, column = 1;
   std::size_t i = 0;
   while (i < text.size()) {
@@ -55,7 +54,10 @@ TextPosition first_unreadable_character(const std::string& text) {
       const auto next = static_cast<unsigned char>(text[i + k]);
       if (next < (k == 1 ? low : 0x80) || next > (k == 1 ? high : 0xBF)) return {line, column, i, false};
     }
-    if ((byte < 0x20 && byte != '\t' && byte != '\n' && byte != '\r') || byte == 0x7F) return {line, column, i, true};
+    const bool allowed_control = byte == '\t' || byte == '\n' || (byte == '\r' && !unescaped);
+    if ((byte < 0x20 && !allowed_control) || byte == 0x7F) return {line, column, i, true};
+    // C1 controls (U+0080-U+009F) reach a terminal as escape sequences too.
+    if (unescaped && byte == 0xC2 && static_cast<unsigned char>(text[i + 1]) < 0xA0) return {line, column, i, true};
     if (byte == '\n') {
       ++line;
       column = 1;
@@ -67,8 +69,28 @@ TextPosition first_unreadable_character(const std::string& text) {
   return {};
 }
 
+// The first carriage return that is not followed by a line feed (line ends of classic Mac
+// OS), which yaml-cpp does not take as a line end. {line, column} 1-based, or line 0.
+std::pair<int, int> lone_carriage_return(std::string_view text) {
+  int line = 1;
+  std::size_t line_start = 0;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      line_start = i + 1;
+    } else if (text[i] == '\r' && (i + 1 == text.size() || text[i + 1] != '\n')) {
+      return {line, static_cast<int>(i - line_start) + 1};
+    }
+  }
+  return {0, 0};
+}
+
+// Block nesting shows as indentation and "- - -" runs at the start of a line; this cheap scan
+// refuses absurd runs before the parser sees them (the parser's own nesting limit follows).
+constexpr std::size_t kMaxLeadingIndicators = 512;
+
 // The first line whose run of leading spaces and block indicators is longer than the limit.
-int excessive_block_nesting(const std::string& text) {
+int excessive_block_nesting(std::string_view text) {
   int line = 1;
   std::size_t run = 0;
   bool at_start = true;
@@ -89,29 +111,11 @@ int excessive_block_nesting(const std::string& text) {
   return 0;
 }
 
-// Counts the nodes of the tree as readers would see it (aliases expanded), up to the limit.
-bool expands_beyond_limit(const YAML::Node& root) {
-  std::vector<YAML::Node> stack{root};
-  std::size_t count = 0;
-  while (!stack.empty()) {
-    const YAML::Node node = stack.back();
-    stack.pop_back();
-    if (++count > kMaxExpandedNodes) return true;
-    if (node.IsSequence()) {
-      for (const auto& item : node) stack.push_back(item);
-    } else if (node.IsMap()) {
-      for (const auto& entry : node) {
-        stack.push_back(entry.first);
-        stack.push_back(entry.second);
-      }
-    }
-  }
-  return false;
-}
-
-// Finds the first place where "[" / "{" nesting exceeds the limit, outside quoted strings
-// and comments. Returns {line, column} (1-based) or {0, 0}.
-std::pair<int, int> excessive_flow_nesting(const std::string& text) {
+// The first place where "[" / "{" nesting exceeds `limit`, outside quoted strings and
+// comments, as {line, column} (1-based) or {0, 0}. yaml-cpp's scanner queues the tokens of a
+// flow collection before the parser sees them (about 280 bytes per bracket), so this cheap scan
+// runs first.
+std::pair<int, int> excessive_flow_nesting(std::string_view text, int limit) {
   int depth = 0, line = 1, column = 0;
   char quote = 0;
   bool comment = false;
@@ -133,7 +137,7 @@ std::pair<int, int> excessive_flow_nesting(const std::string& text) {
     } else if (ch == '#') {
       comment = true;
     } else if (ch == '[' || ch == '{') {
-      if (++depth > kMaxFlowNesting) return {line, column};
+      if (++depth > limit) return {line, column};
     } else if (ch == ']' || ch == '}') {
       depth = std::max(0, depth - 1);
     }
@@ -141,17 +145,264 @@ std::pair<int, int> excessive_flow_nesting(const std::string& text) {
   return {0, 0};
 }
 
-std::string describe(const YAML::Node& node) {
-  switch (node.Type()) {
-    case YAML::NodeType::Null: return "nothing";
-    case YAML::NodeType::Scalar: return fmt::format("'{}'", node.Scalar());
-    case YAML::NodeType::Sequence: return "a list";
-    case YAML::NodeType::Map: return "a map";
+std::string nesting_message(bool flow, int limit) {
+  return fmt::format("{} nesting deeper than {} levels, the nesting limit (lists and maps inside each other)",
+                     flow ? "flow" : "block", limit);
+}
+
+std::string code_point_text(std::string_view text, std::size_t offset) {
+  const auto byte = static_cast<unsigned char>(text[offset]);
+  if (byte == 0xC2) return fmt::format("U+{:04X}", static_cast<unsigned char>(text[offset + 1]));
+  return fmt::format("U+{:04X}", byte);
+}
+
+// A view of a string as an input stream, so the parser reads the text without a copy.
+class TextBuffer : public std::streambuf {
+ public:
+  explicit TextBuffer(const std::string& text) {
+    char* begin = const_cast<char*>(text.data());  // read only: the get area is never written
+    setg(begin, begin, begin + text.size());
+  }
+};
+
+// Builds the ModelTree from the parser's events, enforcing the limits as nodes arrive.
+class TreeBuilder : public YAML::EventHandler {
+ public:
+  TreeBuilder(const std::string& path, const ReadingLimits& limits, ModelTree& tree)
+      : path_(path), limits_(limits), tree_(tree) {}
+
+  bool has_document() const { return documents_ > 0; }
+  bool has_root() const { return root_set_; }
+
+  void OnDocumentStart(const YAML::Mark& mark) override {
+    if (++documents_ > 1) {
+      throw InputError(at(mark), "a second YAML document starts here ('---'): a model file holds exactly one "
+                                 "model; put each model in a file of its own");
+    }
+  }
+  void OnDocumentEnd() override {}
+
+  void OnNull(const YAML::Mark& mark, YAML::anchor_t anchor) override {
+    close_leaf(add(mark, TreeNode::Kind::null, 0, 0), anchor);
+  }
+
+  void OnAlias(const YAML::Mark& mark, YAML::anchor_t anchor) override {
+    if (anchor >= anchors_.size() || !anchors_[anchor].defined) {
+      throw InputError(at(mark), "an alias refers to an anchor that is not defined");
+    }
+    const Anchor& target = anchors_[anchor];
+    if (target.open) {
+      throw InputError(at(mark), fmt::format("the alias '*{}' refers to the list or map that contains it (a "
+                                             "self-referencing alias would expand without end)",
+                                             target.name));
+    }
+    count(target.expanded, mark);
+    attach(target.node);
+  }
+
+  void OnScalar(const YAML::Mark& mark, const std::string& tag, YAML::anchor_t anchor, const std::string& value) override {
+    if (const TextPosition bad = first_unreadable_character(value, true); bad.line > 0) {
+      throw InputError(at(mark), bad.control
+                                     ? fmt::format("this string contains the control character {} (written as an "
+                                                   "escape?); names and values must be printable text (tab and "
+                                                   "newline allowed)",
+                                                   code_point_text(value, bad.offset))
+                                     : "this string is not valid UTF-8 after its escapes are resolved (a \\u escape "
+                                       "of a lone surrogate?)");
+    }
+    if (tag == "?" && value == "<<" && !stack_.empty() && stack_.back().map && stack_.back().children.size() % 2 == 0) {
+      throw InputError(at(mark), "YAML merge keys ('<<: *anchor') are not supported: write the keys of the map out "
+                                 "in full");
+    }
+    const std::uint32_t offset = tree_.add_text(value);
+    close_leaf(add(mark, TreeNode::Kind::scalar, offset, static_cast<std::uint32_t>(value.size())), anchor);
+  }
+
+  void OnSequenceStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor,
+                       YAML::EmitterStyle::value style) override {
+    open(mark, TreeNode::Kind::sequence, anchor, style);
+  }
+  void OnSequenceEnd() override { close(); }
+  void OnMapStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor,
+                  YAML::EmitterStyle::value style) override {
+    open(mark, TreeNode::Kind::map, anchor, style);
+  }
+  void OnMapEnd() override { close(); }
+  void OnAnchor(const YAML::Mark&, const std::string& name) override { anchor_names_.push_back(name); }
+
+ private:
+  struct Anchor {
+    std::uint32_t node = 0;
+    std::uint64_t expanded = 0;  ///< nodes the anchored node stands for
+    std::string name;
+    bool defined = false, open = false;
+  };
+  struct Open {
+    std::uint32_t node = 0;
+    std::uint64_t expanded_at_start = 0;
+    YAML::anchor_t anchor = 0;
+    bool map = false;
+    std::vector<std::uint32_t> children;
+  };
+
+  SourceLocation at(const YAML::Mark& mark) const {
+    if (mark.is_null()) return {path_, 1, 1};
+    return {path_, mark.line + 1, mark.column + 1};
+  }
+
+  void count(std::uint64_t nodes, const YAML::Mark& mark) {
+    expanded_ += nodes;
+    if (expanded_ > limits_.max_nodes) {
+      throw InputError(at(mark), fmt::format("the document expands to more than {} nodes, the node limit (each "
+                                             "alias counts as the nodes it stands for)",
+                                             limits_.max_nodes));
+    }
+  }
+
+  std::uint32_t add(const YAML::Mark& mark, TreeNode::Kind kind, std::uint32_t begin, std::uint32_t length) {
+    count(1, mark);
+    ModelTree::Record record;
+    record.line = static_cast<std::uint32_t>(mark.line + 1);
+    record.column = static_cast<std::uint32_t>(mark.column + 1);
+    record.begin = begin;
+    record.count = length;
+    record.kind = kind;
+    return tree_.add(record);
+  }
+
+  // Registers anchor `anchor` (0 for none) as standing for `node`.
+  Anchor* define(YAML::anchor_t anchor, std::uint32_t node) {
+    if (anchor == 0) return nullptr;
+    if (anchors_.size() <= anchor) anchors_.resize(anchor + 1);
+    Anchor& entry = anchors_[anchor];
+    entry.node = node;
+    entry.defined = true;
+    entry.name = anchor <= anchor_names_.size() ? anchor_names_[anchor - 1] : std::to_string(anchor);
+    return &entry;
+  }
+
+  void attach(std::uint32_t node) {
+    if (stack_.empty()) {
+      tree_.set_root(node);
+      root_set_ = true;
+    } else {
+      stack_.back().children.push_back(node);
+    }
+  }
+
+  void close_leaf(std::uint32_t node, YAML::anchor_t anchor) {
+    if (Anchor* entry = define(anchor, node)) entry->expanded = 1;
+    attach(node);
+  }
+
+  void open(const YAML::Mark& mark, TreeNode::Kind kind, YAML::anchor_t anchor, YAML::EmitterStyle::value style) {
+    // Levels are counted below the top-level map of the model.
+    if (static_cast<int>(stack_.size()) > limits_.max_nesting) {
+      throw InputError(at(mark), nesting_message(style == YAML::EmitterStyle::Flow, limits_.max_nesting));
+    }
+    const std::uint64_t start = expanded_;
+    const std::uint32_t node = add(mark, kind, 0, 0);
+    if (Anchor* entry = define(anchor, node)) entry->open = true;
+    // Reuse the child lists of closed containers at this depth: no allocation per container.
+    if (spare_.size() <= stack_.size()) spare_.resize(stack_.size() + 1);
+    Open entry;
+    entry.node = node;
+    entry.expanded_at_start = start;
+    entry.anchor = anchor;
+    entry.map = kind == TreeNode::Kind::map;
+    entry.children = std::move(spare_[stack_.size()]);
+    entry.children.clear();
+    stack_.push_back(std::move(entry));
+  }
+
+  void close() {
+    Open done = std::move(stack_.back());
+    stack_.pop_back();
+    tree_.set_children(done.node, done.children, done.map);
+    if (done.anchor != 0) {
+      Anchor& entry = anchors_[done.anchor];
+      entry.open = false;
+      entry.expanded = expanded_ - done.expanded_at_start;
+    }
+    spare_[stack_.size()] = std::move(done.children);
+    attach(done.node);
+  }
+
+  const std::string& path_;
+  const ReadingLimits& limits_;
+  ModelTree& tree_;
+  std::vector<Open> stack_;
+  std::vector<std::vector<std::uint32_t>> spare_;
+  std::vector<Anchor> anchors_;
+  std::vector<std::string> anchor_names_;
+  std::uint64_t expanded_ = 0;
+  int documents_ = 0;
+  bool root_set_ = false;
+};
+
+std::string describe(const TreeNode& node) {
+  switch (node.kind()) {
+    case TreeNode::Kind::scalar: return fmt::format("'{}'", node.scalar());
+    case TreeNode::Kind::sequence: return "a list";
+    case TreeNode::Kind::map: return "a map";
     default: return "nothing";
   }
 }
 
+std::string size_text(std::size_t bytes) {
+  if (bytes % (std::size_t{1} << 20) == 0) return fmt::format("{} MiB", bytes >> 20);
+  return fmt::format("{} bytes", bytes);
+}
+
+[[noreturn]] void too_large(const std::string& source, const ReadingLimits& limits) {
+  throw InputError({source, 0, 0}, fmt::format("the input is larger than the {} limit on model files (stopped "
+                                               "reading there)",
+                                               size_text(limits.max_bytes)));
+}
+
 }  // namespace
+
+std::string read_model_text(const std::string& path, const ReadingLimits& limits) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) throw InputError({path, 0, 0}, fmt::format("cannot open file for reading: {}", std::strerror(errno)));
+  struct Closer {
+    int fd;
+    ~Closer() { ::close(fd); }
+  } closer{fd};
+  struct stat info {};
+  if (::fstat(fd, &info) != 0) throw InputError({path, 0, 0}, fmt::format("cannot read the model file: {}", std::strerror(errno)));
+  if (S_ISDIR(info.st_mode)) {
+    throw InputError({path, 0, 0}, "this is a folder, not a model file: give the path of a .yaml or .json model");
+  }
+  if (S_ISREG(info.st_mode) && static_cast<std::uintmax_t>(info.st_size) > limits.max_bytes) too_large(path, limits);
+  // Devices, FIFOs and pipes have no size: read in blocks and stop one byte past the limit.
+  std::string text;
+  if (S_ISREG(info.st_mode)) text.reserve(static_cast<std::size_t>(info.st_size));
+  char block[1 << 16];
+  while (true) {
+    const ssize_t got = ::read(fd, block, sizeof block);
+    if (got < 0) {
+      if (errno == EINTR) continue;
+      throw InputError({path, 0, 0}, fmt::format("cannot read the model file: {}", std::strerror(errno)));
+    }
+    if (got == 0) break;
+    text.append(block, static_cast<std::size_t>(got));
+    if (text.size() > limits.max_bytes) too_large(path, limits);
+  }
+  return text;
+}
+
+std::string read_model_text(std::istream& in, const std::string& source, const ReadingLimits& limits) {
+  std::string text;
+  char block[1 << 16];
+  while (in) {
+    in.read(block, sizeof block);
+    text.append(block, static_cast<std::size_t>(in.gcount()));
+    if (text.size() > limits.max_bytes) too_large(source, limits);
+  }
+  if (in.bad()) throw InputError({source, 0, 0}, "cannot read the input");
+  return text;
+}
 
 int significant_digits(std::string_view literal) {
   std::string digits;
@@ -163,7 +414,17 @@ int significant_digits(std::string_view literal) {
   return first == std::string::npos ? 1 : static_cast<int>(digits.size() - first);
 }
 
-std::optional<mpq_class> parse_exact_decimal(std::string_view literal) {
+namespace {
+
+// Literals beyond these are refused: a double keeps 17 digits, and exact arithmetic on longer
+// numbers only costs time.
+constexpr std::size_t kMaxLiteralDigits = 4000;
+constexpr long long kMaxDecimalExponent = 4000;
+
+// Why a literal is not a decimal number, for the error message ("" if it is one).
+enum class LiteralProblem { none, not_decimal, too_many_digits, exponent_too_large };
+
+LiteralProblem parse_decimal(std::string_view literal, std::optional<mpq_class>* out) {
   std::size_t i = 0;
   bool negative = false;
   if (i < literal.size() && (literal[i] == '+' || literal[i] == '-')) negative = literal[i++] == '-';
@@ -182,7 +443,8 @@ std::optional<mpq_class> parse_exact_decimal(std::string_view literal) {
       any_digit = true;
     }
   }
-  if (!any_digit) return std::nullopt;
+  if (!any_digit) return LiteralProblem::not_decimal;
+  bool huge_exponent = false;
   if (i < literal.size() && (literal[i] == 'e' || literal[i] == 'E')) {
     ++i;
     bool exp_negative = false;
@@ -190,30 +452,46 @@ std::optional<mpq_class> parse_exact_decimal(std::string_view literal) {
     long long e = 0;
     bool exp_digit = false;
     for (; i < literal.size() && std::isdigit(static_cast<unsigned char>(literal[i])); ++i) {
-      e = e * 10 + (literal[i] - '0');
+      if (e <= kMaxDecimalExponent) e = e * 10 + (literal[i] - '0');
       exp_digit = true;
-      if (e > 4000) return std::nullopt;  // beyond double range: not a sensible length
     }
-    if (!exp_digit) return std::nullopt;
+    if (!exp_digit) return LiteralProblem::not_decimal;
+    huge_exponent = e > kMaxDecimalExponent;
     exponent += exp_negative ? -e : e;
   }
-  if (i != literal.size()) return std::nullopt;
+  if (i != literal.size()) return LiteralProblem::not_decimal;
   // Strip leading zeros so huge zero-padded literals cost nothing.
   const auto first = digits.find_first_not_of('0');
   digits = first == std::string::npos ? "0" : digits.substr(first);
-  if (digits.size() > 4000) return std::nullopt;
+  if (digits.size() > kMaxLiteralDigits) return LiteralProblem::too_many_digits;
+  if (huge_exponent || std::abs(exponent) > 2 * kMaxDecimalExponent) return LiteralProblem::exponent_too_large;
   mpz_class numerator(digits, 10);
   mpz_class power;
   mpz_ui_pow_ui(power.get_mpz_t(), 10, static_cast<unsigned long>(exponent < 0 ? -exponent : exponent));
   mpq_class value = exponent < 0 ? mpq_class(numerator, power) : mpq_class(numerator * power);
   value.canonicalize();
-  return negative ? mpq_class(-value) : value;
+  *out = negative ? mpq_class(-value) : value;
+  return LiteralProblem::none;
 }
 
-YamlFile YamlFile::parse(std::string path, const std::string& text) {
-  if (text.size() > kMaxInputBytes) {
-    throw InputError({path, 1, 1}, fmt::format("file is larger than the {} MiB limit", kMaxInputBytes >> 20));
-  }
+bool starts_with_prefix(std::string_view text, std::string_view prefix) {
+  if (!text.empty() && (text[0] == '+' || text[0] == '-')) text.remove_prefix(1);
+  if (text.size() <= prefix.size()) return false;
+  for (std::size_t i = 0; i < prefix.size(); ++i)
+    if (std::tolower(static_cast<unsigned char>(text[i])) != prefix[i]) return false;
+  return true;
+}
+
+}  // namespace
+
+std::optional<mpq_class> parse_exact_decimal(std::string_view literal) {
+  std::optional<mpq_class> value;
+  (void)parse_decimal(literal, &value);
+  return value;
+}
+
+YamlFile YamlFile::parse(std::string path, const std::string& text, const ReadingLimits& limits) {
+  if (text.size() > limits.max_bytes) too_large(path, limits);
   if (const TextPosition bad = first_unreadable_character(text); bad.line > 0) {
     const auto byte = static_cast<unsigned char>(text[bad.offset]);
     throw InputError({path, bad.line, bad.column},
@@ -222,116 +500,123 @@ YamlFile YamlFile::parse(std::string path, const std::string& text) {
                                                "or Latin-1 files as UTF-8)",
                                                byte));
   }
-  if (auto [line, column] = excessive_flow_nesting(text); line > 0) {
-    throw InputError({path, line, column}, fmt::format("nesting deeper than {} levels", kMaxFlowNesting));
+  if (const auto [line, column] = lone_carriage_return(text); line > 0) {
+    throw InputError({path, line, column}, "a line ends with a lone carriage return (classic Mac line ends): save the "
+                                           "file with LF or CR LF line ends");
+  }
+  if (const auto [line, column] = excessive_flow_nesting(text, limits.max_nesting); line > 0) {
+    throw InputError({path, line, column}, nesting_message(true, limits.max_nesting));
   }
   if (const int line = excessive_block_nesting(text); line > 0) {
     throw InputError({path, line, 1}, fmt::format("indentation or block nesting deeper than {} levels", kMaxLeadingIndicators));
   }
-  YAML::Node root;
+  auto tree = std::make_shared<ModelTree>();
+  TreeBuilder builder(path, limits, *tree);
+  TextBuffer buffer(text);
+  std::istream stream(&buffer);
   try {
-    root = YAML::Load(text);
+    YAML::Parser parser(stream);
+    if (parser.HandleNextDocument(builder)) (void)parser.HandleNextDocument(builder);
   } catch (const YAML::Exception& error) {
-    throw InputError({path, error.mark.line + 1, error.mark.column + 1},
-                     fmt::format("malformed YAML: {}", error.msg));
+    throw InputError({path, error.mark.line + 1, error.mark.column + 1}, fmt::format("malformed YAML: {}", error.msg));
   }
-  if (!root.IsDefined() || root.IsNull()) throw InputError({path, 1, 1}, "empty model file: expected a map");
-  if (expands_beyond_limit(root)) {
-    throw InputError({path, 1, 1}, fmt::format("the document expands to more than {} nodes (through aliases?)", kMaxExpandedNodes));
-  }
-  YamlFile file(std::move(path), root);
-  file.expect_map(root, "the model file");
+  if (!builder.has_root() || tree->root().is_null()) throw InputError({path, 1, 1}, "empty model file: expected a map");
+  tree->shrink();
+  YamlFile file(std::move(path), std::move(tree));
+  file.expect_map(file.root(), "the model file");
   return file;
 }
 
-YamlFile YamlFile::load(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError({path, 0, 0}, "cannot open file for reading");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) throw InputError({path, 0, 0}, "cannot read file");
-  return parse(path, buffer.str());
+YamlFile YamlFile::load(const std::string& path, const ReadingLimits& limits) {
+  return parse(path, read_model_text(path, limits), limits);
 }
 
-SourceLocation YamlFile::where(const YAML::Node& node) const {
-  const YAML::Mark mark = node.Mark();
-  if (mark.is_null()) return {path_, 0, 0};
-  return {path_, mark.line + 1, mark.column + 1};
+SourceLocation YamlFile::where(const TreeNode& node) const {
+  if (!node.defined()) return {path_, 0, 0};
+  return {path_, node.line(), node.column()};
 }
 
-void YamlFile::fail(const YAML::Node& node, const std::string& problem) const { throw InputError(where(node), problem); }
+void YamlFile::fail(const TreeNode& node, const std::string& problem) const { throw InputError(where(node), problem); }
 
-void YamlFile::expect_map(const YAML::Node& node, std::string_view what) const {
-  if (!node.IsMap()) fail(node, fmt::format("{} must be a map, found {}", what, describe(node)));
+void YamlFile::expect_map(const TreeNode& node, std::string_view what) const {
+  if (!node.is_map()) fail(node, fmt::format("{} must be a map, found {}", what, describe(node)));
 }
 
-void YamlFile::expect_sequence(const YAML::Node& node, std::string_view what) const {
-  if (!node.IsSequence()) fail(node, fmt::format("{} must be a list, found {}", what, describe(node)));
+void YamlFile::expect_sequence(const TreeNode& node, std::string_view what) const {
+  if (!node.is_sequence()) fail(node, fmt::format("{} must be a list, found {}", what, describe(node)));
 }
 
-void YamlFile::check_keys(const YAML::Node& map, std::string_view what,
-                          std::initializer_list<std::string_view> allowed) const {
+void YamlFile::check_keys(const TreeNode& map, std::string_view what, std::initializer_list<std::string_view> allowed) const {
   check_keys(map, what, std::vector<std::string>(allowed.begin(), allowed.end()));
 }
 
-void YamlFile::check_keys(const YAML::Node& map, std::string_view what, const std::vector<std::string>& allowed) const {
+void YamlFile::check_keys(const TreeNode& map, std::string_view what, const std::vector<std::string>& allowed) const {
   expect_map(map, what);
-  std::set<std::string> seen;
-  for (const auto& entry : map) {
-    if (!entry.first.IsScalar()) fail(entry.first, fmt::format("keys of {} must be names", what));
-    const std::string key = entry.first.Scalar();
+  std::set<std::string_view> seen;
+  for (const auto& [key_node, value] : map.entries()) {
+    if (!key_node.is_scalar()) fail(key_node, fmt::format("keys of {} must be names", what));
+    const std::string_view key = key_node.scalar();
     if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
       std::string list;
       for (const auto& name : allowed) list += (list.empty() ? "" : ", ") + name;
-      fail(entry.first, fmt::format("unknown key '{}' in {}; expected one of: {}", key, what, list));
+      fail(key_node, fmt::format("unknown key '{}' in {}; expected one of: {}", key, what, list));
     }
-    if (!seen.insert(key).second) fail(entry.first, fmt::format("duplicate key '{}' in {}", key, what));
+    if (!seen.insert(key).second) fail(key_node, fmt::format("duplicate key '{}' in {}", key, what));
   }
 }
 
-YAML::Node YamlFile::required(const YAML::Node& map, std::string_view key, std::string_view what) const {
-  YAML::Node value = optional(map, key);
-  if (!value.IsDefined()) fail(map, fmt::format("{} is missing the key '{}'", what, key));
+TreeNode YamlFile::required(const TreeNode& map, std::string_view key, std::string_view what) const {
+  TreeNode value = optional(map, key);
+  if (!value.defined()) fail(map, fmt::format("{} is missing the key '{}'", what, key));
   return value;
 }
 
-YAML::Node YamlFile::optional(const YAML::Node& map, std::string_view key) const {
-  for (const auto& entry : map) {
-    if (entry.first.IsScalar() && entry.first.Scalar() == key) return entry.second;
-  }
-  return YAML::Node(YAML::NodeType::Undefined);
-}
+TreeNode YamlFile::optional(const TreeNode& map, std::string_view key) const { return map[key]; }
 
-ExactNumber YamlFile::number(const YAML::Node& node, std::string_view what) const {
-  if (!node.IsScalar()) fail(node, fmt::format("{} must be a number, found {}", what, describe(node)));
-  const std::string& text = node.Scalar();
+ExactNumber YamlFile::number(const TreeNode& node, std::string_view what) const {
+  if (!node.is_scalar()) fail(node, fmt::format("{} must be a number, found {}", what, describe(node)));
+  const std::string_view text = node.scalar();
   ExactNumber result;
-  result.exact = parse_exact_decimal(text);
-  if (result.exact) {
-    result.value = result.exact->get_d();
-    const bool underflow = result.value == 0.0 && sgn(*result.exact) != 0;
-    if (!std::isfinite(result.value) || underflow) fail(node, fmt::format("{} is out of range: '{}'", what, text));
-    return result;
+  switch (parse_decimal(text, &result.exact)) {
+    case LiteralProblem::none: {
+      result.value = result.exact->get_d();
+      const bool underflow = result.value == 0.0 && sgn(*result.exact) != 0;
+      if (!std::isfinite(result.value) || underflow) {
+        fail(node, fmt::format("{} is out of range: '{}' is beyond what a double holds (about 1e-308 to 1e308)",
+                               what, text));
+      }
+      return result;
+    }
+    case LiteralProblem::too_many_digits:
+      fail(node, fmt::format("{} has more than {} significant digits; write it with fewer (a double keeps 17)", what,
+                             kMaxLiteralDigits));
+    case LiteralProblem::exponent_too_large:
+      fail(node, fmt::format("{} is out of range: '{}' is beyond what a double holds (about 1e-308 to 1e308)", what,
+                             text));
+    case LiteralProblem::not_decimal: break;
   }
+  if (starts_with_prefix(text, "0x")) fail(node, fmt::format("{} is written in hexadecimal ('{}'): write it as a decimal number", what, text));
+  if (starts_with_prefix(text, "0o")) fail(node, fmt::format("{} is written in octal ('{}'): write it as a decimal number", what, text));
+  if (starts_with_prefix(text, "0b")) fail(node, fmt::format("{} is written in binary ('{}'): write it as a decimal number", what, text));
   fail(node, fmt::format("{} must be a finite number, found '{}'", what, text));
 }
 
-long long YamlFile::integer(const YAML::Node& node, std::string_view what) const {
+long long YamlFile::integer(const TreeNode& node, std::string_view what) const {
   const ExactNumber n = number(node, what);
   if (!n.exact || n.exact->get_den() != 1 || std::abs(n.value) > 1e15) {
-    fail(node, fmt::format("{} must be an integer, found '{}'", what, node.Scalar()));
+    fail(node, fmt::format("{} must be an integer, found '{}'", what, node.scalar()));
   }
   return static_cast<long long>(n.value);
 }
 
-std::string YamlFile::string(const YAML::Node& node, std::string_view what) const {
-  if (!node.IsScalar() || node.Scalar().empty()) {
+std::string YamlFile::string(const TreeNode& node, std::string_view what) const {
+  if (!node.is_scalar() || node.scalar().empty()) {
     fail(node, fmt::format("{} must be a name, found {}", what, describe(node)));
   }
-  return node.Scalar();
+  return std::string(node.scalar());
 }
 
-std::vector<ExactNumber> YamlFile::numbers(const YAML::Node& node, std::string_view what,
+std::vector<ExactNumber> YamlFile::numbers(const TreeNode& node, std::string_view what,
                                            std::initializer_list<std::size_t> lengths) const {
   expect_sequence(node, what);
   if (std::find(lengths.begin(), lengths.end(), node.size()) == lengths.end()) {
@@ -340,18 +625,19 @@ std::vector<ExactNumber> YamlFile::numbers(const YAML::Node& node, std::string_v
     fail(node, fmt::format("{} must have {} numbers, found {}", what, expected, node.size()));
   }
   std::vector<ExactNumber> values;
-  for (const auto& item : node) values.push_back(number(item, what));
+  values.reserve(node.size());
+  for (const TreeNode& item : node.items()) values.push_back(number(item, what));
   return values;
 }
 
 std::string model_kind(const YamlFile& file) {
-  const YAML::Node& root = file.root();
-  const YAML::Node version = file.required(root, "kinestat", "the model file");
+  const TreeNode root = file.root();
+  const TreeNode version = file.required(root, "kinestat", "the model file");
   if (file.integer(version, "the format version 'kinestat'") != 1) {
     file.fail(version, "unsupported format version: expected 'kinestat: 1'");
   }
-  const YAML::Node kind = file.optional(root, "kind");
-  if (!kind.IsDefined()) return "network";
+  const TreeNode kind = file.optional(root, "kind");
+  if (!kind.defined()) return "network";
   const std::string name = file.string(kind, "'kind'");
   if (name != "network" && name != "framework" && name != "structure") {
     file.fail(kind, fmt::format("unknown kind '{}'; expected network, framework or structure", name));

@@ -1,21 +1,34 @@
 #pragma once
-// Shared helpers for reading kinestat model files with yaml-cpp: positions for error
-// messages, strict maps (unknown and duplicate keys are errors) and exact numbers.
-// Used by every model reader in io/; nothing outside io/ includes yaml-cpp.
+// Reading kinestat model files (YAML, or JSON which is YAML too): the text is read through a
+// bounded reader and parsed event by event into a ModelTree, with every limit (bytes, nesting,
+// nodes with aliases expanded, one document) enforced while reading. The helpers give positions
+// for error messages, strict maps (unknown and duplicate keys are errors) and exact numbers.
+// The parser itself stays inside yaml_support.cpp.
 
 #include <gmpxx.h>
-#include <yaml-cpp/yaml.h>
 
-#include <array>
+#include <cstddef>
 #include <initializer_list>
+#include <iosfwd>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "kinestat/io/input_error.hpp"
+#include "kinestat/io/model_tree.hpp"
 
 namespace kinestat::io {
+
+/// Limits on what a model file may be; each error message names the limit it hit.
+struct ReadingLimits {
+  std::size_t max_bytes = std::size_t{64} << 20;  ///< size of the file or stream (64 MiB)
+  int max_nesting = 64;                           ///< lists and maps inside each other
+  /// Nodes of the document with every alias counted as the nodes it stands for; bounds both
+  /// memory (≈ 24 bytes a node) and the work of the readers that walk the tree.
+  std::size_t max_nodes = std::size_t{1} << 24;
+};
 
 /// A number read from a model file: its double value, and its exact rational value when the
 /// literal is an integer, a decimal or a decimal in scientific notation (e.g. "0.01", "1e-3").
@@ -24,49 +37,58 @@ struct ExactNumber {
   std::optional<mpq_class> exact;  ///< empty only for literals that are not rational
 };
 
+/// Reads at most `limits.max_bytes` bytes from the file at `path` (a regular file, a device,
+/// a FIFO...): never reads an endless source to its end. Throws InputError if the path is a
+/// folder, cannot be read, or holds more than the limit.
+std::string read_model_text(const std::string& path, const ReadingLimits& limits = {});
+/// The same for an open stream (standard input); `source` names it in messages.
+std::string read_model_text(std::istream& in, const std::string& source, const ReadingLimits& limits = {});
+
 /// The file being read, so that every helper can say where a problem is.
 class YamlFile {
  public:
   /// Parses `text` (YAML or JSON) that came from `path`. Throws InputError for malformed YAML,
-  /// an empty document, or input over the size and nesting limits.
-  static YamlFile parse(std::string path, const std::string& text);
-  /// Reads and parses the file at `path`. Throws InputError if it cannot be read.
-  static YamlFile load(const std::string& path);
+  /// an empty document, more than one document, a string with control characters (checked
+  /// after unescaping), or input over the limits.
+  static YamlFile parse(std::string path, const std::string& text, const ReadingLimits& limits = {});
+  /// Reads (bounded) and parses the file at `path`. Throws InputError if it cannot be read.
+  static YamlFile load(const std::string& path, const ReadingLimits& limits = {});
 
-  const YAML::Node& root() const { return root_; }
+  TreeNode root() const { return tree_->root(); }
   const std::string& path() const { return path_; }
+  /// Nodes stored (aliases stored once).
+  std::size_t node_count() const { return tree_->node_count(); }
 
   /// Location of `node` (1-based line and column).
-  SourceLocation where(const YAML::Node& node) const;
+  SourceLocation where(const TreeNode& node) const;
   /// Throws InputError at `node` with `problem`.
-  [[noreturn]] void fail(const YAML::Node& node, const std::string& problem) const;
+  [[noreturn]] void fail(const TreeNode& node, const std::string& problem) const;
 
   /// A map whose keys must all be in `allowed`; duplicate keys are errors.
-  void check_keys(const YAML::Node& map, std::string_view what,
-                  std::initializer_list<std::string_view> allowed) const;
-  void check_keys(const YAML::Node& map, std::string_view what, const std::vector<std::string>& allowed) const;
+  void check_keys(const TreeNode& map, std::string_view what, std::initializer_list<std::string_view> allowed) const;
+  void check_keys(const TreeNode& map, std::string_view what, const std::vector<std::string>& allowed) const;
   /// `map[key]`, or InputError naming the map and the key if it is missing.
-  YAML::Node required(const YAML::Node& map, std::string_view key, std::string_view what) const;
+  TreeNode required(const TreeNode& map, std::string_view key, std::string_view what) const;
   /// `map[key]` if present, otherwise an undefined node.
-  YAML::Node optional(const YAML::Node& map, std::string_view key) const;
+  TreeNode optional(const TreeNode& map, std::string_view key) const;
 
   /// Reads a finite number; NaN, infinities and non-numbers are errors.
-  ExactNumber number(const YAML::Node& node, std::string_view what) const;
+  ExactNumber number(const TreeNode& node, std::string_view what) const;
   /// Reads an integer (no fraction part).
-  long long integer(const YAML::Node& node, std::string_view what) const;
+  long long integer(const TreeNode& node, std::string_view what) const;
   /// Reads a non-empty scalar string.
-  std::string string(const YAML::Node& node, std::string_view what) const;
+  std::string string(const TreeNode& node, std::string_view what) const;
   /// Reads a sequence of numbers whose length is one of `lengths`.
-  std::vector<ExactNumber> numbers(const YAML::Node& node, std::string_view what,
+  std::vector<ExactNumber> numbers(const TreeNode& node, std::string_view what,
                                    std::initializer_list<std::size_t> lengths) const;
   /// Reads a sequence node (errors if `node` is not a sequence).
-  void expect_sequence(const YAML::Node& node, std::string_view what) const;
-  void expect_map(const YAML::Node& node, std::string_view what) const;
+  void expect_sequence(const TreeNode& node, std::string_view what) const;
+  void expect_map(const TreeNode& node, std::string_view what) const;
 
  private:
-  YamlFile(std::string path, YAML::Node root) : path_(std::move(path)), root_(std::move(root)) {}
+  YamlFile(std::string path, std::shared_ptr<const ModelTree> tree) : path_(std::move(path)), tree_(std::move(tree)) {}
   std::string path_;
-  YAML::Node root_;
+  std::shared_ptr<const ModelTree> tree_;
 };
 
 /// Significant digits of a decimal literal ("0.8660254" -> 7, "-1.50e3" -> 3, "0" -> 1).

@@ -42,6 +42,12 @@ HomogeneousSolution solve_homogeneous(const RationalMatrix& a);
 /// rules for free variables and redundant rows as the exact version, with named tolerances.
 HomogeneousSolution solve_homogeneous(const Eigen::MatrixXd& a, const RankTolerance& tolerance);
 
+/// The null-space basis with the earliest possible free variables (the floating-point rule of
+/// solve_homogeneous) from any orthonormal basis `null_basis` (n × nullity) of it: columns are
+/// identity on `free_variables` (set here, increasing). When fewer than nullity variables pass
+/// kFreeVariableResidual (only right at the tolerance), the result has that many zero columns.
+Eigen::MatrixXd echelon_null_basis(const Eigen::MatrixXd& null_basis, std::vector<Eigen::Index>& free_variables);
+
 /// Thrown when requested free variables cannot all be free together.
 class DependentFreeVariable : public std::invalid_argument {
  public:

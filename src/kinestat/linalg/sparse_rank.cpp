@@ -1,9 +1,8 @@
 #include "kinestat/linalg/sparse_rank.hpp"
 
-#include <Eigen/SPQRSupport>
-
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace kinestat::linalg {
 
@@ -14,8 +13,10 @@ double estimate_largest_singular_value(const Eigen::SparseMatrix<double>& a) {
   for (Eigen::Index i = 0; i < v.size(); ++i) v(i) = 1.0 + 0.5 * std::sin(static_cast<double>(i) + 1.0);
   v.normalize();
   double sigma = 0.0;
+  Eigen::VectorXd av(a.rows()), w(a.cols());
   for (int step = 0; step < 60; ++step) {
-    Eigen::VectorXd w = a.transpose() * (a * v);
+    av.noalias() = a * v;
+    w.noalias() = a.transpose() * av;
     const double norm = w.norm();
     if (norm == 0.0) return 0.0;
     sigma = std::sqrt(norm);
@@ -24,23 +25,29 @@ double estimate_largest_singular_value(const Eigen::SparseMatrix<double>& a) {
   return sigma;
 }
 
-RankDecision sparse_numerical_rank(const Eigen::SparseMatrix<double>& a, const RankTolerance& tolerance) {
+RankDecision sparse_rank_threshold(const Eigen::SparseMatrix<double>& a, const RankTolerance& tolerance) {
   RankDecision decision;
   if (a.rows() == 0 || a.cols() == 0) return decision;
   decision.largest = estimate_largest_singular_value(a);
+  decision.rounding_level = default_relative_tolerance(a.rows(), a.cols()) * decision.largest;
   decision.threshold = tolerance.relative.value_or(default_relative_tolerance(a.rows(), a.cols())) * decision.largest;
-  // SPQR is fastest on tall matrices; rank(A) = rank(Aᵀ).
-  Eigen::SparseMatrix<double> tall = a.rows() >= a.cols() ? a : Eigen::SparseMatrix<double>(a.transpose());
-  tall.makeCompressed();
-  Eigen::SPQR<Eigen::SparseMatrix<double>> qr;
-  qr.setPivotThreshold(decision.threshold);
-  qr.compute(tall);
+  return decision;
+}
+
+void record_rank(RankDecision& decision, const SparseQr& qr) {
   decision.rank = qr.rank();
-  double smallest = decision.largest;
-  const auto& r = qr.matrixR();
-  for (Eigen::Index i = 0; i < decision.rank && i < r.rows() && i < r.cols(); ++i)
-    smallest = std::min(smallest, std::abs(r.coeff(i, i)));
-  decision.smallest_kept = decision.rank > 0 ? smallest : 0.0;
+  decision.smallest_kept = decision.rank > 0 ? std::min(decision.largest, qr.smallest_pivot()) : 0.0;
+}
+
+RankDecision sparse_numerical_rank(const Eigen::SparseMatrix<double>& a, const RankTolerance& tolerance,
+                                   std::size_t* peak_memory) {
+  RankDecision decision = sparse_rank_threshold(a, tolerance);
+  if (a.rows() == 0 || a.cols() == 0) return decision;
+  // SPQR is fastest on tall matrices; rank(A) = rank(Aᵀ).
+  const SparseQr qr = a.rows() >= a.cols() ? SparseQr(a, decision.threshold)
+                                           : SparseQr(Eigen::SparseMatrix<double>(a.transpose()), decision.threshold);
+  record_rank(decision, qr);
+  if (peak_memory != nullptr) *peak_memory = qr.peak_memory();
   return decision;
 }
 

@@ -1,10 +1,11 @@
 #pragma once
-// Numerical rank of a large sparse matrix by SuiteSparseQR (multifrontal, column-pivoting
-// heuristic), for models too large for a dense SVD. Counts only: no singular vectors.
+// Numerical rank of a large sparse matrix by SuiteSparseQR (multifrontal, nested-dissection
+// ordering, Heath's column-norm rank rule), for models too large for a dense SVD.
 
 #include <Eigen/SparseCore>
 
 #include "kinestat/linalg/rank_decision.hpp"
+#include "kinestat/linalg/sparse_qr.hpp"
 
 namespace kinestat::linalg {
 
@@ -12,7 +13,16 @@ namespace kinestat::linalg {
 /// SVD's (`tolerance`, default max(rows, cols)·eps) times an estimate of σ_max from power
 /// iteration. The evidence reported is the R diagonal: `smallest_kept` is the smallest kept
 /// |R_ii|; `largest_dropped` is 0 because SPQR drops columns without reporting them.
-RankDecision sparse_numerical_rank(const Eigen::SparseMatrix<double>& a, const RankTolerance& tolerance = {});
+/// `peak_memory`, when given, receives the factorisation's peak memory in bytes.
+RankDecision sparse_numerical_rank(const Eigen::SparseMatrix<double>& a, const RankTolerance& tolerance = {},
+                                   std::size_t* peak_memory = nullptr);
+
+/// The absolute threshold of the rank rule for `a`, with σ_max estimated: `decision.largest`,
+/// `decision.threshold` and `decision.rounding_level` are set, the rank is left to the caller.
+RankDecision sparse_rank_threshold(const Eigen::SparseMatrix<double>& a, const RankTolerance& tolerance);
+
+/// Fills the rank and its evidence (smallest kept |R_ii|) of `decision` from `qr`.
+void record_rank(RankDecision& decision, const SparseQr& qr);
 
 /// Estimate of the largest singular value of `a` (power iteration on aᵀa, 60 steps).
 double estimate_largest_singular_value(const Eigen::SparseMatrix<double>& a);

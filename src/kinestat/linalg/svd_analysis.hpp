@@ -2,11 +2,12 @@
 // Singular value decomposition with a rank decision, for analyses that need the singular
 // vectors themselves (kinematic modes from V, self-stress states from U).
 //
-// Eigen 3.4's divide-and-conquer BDCSVD can return wrong singular vectors (and so wrong null
-// spaces) for matrices with many equal singular values, which the 0/±1 matrices of coupling
-// networks and frameworks have (seen: |A - U S V^T| = 0.76 for a 19 x 24 network matrix).
-// Every SVD in kinestat is therefore checked: the factors must reconstruct A and be
-// orthonormal, otherwise the slower but reliable one-sided Jacobi SVD is used.
+// The SVD is LAPACK's divide and conquer (dgesdd) from the optimised LAPACK kinestat links
+// (OpenBLAS). Divide-and-conquer SVDs can return wrong singular vectors for matrices with many
+// equal singular values, which the 0/±1 matrices of coupling networks and frameworks have
+// (seen with Eigen 3.4's BDCSVD: |A - U S V^T| = 0.76 for a 19 x 24 network matrix). Every SVD
+// in kinestat is therefore checked: on generic probe vectors the factors must reconstruct A
+// and be orthonormal, otherwise the slower but reliable one-sided Jacobi SVD is used.
 
 #include <Eigen/Core>
 
@@ -27,7 +28,8 @@ struct SvdAnalysis {
   Eigen::MatrixXd left_null_space() const { return u.rightCols(u.cols() - rank.rank); }
 };
 
-/// A check of |A - U S V^T| and of orthonormality passes below this, relative to max(1, |A|).
+/// A check of |A - U S V^T| and of orthonormality (on probe vectors) passes below this,
+/// relative to max(1, |A|).
 inline constexpr double kSvdResidualTolerance = 1e-10;
 
 /// Which singular vectors to return, completed to full orthonormal bases.

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <limits>
 #include <set>
 
 #include "kinestat/graph/coupling_graph.hpp"
@@ -202,7 +203,11 @@ graph::SpanningTree choose_tree(const Model& model, const graph::CouplingGraph& 
   try {
     return graph.tree_with_chords(chords);
   } catch (const graph::TreeError& error) {
-    throw ModelError("chords", -1, fmt::format("these chords do not leave a spanning tree: {}", error.what()));
+    const std::string closing =
+        error.edge() < 0 ? std::string()
+                         : fmt::format(", closed by coupling '{}' (make one coupling of that circuit a chord)",
+                                       model.couplings[static_cast<std::size_t>(error.edge())].name);
+    throw ModelError("chords", -1, fmt::format("these chords do not leave a spanning tree: {}{}", error.what(), closing));
   }
 }
 
@@ -333,8 +338,7 @@ NetworkResult analyse_network(const Model& model, const AnalysisOptions& options
   r.a = static_cast<int>(r.cutset_law.solution.rank.rank);
   r.FN = r.F - r.m;
   r.CN = r.C - r.a;
-  r.classification = r.FN == 0 ? (r.CN == 0 ? NetworkClass::simply_stiff : NetworkClass::overconstrained_structure)
-                               : (r.CN == 0 ? NetworkClass::kinematic_chain : NetworkClass::overconstrained_chain);
+  r.classification = classify(r.FN, r.CN);
   r.identities_hold = r.FN - r.CN == r.F - d * r.l && r.CN - r.FN == r.C - d * r.k && r.FN == d * r.k - r.a &&
                       r.CN == d * r.l - r.m && r.cutset_motion.solution.nullity() == r.FN &&
                       r.circuit_action.solution.nullity() == r.CN;
@@ -477,15 +481,36 @@ NetworkResult analyse_network(const Model& model, const AnalysisOptions& options
     auto it = std::find_if(values.begin(), values.end(), [&](const auto& x) { return x.first == v.first; });
     if (it != values.end()) it->second = v.second; else values.push_back(v);
   }
-  auto value_vector = [&](const std::vector<int>& primaries, const std::vector<Magnitude>& magnitudes) {
+  // The primaries' values, NaN for those without one; empty when none of this kind has one.
+  auto value_vector = [&](const std::vector<int>& primaries, const std::vector<Magnitude>& magnitudes,
+                          std::vector<std::string>& missing) {
     std::optional<Eigen::VectorXd> vector = Eigen::VectorXd(static_cast<Index>(primaries.size()));
+    bool any = false;
     for (std::size_t p = 0; p < primaries.size(); ++p) {
       const std::string& name = magnitudes[static_cast<std::size_t>(primaries[p])].name;
       auto it = std::find_if(values.begin(), values.end(), [&](const auto& x) { return x.first == name; });
-      if (it == values.end()) return std::optional<Eigen::VectorXd>{};
-      (*vector)(static_cast<Index>(p)) = it->second.get_d();
+      if (it == values.end()) {
+        missing.push_back(name);
+        (*vector)(static_cast<Index>(p)) = std::numeric_limits<double>::quiet_NaN();
+      } else {
+        any = true;
+        (*vector)(static_cast<Index>(p)) = it->second.get_d();
+      }
     }
-    return vector;
+    if (!any) missing.clear();
+    return any ? vector : std::optional<Eigen::VectorXd>{};
+  };
+  // forms * v where a row is evaluated only when it does not involve a primary without a value
+  // (0 * NaN would otherwise spoil every row).
+  auto evaluate = [](const Eigen::MatrixXd& forms, const Eigen::VectorXd& v) {
+    Eigen::VectorXd out(forms.rows());
+    for (Index i = 0; i < forms.rows(); ++i) {
+      double sum = 0.0;
+      for (Index j = 0; j < forms.cols(); ++j)
+        if (forms(i, j) != 0.0) sum += forms(i, j) * v(j);
+      out(i) = sum;
+    }
+    return out;
   };
   for (std::size_t v = 0; v < values.size(); ++v) {
     const auto is_primary = [&](const std::vector<int>& primaries, const std::vector<Magnitude>& magnitudes) {
@@ -499,15 +524,15 @@ NetworkResult analyse_network(const Model& model, const AnalysisOptions& options
   // Coupling screws from the contracted forms: block e (d rows) times the primary values.
   auto coupling_screws = [&](const LinearForms& contracted, const Eigen::VectorXd& v) {
     Eigen::MatrixXd screws(d, r.e);
-    for (int e = 0; e < r.e; ++e) screws.col(e) = contracted.values.middleRows(static_cast<Index>(e) * d, d) * v;
+    for (int e = 0; e < r.e; ++e) screws.col(e) = evaluate(contracted.values.middleRows(static_cast<Index>(e) * d, d), v);
     return screws;
   };
-  if (auto v = value_vector(r.primary_motion, r.motions); v && r.FN > 0) {
-    r.motion_values = r.motion_magnitudes.values * *v;
+  if (auto v = value_vector(r.primary_motion, r.motions, r.missing_motion_values); v && r.FN > 0) {
+    r.motion_values = evaluate(r.motion_magnitudes.values, *v);
     r.coupling_motion_values = coupling_screws(r.circulation.contracted, *v);
   }
-  if (auto v = value_vector(r.primary_action, r.actions); v && r.CN > 0) {
-    r.action_values = r.action_magnitudes.values * *v;
+  if (auto v = value_vector(r.primary_action, r.actions, r.missing_action_values); v && r.CN > 0) {
+    r.action_values = evaluate(r.action_magnitudes.values, *v);
     r.coupling_action_values = coupling_screws(r.cutset_law.contracted, *v);
   }
 

@@ -2,6 +2,11 @@
 
 namespace kinestat::network {
 
+NetworkClass classify(int FN, int CN) {
+  return FN == 0 ? (CN == 0 ? NetworkClass::simply_stiff : NetworkClass::overconstrained_structure)
+                 : (CN == 0 ? NetworkClass::kinematic_chain : NetworkClass::overconstrained_chain);
+}
+
 std::string class_id(NetworkClass c) {
   switch (c) {
     case NetworkClass::simply_stiff: return "simply_stiff_structure";

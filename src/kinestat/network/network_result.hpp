@@ -25,6 +25,8 @@ enum class NetworkClass {
 };
 
 std::string class_id(NetworkClass c);
+/// The subset of Table 2 that FN and CN put a network in.
+NetworkClass classify(int FN, int CN);
 std::string class_description(NetworkClass c);
 
 /// Linear forms in the primary variables: row i of `values` gives quantity i as
@@ -95,8 +97,11 @@ struct NetworkResult {
   /// Identities of DESIGN.md (seed 000 eqs 7, 8, 16); all must hold.
   bool identities_hold = false;
 
-  /// Numeric values of all magnitudes when values of every primary of that kind were given.
+  /// Numeric values of the magnitudes when values of primaries of that kind were given. With
+  /// values for only some primaries, the magnitudes (and screw coordinates) that depend on a
+  /// primary without a value are NaN, and the missing primaries are named below.
   std::optional<Eigen::VectorXd> motion_values, action_values;
+  std::vector<std::string> missing_motion_values, missing_action_values;
   /// The same as screws: column e is coupling e's motion (axis formation) or action (ray
   /// formation), d coordinates in the user's frame.
   std::optional<Eigen::MatrixXd> coupling_motion_values, coupling_action_values;

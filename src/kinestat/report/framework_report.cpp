@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include "kinestat/report/verdict_report.hpp"
 
@@ -32,6 +33,7 @@ double significant(double value) {
   return std::stod(fmt::format("{:.10g}", value));
 }
 std::string evidence(double value) { return fmt::format("{:.3g}", significant(value)); }
+double evidence_number(double value) { return std::stod(evidence(value)); }
 
 // The smallest and largest of the length-scaling factors (framework::physical_scaling), to
 // four digits: they come from an iteration, and only their spread is information.
@@ -56,10 +58,14 @@ std::string deformation_name(const FrameworkModel& model, const framework::Defor
   return framework::deformation_names(model, model.elements[d.element])[d.deformation];
 }
 
+// Large models (the sparse path) write vectors compactly: only their non-zero components.
+bool compact(const FrameworkAnalysis& a) { return a.method == framework::RankMethod::sparse_qr; }
+
 // Mode velocities grouped by node, in node order, coordinates in slot order.
 nlohmann::ordered_json velocities_by_node(const FrameworkModel& model, const FrameworkAnalysis& a, const Eigen::VectorXd& v) {
   nlohmann::ordered_json nodes = nlohmann::ordered_json::object();
   for (Eigen::Index j = 0; j < v.size(); ++j) {
+    if (compact(a) && v(j) == 0.0) continue;
     const auto& c = column_ref(a, j);
     nodes[model.nodes[c.node].name][framework::kSlotNames[static_cast<std::size_t>(c.slot)]] = rounded(v(j));
   }
@@ -132,6 +138,11 @@ nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const 
   j["column_labels"] = nlohmann::ordered_json::array();
   for (Eigen::Index i = 0; i < a.n; ++i) j["column_labels"].push_back(framework_column_label(model, a, i));
   j["vectors"] = a.vectors;
+  if (compact(a) && a.vectors) {
+    // The first vector_limit of each, as basic null vectors of the sparse R factors.
+    j["vector_limit"] = a.vector_limit;
+    j["null_space_residual"] = evidence_number(a.null_space_residual);
+  }
 
   j["modes"] = nlohmann::ordered_json::array();
   for (const auto& mode : a.modes) {
@@ -139,23 +150,24 @@ nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const 
     m["velocities"] = velocities_by_node(model, a, mode.velocities);
     m["moving"] = nlohmann::ordered_json::array();
     for (Eigen::Index col : mode.moving) m["moving"].push_back(framework_column_label(model, a, col));
-    j["modes"].push_back(m);
+    j["modes"].push_back(std::move(m));
   }
   j["stresses"] = nlohmann::ordered_json::array();
   for (const auto& state : a.stresses) {
     nlohmann::ordered_json s;
     s["resultants"] = nlohmann::ordered_json::array();
     for (Eigen::Index i = 0; i < state.resultants.size(); ++i) {
+      if (compact(a) && state.resultants(i) == 0.0) continue;
       const auto& ref = row_ref(a, i);
       nlohmann::ordered_json entry;
       entry["element"] = model.elements[ref.element].name;
       entry["deformation"] = deformation_name(model, ref);
       entry["value"] = rounded(state.resultants(i));
-      s["resultants"].push_back(entry);
+      s["resultants"].push_back(std::move(entry));
     }
     s["candidates"] = nlohmann::ordered_json::array();
     for (Eigen::Index row : state.candidates) s["candidates"].push_back(framework_row_label(model, a, row));
-    j["stresses"].push_back(s);
+    j["stresses"].push_back(std::move(s));
   }
   j["releases"] = nlohmann::ordered_json::array();
   for (Eigen::Index row : a.releases) {
@@ -187,7 +199,9 @@ std::string framework_report_text(const FrameworkModel& model, const FrameworkAn
                    c.fixed_coordinates, c.fixed_deformations, c.grubler_dof(), c.declared_dof(),
                    c.square() ? "square" : "not square"));
   line(fmt::format("D(c): {} rows x {} columns, rank {} ({}{})", a.m, a.n, a.rank,
-                   a.method == framework::RankMethod::dense_svd ? "SVD" : "sparse QR, counts only",
+                   a.method == framework::RankMethod::dense_svd ? "SVD"
+                   : a.vectors                                  ? "sparse QR"
+                                                                : "sparse QR, counts only",
                    fmt::format(", characteristic length {}", number(a.length))));
   if (spread(a.row_scale) > kShownScaleSpread || spread(a.column_scale) > kShownScaleSpread) {
     const auto rows = factor_range(a.row_scale), cols = factor_range(a.column_scale);
@@ -202,6 +216,10 @@ std::string framework_report_text(const FrameworkModel& model, const FrameworkAn
   line(fmt::format("classification: {}", framework_classification(a)));
   line(fmt::format("{} kinematically indeterminate mode(s), {} statically indeterminate stress state(s){}", a.mechanisms,
                    a.self_stresses, a.exactly_constrained() ? ": exactly constrained" : ""));
+  if (compact(a) && a.vectors)
+    line(fmt::format("vectors from the sparse R factors: first {} of {} mode(s), first {} of {} stress state(s); "
+                     "largest relative residual {}",
+                     a.modes.size(), a.mechanisms, a.stresses.size(), a.self_stresses, evidence(a.null_space_residual)));
   for (std::size_t k = 0; k < a.modes.size(); ++k) {
     line(fmt::format("mode {} (velocities; translations per characteristic length):", k + 1));
     for (Eigen::Index col : a.modes[k].moving)
@@ -224,7 +242,7 @@ std::string framework_report_text(const FrameworkModel& model, const FrameworkAn
     line("constrain or declare independent (one minimal set): " + list);
   }
   if (!a.vectors && (a.mechanisms > 0 || a.self_stresses > 0))
-    line("(model too large for the dense SVD: modes and stress states not computed)");
+    line("(model too large for the dense SVD: modes and stress states not computed; --vectors K gives the first K)");
   return out;
 }
 

@@ -31,6 +31,33 @@ nlohmann::ordered_json screws_json(const std::vector<std::vector<double>>& screw
   return out;
 }
 
+nlohmann::ordered_json screw_json(const SceneScrew& s) {
+  return {{"name", s.name},       {"anchor", vector_json(s.anchor)}, {"point", vector_json(s.point)},
+          {"direction", vector_json(s.direction)}, {"magnitude", rounded(s.magnitude)}, {"pitch", rounded(s.pitch)},
+          {"pure", s.pure}};
+}
+
+nlohmann::ordered_json verdict_json(const design::Verdict& v) {
+  nlohmann::ordered_json j;
+  j["exactly_constrained"] = v.exactly_constrained;
+  j["extra_motions"] = v.extra_motions;
+  j["redundant_constraints"] = v.redundant_constraints;
+  j["summary"] = v.summary;
+  const auto participants = [](const std::vector<design::Participant>& list) {
+    auto out = nlohmann::ordered_json::array();
+    for (const auto& p : list) out.push_back({{"kind", p.kind}, {"name", p.name}, {"participation", rounded(p.participation, 4)}});
+    return out;
+  };
+  j["motion_participants"] = participants(v.motion_participants);
+  j["constraint_participants"] = participants(v.constraint_participants);
+  j["changes"] = nlohmann::ordered_json::array();
+  for (const auto& c : v.changes)
+    j["changes"].push_back({{"action", c.action}, {"target_kind", c.target_kind}, {"target", c.target}, {"becomes", c.becomes}, {"reason", c.reason}});
+  j["changes_verified"] = v.changes_verified;
+  j["becomes"] = v.becomes;
+  return j;
+}
+
 /// Text that may sit inside <script>: no "</" and no HTML comment openers.
 std::string script_safe(std::string text) {
   std::string out;
@@ -79,7 +106,30 @@ nlohmann::ordered_json scene_json(const Scene& scene) {
     pairs.push_back(element.b);
     if (!scene.large) element_names.push_back(element.name);
   }
-  j["elements"] = {{"count", scene.elements.size()}, {"pairs", pairs}, {"name", element_names}};
+  auto element_types = nlohmann::ordered_json::array();
+  auto element_labels = nlohmann::ordered_json::array();
+  auto sheets = nlohmann::ordered_json::array();
+  if (!scene.large)
+    for (std::size_t e = 0; e < scene.elements.size(); ++e) {
+      const auto& element = scene.elements[e];
+      element_types.push_back(element.type);
+      element_labels.push_back(element.label ? 1 : 0);
+      if (element.sheet_across) sheets.push_back({{"element", e}, {"across", vector_json(*element.sheet_across)}});
+    }
+  j["elements"] = {{"count", scene.elements.size()}, {"pairs", pairs}, {"name", element_names}, {"type", element_types},
+                   {"label", element_labels}, {"sheets", sheets}, {"sheet_width", kSheetWidth}};
+  j["units"] = length_unit(scene);
+  j["verdict"] = scene.verdict ? verdict_json(*scene.verdict) : nlohmann::ordered_json(nullptr);
+  auto supports = nlohmann::ordered_json::array();
+  if (!scene.large)
+    for (std::size_t i = 0; i < scene.nodes.size(); ++i) {
+      const auto& node = scene.nodes[i];
+      if (node.support.empty()) continue;
+      auto free = nlohmann::ordered_json::array();
+      for (const auto& d : node.free_directions) free.push_back(vector_json(d));
+      supports.push_back({{"node", i}, {"kind", node.support}, {"free", free}});
+    }
+  j["supports"] = supports;
   j["glyphs"] = nlohmann::ordered_json::array();
   j["modes"] = nlohmann::ordered_json::array();
   j["stresses"] = nlohmann::ordered_json::array();
@@ -105,12 +155,18 @@ nlohmann::ordered_json scene_json(const Scene& scene) {
     auto velocity = nlohmann::ordered_json::array();
     for (const auto& v : mode.velocity)
       for (int k = 0; k < 3; ++k) velocity.push_back(rounded(v(k)));
-    j["modes"].push_back({{"label", mode.label}, {"velocity", velocity}});
+    auto twists = nlohmann::ordered_json::array();
+    for (const auto& t : mode.twists) twists.push_back(screw_json(t));
+    j["modes"].push_back({{"label", mode.label}, {"velocity", velocity}, {"moving", mode.moving}, {"twists", twists}});
   }
   for (const auto& stress : scene.stresses) {
     auto value = nlohmann::ordered_json::array();
     for (double v : stress.value) value.push_back(rounded(v));
-    j["stresses"].push_back({{"label", stress.label}, {"value", value}});
+    auto resultants = nlohmann::ordered_json::array();
+    for (const auto& r : stress.resultants) resultants.push_back({r.element, r.deformation, rounded(r.value)});
+    auto wrenches = nlohmann::ordered_json::array();
+    for (const auto& w : stress.wrenches) wrenches.push_back(screw_json(w));
+    j["stresses"].push_back({{"label", stress.label}, {"value", value}, {"kind", stress.kind}, {"resultants", resultants}, {"wrenches", wrenches}});
   }
   for (const auto& pair : scene.pairs)
     j["pairs"].push_back({{"i", pair.body_i}, {"j", pair.body_j}, {"fij", pair.fij}, {"motions", screws_json(pair.motions)}});
@@ -125,13 +181,17 @@ std::string html_report(const Scene& scene, const std::string& figure, const std
   html += "<style>\n" + viewer_assets::viewer_css() + "</style>\n</head>\n<body>\n";
   html += R"(<div id="side">
 <h1 id="title"></h1>
-<h2>Summary</h2>
-<table id="summary"></table>
+<div id="verdict" class="verdict"></div>
 <h2>Modes and self-stress</h2>
 <select id="mode" aria-label="view"></select>
 <label for="amplitude">Amplitude</label>
 <input id="amplitude" type="range" min="0" max="1" step="0.01" value="0.5">
+<label><input id="labels" type="checkbox"> labels: nodes, elements, couplings</label>
+<div id="moving"></div>
+<div id="resultants"></div>
 <div id="notes"></div>
+<h2>Summary</h2>
+<table id="summary"></table>
 <div id="network" style="display:none">
 <h2>Couplings</h2>
 <label><input id="screws" type="checkbox"> unit motion screw axes of every coupling (orange)</label>
@@ -148,7 +208,7 @@ std::string html_report(const Scene& scene, const std::string& figure, const std
             (start == std::string::npos ? std::string() : figure.substr(start)) + "</div>\n";
   }
   html += R"(</div>
-<div id="main"><canvas id="view"></canvas><div id="legend"></div><div id="message"></div></div>
+<div id="main"><canvas id="view"></canvas><div id="labelLayer"></div><div id="legend"></div><div id="scale"></div><div id="message"></div></div>
 )";
   html += "<script>\n" + script_safe(viewer_assets::three_js()) + "\n</script>\n";
   html += "<script>\nwindow.KINESTAT_SCENE = " + script_safe(json_text(scene_json(scene), -1)) + ";\n</script>\n";

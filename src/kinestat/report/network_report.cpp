@@ -169,6 +169,11 @@ std::string contracted_text(const network::Model& model, const NetworkResult& r,
   return text;
 }
 
+// A numeric value, or "?" when it depends on a primary that was given no value.
+std::string value_text(double value) { return std::isnan(value) ? "?" : number_text(value); }
+// The same in JSON: null when undetermined.
+Json value_json(double value) { return std::isnan(value) ? Json(nullptr) : Json(value); }
+
 std::string joined_or_dash(const std::vector<std::string>& names) { return names.empty() ? "-" : fmt::format("{}", fmt::join(names, ", ")); }
 
 
@@ -204,7 +209,7 @@ std::string network_text(const network::Model& model, const NetworkResult& r, co
     const double noise = noise_level(forms);
     for (std::size_t i = 0; i < magnitudes.size(); ++i) {
       t += fmt::format("  {:<10} = {}", magnitudes[i].name, linear_form_text(forms, static_cast<Index>(i), primaries, noise));
-      if (values) t += fmt::format("   = {}", number_text((*values)(static_cast<Index>(i))));
+      if (values) t += fmt::format("   = {}", value_text((*values)(static_cast<Index>(i))));
       t += "\n";
     }
   };
@@ -218,12 +223,18 @@ std::string network_text(const network::Model& model, const NetworkResult& r, co
     t += fmt::format("\n{}\n", title);
     for (int e = 0; e < r.e; ++e) {
       std::vector<std::string> coordinates;
-      for (int c = 0; c < r.d; ++c) coordinates.push_back(number_text(columns(c, e)));
+      for (int c = 0; c < r.d; ++c) coordinates.push_back(value_text(columns(c, e)));
       t += fmt::format("  {:<10} ({})\n", model.couplings[static_cast<std::size_t>(e)].name, fmt::join(coordinates, ", "));
     }
   };
   if (r.coupling_motion_values) numeric_screws("Numeric motion of each coupling (axis formation):", *r.coupling_motion_values);
   if (r.coupling_action_values) numeric_screws("Numeric action of each coupling (ray formation):", *r.coupling_action_values);
+  if (!r.missing_motion_values.empty())
+    t += fmt::format("\nValues: no value for the motion primaries {}; what depends on them is shown as ?\n",
+                     fmt::join(r.missing_motion_values, ", "));
+  if (!r.missing_action_values.empty())
+    t += fmt::format("\nValues: no value for the action primaries {}; what depends on them is shown as ?\n",
+                     fmt::join(r.missing_action_values, ", "));
   t += fmt::format("\nMethods agree: circulation law and cutset motions {}; cutset law and circuit actions {}\n",
                    r.motion_methods_agree ? "yes" : "NO", r.action_methods_agree ? "yes" : "NO");
 
@@ -344,14 +355,14 @@ Json network_json(const network::Model& model, const NetworkResult& r, const Net
     Json values = Json::object();
     auto numeric = [&](const std::vector<network::Magnitude>& magnitudes, const Eigen::VectorXd& v) {
       Json out = Json::object();
-      for (std::size_t i = 0; i < magnitudes.size(); ++i) out[magnitudes[i].name] = v(static_cast<Index>(i));
+      for (std::size_t i = 0; i < magnitudes.size(); ++i) out[magnitudes[i].name] = value_json(v(static_cast<Index>(i)));
       return out;
     };
     auto screws = [&](const Eigen::MatrixXd& columns) {
       Json out = Json::object();
       for (int e = 0; e < r.e; ++e) {
         Json coordinates = Json::array();
-        for (int c = 0; c < r.d; ++c) coordinates.push_back(columns(c, e));
+        for (int c = 0; c < r.d; ++c) coordinates.push_back(value_json(columns(c, e)));
         out[model.couplings[static_cast<std::size_t>(e)].name] = coordinates;
       }
       return out;
@@ -360,6 +371,11 @@ Json network_json(const network::Model& model, const NetworkResult& r, const Net
     if (r.coupling_motion_values) values["coupling_motions"] = screws(*r.coupling_motion_values);
     if (r.action_values) values["actions"] = numeric(r.actions, *r.action_values);
     if (r.coupling_action_values) values["coupling_actions"] = screws(*r.coupling_action_values);
+    if (!r.missing_motion_values.empty() || !r.missing_action_values.empty()) {
+      std::vector<std::string> missing = r.missing_motion_values;
+      missing.insert(missing.end(), r.missing_action_values.begin(), r.missing_action_values.end());
+      values["missing"] = missing;
+    }
     j["values"] = values;
   }
   j["warnings"] = warnings(r);
@@ -370,6 +386,61 @@ Json network_json(const network::Model& model, const NetworkResult& r, const Net
                      {"MN", rational_matrix_json(r.MN)},   {"AN", rational_matrix_json(r.AN)}};
   }
   if (options.verdict) return lead_with_verdict(*options.verdict, j, model.units);
+  return j;
+}
+
+namespace {
+
+// What the sparse path does not compute, said in every sparse report.
+constexpr const char* kSparseLeftOut[] = {"spanning tree, circuits and cutsets", "unit and contracted matrices",
+                                          "primary variables and magnitudes", "pair systems (fij, cij)"};
+
+std::vector<std::string> coupling_names(const network::Model& model, const std::vector<int>& couplings) {
+  std::vector<std::string> names;
+  names.reserve(couplings.size());
+  for (int c : couplings) names.push_back(model.couplings[static_cast<std::size_t>(c)].name);
+  return names;
+}
+
+}  // namespace
+
+std::string sparse_network_text(const network::Model& model, const network::SparseNetworkResult& r) {
+  std::string t;
+  t += fmt::format("{}\n", model.name.empty() ? "Coupling network" : model.name);
+  t += fmt::format("  coupling network, {} (d = {}); sparse body-twist form, floating point\n", r.d == 6 ? "spatial" : "planar", r.d);
+  t += fmt::format("  bodies n = {}, couplings e = {}, circuits l = {}\n", r.bodies, r.e, r.l);
+  t += fmt::format("  gross degree of freedom F = {}, gross degree of constraint C = {}\n", r.F, r.C);
+  t += fmt::format("  rank of the body-twist constraint matrix K (C x d(n-1)): {}\n", rank_text("rank K", r.rank));
+  t += fmt::format("  nett degree of freedom    FN = d(n-1) - rank K = {}\n", r.FN);
+  t += fmt::format("  nett degree of constraint CN = C - rank K = {}\n", r.CN);
+  t += fmt::format("  class: {}\n", network::class_description(r.classification));
+  t += fmt::format("Couplings that carry a self-stress ({}): {}\n", r.stressed.size(), joined_or_dash(coupling_names(model, r.stressed)));
+  t += fmt::format("Couplings that move ({}): {}\n", r.moving.size(), joined_or_dash(coupling_names(model, r.moving)));
+  t += fmt::format("Not computed on the sparse path (use the dense path for these): {}\n", fmt::join(kSparseLeftOut, "; "));
+  if (r.rank.close()) t += "Warning: the rank of K is a close decision: the geometry is near one with a different FN and CN\n";
+  return t;
+}
+
+nlohmann::ordered_json sparse_network_json(const network::Model& model, const network::SparseNetworkResult& r) {
+  Json j;
+  j["kind"] = "network";
+  if (!model.name.empty()) j["name"] = model.name;
+  j["method"] = "sparse_body_twist";
+  j["d"] = r.d;
+  j["n"] = r.bodies;
+  j["e"] = r.e;
+  j["F"] = r.F;
+  j["C"] = r.C;
+  j["l"] = r.l;
+  j["FN"] = r.FN;
+  j["CN"] = r.CN;
+  j["classification"] = network::class_id(r.classification);
+  j["classification_description"] = network::class_description(r.classification);
+  j["rank_evidence"] = {{"body_twist", rank_json(r.rank)}};
+  j["stressed_couplings"] = coupling_names(model, r.stressed);
+  j["moving_couplings"] = coupling_names(model, r.moving);
+  j["null_space_residual"] = r.residual;
+  j["not_computed"] = kSparseLeftOut;
   return j;
 }
 

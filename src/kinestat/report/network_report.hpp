@@ -8,6 +8,7 @@
 #include "kinestat/design/verdict.hpp"
 #include "kinestat/network/model.hpp"
 #include "kinestat/network/network_result.hpp"
+#include "kinestat/network/sparse_network.hpp"
 
 namespace kinestat::report {
 
@@ -25,5 +26,10 @@ std::string network_text(const network::Model& model, const network::NetworkResu
 /// byte-identical output.
 nlohmann::ordered_json network_json(const network::Model& model, const network::NetworkResult& result,
                                     const NetworkReportOptions& options = {});
+
+/// Bounded report of the sparse path: counts, class, rank evidence, the couplings that carry a
+/// self-stress and those that move, and what was not computed.
+std::string sparse_network_text(const network::Model& model, const network::SparseNetworkResult& result);
+nlohmann::ordered_json sparse_network_json(const network::Model& model, const network::SparseNetworkResult& result);
 
 }  // namespace kinestat::report

@@ -32,28 +32,65 @@ std::vector<double> screw_doubles(const std::vector<screw::Rational>& coordinate
   return out;
 }
 
-/// Angular velocity and velocity of the point at the origin of a d-coordinate motion screw.
+/// The two 3-vectors of a d-coordinate screw: (ω, velocity of the point at the origin) of a
+/// motion in axis formation, (moment at the origin, force) of an action in ray formation.
 std::pair<Vector3d, Vector3d> twist_of(const screw::ScrewSpace& space, const Eigen::VectorXd& motion) {
   std::array<double, 6> full{};
   for (int i = 0; i < space.dimension(); ++i) full[static_cast<std::size_t>(space.components[static_cast<std::size_t>(i)])] = motion(i);
   return {Vector3d(full[0], full[1], full[2]), Vector3d(full[3], full[4], full[5])};
 }
 
-/// Sign of a vector that does not depend on rounding: +1 when the first component (in index
-/// order) of magnitude at least half the largest is positive. The analyses normalise modes by
-/// their largest component, which is ambiguous when several components are equal (the 12-truss:
-/// four equal velocities, twelve equal forces), so builds that round differently could draw
-/// mirrored arrows or swapped colours.
-template <class Values>
-double canonical_sign(const Values& values) {
-  double largest = 0;
-  for (const auto& v : values) largest = std::max(largest, std::abs(v));
-  for (const auto& v : values)
-    if (std::abs(v) >= 0.5 * largest && largest > 0) return v > 0 ? 1.0 : -1.0;
-  return 1.0;
+/// Below this share of a screw's size a part counts as zero (pure couple or translation).
+constexpr double kScrewZero = 1e-9;
+
+/// The axis of a screw whose "line" part is `line` (ω of a twist, force of a wrench) and whose
+/// "moment" part is `moment` (velocity of the origin point, moment about the origin); both
+/// formations give the axis point line × moment / |line|². `length` makes the two comparable.
+SceneScrew screw_axis(const std::string& name, const Vector3d& anchor, const Vector3d& line, const Vector3d& moment,
+                      double length) {
+  SceneScrew screw;
+  screw.name = name;
+  screw.anchor = anchor;
+  screw.point = anchor;
+  const double size = line.norm() * length + moment.norm();
+  if (line.norm() * length > kScrewZero * size) {
+    screw.direction = line.normalized();
+    screw.magnitude = line.norm();
+    screw.pitch = line.dot(moment) / line.squaredNorm();
+    const Vector3d nearest_origin = line.cross(moment) / line.squaredNorm();
+    screw.point = nearest_origin + (anchor - nearest_origin).dot(screw.direction) * screw.direction;
+  } else {
+    screw.pure = true;
+    screw.direction = moment.norm() > 0 ? Vector3d(moment.normalized()) : Vector3d::UnitZ();
+    screw.magnitude = moment.norm();
+  }
+  return screw;
+}
+
+/// Kind of a framework deformation for colouring: elongation, torsion, bending or rigid.
+std::string deformation_kind(framework::ElementType type, const std::string& name) {
+  if (type == framework::ElementType::rigid_body) return "rigid";
+  if (name.rfind("bending", 0) == 0) return "bending";
+  if (name == "torsion") return "torsion";
+  return "elongation";
+}
+
+/// A spatial beam is a sheet when its deformation roles say so (seed 002, folded-sheet
+/// flexures): elongation and bending in one element plane held, torsion and bending in the other
+/// plane free. The sheet lies in the held plane: returns its in-plane direction across the beam.
+std::optional<Vector3d> sheet_across(const framework::FrameworkModel& model, const framework::Element& element) {
+  if (model.dimension != 3 || element.type != framework::ElementType::beam || element.roles.size() != 6) return std::nullopt;
+  const auto held = [&](std::size_t k) { return element.roles[k] == framework::DeformationRole::fixed; };
+  if (!held(0) || held(1)) return std::nullopt;
+  // Deformations: elongation, torsion, bending_xz_p, bending_xz_q, bending_xy_p, bending_xy_q.
+  if (held(2) && held(3) && !held(4) && !held(5)) return Vector3d(element.frame.col(2));  // sheet in the x-z plane
+  if (held(4) && held(5) && !held(2) && !held(3)) return Vector3d(element.frame.col(1));  // sheet in the x-y plane
+  return std::nullopt;
 }
 
 }  // namespace
+
+std::string length_unit(const Scene& scene) { return scene.units.empty() ? std::string("model units") : scene.units; }
 
 std::string fixed(double value, int digits) {
   if (!std::isfinite(value)) return "0";
@@ -106,14 +143,14 @@ Scene network_scene(const network::Model& model, const network::NetworkResult& r
   }
   for (std::size_t b = 0; b < n; ++b) {
     if (count[b] > 0) centre[b] /= count[b];
-    scene.nodes.push_back({model.bodies[b], centre[b], static_cast<int>(b), static_cast<int>(b) == r.ground});
+    scene.nodes.push_back({model.bodies[b], centre[b], static_cast<int>(b), static_cast<int>(b) == r.ground, {}, {}});
   }
   for (std::size_t e = 0; e < model.couplings.size(); ++e) {
     const auto& c = model.couplings[e];
     const Vector3d p = to_vector(c.geometry.point);
     for (int b : {c.from, c.to}) {
-      scene.nodes.push_back({c.name + "@" + model.bodies[static_cast<std::size_t>(b)], p, b, b == r.ground});
-      scene.elements.push_back({c.name, "link", b, static_cast<int>(scene.nodes.size()) - 1});
+      scene.nodes.push_back({c.name + "@" + model.bodies[static_cast<std::size_t>(b)], p, b, b == r.ground, {}, {}});
+      scene.elements.push_back({c.name, "link", b, static_cast<int>(scene.nodes.size()) - 1, false, std::nullopt});
     }
     SceneGlyph glyph;
     glyph.name = c.name;
@@ -154,12 +191,13 @@ Scene network_scene(const network::Model& model, const network::NetworkResult& r
   for (const auto& a : scene.nodes)
     for (const auto& b : scene.nodes) extent = std::max(extent, (a.position - b.position).norm());
   const double arm = extent > 0.0 ? 0.1 * extent : 0.1;
+  const double size = extent > 0.0 ? extent : 1.0;  // compares the two halves of a screw
   const int arms = model.space.is_planar() ? 2 : 3;
   for (std::size_t b = 0; b < n; ++b)
     for (int axis = 0; axis < arms; ++axis) {
       scene.nodes.push_back({model.bodies[b] + ".marker" + std::to_string(axis), centre[b] + arm * Vector3d::Unit(axis),
-                             static_cast<int>(b), static_cast<int>(b) == r.ground});
-      scene.elements.push_back({model.bodies[b] + ".marker", "link", static_cast<int>(b), static_cast<int>(scene.nodes.size()) - 1});
+                             static_cast<int>(b), static_cast<int>(b) == r.ground, {}, {}});
+      scene.elements.push_back({model.bodies[b] + ".marker", "link", static_cast<int>(b), static_cast<int>(scene.nodes.size()) - 1, false, std::nullopt});
     }
 
   // The motion of every body relative to the ground, per motion primary.
@@ -171,6 +209,20 @@ Scene network_scene(const network::Model& model, const network::NetworkResult& r
   for (std::size_t k = 0; k < r.primary_motion.size(); ++k) {
     SceneMode mode;
     mode.label = "mode " + std::to_string(k + 1) + ": " + r.motions[static_cast<std::size_t>(r.primary_motion[k])].name + " = 1";
+    // Sign: primary k = +1, as every report states it; nothing is flipped here.
+    for (Eigen::Index row = 0; row < r.motion_magnitudes.values.rows(); ++row)
+      if (static_cast<Eigen::Index>(k) < r.motion_magnitudes.values.cols() && r.motion_magnitudes.values(row, static_cast<Eigen::Index>(k)) != 0.0)
+        mode.moving.push_back(r.motions[static_cast<std::size_t>(row)].name);
+    for (std::size_t b = 0; b < n; ++b) {
+      if (static_cast<int>(b) == r.ground || !to_ground[b]) continue;
+      const auto& forms = to_ground[b]->motion_system.values;
+      if (static_cast<Eigen::Index>(k) >= forms.cols()) continue;
+      Eigen::VectorXd motion = forms.col(static_cast<Eigen::Index>(k));
+      if (to_ground[b]->body_j == r.ground) motion = -motion;
+      if (motion.cwiseAbs().maxCoeff() == 0.0) continue;
+      const auto [omega, v0] = twist_of(model.space, motion);
+      mode.twists.push_back(screw_axis(model.bodies[b], centre[b], omega, v0, size));
+    }
     for (const auto& node : scene.nodes) {
       const auto b = static_cast<std::size_t>(node.body);
       Vector3d v = Vector3d::Zero();
@@ -186,6 +238,29 @@ Scene network_scene(const network::Model& model, const network::NetworkResult& r
       mode.velocity.push_back(v);
     }
     scene.modes.push_back(std::move(mode));
+  }
+  // Self-stresses: action primary k = +1; the wrench each coupling transmits (the sum of its
+  // unit actions times their magnitudes), in ray formation, as a line of action.
+  for (std::size_t k = 0; k < r.primary_action.size(); ++k) {
+    SceneStress stress;
+    stress.label = "self-stress " + std::to_string(k + 1) + ": " + r.actions[static_cast<std::size_t>(r.primary_action[k])].name + " = 1";
+    stress.value.assign(scene.elements.size(), 0.0);
+    stress.kind.assign(scene.elements.size(), "");
+    const auto& forms = r.action_magnitudes.values;
+    for (std::size_t e = 0; e < model.couplings.size(); ++e) {
+      Eigen::VectorXd action = Eigen::VectorXd::Zero(model.space.dimension());
+      for (std::size_t a = 0; a < r.actions.size(); ++a) {
+        if (r.actions[a].coupling != static_cast<int>(e) || static_cast<Eigen::Index>(k) >= forms.cols()) continue;
+        const double magnitude = forms(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(k));
+        if (magnitude == 0.0) continue;
+        const auto unit = screw_doubles(r.actions[a].unit_screw.coordinates);
+        for (std::size_t i = 0; i < unit.size(); ++i) action(static_cast<Eigen::Index>(i)) += magnitude * unit[i];
+      }
+      if (action.size() == 0 || action.cwiseAbs().maxCoeff() == 0.0) continue;
+      const auto [moment, force] = twist_of(model.space, action);
+      stress.wrenches.push_back(screw_axis(model.couplings[e].name, to_vector(model.couplings[e].geometry.point), force, moment, size));
+    }
+    scene.stresses.push_back(std::move(stress));
   }
   for (const auto& pair : r.pairs) {
     bool seen = false;
@@ -222,22 +297,36 @@ Scene framework_scene(const framework::FrameworkModel& model, const framework::F
       {"class", framework_classification(a)},
   };
   for (const auto& node : model.nodes) {
-    bool fixed_node = true;
-    for (int slot : framework::node_slots(model.dimension, node))
-      if (framework::is_translation(slot) && node.roles[static_cast<std::size_t>(slot)] != framework::CoordinateRole::fixed) fixed_node = false;
-    scene.nodes.push_back({node.name, node.position, -1, fixed_node});
+    int translations = 0, held = 0, rotations = 0, held_rotations = 0;
+    std::vector<Vector3d> free_directions;
+    for (int slot : framework::node_slots(model.dimension, node)) {
+      const bool fixed_slot = node.roles[static_cast<std::size_t>(slot)] == framework::CoordinateRole::fixed;
+      if (framework::is_translation(slot)) {
+        ++translations;
+        if (fixed_slot) ++held;
+        else free_directions.push_back(Vector3d::Unit(slot));
+      } else {
+        ++rotations;
+        if (fixed_slot) ++held_rotations;
+      }
+    }
+    SceneNode scene_node{node.name, node.position, -1, held == translations && translations > 0, {}, {}};
+    if (scene_node.fixed) scene_node.support = rotations > 0 && held_rotations == rotations ? "fixed" : "pinned";
+    else if (held > 0) scene_node.support = "roller", scene_node.free_directions = free_directions;
+    scene.nodes.push_back(std::move(scene_node));
   }
   for (const auto& element : model.elements) {
     if (element.nodes.empty()) continue;
     if (element.type == framework::ElementType::rigid_body) {
       for (std::size_t i = 1; i < element.nodes.size(); ++i)
-        scene.elements.push_back({element.name, "rigid", static_cast<int>(element.nodes[0]), static_cast<int>(element.nodes[i])});
+        scene.elements.push_back({element.name, "rigid", static_cast<int>(element.nodes[0]), static_cast<int>(element.nodes[i]), i == 1, std::nullopt});
     } else if (element.nodes.size() >= 2) {
       scene.elements.push_back({element.name, element.type == framework::ElementType::beam ? "beam" : "truss",
-                                static_cast<int>(element.nodes[0]), static_cast<int>(element.nodes[1])});
+                                static_cast<int>(element.nodes[0]), static_cast<int>(element.nodes[1]), true, sheet_across(model, element)});
     }
   }
-  // Translations in D(c) are divided by the characteristic length; undo that.
+  // Signs are the analysis' own (linalg/sign_convention.hpp): the scene never flips a mode or
+  // a stress state. Translations in D(c) are divided by the characteristic length; undo that.
   for (std::size_t k = 0; k < a.modes.size(); ++k) {
     SceneMode mode;
     mode.label = "mode " + std::to_string(k + 1);
@@ -247,38 +336,59 @@ Scene framework_scene(const framework::FrameworkModel& model, const framework::F
       const auto& ref = a.indexing.coordinates[static_cast<std::size_t>(a.partition.dependent_coordinates[static_cast<std::size_t>(col)])];
       if (framework::is_translation(ref.slot)) mode.velocity[ref.node](ref.slot) = v(col) * a.length;
     }
-    std::vector<double> flat;
-    for (const auto& velocity : mode.velocity)
-      for (int c = 0; c < 3; ++c) flat.push_back(velocity(c));
-    const double sign = canonical_sign(flat);
-    for (auto& velocity : mode.velocity) velocity *= sign;
+    for (Eigen::Index col : a.modes[k].moving) mode.moving.push_back(framework_column_label(model, a, col));
     scene.modes.push_back(std::move(mode));
   }
-  // Stress: the resultant dual to each element's elongation (deformation 0 of trusses and beams).
-  std::vector<int> scene_element_of(model.elements.size(), -1);
+  // Stress: per scene line, the dominant resultant of its element (largest magnitude, in the
+  // analysis' non-dimensional units) and its kind. A rigid body's line to node i carries the
+  // resultants of node i's relative coordinates.
+  std::vector<int> first_line(model.elements.size(), -1);
   {
     int index = 0;
     for (std::size_t e = 0; e < model.elements.size(); ++e) {
       const auto& element = model.elements[e];
+      if (element.nodes.empty()) continue;
       if (element.type == framework::ElementType::rigid_body) {
-        index += element.nodes.empty() ? 0 : static_cast<int>(element.nodes.size()) - 1;
+        if (element.nodes.size() > 1) first_line[e] = index;
+        index += static_cast<int>(element.nodes.size()) - 1;
       } else if (element.nodes.size() >= 2) {
-        scene_element_of[e] = index++;
+        first_line[e] = index++;
       }
     }
   }
+  // Scene line of deformation `d` of element `e` (rigid bodies: d counts the slots of the
+  // nodes after the reference node).
+  const auto line_of = [&](std::size_t e, std::size_t d) {
+    const auto& element = model.elements[e];
+    if (first_line[e] < 0) return -1;
+    if (element.type != framework::ElementType::rigid_body) return first_line[e];
+    for (std::size_t i = 1; i < element.nodes.size(); ++i) {
+      const std::size_t slots = framework::node_slots(model.dimension, model.nodes[element.nodes[i]]).size();
+      if (d < slots) return first_line[e] + static_cast<int>(i) - 1;
+      d -= slots;
+    }
+    return -1;
+  };
   for (std::size_t k = 0; k < a.stresses.size(); ++k) {
     SceneStress stress;
     stress.label = "self-stress " + std::to_string(k + 1);
     stress.value.assign(scene.elements.size(), 0.0);
+    stress.kind.assign(scene.elements.size(), "");
     const auto& s = a.stresses[k].resultants;
     for (Eigen::Index row = 0; row < s.size(); ++row) {
+      if (s(row) == 0.0) continue;
       const auto& ref = a.indexing.deformations[static_cast<std::size_t>(a.rows[static_cast<std::size_t>(row)])];
-      if (ref.deformation != 0 || scene_element_of[ref.element] < 0) continue;
-      stress.value[static_cast<std::size_t>(scene_element_of[ref.element])] = s(row);
+      const auto& element = model.elements[ref.element];
+      const std::string name = framework::deformation_names(model, element)[ref.deformation];
+      stress.resultants.push_back({element.name, name, s(row)});
+      const int line = line_of(ref.element, ref.deformation);
+      if (line < 0) continue;
+      auto& value = stress.value[static_cast<std::size_t>(line)];
+      if (std::abs(s(row)) > std::abs(value)) {
+        value = s(row);
+        stress.kind[static_cast<std::size_t>(line)] = deformation_kind(element.type, name);
+      }
     }
-    const double sign = canonical_sign(stress.value);
-    for (double& value : stress.value) value *= sign;
     scene.stresses.push_back(std::move(stress));
   }
   scene.large = scene.elements.size() > kLargeSceneElements || scene.nodes.size() > kLargeSceneElements;
@@ -310,11 +420,11 @@ Scene structure_scene(const structure::StructureModel& model, const structure::D
   for (int b = 0; b < n; ++b) {
     scene.bodies.push_back(structure::body_label(model, b));
     const double angle = -std::numbers::pi / 2 + 2 * std::numbers::pi * b / std::max(n, 1);
-    scene.nodes.push_back({structure::body_label(model, b), Vector3d(std::cos(angle), std::sin(angle), 0), b, b == 0});
+    scene.nodes.push_back({structure::body_label(model, b), Vector3d(std::cos(angle), std::sin(angle), 0), b, b == 0, {}, {}});
   }
   for (std::size_t p = 0; p < model.pairs.size(); ++p) {
     const auto& pair = model.pairs[p];
-    scene.elements.push_back({"pair " + std::to_string(p + 1), "pair", pair.a, pair.b});
+    scene.elements.push_back({"pair " + std::to_string(p + 1), "pair", pair.a, pair.b, true, std::nullopt});
     GraphEdge edge;
     edge.name = "p" + std::to_string(p + 1);
     edge.from = pair.a;

@@ -32,7 +32,12 @@ struct SceneNode {
   std::string name;
   Eigen::Vector3d position = Eigen::Vector3d::Zero();
   int body = -1;       ///< networks and structures: the body the node belongs to
-  bool fixed = false;  ///< supported (frameworks) or part of the ground body
+  bool fixed = false;  ///< all translations supported (frameworks) or part of the ground body
+  /// Frameworks: "fixed" (translations and rotations held), "pinned" (translations held,
+  /// rotations free), "roller" (some translations held) or "" (free).
+  std::string support;
+  /// Rollers: the free translation directions (unit vectors along global axes).
+  std::vector<Eigen::Vector3d> free_directions;
 };
 
 /// A line between two nodes: a truss or beam, one node of a rigid body to its reference
@@ -42,6 +47,27 @@ struct SceneElement {
   std::string type;  ///< "truss", "beam", "rigid", "link", "pair"
   int a = 0;
   int b = 0;
+  bool label = true;  ///< name this line in pictures (a rigid body or body star is named once)
+  /// Beams the model makes sheets (leaf springs): in-plane bending and elongation held, torsion
+  /// and out-of-plane bending free. The unit direction across the sheet, in its plane; the
+  /// model gives no width, so pictures draw the sheet kSheetWidth times its length wide.
+  std::optional<Eigen::Vector3d> sheet_across;
+};
+
+/// Width of a drawn sheet as a share of its length (the model has no width).
+inline constexpr double kSheetWidth = 0.3;
+
+/// A screw drawn as its axis (networks): a wrench a coupling transmits in a self-stress, or the
+/// twist of a body in a mode. `point` is the point of the axis nearest to `anchor`.
+struct SceneScrew {
+  std::string name;  ///< the coupling or body
+  Eigen::Vector3d anchor = Eigen::Vector3d::Zero();     ///< coupling point or body centre
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();      ///< on the axis
+  Eigen::Vector3d direction = Eigen::Vector3d::UnitZ(); ///< unit: force (wrench) or ω (twist)
+  /// |force| (wrench) or |ω| (twist); for a pure couple or translation |moment| or |v|.
+  double magnitude = 0.0;
+  double pitch = 0.0;      ///< moment along the axis per force, or v along the axis per ω (length)
+  bool pure = false;       ///< infinite pitch: a pure couple / translation along `direction`
 };
 
 /// A coupling of a network drawn at its point: type, axes and its unit screws.
@@ -63,13 +89,28 @@ struct SceneGlyph {
 struct SceneMode {
   std::string label;
   std::vector<Eigen::Vector3d> velocity;
+  std::vector<std::string> moving;  ///< coordinates (frameworks) or motion magnitudes (networks) that move
+  std::vector<SceneScrew> twists;   ///< networks: the twist of every moving body relative to the ground
 };
 
-/// A self-stress state: one value per element (normal force / elongation resultant), signed:
-/// positive tension, negative compression. Elements without a value have 0.
+/// One generalised stress resultant of a self-stress (the element x deformation table).
+struct SceneResultant {
+  std::string element;
+  std::string deformation;
+  double value = 0.0;
+};
+
+/// A self-stress state, with the sign the analysis decided (never re-decided here). Per
+/// element: the dominant generalised stress resultant (largest magnitude among the element's
+/// resultants) and its kind: "elongation" (normal force; positive tension, negative
+/// compression), "torsion", "bending", "rigid" (a rigid body's internal constraint force) or
+/// "" (none). Networks: the wrench every coupling transmits instead.
 struct SceneStress {
   std::string label;
   std::vector<double> value;
+  std::vector<std::string> kind;
+  std::vector<SceneResultant> resultants;  ///< frameworks: every non-zero resultant, in row order
+  std::vector<SceneScrew> wrenches;        ///< networks: couplings that transmit an action
 };
 
 /// An edge of the coupling graph (networks) or of the pair graph (structures).
@@ -114,9 +155,12 @@ struct Scene {
   bool large = false;
   /// The verdict every picture leads with (design layer; filled by whoever loads the model).
   std::optional<design::Verdict> verdict;
-  /// The model's length unit (`units:`), empty when the file names none.
+  /// The model's length unit (`units:`), empty when the file names none ("model units").
   std::string units;
 };
+
+/// The unit text of a scene: its `units`, or "model units" when none was given.
+std::string length_unit(const Scene& scene);
 
 /// Above this many elements (or nodes) the writers switch to a lighter drawing: no glyphs,
 /// no labels, elements merged into one path / line set.

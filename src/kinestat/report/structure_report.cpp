@@ -282,7 +282,10 @@ std::string structure_dot(const StructureModel& model, const Decomposition& d) {
   std::string title;
   for (char c : model.name.empty() ? std::string("structural diagram") : model.name) {
     if (c == '"' || c == '\\') title += '\\';
-    if (c != '\n' && c != '\r') title += c;
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '\n' || c == '\r') continue;
+    if (byte < 0x20 || byte == 0x7F) title += "\xEF\xBF\xBD";  // no control character in a DOT label
+    else title += c;
   }
   out += "  label=\"" + title + "\";\n  labelloc=t;\n";
   out += "  rankdir=TB;\n  node [shape=circle, fontname=\"Helvetica\"];\n";
@@ -298,60 +301,6 @@ std::string structure_dot(const StructureModel& model, const Decomposition& d) {
   }
   for (const auto& a : diagram.arrows) out += fmt::format("  g{} -> g{};\n", a.from, a.to);
   out += "}\n";
-  return out;
-}
-
-std::string structure_svg(const StructureModel& model, const Decomposition& d) {
-  const auto diagram = structure::structural_diagram(d);
-  constexpr double radius = 28, dx = 130, dy = 110, margin = 60;
-  std::vector<int> per_layer(diagram.layers, 0);
-  for (const auto& n : diagram.nodes) ++per_layer[n.layer];
-  const std::string title = model.name.empty() ? "Structural diagram" : model.name;
-  // Wide enough for the title too (about 7.5 px per character at 15 px).
-  const double width = std::max(margin * 2 + dx * std::max(1, diagram.widest_layer - 1) + 2 * radius,
-                                40 + 7.5 * static_cast<double>(title.size()));
-  const double height = margin * 2 + dy * (diagram.layers - 1) + 2 * radius + 20;
-  std::vector<std::pair<double, double>> at(diagram.nodes.size());
-  std::vector<int> index_of(d.groups.size() + 1, 0);
-  for (std::size_t i = 0; i < diagram.nodes.size(); ++i) {
-    const auto& n = diagram.nodes[i];
-    // Each layer is centred; slots follow the order of formation.
-    const double row = dx * (per_layer[n.layer] - 1);
-    at[i] = {width / 2 - row / 2 + dx * n.slot, margin + 20 + radius + dy * n.layer};
-    index_of[n.group] = static_cast<int>(i);
-  }
-  const auto escape = markup_escape;
-  std::string out = fmt::format(
-      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{:.0f}\" height=\"{:.0f}\" viewBox=\"0 0 {:.0f} {:.0f}\" "
-      "font-family=\"Helvetica, Arial, sans-serif\">\n",
-      width, height, width, height);
-  out += "  <defs><marker id=\"arrow\" viewBox=\"0 0 10 10\" refX=\"10\" refY=\"5\" markerWidth=\"8\" markerHeight=\"8\" "
-         "orient=\"auto-start-reverse\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"#333\"/></marker></defs>\n";
-  out += "  <rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  out += fmt::format("  <text x=\"{:.1f}\" y=\"24\" text-anchor=\"middle\" font-size=\"15\">{}</text>\n", width / 2,
-                     escape(title));
-  for (const auto& a : diagram.arrows) {
-    const auto [x1, y1] = at[index_of[a.from]];
-    const auto [x2, y2] = at[index_of[a.to]];
-    const double len = std::hypot(x2 - x1, y2 - y1);
-    if (len <= 2 * radius) continue;
-    const double ux = (x2 - x1) / len, uy = (y2 - y1) / len;
-    out += fmt::format(
-        "  <line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"#333\" stroke-width=\"1.5\" "
-        "marker-end=\"url(#arrow)\"/>\n",
-        x1 + ux * radius, y1 + uy * radius, x2 - ux * radius, y2 - uy * radius);
-  }
-  for (std::size_t i = 0; i < diagram.nodes.size(); ++i) {
-    const auto& n = diagram.nodes[i];
-    const auto [x, y] = at[i];
-    const std::string label = n.group == 0 ? "0" : fmt::format("({}, {})", n.Nm, n.nc);
-    out += fmt::format("  <circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"{:.0f}\" fill=\"{}\" stroke=\"#333\" stroke-width=\"1.5\"/>\n", x,
-                       y, radius, n.group == 0 ? "#e8e8e8" : "#ffffff");
-    out += fmt::format("  <text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\" font-size=\"14\">{}</text>\n", x, y + 5, label);
-    out += fmt::format("  <text x=\"{:.1f}\" y=\"{:.1f}\" font-size=\"11\" fill=\"#555\">{}</text>\n", x + radius + 4,
-                       y - radius + 6, n.group == 0 ? "frame" : group_name(n.group));
-  }
-  out += "</svg>\n";
   return out;
 }
 

@@ -349,16 +349,76 @@ struct Fit {
   P operator()(P p) const { return {ox + scale * p.x, oy - scale * p.y}; }
 };
 
-std::string stress_colour(double value) { return value > 0 ? "#c0392b" : "#2166ac"; }
+/// Colours of the kinds of generalised stress resultant (Scene::SceneStress::kind). Elongation
+/// follows the sign (tension positive: red; compression: blue); the other kinds are named in the
+/// legend with their own hue, the width giving the magnitude.
+std::string stress_colour(const std::string& kind, double value) {
+  if (kind == "bending") return "#7b3294";
+  if (kind == "torsion") return "#1b9e77";
+  if (kind == "rigid") return "#8c510a";
+  return value > 0 ? "#c0392b" : "#2166ac";
+}
+
+/// A round length (1, 2 or 5 times a power of ten) near `target`.
+double round_length(double target) {
+  if (!(target > 0) || !std::isfinite(target)) return 1.0;
+  const double decade = std::pow(10.0, std::floor(std::log10(target)));
+  for (double step : {1.0, 2.0, 5.0})
+    if (step * decade >= target * 0.75) return step * decade;
+  return 10 * decade;
+}
+
+/// Splits `content` into lines of at most about `width` characters at spaces.
+std::vector<std::string> wrapped(const std::string& content, std::size_t width) {
+  std::vector<std::string> lines;
+  std::string line, word;
+  const auto flush_word = [&] {
+    if (word.empty()) return;
+    if (!line.empty() && line.size() + 1 + word.size() > width) lines.push_back(line), line.clear();
+    line += (line.empty() ? "" : " ") + word;
+    word.clear();
+  };
+  for (char c : content) {
+    if (c == ' ') flush_word();
+    else word += c;
+  }
+  flush_word();
+  if (!line.empty()) lines.push_back(line);
+  return lines;
+}
+
+/// The verdict line(s) under a picture's title: the verdict's summary, or without one the
+/// classification of the summary facts.
+std::vector<std::string> verdict_lines(const Scene& scene) {
+  std::string content;
+  if (scene.verdict) {
+    content = "Verdict: " + scene.verdict->summary;
+    if (!scene.verdict->changes.empty()) {
+      std::string changes;
+      for (const auto& change : scene.verdict->changes)
+        changes += (changes.empty() ? "" : "; ") + change.action + " " + change.target + (change.becomes.empty() ? "" : " -> " + change.becomes);
+      content += " Change: " + changes + (scene.verdict->changes_verified ? " (verified by re-analysis)." : ".");
+    }
+  } else {
+    for (const auto& fact : scene.summary)
+      if (fact.key == "class") content = fact.value;
+  }
+  return wrapped(content, 95);
+}
 
 }  // namespace
 
 std::string graph_svg(const Scene& scene) {
   const double size = 380;
   const bool network = scene.kind == "network";
-  const double width = network ? 3 * size : size + 160, height = size + 40;
+  const double width = network ? 3 * size : size + 160;
+  // The verdict, when the analysis gave one, under the model's name.
+  const std::vector<std::string> verdict = scene.verdict ? verdict_lines(scene) : std::vector<std::string>{};
+  const double height = size + 40 + 16.0 * static_cast<double>(verdict.size());
   std::string out = header(width, height);
-  text(out, P{width / 2, height - 12}, scene.name, "middle", "font-size=\"12\" fill=\"#333\"");
+  text(out, P{width / 2, size + 28}, scene.name, "middle", "font-size=\"12\" fill=\"#333\"");
+  for (std::size_t i = 0; i < verdict.size(); ++i)
+    text(out, P{width / 2, size + 46 + 16.0 * static_cast<double>(i)}, verdict[i], "middle", "class=\"verdict\" font-size=\"12\" fill=\"#333\"");
   coupling_graph_panel(out, scene, P{network ? 0.0 : 80.0, 0}, size);
   if (network) {
     expanded_graph_panel(out, scene, P{size, 0}, size, true);
@@ -368,12 +428,43 @@ std::string graph_svg(const Scene& scene) {
   return out;
 }
 
+namespace {
+
+/// Support symbols at node `p` (screen coordinates): fixed (clamped) a block with hatching,
+/// pinned a triangle, roller a triangle on wheels with a double arrow along the free direction.
+void draw_support(std::string& out, const SceneNode& node, P p, const View& view) {
+  if (node.support.empty()) return;
+  out += fmt::format("<g class=\"support\" data-node=\"{}\" data-support=\"{}\">", escape(node.name), node.support);
+  if (node.support == "fixed") {
+    out += fmt::format("<rect x=\"{}\" y=\"{}\" width=\"18\" height=\"9\" fill=\"#bbb\" stroke=\"#222\" stroke-width=\"1\"/>", f2(p.x - 9), f2(p.y + 4));
+    for (int i = 0; i < 4; ++i)
+      out += fmt::format("<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"#222\" stroke-width=\"0.8\"/>", f2(p.x - 9 + 5 * i),
+                         f2(p.y + 18), f2(p.x - 5 + 5 * i), f2(p.y + 13));
+  } else {
+    out += fmt::format("<path d=\"M{} L{} L{} z\" fill=\"#ddd\" stroke=\"#222\" stroke-width=\"1\"/>", pt(p), pt(p + P{-7, 12}),
+                       pt(p + P{7, 12}));
+    if (node.support == "roller") {
+      out += fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"2.5\" fill=\"white\" stroke=\"#222\" stroke-width=\"1\"/>", f2(p.x - 4), f2(p.y + 15));
+      out += fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"2.5\" fill=\"white\" stroke=\"#222\" stroke-width=\"1\"/>", f2(p.x + 4), f2(p.y + 15));
+      for (const auto& direction : node.free_directions) {
+        P d = view.project(direction);
+        if (norm(d) < 1e-9) continue;
+        d = unit(P{d.x, -d.y});
+        const P a = p + P{0, 24} - 12.0 * d, b = p + P{0, 24} + 12.0 * d;
+        out += fmt::format("<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"#222\" stroke-width=\"1\" marker-start=\"url(#arrow)\" "
+                           "marker-end=\"url(#arrow)\"/>", f2(a.x), f2(a.y), f2(b.x), f2(b.y));
+      }
+    }
+  }
+  out += "</g>\n";
+}
+
+}  // namespace
+
 std::string mechanism_svg(const Scene& scene, const MechanismDrawing& drawing) {
   View view;
   view.dimension = scene.dimension;
-  const double width = 640, height = 520, margin = 50, top = 40, legend = 60;
-  std::vector<P> at;
-  for (const auto& node : scene.nodes) at.push_back(view.project(node.position));
+  const std::vector<std::string> verdict = verdict_lines(scene);
   const SceneMode* mode = drawing.mode >= 1 && drawing.mode <= static_cast<int>(scene.modes.size())
                               ? &scene.modes[static_cast<std::size_t>(drawing.mode - 1)]
                               : nullptr;
@@ -381,6 +472,24 @@ std::string mechanism_svg(const Scene& scene, const MechanismDrawing& drawing) {
                                   ? &scene.stresses[static_cast<std::size_t>(drawing.stress - 1)]
                                   : nullptr;
   if (scene.large) mode = nullptr, stress = nullptr;
+  // Legend lines, known before the layout so the drawing can make room for them.
+  std::vector<std::pair<std::string, std::string>> legend_lines;  // (swatch, text)
+  double largest_stress = 0;
+  std::set<std::string> kinds;
+  if (stress) {
+    for (std::size_t e = 0; e < stress->value.size(); ++e) {
+      largest_stress = std::max(largest_stress, std::abs(stress->value[e]));
+      if (e < stress->kind.size() && !stress->kind[e].empty() && stress->value[e] != 0.0) kinds.insert(stress->kind[e]);
+    }
+  }
+  const double width = 640, margin = 50, top = 40 + 16.0 * static_cast<double>(verdict.size());
+  bool any_sheet = false;
+  for (const auto& element : scene.elements) any_sheet = any_sheet || element.sheet_across.has_value();
+  const double legend = 48 + 20.0 * ((mode ? 3 : 0) + (stress ? 3 : 0) + (any_sheet ? 1 : 0));
+  const double drawing_height = 420;
+  const double height = top + drawing_height + legend;
+  std::vector<P> at;
+  for (const auto& node : scene.nodes) at.push_back(view.project(node.position));
   P lo{1e300, 1e300}, hi{-1e300, -1e300};
   for (const P& p : at) {
     lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
@@ -388,7 +497,7 @@ std::string mechanism_svg(const Scene& scene, const MechanismDrawing& drawing) {
   }
   if (at.empty()) lo = hi = P{0, 0};
   const double extent = std::max({hi.x - lo.x, hi.y - lo.y, 1e-12});
-  // Mode arrows: the largest is a fifth of the drawing.
+  // Mode arrows: the largest is a fifth of the drawing; the displaced shape ends at the tips.
   std::vector<P> arrow(at.size(), P{0, 0});
   if (mode) {
     double largest = 0;
@@ -403,15 +512,33 @@ std::string mechanism_svg(const Scene& scene, const MechanismDrawing& drawing) {
       hi = {std::max(hi.x, tip.x), std::max(hi.y, tip.y)};
     }
   }
+  // Screw axes (networks) are drawn 0.3 of the model size to either side of their point:
+  // keep them inside the drawing.
+  const auto include_screws = [&](const std::vector<SceneScrew>& screws) {
+    for (const auto& screw : screws) {
+      const std::vector<Eigen::Vector3d> ends =
+          screw.pure ? std::vector<Eigen::Vector3d>{screw.anchor, screw.anchor + 0.15 * extent * screw.direction}
+                     : std::vector<Eigen::Vector3d>{screw.point - 0.3 * extent * screw.direction, screw.point + 0.3 * extent * screw.direction};
+      for (const auto& end : ends) {
+        const P q = view.project(end);
+        lo = {std::min(lo.x, q.x), std::min(lo.y, q.y)};
+        hi = {std::max(hi.x, q.x), std::max(hi.y, q.y)};
+      }
+    }
+  };
+  if (mode) include_screws(mode->twists);
+  if (stress) include_screws(stress->wrenches);
   Fit fit;
   const double span_x = std::max(hi.x - lo.x, 1e-12 * extent), span_y = std::max(hi.y - lo.y, 1e-12 * extent);
-  fit.scale = std::min((width - 2 * margin) / span_x, (height - top - legend - 2 * margin) / span_y);
+  fit.scale = std::min((width - 2 * margin) / span_x, (drawing_height - 2 * margin) / span_y);
   if (!std::isfinite(fit.scale) || fit.scale <= 0) fit.scale = 1;
   fit.ox = width / 2 - fit.scale * (lo.x + hi.x) / 2;
-  fit.oy = top + margin + (height - top - legend - 2 * margin) / 2 + fit.scale * (lo.y + hi.y) / 2;
+  fit.oy = top + drawing_height / 2 + fit.scale * (lo.y + hi.y) / 2;
 
   std::string out = header(width, height);
   text(out, P{width / 2, 24}, scene.name, "middle", "font-size=\"14\" font-weight=\"bold\"");
+  for (std::size_t i = 0; i < verdict.size(); ++i)
+    text(out, P{width / 2, 42 + 16.0 * static_cast<double>(i)}, verdict[i], "middle", "class=\"verdict\" font-size=\"12\" fill=\"#333\"");
   if (scene.large) {
     std::string d;
     for (const auto& element : scene.elements)
@@ -423,26 +550,76 @@ std::string mechanism_svg(const Scene& scene, const MechanismDrawing& drawing) {
     out += "</svg>\n";
     return out;
   }
-  double largest_stress = 0;
-  if (stress)
-    for (double v : stress->value) largest_stress = std::max(largest_stress, std::abs(v));
+  // Lines in their configuration style: rigid bodies as wide light bands, flexures (beams) as
+  // thin dark lines, trusses as lines, network links grey.
+  const auto element_style = [](const SceneElement& element) -> std::pair<std::string, std::string> {
+    if (element.type == "rigid") return {"#9fb3c8", "8"};
+    if (element.type == "beam") return {"#222", "2.5"};
+    if (element.type == "link") return {"#555", "3"};
+    return {"#333", "2"};
+  };
+  const auto line = [&out](P a, P b, const std::string& colour, const std::string& stroke, const std::string& extra) {
+    out += fmt::format("<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{}\" stroke-width=\"{}\" stroke-linecap=\"round\"{}/>\n", f2(a.x),
+                       f2(a.y), f2(b.x), f2(b.y), colour, stroke, extra);
+  };
+  // A mode alone: the undeformed shape in light grey under the displaced shape drawn in full.
+  // A mode with a self-stress: the stress colours stay on the undeformed shape and the
+  // displaced shape is a thin dashed orange outline.
+  const bool displaced_in_full = mode && !stress;
+  const double shift = displaced_in_full ? 1.0 : 0.0;
+  if (displaced_in_full) {
+    for (const auto& element : scene.elements)
+      line(fit(at[static_cast<std::size_t>(element.a)]), fit(at[static_cast<std::size_t>(element.b)]), "#cccccc",
+           element.type == "rigid" ? "6" : "2", " class=\"undeformed\"");
+  }
+  // Sheets (leaf springs) as light quadrilaterals under their centre lines.
+  bool sheets = false;
+  for (const auto& element : scene.elements) {
+    if (!element.sheet_across) continue;
+    sheets = true;
+    const auto ia = static_cast<std::size_t>(element.a), ib = static_cast<std::size_t>(element.b);
+    const Eigen::Vector3d pa = scene.nodes[ia].position, pb = scene.nodes[ib].position;
+    const Eigen::Vector3d half = 0.5 * kSheetWidth * (pb - pa).norm() * *element.sheet_across;
+    const P a1 = fit(view.project(pa + half) + shift * arrow[ia]), a2 = fit(view.project(pa - half) + shift * arrow[ia]);
+    const P b1 = fit(view.project(pb + half) + shift * arrow[ib]), b2 = fit(view.project(pb - half) + shift * arrow[ib]);
+    out += fmt::format("<path class=\"sheet\" data-element=\"{}\" d=\"M{} L{} L{} L{} z\" fill=\"#efe3c8\" fill-opacity=\"0.85\" stroke=\"#b59b6a\" stroke-width=\"0.8\"/>\n",
+                       escape(element.name), pt(a1), pt(b1), pt(b2), pt(a2));
+  }
   for (std::size_t e = 0; e < scene.elements.size(); ++e) {
     const auto& element = scene.elements[e];
-    const P a = fit(at[static_cast<std::size_t>(element.a)]), b = fit(at[static_cast<std::size_t>(element.b)]);
-    std::string colour = "#333", width_text = element.type == "beam" ? "3.5" : "2", dash;
-    if (element.type == "rigid") colour = "#888", dash = " stroke-dasharray=\"5,3\"";
-    if (element.type == "link") colour = "#555", width_text = "3";
-    if (stress && largest_stress > 0) {
+    const auto ia = static_cast<std::size_t>(element.a), ib = static_cast<std::size_t>(element.b);
+    const P a = fit(at[ia] + shift * arrow[ia]), b = fit(at[ib] + shift * arrow[ib]);
+    auto [colour, width_text] = element_style(element);
+    std::string extra = " data-element=\"" + escape(element.name) + "\"";
+    if (stress && largest_stress > 0 && e < stress->value.size()) {
       const double v = stress->value[e];
+      const std::string kind = e < stress->kind.size() ? stress->kind[e] : "";
       if (std::abs(v) > 1e-9 * largest_stress) {
-        colour = stress_colour(v);
+        colour = stress_colour(kind, v);
         width_text = fixed(1.5 + 3.5 * std::abs(v) / largest_stress, 2);
+        extra += " data-kind=\"" + kind + "\" data-value=\"" + fixed(v, 6) + "\"";
       } else {
         colour = "#bbbbbb";
       }
     }
-    out += fmt::format("<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{}\" stroke-width=\"{}\" stroke-linecap=\"round\"{}/>\n",
-                       f2(a.x), f2(a.y), f2(b.x), f2(b.y), colour, width_text, dash);
+    line(a, b, colour, width_text, extra);
+  }
+  if (mode && !displaced_in_full) {
+    for (const auto& element : scene.elements) {
+      const auto ia = static_cast<std::size_t>(element.a), ib = static_cast<std::size_t>(element.b);
+      line(fit(at[ia] + arrow[ia]), fit(at[ib] + arrow[ib]), "#e66101", "1", " stroke-dasharray=\"4,3\" class=\"displaced\"");
+    }
+  }
+  // Element labels at mid-length (trusses, beams, rigid bodies once), for readable sizes.
+  if (scene.kind == "framework" && scene.elements.size() <= 60) {
+    for (const auto& element : scene.elements) {
+      if (!element.label) continue;
+      const auto ia = static_cast<std::size_t>(element.a), ib = static_cast<std::size_t>(element.b);
+      const P a = fit(at[ia]), b = fit(at[ib]);
+      const P d = unit(b - a);
+      text(out, 0.5 * (a + b) + 8.0 * P{-d.y, d.x} + P{0, 4}, element.name, "middle",
+           "class=\"element-label\" font-size=\"9\" font-style=\"italic\" fill=\"#666\" " + kHalo);
+    }
   }
   // Coupling glyphs: a square at the point, the axis as a dash-dotted line.
   std::map<std::pair<long long, long long>, int> labels_at;
@@ -462,41 +639,148 @@ std::string mechanism_svg(const Scene& scene, const MechanismDrawing& drawing) {
                        f2(p.x - 5), f2(p.y - 5));
     text(out, p + P{8, 14.0 + 12.0 * below}, glyph.name + " (" + glyph.type + ")", "start", "font-size=\"10\" fill=\"#1b7837\"");
   }
+  // Networks: the screw axes of the mode (body twists) or of the self-stress (coupling wrenches).
+  std::map<std::pair<long long, long long>, int> screw_labels_at;
+  // Labels of screws near one place are stacked upwards, 12 px apart.
+  const auto screw_label = [&](P at_point, const std::string& content, const std::string& colour) {
+    const int above = screw_labels_at[{std::llround(at_point.x / 24), std::llround(at_point.y / 24)}]++;
+    text(out, at_point + P{8, -8.0 - 12.0 * above}, content, "start", "font-size=\"10\" fill=\"" + colour + "\" " + kHalo);
+  };
+  const auto screw_axes = [&](const std::vector<SceneScrew>& screws, const std::string& colour, const std::string& marker,
+                              const std::string& cls, bool twist) {
+    double largest = 0;
+    for (const auto& screw : screws) largest = std::max(largest, screw.magnitude);
+    for (const auto& screw : screws) {
+      const P anchor = fit(view.project(screw.point));
+      std::string label;
+      if (screw.pure) {
+        const Eigen::Vector3d u = screw.direction * 0.15 * extent;
+        const P a = fit(view.project(screw.anchor)), b = fit(view.project(screw.anchor + u));
+        if (norm(b - a) > 2)
+          out += fmt::format("<line class=\"{}\" data-name=\"{}\" x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{}\" stroke-width=\"2.5\" marker-end=\"url(#{})\"/>\n",
+                             cls, escape(screw.name), f2(a.x), f2(a.y), f2(b.x), f2(b.y), colour, marker);
+        label = fmt::format("{}: {} {}", screw.name, twist ? "translation |v| =" : "couple |M| =", fixed(screw.magnitude, 3));
+        screw_label(a, label, colour);
+        continue;
+      }
+      const Eigen::Vector3d u = screw.direction * 0.3 * extent;
+      const P a = fit(view.project(screw.point - u)), b = fit(view.project(screw.point + u));
+      if (norm(b - a) > 2) {
+        out += fmt::format("<line class=\"{}\" data-name=\"{}\" x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{}\" stroke-width=\"{}\" stroke-dasharray=\"10,3,2,3\" marker-end=\"url(#{})\"/>\n",
+                           cls, escape(screw.name), f2(a.x), f2(a.y), f2(b.x), f2(b.y), colour, fixed(1.2 + 2.0 * screw.magnitude / std::max(largest, 1e-300), 2), marker);
+      } else {
+        // An axis along the line of sight (planar twists): the instant centre.
+        out += fmt::format("<g class=\"{}\" data-name=\"{}\"><circle cx=\"{}\" cy=\"{}\" r=\"6\" fill=\"none\" stroke=\"{}\" stroke-width=\"2\"/>"
+                           "<circle cx=\"{}\" cy=\"{}\" r=\"1.8\" fill=\"{}\"/></g>\n",
+                           cls, escape(screw.name), f2(anchor.x), f2(anchor.y), colour, f2(anchor.x), f2(anchor.y), colour);
+      }
+      label = fmt::format("{}: {} = {}{}", screw.name, twist ? "|\u03c9|" : "|F|", fixed(screw.magnitude, 3),
+                          std::abs(screw.pitch) > 1e-9 * extent ? ", pitch " + fixed(screw.pitch, 3) : "");
+      screw_label(anchor, label, colour);
+    }
+  };
+  if (mode) screw_axes(mode->twists, "#e66101", "arrow-orange", "twist", true);
+  if (stress) screw_axes(stress->wrenches, "#7b3294", "arrow", "wrench", false);
+
   const bool label_nodes = scene.nodes.size() <= 200;
   const std::size_t labelled = scene.kind == "network" ? scene.bodies.size() : scene.nodes.size();
   for (std::size_t i = 0; i < scene.nodes.size(); ++i) {
     const P p = fit(at[i]);
-    if (scene.nodes[i].fixed && scene.kind == "framework") {
-      out += fmt::format("<path d=\"M{} L{} L{} z\" fill=\"#ddd\" stroke=\"#222\" stroke-width=\"1\"/>\n", pt(p), pt(p + P{-7, 12}),
-                         pt(p + P{7, 12}));
-    }
+    if (scene.kind == "framework") draw_support(out, scene.nodes[i], p, view);
     if (scene.kind == "network" && i >= scene.bodies.size()) continue;
-    out += fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"3.5\" fill=\"{}\" stroke=\"#222\" stroke-width=\"1.2\"/>\n", f2(p.x), f2(p.y),
+    const P q = fit(at[i] + shift * arrow[i]);
+    out += fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"3.5\" fill=\"{}\" stroke=\"#222\" stroke-width=\"1.2\"/>\n", f2(q.x), f2(q.y),
                        scene.nodes[i].fixed ? "#222" : "white");
-    if (label_nodes && i < labelled) text(out, p + P{-7, -7}, scene.nodes[i].name, "end", "font-size=\"11\"");
+    if (label_nodes && i < labelled) text(out, p + P{-7, -7}, scene.nodes[i].name, "end", "class=\"node-label\" font-size=\"11\"");
   }
   if (mode) {
     for (std::size_t i = 0; i < at.size(); ++i) {
       if (norm(arrow[i]) == 0) continue;
       const P a = fit(at[i]), b = fit(at[i] + arrow[i]);
-      out += fmt::format("<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"#e66101\" stroke-width=\"2\" marker-end=\"url(#arrow-orange)\"/>\n",
-                         f2(a.x), f2(a.y), f2(b.x), f2(b.y));
+      out += fmt::format("<line data-node=\"{}\" x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"#e66101\" stroke-width=\"2\" marker-end=\"url(#arrow-orange)\"/>\n",
+                         escape(scene.nodes[i].name), f2(a.x), f2(a.y), f2(b.x), f2(b.y));
     }
   }
+  // Axes (bottom left) and a scale bar of a round length (bottom right), in the model's unit.
+  {
+    const P origin{30, top + drawing_height + 2};
+    const char* names[] = {"x", "y", "z"};
+    for (int k = 0; k < (scene.dimension == 2 ? 2 : 3); ++k) {
+      P d = view.project(Eigen::Vector3d::Unit(k));
+      d = P{d.x, -d.y};
+      if (norm(d) < 1e-9) continue;
+      const P tip = origin + 24.0 * unit(d);
+      out += fmt::format("<line class=\"axis\" x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"#444\" stroke-width=\"1.2\" marker-end=\"url(#arrow-black)\"/>\n",
+                         f2(origin.x), f2(origin.y), f2(tip.x), f2(tip.y));
+      text(out, origin + 33.0 * unit(d) + P{0, 4}, names[k], "middle", "font-size=\"10\" fill=\"#444\"");
+    }
+    const double bar = round_length(100.0 / fit.scale);
+    const double pixels = bar * fit.scale;
+    const P right{width - 20, top + drawing_height + 6};
+    out += fmt::format("<path class=\"scale-bar\" d=\"M{} L{} M{} L{} M{} L{}\" stroke=\"#444\" stroke-width=\"1.5\" fill=\"none\"/>\n",
+                       pt(right - P{pixels, 0}), pt(right), pt(right - P{pixels, 4}), pt(right - P{pixels, -4}), pt(right + P{0, -4}),
+                       pt(right + P{0, 4}));
+    text(out, right - P{pixels / 2, 8}, fixed(bar, 6) + " " + length_unit(scene), "middle", "class=\"scale-label\" font-size=\"10\" fill=\"#444\"");
+  }
   // Legend.
-  double y = height - legend + 12;
+  double y = top + drawing_height + 30;
   if (mode) {
     out += fmt::format("<line x1=\"20\" y1=\"{0}\" x2=\"50\" y2=\"{0}\" stroke=\"#e66101\" stroke-width=\"2\" marker-end=\"url(#arrow-orange)\"/>\n", f2(y - 4));
     text(out, P{58, y}, fmt::format("{} (of {}): nodal velocities, largest drawn at 20% of the model size", mode->label, scene.modes.size()), "start");
     y += 20;
-  }
-  if (stress && largest_stress > 0) {
-    out += fmt::format("<line x1=\"20\" y1=\"{0}\" x2=\"50\" y2=\"{0}\" stroke=\"#c0392b\" stroke-width=\"5\"/>\n", f2(y - 4));
-    out += fmt::format("<line x1=\"56\" y1=\"{0}\" x2=\"86\" y2=\"{0}\" stroke=\"#2166ac\" stroke-width=\"5\"/>\n", f2(y - 4));
-    text(out, P{94, y},
-         fmt::format("{} of {}: tension red, compression blue, width by |N|, largest |N| = {}", stress->label,
-                     scene.stresses.size(), fixed(largest_stress, 4)),
+    if (displaced_in_full)
+      out += fmt::format("<line x1=\"20\" y1=\"{0}\" x2=\"50\" y2=\"{0}\" stroke=\"#cccccc\" stroke-width=\"2\"/>\n", f2(y - 4));
+    else
+      out += fmt::format("<line x1=\"20\" y1=\"{0}\" x2=\"50\" y2=\"{0}\" stroke=\"#e66101\" stroke-width=\"1\" stroke-dasharray=\"4,3\"/>\n", f2(y - 4));
+    text(out, P{58, y},
+         std::string(displaced_in_full ? "grey: undeformed shape; the displaced shape is drawn at the arrow tips"
+                                       : "dashed: displaced shape at the arrow tips, over the undeformed shape") +
+             "",
          "start");
+    y += 20;
+    if (!mode->twists.empty()) {
+      out += fmt::format("<line x1=\"20\" y1=\"{0}\" x2=\"50\" y2=\"{0}\" stroke=\"#e66101\" stroke-width=\"2\" stroke-dasharray=\"10,3,2,3\"/>\n", f2(y - 4));
+      text(out, P{58, y}, "twist axis of each moving body (\u03c9 along it; ring: axis along the line of sight)", "start");
+      y += 20;
+    }
+  }
+  if (stress) {
+    if (!stress->wrenches.empty()) {
+      out += fmt::format("<line x1=\"20\" y1=\"{0}\" x2=\"50\" y2=\"{0}\" stroke=\"#7b3294\" stroke-width=\"2\" stroke-dasharray=\"10,3,2,3\" marker-end=\"url(#arrow)\"/>\n", f2(y - 4));
+      text(out, P{58, y}, fmt::format("{} (of {}): line of action of the wrench each coupling transmits", stress->label, scene.stresses.size()), "start");
+      y += 20;
+      text(out, P{58, y}, "arrow: force direction for the primary = +1 (sign as in the text report); width by |F|", "start");
+      y += 20;
+    } else if (largest_stress > 0) {
+      // One swatch per colour in the drawing.
+      std::vector<std::string> swatches;
+      if (kinds.count("elongation")) swatches = {"#c0392b", "#2166ac"};
+      for (const char* kind : {"bending", "torsion", "rigid"})
+        if (kinds.count(kind)) swatches.push_back(stress_colour(kind, 1.0));
+      double x = 20;
+      for (const auto& colour : swatches) {
+        out += fmt::format("<line x1=\"{1}\" y1=\"{0}\" x2=\"{2}\" y2=\"{0}\" stroke=\"{3}\" stroke-width=\"5\"/>\n", f2(y - 4), f2(x),
+                           f2(x + 22), colour);
+        x += 28;
+      }
+      text(out, P{x + 4, y},
+           fmt::format("{} of {}: each element by its dominant resultant; largest = {}", stress->label, scene.stresses.size(),
+                       fixed(largest_stress, 4)),
+           "start");
+      y += 20;
+      std::string kinds_text = "sign as in the text report (tension positive): elongation tension red, compression blue";
+      if (kinds.count("bending")) kinds_text += "; bending purple";
+      if (kinds.count("torsion")) kinds_text += "; torsion green";
+      if (kinds.count("rigid")) kinds_text += "; rigid-body constraint brown";
+      text(out, P{20, y}, kinds_text, "start", "class=\"stress-kinds\" font-size=\"11\"");
+      y += 20;
+      text(out, P{20, y}, "width by |resultant| (unit-norm stress state, non-dimensional)", "start", "font-size=\"11\" fill=\"#555\"");
+      y += 20;
+    }
+  }
+  if (sheets) {
+    out += fmt::format("<rect x=\"20\" y=\"{}\" width=\"30\" height=\"9\" fill=\"#efe3c8\" stroke=\"#b59b6a\" stroke-width=\"0.8\"/>\n", f2(y - 9));
+    text(out, P{58, y}, fmt::format("sheets (beams the model makes leaf springs), drawn {}% of their length wide", fixed(100 * kSheetWidth, 0)), "start");
     y += 20;
   }
   if (!mode && !stress) text(out, P{20, y}, scene.modes.empty() && scene.stresses.empty() ? "no kinematic modes and no self-stress" : "configuration only", "start");

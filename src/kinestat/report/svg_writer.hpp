@@ -22,10 +22,17 @@ struct MechanismDrawing {
 };
 
 /// The model in its configuration: planar models in the xy-plane, spatial ones in a fixed
-/// axonometric view; supports as triangles, a kinematic mode as arrows at the nodes, a
-/// self-stress as element colours (tension red, compression blue, width by magnitude) with
-/// its scale. Above kLargeSceneElements elements the drawing is one merged path without
-/// labels, arrows or glyphs.
+/// axonometric view; the verdict (or the classification) under the title; fixed, pinned and
+/// roller supports (rollers with their free direction); rigid bodies as wide light bands,
+/// flexures as thin dark lines; node and element labels; axes and a scale bar in the model's
+/// length unit. A kinematic mode: the undeformed shape in grey, the displaced shape and nodal
+/// arrows, and for networks the twist axis of every moving body. A self-stress: each element
+/// coloured by its dominant generalised stress resultant (elongation by sign, tension positive
+/// red, compression blue; bending, torsion, rigid-body constraint by hue; width by magnitude),
+/// for networks the wrench axis of every coupling. Signs are the scene's, i.e. the analysis'.
+/// Stressed lines carry data-element / data-kind / data-value attributes and mode arrows
+/// data-node, so tests can read what is drawn. Above kLargeSceneElements elements the drawing
+/// is one merged path without labels, arrows or glyphs.
 std::string mechanism_svg(const Scene& scene, const MechanismDrawing& drawing = {});
 
 }  // namespace kinestat::report

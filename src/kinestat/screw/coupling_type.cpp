@@ -7,6 +7,8 @@ namespace kinestat::screw {
 namespace {
 
 // One row per type: file-format name, geometry keys it uses, and which of them are required.
+// `point` (allowed for every type) is required wherever the screws depend on it: a forgotten
+// point would silently put the joint at the origin and change the answer.
 // A revolute's axis is optional: it defaults to z, the only axis a planar model allows
 // (the network reader requires it in spatial models).
 struct TypeFacts {
@@ -18,17 +20,17 @@ struct TypeFacts {
 
 const std::array<TypeFacts, 12>& type_facts() {
   static const std::array<TypeFacts, 12> facts{{
-      {CouplingType::revolute, "revolute", {"axis"}, {}},
+      {CouplingType::revolute, "revolute", {"axis"}, {"point"}},
       {CouplingType::prismatic, "prismatic", {"axis"}, {"axis"}},
-      {CouplingType::helical, "helical", {"axis", "pitch"}, {"axis", "pitch"}},
-      {CouplingType::cylindrical, "cylindrical", {"axis"}, {"axis"}},
-      {CouplingType::universal, "universal", {"axis", "axis2"}, {"axis", "axis2"}},
-      {CouplingType::spherical, "spherical", {}, {}},
-      {CouplingType::planar, "planar", {"normal"}, {"normal"}},
+      {CouplingType::helical, "helical", {"axis", "pitch"}, {"axis", "pitch", "point"}},
+      {CouplingType::cylindrical, "cylindrical", {"axis"}, {"axis", "point"}},
+      {CouplingType::universal, "universal", {"axis", "axis2"}, {"axis", "axis2", "point"}},
+      {CouplingType::spherical, "spherical", {}, {"point"}},
+      {CouplingType::planar, "planar", {"normal"}, {"normal", "point"}},
       {CouplingType::rigid, "rigid", {}, {}},
       {CouplingType::free, "free", {}, {}},
-      {CouplingType::point_on_plane, "point_on_plane", {"normal"}, {"normal"}},
-      {CouplingType::point_on_line, "point_on_line", {"normal"}, {"normal"}},
+      {CouplingType::point_on_plane, "point_on_plane", {"normal"}, {"normal", "point"}},
+      {CouplingType::point_on_line, "point_on_line", {"normal"}, {"normal", "point"}},
       {CouplingType::custom, "custom", {"motions", "actions"}, {"motions"}},
   }};
   return facts;

@@ -11,25 +11,41 @@ StructureModel with_inputs(const StructureModel& model, const std::vector<int>& 
   return changed;
 }
 
-namespace {
-
-// Number of ways to place `total` inputs on pairs with the given capacities, saturated at
-// `cap` so that huge mechanisms cost nothing.
 std::uint64_t count_placements(const std::vector<int>& capacity, int total, std::uint64_t cap) {
-  std::vector<std::uint64_t> ways(total + 1, 0);
+  long long room = 0;
+  for (int c : capacity) room += c;
+  if (total < 0 || total > room) return 0;
+  // One placement x0 (greedy); every x0 − e_i + e_j with x0_i > 0, x0_j < c_j, i ≠ j is another
+  // one, all distinct: when those already pass the cap, the count is known without a sum.
+  std::uint64_t carrying = 0, open = 0, both = 0;
+  int left = total;
+  for (int c : capacity) {
+    const int x = std::min(c, left);
+    left -= x;
+    carrying += x > 0 ? 1 : 0;
+    open += x < c ? 1 : 0;
+    both += x > 0 && x < c ? 1 : 0;
+  }
+  if (1 + carrying * open - both >= cap) return cap;
+  // Otherwise few pairs carry inputs or few have room, so the smaller of the inputs placed and
+  // the free slots left is small: count vectors y (0 ≤ y_k ≤ c_k) summing to it. The count over
+  // a prefix of the pairs never exceeds the final one (later pairs can take 0), so it stops
+  // as soon as that passes the cap.
+  const auto width = static_cast<std::size_t>(std::min<long long>(total, room - total));
+  std::vector<std::uint64_t> ways(width + 1, 0), next(width + 1, 0);
   ways[0] = 1;
   for (int c : capacity) {
-    std::vector<std::uint64_t> next(total + 1, 0);
-    for (int used = 0; used <= total; ++used) {
+    std::fill(next.begin(), next.end(), 0);
+    for (std::size_t used = 0; used <= width; ++used) {
       if (ways[used] == 0) continue;
-      for (int k = 0; k <= c && used + k <= total; ++k) next[used + k] = std::min(cap, next[used + k] + ways[used]);
+      for (std::size_t k = 0; k <= static_cast<std::size_t>(c) && used + k <= width; ++k)
+        next[used + k] = std::min(cap, next[used + k] + ways[used]);
     }
-    ways = std::move(next);
+    std::swap(ways, next);
+    if (ways[width] >= cap) return cap;
   }
-  return ways[total];
+  return ways[width];
 }
-
-}  // namespace
 
 TransformationSet structural_transformations(const StructureModel& model, std::uint64_t limit) {
   TransformationSet set;

@@ -31,6 +31,11 @@ struct TransformationSet {
 /// The model with the inputs of each pair replaced by `inputs`.
 StructureModel with_inputs(const StructureModel& model, const std::vector<int>& inputs);
 
+/// Number of ways to place `total` inputs on pairs that take at most capacity[k] each,
+/// saturated at `cap`: once the count is known to reach `cap` it stops, so a mechanism of a
+/// million pairs costs one pass over them, not pairs × inputs.
+std::uint64_t count_placements(const std::vector<int>& capacity, int total, std::uint64_t cap);
+
 /// Enumerates every placement of the model's inputs on its pairs (a pair carries at most as
 /// many inputs as it has freedoms), decomposes each, keeps the decomposable ones and ranks
 /// them: more groups first, then a smaller largest group, then fewer stages, then the order

@@ -1,0 +1,83 @@
+#!/usr/bin/python3
+"""Writes the lattices of tests/support/lattice_generator.cpp as framework model files
+(same nodes, bars and supports, same order), for whole-command runs of `kinestat analyze`, and
+builds their D(c) for numpy (rows: bars, columns: x, y[, z] of the free nodes, entries the
+direction cosines, the same matrix as kinestat's up to the diagonal length scaling).
+
+    lattice_model.py triangulated N FILE   # N x N planar grid, one diagonal per cell
+    lattice_model.py square N FILE
+    lattice_model.py spatial N FILE        # N^3 cubic lattice, diagonals in horizontal faces
+"""
+import sys
+
+
+def lattice(kind, n):
+    nodes, bars = [], []
+    if kind in ("triangulated", "square"):
+        for j in range(n):
+            for i in range(n):
+                nodes.append(((i, j), j == 0))
+        node = lambda i, j: j * n + i
+        for j in range(n):
+            for i in range(n):
+                if i + 1 < n:
+                    bars.append((node(i, j), node(i + 1, j)))
+                if j + 1 < n:
+                    bars.append((node(i, j), node(i, j + 1)))
+                if kind == "triangulated" and i + 1 < n and j + 1 < n:
+                    bars.append((node(i, j), node(i + 1, j + 1)))
+        return 2, nodes, bars
+    node = lambda i, j, k: (k * n + j) * n + i
+    for k in range(n):
+        for j in range(n):
+            for i in range(n):
+                nodes.append(((i, j, k), k == 0))
+    for k in range(n):
+        for j in range(n):
+            for i in range(n):
+                if i + 1 < n:
+                    bars.append((node(i, j, k), node(i + 1, j, k)))
+                if j + 1 < n:
+                    bars.append((node(i, j, k), node(i, j + 1, k)))
+                if k + 1 < n:
+                    bars.append((node(i, j, k), node(i, j, k + 1)))
+                if i + 1 < n and j + 1 < n:
+                    bars.append((node(i, j, k), node(i + 1, j + 1, k)))
+    return 3, nodes, bars
+
+
+def write_model(kind, n, path):
+    dimension, nodes, bars = lattice(kind, n)
+    with open(path, "w") as out:
+        out.write(f"kinestat: 1\nkind: framework\nname: {kind} lattice {n}\ndimension: {dimension}\nnodes:\n")
+        for index, (position, _) in enumerate(nodes):
+            out.write(f"  n{index}: [{', '.join(str(c) for c in position)}]\n")
+        out.write("supports:\n")
+        for index, (_, pinned) in enumerate(nodes):
+            if pinned:
+                out.write(f"  n{index}: fixed\n")
+        out.write("elements:\n")
+        for p, q in bars:
+            out.write(f"  - {{type: truss, nodes: [n{p}, n{q}]}}\n")
+
+
+def jacobian(kind, n):
+    import numpy
+    dimension, nodes, bars = lattice(kind, n)
+    column = {}
+    for index, (_, pinned) in enumerate(nodes):
+        if not pinned:
+            column[index] = len(column) * dimension
+    d = numpy.zeros((len(bars), len(column) * dimension))
+    for row, (p, q) in enumerate(bars):
+        u = numpy.subtract(nodes[q][0], nodes[p][0]).astype(float)
+        u /= numpy.linalg.norm(u)
+        if q in column:
+            d[row, column[q]:column[q] + dimension] = u
+        if p in column:
+            d[row, column[p]:column[p] + dimension] = -u
+    return d
+
+
+if __name__ == "__main__":
+    write_model(sys.argv[1], int(sys.argv[2]), sys.argv[3])

@@ -1,0 +1,72 @@
+#include "cli/option_checks.hpp"
+
+#include <fmt/format.h>
+
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+
+namespace kinestat::cli {
+
+namespace {
+
+// Parses all of `text` as a double; empty on anything else.
+std::optional<double> parse_double(const std::string& text) {
+  if (text.empty() || std::isspace(static_cast<unsigned char>(text[0]))) return std::nullopt;
+  char* end = nullptr;
+  errno = 0;
+  const double value = std::strtod(text.c_str(), &end);
+  if (end != text.c_str() + text.size()) return std::nullopt;
+  if (errno == ERANGE && std::isfinite(value) && value != 0) errno = 0;  // subnormal: fine
+  if (errno == ERANGE) return value == 0 ? 0.0 : HUGE_VAL;
+  return value;
+}
+
+template <typename Derived>
+bool all_finite(const Eigen::DenseBase<Derived>& m) {
+  return m.allFinite();
+}
+
+}  // namespace
+
+CLI::Validator positive_finite_number() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        const auto value = parse_double(text);
+        if (!value) return fmt::format("'{}' is not a number: expected a positive number such as 1e-9", text);
+        if (!std::isfinite(*value))
+          return fmt::format("'{}' is not finite: expected a positive number such as 1e-9", text);
+        if (*value <= 0) return fmt::format("'{}' is not positive: expected a positive number such as 1e-9", text);
+        return {};
+      },
+      "POSITIVE");
+}
+
+CLI::Validator non_negative_whole_number() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        bool digits = !text.empty();
+        for (char c : text) digits = digits && std::isdigit(static_cast<unsigned char>(c));
+        if (!digits) return fmt::format("'{}' is not a whole number >= 0", text);
+        if (text.size() > 18) return fmt::format("'{}' is too large", text.substr(0, 20) + (text.size() > 20 ? "…" : ""));
+        return {};
+      },
+      "COUNT");
+}
+
+std::optional<std::string> first_non_finite_result(const network::NetworkResult& result) {
+  if (result.motion_values && !all_finite(*result.motion_values)) return "a motion magnitude";
+  if (result.action_values && !all_finite(*result.action_values)) return "an action magnitude";
+  if (result.coupling_motion_values && !all_finite(*result.coupling_motion_values)) return "a coupling motion";
+  if (result.coupling_action_values && !all_finite(*result.coupling_action_values)) return "a coupling action";
+  if (!all_finite(result.motion_magnitudes.values)) return "a coefficient of the motion magnitudes";
+  if (!all_finite(result.action_magnitudes.values)) return "a coefficient of the action magnitudes";
+  for (const auto& pair : result.pairs) {
+    if (!all_finite(pair.motion_system.values) || !all_finite(pair.action_system.values))
+      return std::string("a coefficient of a pair system");
+  }
+  return std::nullopt;
+}
+
+}  // namespace kinestat::cli

@@ -1,0 +1,96 @@
+#include "kinestat/io/framework_yaml_writer.hpp"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+namespace kinestat::io {
+
+using framework::CoordinateRole;
+using framework::DeformationRole;
+using framework::Element;
+using framework::ElementType;
+using framework::FrameworkModel;
+
+namespace {
+
+// A YAML double-quoted scalar: JSON's string escapes are valid YAML.
+std::string quoted(const std::string& text) { return nlohmann::json(text).dump(); }
+
+// Shortest text that reads back as the same double.
+std::string number(double value) { return fmt::format("{}", value == 0.0 ? 0.0 : value); }
+
+std::string vector(const Eigen::Vector3d& v, int size) {
+  std::string out = "[";
+  for (int i = 0; i < size; ++i) out += (i ? ", " : "") + number(v(i));
+  return out + "]";
+}
+
+std::string list(const std::vector<std::string>& items) {
+  std::string out = "[";
+  for (std::size_t i = 0; i < items.size(); ++i) out += (i ? ", " : "") + items[i];
+  return out + "]";
+}
+
+std::string type_word(ElementType type) {
+  switch (type) {
+    case ElementType::truss: return "truss";
+    case ElementType::beam: return "beam";
+    case ElementType::rigid_body: return "rigid_body";
+  }
+  return "truss";
+}
+
+}  // namespace
+
+std::string framework_yaml(const FrameworkModel& model, const std::vector<std::string>& comments) {
+  std::string out;
+  for (const auto& c : comments) out += "# " + c + "\n";
+  out += "kinestat: 1\nkind: framework\n";
+  if (!model.name.empty()) out += "name: " + quoted(model.name) + "\n";
+  out += model.dimension == 2 ? "dimension: planar\n" : "dimension: spatial\n";
+  if (!model.units.empty()) out += "units: " + quoted(model.units) + "\n";
+  out += "nodes:\n";
+  for (const auto& node : model.nodes) {
+    if (node.triad) {
+      const Eigen::Matrix3d& t = *node.triad;
+      out += fmt::format("  {}: {{position: {}, orientation: [{}, {}, {}]}}\n", quoted(node.name), vector(node.position, 3),
+                         vector(t.col(0), 3), vector(t.col(1), 3), vector(t.col(2), 3));
+    } else {
+      out += fmt::format("  {}: {}\n", quoted(node.name), vector(node.position, model.dimension));
+    }
+  }
+  for (const auto& [role, key] : {std::pair{CoordinateRole::fixed, "supports"}, std::pair{CoordinateRole::independent, "independent"}}) {
+    std::string block;
+    for (const auto& node : model.nodes) {
+      std::vector<std::string> slots;
+      for (int s : framework::node_slots(model.dimension, node))
+        if (node.roles[static_cast<std::size_t>(s)] == role) slots.emplace_back(framework::kSlotNames[static_cast<std::size_t>(s)]);
+      if (!slots.empty()) block += fmt::format("  {}: {}\n", quoted(node.name), list(slots));
+    }
+    if (!block.empty()) out += std::string(key) + ":\n" + block;
+  }
+  out += "elements:\n";
+  for (const Element& element : model.elements) {
+    std::vector<std::string> nodes;
+    for (std::size_t n : element.nodes) nodes.push_back(quoted(model.nodes[n].name));
+    out += fmt::format("  - {{name: {}, type: {}, nodes: {}", quoted(element.name), type_word(element.type), list(nodes));
+    // The whole triad, so that the frame reads back bit for bit (a frame read from a rounded
+    // z axis is orthonormal only to the rounding of that axis).
+    if (element.type == ElementType::beam && model.dimension == 3) {
+      const Eigen::Matrix3d& f = element.frame;
+      out += fmt::format(", orientation: [{}, {}, {}]", vector(f.col(0), 3), vector(f.col(1), 3), vector(f.col(2), 3));
+    }
+    if (element.torsion_coupling != 0.0) out += ", torsion_coupling: " + number(element.torsion_coupling);
+    const auto names = framework::deformation_names(model, element);
+    for (const auto& [role, key] : {std::pair{DeformationRole::released, "released"}, std::pair{DeformationRole::independent, "independent"}}) {
+      std::vector<std::string> chosen;
+      for (std::size_t d = 0; d < element.roles.size(); ++d)
+        if (element.roles[d] == role) chosen.push_back(quoted(names[d]));
+      if (!chosen.empty()) out += fmt::format(", {}: {}", key, list(chosen));
+    }
+    out += "}\n";
+  }
+  return out;
+}
+
+}  // namespace kinestat::io

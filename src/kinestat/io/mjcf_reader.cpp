@@ -1,0 +1,218 @@
+#include "kinestat/io/mjcf_reader.hpp"
+
+#include <fmt/format.h>
+
+#include <memory>
+#include <vector>
+#include <regex>
+
+#include "kinestat/io/text_file.hpp"
+
+#if KINESTAT_HAVE_MUJOCO
+#include <mujoco/mujoco.h>
+#endif
+
+namespace kinestat::io {
+
+#if KINESTAT_HAVE_MUJOCO
+
+namespace {
+
+struct ModelDeleter {
+  void operator()(mjModel* m) const { mj_deleteModel(m); }
+};
+struct DataDeleter {
+  void operator()(mjData* d) const { mj_deleteData(d); }
+};
+struct VfsDeleter {
+  void operator()(mjVFS* v) const {
+    mj_deleteVFS(v);
+    delete v;
+  }
+};
+
+/// MuJoCo's default warning handler prints to standard output and appends to MUJOCO_LOG.TXT
+/// in the working directory; kinestat collects the warnings as notices instead.
+thread_local std::vector<std::string>* warnings = nullptr;
+void collect_warning(const char* message) {
+  if (warnings && warnings->size() < 16) warnings->push_back(message);
+}
+
+/// Largest mjData a model may ask for (stack plus buffer): mj_makeData ends the process when
+/// an allocation fails, so a model asking for more is refused first.
+constexpr double kMaxDataBytes = 1 << 30;
+
+class MjcfReader {
+ public:
+  MjcfReader(std::string path, std::string text) : path_(std::move(path)), text_(std::move(text)) {}
+
+  ImportedNetwork read(mjModel* raw, const char* error) {
+    if (!raw) {
+      // MuJoCo's messages end with "Element 'x', line N" (sometimes a column too).
+      std::string message = error;
+      std::smatch match;
+      int line = 0, column = 0;
+      if (std::regex_search(message, match, std::regex("line (\\d+)"))) line = std::stoi(match[1]);
+      if (std::regex_search(message, match, std::regex("column (\\d+)"))) column = std::stoi(match[1]);
+      for (char& c : message)
+        if (c == '\n') c = ' ';
+      throw InputError({path_, line, line ? std::max(column, 1) : 0}, "MuJoCo: " + message);
+    }
+    const std::unique_ptr<mjModel, ModelDeleter> model(raw);
+    const mjModel* m = model.get();
+    if (static_cast<double>(m->nstack) * sizeof(mjtNum) + static_cast<double>(m->nbuffer) > kMaxDataBytes)
+      throw InputError({path_, 0, 0}, "the model asks MuJoCo for more than 1 GiB of data (<size memory=...>)");
+    const std::unique_ptr<mjData, DataDeleter> data(mj_makeData(m));
+    mj_kinematics(m, data.get());  // world poses at the reference configuration qpos0
+    const mjData* d = data.get();
+    // MuJoCo has no length unit of its own; the model name comes first in `names`.
+    NetworkBuilder builder(path_, m->nnames > 0 ? std::string(m->names) : std::string(), "");
+    builder.set_ground(body_name(m, 0));
+    for (int b = 1; b < m->nbody; ++b) {
+      const std::string body = body_name(m, b);
+      std::string from = body_name(m, m->body_parentid[b]);
+      const int count = m->body_jntnum[b];
+      if (count == 0) {
+        JointGeometry g;
+        g.point = vec(d->xpos + 3 * b);
+        builder.couple(body + " (welded)", screw::CouplingType::rigid, from, body, g, locate("body", body));
+        continue;
+      }
+      for (int k = 0; k < count; ++k) {
+        const int j = m->body_jntadr[b] + k;
+        const std::string joint = name(m, mjOBJ_JOINT, j, "joint" + std::to_string(j));
+        // Several joints in one body act in series: intermediate bodies carry the chain.
+        const std::string to = k + 1 == count ? body : body + "/" + joint;
+        JointGeometry g;
+        g.point = vec(d->xanchor + 3 * j);
+        screw::CouplingType type = screw::CouplingType::free;
+        switch (m->jnt_type[j]) {
+          case mjJNT_HINGE:
+            type = screw::CouplingType::revolute;
+            g.axis = vec(d->xaxis + 3 * j);
+            break;
+          case mjJNT_SLIDE:
+            type = screw::CouplingType::prismatic;
+            g.axis = vec(d->xaxis + 3 * j);
+            break;
+          case mjJNT_BALL: type = screw::CouplingType::spherical; break;
+          default: type = screw::CouplingType::free; break;
+        }
+        builder.couple(joint, type, from, to, g, locate("joint", joint));
+        from = to;
+      }
+    }
+    std::string ignored;
+    for (int e = 0; e < m->neq; ++e) {
+      const std::string eq = name(m, mjOBJ_EQUALITY, e, "equality" + std::to_string(e));
+      const int type = m->eq_type[e];
+      if (type != mjEQ_CONNECT && type != mjEQ_WELD) {
+        ignored += (ignored.empty() ? "" : ", ") + eq;
+        continue;
+      }
+      if (!m->eq_active[e]) {
+        ignored += (ignored.empty() ? "" : ", ") + eq + " (inactive)";
+        continue;
+      }
+      const int b1 = m->eq_obj1id[e], b2 = m->eq_obj2id[e];
+      JointGeometry g;
+      if (type == mjEQ_CONNECT) {
+        // The anchor is given in body 1's frame.
+        const mjtNum* local = m->eq_data + mjNEQDATA * e;
+        const mjtNum* x = d->xpos + 3 * b1;
+        const mjtNum* r = d->xmat + 9 * b1;
+        for (int i = 0; i < 3; ++i) g.point(i) = x[i] + r[3 * i] * local[0] + r[3 * i + 1] * local[1] + r[3 * i + 2] * local[2];
+      } else {
+        g.point = vec(d->xpos + 3 * b1);
+      }
+      builder.couple(eq, type == mjEQ_CONNECT ? screw::CouplingType::spherical : screw::CouplingType::rigid, body_name(m, b1),
+                     body_name(m, b2), g, locate(type == mjEQ_CONNECT ? "connect" : "weld", eq));
+    }
+    ImportedNetwork out{builder.finish(), {}};
+    for (const std::string& w : warnings_) out.notices.push_back(fmt::format("{}: note: MuJoCo: {}", path_, w));
+    if (!ignored.empty())
+      out.notices.push_back(fmt::format("{}: note: equality constraint(s) {} ignored: only active connect and weld "
+                                        "constraints are kinematic couplings", path_, ignored));
+    return out;
+  }
+
+ private:
+  static Eigen::Vector3d vec(const mjtNum* v) { return {v[0], v[1], v[2]}; }
+
+  static std::string name(const mjModel* m, int type, int id, const std::string& fallback) {
+    const char* n = mj_id2name(m, type, id);
+    return n && *n ? n : fallback;
+  }
+
+  static std::string body_name(const mjModel* m, int b) { return name(m, mjOBJ_BODY, b, b == 0 ? "world" : "body" + std::to_string(b)); }
+
+  // MuJoCo keeps no file positions: the element is found by its name in the text.
+  SourceLocation locate(const std::string& tag, const std::string& object) const {
+    for (const char* quote : {"\"", "'"}) {
+      const std::size_t at = text_.find(std::string("name=") + quote + object + quote);
+      if (at == std::string::npos) continue;
+      const std::size_t open = text_.rfind('<', at);
+      const std::size_t from = open == std::string::npos ? at : open;
+      int line = 1;
+      std::size_t line_start = 0;
+      for (std::size_t i = 0; i < from; ++i)
+        if (text_[i] == '\n') ++line, line_start = i + 1;
+      return {path_, line, static_cast<int>(from - line_start) + 1};
+    }
+    (void)tag;
+    return {path_, 0, 0};
+  }
+
+  std::string path_;
+  std::string text_;
+
+ public:
+  std::vector<std::string> warnings_;
+};
+
+// Loads through MuJoCo with its warnings collected into `reader`.
+mjModel* load(const char* file, const mjVFS* vfs, char (&error)[1024], MjcfReader& reader) {
+  warnings = &reader.warnings_;
+  mju_user_warning = collect_warning;
+  mjModel* m = mj_loadXML(file, vfs, error, sizeof error);
+  warnings = nullptr;
+  return m;
+}
+
+}  // namespace
+
+bool mjcf_reader_built_in() { return true; }
+
+ImportedNetwork read_mjcf(const std::string& path) {
+  MjcfReader reader(path, read_text_file(path));
+  char error[1024] = "";
+  mjModel* m = load(path.c_str(), nullptr, error, reader);
+  return reader.read(m, error);
+}
+
+ImportedNetwork parse_mjcf(const std::string& path, const std::string& text) {
+  const std::unique_ptr<mjVFS, VfsDeleter> vfs(new mjVFS);
+  mj_defaultVFS(vfs.get());
+  if (mj_makeEmptyFileVFS(vfs.get(), "model.xml", static_cast<int>(text.size())) != 0)
+    throw InputError({path, 0, 0}, "MuJoCo: cannot hold the model in memory");
+  const int index = mj_findFileVFS(vfs.get(), "model.xml");
+  std::copy(text.begin(), text.end(), static_cast<char*>(vfs->filedata[index]));
+  MjcfReader reader(path, text);
+  char error[1024] = "";
+  mjModel* m = load("model.xml", vfs.get(), error, reader);
+  return reader.read(m, error);
+}
+
+#else
+
+bool mjcf_reader_built_in() { return false; }
+
+ImportedNetwork read_mjcf(const std::string& path) {
+  throw InputError({path, 0, 0}, "MJCF is not built in: rebuild kinestat with libmujoco-dev installed (docs/formats.md)");
+}
+
+ImportedNetwork parse_mjcf(const std::string& path, const std::string&) { return read_mjcf(path); }
+
+#endif
+
+}  // namespace kinestat::io

@@ -1,0 +1,99 @@
+#include "kinestat/io/network_import.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "kinestat/io/yaml_support.hpp"
+
+namespace kinestat::io {
+
+namespace {
+/// Components smaller than this fraction of a vector's largest are rounding noise of a
+/// rotation (cos 90° = 6e-17) and are taken as zero; the others keep 12 significant digits of
+/// the largest, so noise of the other program's pose arithmetic (1.8000000000000003) goes.
+constexpr double kNoise = 1e-12;
+}  // namespace
+
+NetworkBuilder::NetworkBuilder(std::string path, std::string name, std::string units) : path_(std::move(path)) {
+  loaded_.model.name = std::move(name);
+  loaded_.model.units = std::move(units);
+  loaded_.model.space = screw::ScrewSpace::spatial();
+}
+
+int NetworkBuilder::body(const std::string& name) {
+  const auto found = bodies_.find(name);
+  if (found != bodies_.end()) return found->second;
+  const int index = static_cast<int>(loaded_.model.bodies.size());
+  bodies_[name] = index;
+  loaded_.model.bodies.push_back(name);
+  return index;
+}
+
+void NetworkBuilder::set_ground(const std::string& name) { loaded_.model.ground = body(name); }
+
+screw::Vec3 NetworkBuilder::exact(const Eigen::Vector3d& v) {
+  const double largest = v.cwiseAbs().maxCoeff();
+  screw::Vec3 out;
+  // Digits after the decimal point that keep 12 significant digits of the largest component.
+  const int decimals = largest > 0 ? std::clamp(12 - static_cast<int>(std::floor(std::log10(largest))), 0, 340) : 0;
+  for (int i = 0; i < 3; ++i) {
+    const double c = std::abs(v(i)) < kNoise * largest ? 0.0 : v(i);
+    std::string text = fmt::format("{:.{}f}", c, decimals);
+    if (text.find('.') != std::string::npos) {
+      while (text.back() == '0') text.pop_back();
+      if (text.back() == '.') text.pop_back();
+    }
+    if (text == "-0") text = "0";
+    digits_ = std::max(digits_, significant_digits(text));
+    const auto decimal = parse_exact_decimal(text);
+    out[static_cast<std::size_t>(i)] = decimal ? *decimal : screw::Rational(c);
+  }
+  return out;
+}
+
+void NetworkBuilder::couple(const std::string& name, screw::CouplingType type, const std::string& from, const std::string& to,
+                            const JointGeometry& geometry, const SourceLocation& where) {
+  for (const auto& other : loaded_.model.couplings)
+    if (other.name == name) throw InputError(where, fmt::format("duplicate joint name '{}'", name));
+  if (from == to) throw InputError(where, fmt::format("joint '{}' joins link '{}' to itself", name, from));
+  network::Coupling coupling;
+  coupling.name = name;
+  coupling.type = type;
+  coupling.from = body(from);
+  coupling.to = body(to);
+  if (!geometry.point.allFinite()) throw InputError(where, fmt::format("joint '{}': its position is not finite", name));
+  coupling.geometry.point = exact(geometry.point);
+  const auto direction = [&](const std::optional<Eigen::Vector3d>& v, const char* what) -> std::optional<screw::Vec3> {
+    if (!v) return std::nullopt;
+    if (!v->allFinite() || !(v->norm() > 0)) throw InputError(where, fmt::format("joint '{}': the {} is the zero vector", name, what));
+    return exact(*v);
+  };
+  coupling.geometry.axis = direction(geometry.axis, "axis");
+  coupling.geometry.axis2 = direction(geometry.axis2, "second axis");
+  coupling.geometry.normal = direction(geometry.normal, "plane normal");
+  const double pitch = geometry.pitch;
+  if (pitch != 0.0) {
+    const std::string text = fmt::format("{}", pitch);
+    digits_ = std::max(digits_, significant_digits(text));
+    const auto decimal = parse_exact_decimal(text);
+    coupling.geometry.pitch = decimal ? *decimal : screw::Rational(pitch);
+  }
+  try {
+    (void)screw::coupling_basis(coupling.type, coupling.geometry, loaded_.model.space);
+  } catch (const screw::GeometryError& error) {
+    throw InputError(where, fmt::format("joint '{}': {}", name, error.what()));
+  }
+  loaded_.item_locations["couplings"].push_back(where);
+  loaded_.model.couplings.push_back(std::move(coupling));
+}
+
+LoadedNetwork NetworkBuilder::finish() {
+  if (loaded_.model.couplings.empty()) throw InputError({path_, 0, 0}, "the model has no joints between links");
+  loaded_.model.max_significant_digits = digits_;
+  loaded_.field_locations["couplings"] = {path_, 0, 0};
+  return std::move(loaded_);
+}
+
+}  // namespace kinestat::io

@@ -1,0 +1,60 @@
+#pragma once
+// Shared by the readers of robot description formats (URDF, SDFormat, MJCF): a network model
+// built joint by joint with the file position of every joint, so that problems the analysis
+// finds later (a disconnected link, a degenerate joint) still point into the file.
+
+#include <Eigen/Core>
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "kinestat/io/input_error.hpp"
+#include "kinestat/io/loaded_network.hpp"
+#include "kinestat/screw/coupling_basis.hpp"
+
+namespace kinestat::io {
+
+/// A network read from another program's file, with one line per thing that was read but
+/// ignored (mimic joints, transmissions, actuators, ...).
+struct ImportedNetwork {
+  LoadedNetwork loaded;
+  std::vector<std::string> notices;
+};
+
+/// Geometry of one joint in the world frame (only what its type uses need be set).
+struct JointGeometry {
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  std::optional<Eigen::Vector3d> axis, axis2, normal;
+  double pitch = 0.0;  ///< helical pitch, length per radian
+};
+
+/// Builds a network model from bodies (links) and joints given with world-frame geometry.
+class NetworkBuilder {
+ public:
+  /// `units` names the length unit of the file format ("m" for URDF and SDFormat), or "".
+  NetworkBuilder(std::string path, std::string name, std::string units);
+
+  /// Adds a body (a link) if it is not there yet; returns its index.
+  int body(const std::string& name);
+  /// Makes `name` the ground (the world or root link).
+  void set_ground(const std::string& name);
+  /// Adds a coupling from body `from` to body `to` at `where`. Vectors are in the world frame;
+  /// they are stored as decimals rounded to 1e-12 of the vector's largest component (so that
+  /// models written with short decimals stay exact despite the pose arithmetic). Throws InputError at
+  /// `where` for a duplicate name, a self-coupling or a degenerate geometry.
+  void couple(const std::string& name, screw::CouplingType type, const std::string& from, const std::string& to,
+              const JointGeometry& geometry, const SourceLocation& where);
+  /// The finished model; throws InputError (at the file) when it has no couplings.
+  LoadedNetwork finish();
+
+ private:
+  screw::Vec3 exact(const Eigen::Vector3d& v);
+  std::string path_;
+  LoadedNetwork loaded_;
+  std::map<std::string, int> bodies_;
+  int digits_ = 0;
+};
+
+}  // namespace kinestat::io

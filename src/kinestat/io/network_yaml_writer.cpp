@@ -1,0 +1,61 @@
+#include "kinestat/io/network_yaml_writer.hpp"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+namespace kinestat::io {
+
+namespace {
+
+std::string quoted(const std::string& text) { return nlohmann::json(text).dump(); }
+
+// A rational as a decimal: exact when its denominator has no prime factors but 2 and 5.
+std::string decimal(const screw::Rational& value) {
+  mpz_class denominator = value.get_den();
+  int twos = 0, fives = 0;
+  while (mpz_divisible_ui_p(denominator.get_mpz_t(), 2)) denominator /= 2, ++twos;
+  while (mpz_divisible_ui_p(denominator.get_mpz_t(), 5)) denominator /= 5, ++fives;
+  if (denominator != 1 || std::max(twos, fives) > 40) return fmt::format("{:.17g}", value.get_d());
+  const int digits = std::max(twos, fives);
+  mpz_class scaled = value.get_num();
+  for (int i = 0; i < digits - twos; ++i) scaled *= 2;
+  for (int i = 0; i < digits - fives; ++i) scaled *= 5;
+  const bool negative = scaled < 0;
+  std::string text = mpz_class(abs(scaled)).get_str();
+  if (digits > 0) {
+    if (static_cast<int>(text.size()) <= digits) text = std::string(static_cast<std::size_t>(digits) - text.size() + 1, '0') + text;
+    text.insert(text.size() - static_cast<std::size_t>(digits), ".");
+  }
+  return (negative ? "-" : "") + text;
+}
+
+std::string vector(const screw::Vec3& v) { return fmt::format("[{}, {}, {}]", decimal(v[0]), decimal(v[1]), decimal(v[2])); }
+
+}  // namespace
+
+std::string network_yaml(const network::Model& model, const std::vector<std::string>& comments) {
+  std::string out;
+  for (const auto& c : comments) out += "# " + c + "\n";
+  out += "kinestat: 1\nkind: network\n";
+  if (!model.name.empty()) out += "name: " + quoted(model.name) + "\n";
+  out += model.space.is_planar() ? "dimension: planar\n" : "dimension: spatial\n";
+  if (!model.units.empty()) out += "units: " + quoted(model.units) + "\n";
+  out += "bodies: [";
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) out += (b ? ", " : "") + quoted(model.bodies[b]);
+  out += "]\n";
+  if (model.ground) out += "ground: " + quoted(model.bodies[static_cast<std::size_t>(*model.ground)]) + "\n";
+  out += "couplings:\n";
+  for (const auto& c : model.couplings) {
+    out += fmt::format("  - {{name: {}, type: {}, between: [{}, {}], point: {}", quoted(c.name), screw::coupling_type_name(c.type),
+                       quoted(model.bodies[static_cast<std::size_t>(c.from)]), quoted(model.bodies[static_cast<std::size_t>(c.to)]),
+                       vector(c.geometry.point));
+    if (c.geometry.axis) out += ", axis: " + vector(*c.geometry.axis);
+    if (c.geometry.axis2) out += ", axis2: " + vector(*c.geometry.axis2);
+    if (c.geometry.normal) out += ", normal: " + vector(*c.geometry.normal);
+    if (c.type == screw::CouplingType::helical) out += ", pitch: " + decimal(c.geometry.pitch);
+    out += "}\n";
+  }
+  return out;
+}
+
+}  // namespace kinestat::io

@@ -1,0 +1,252 @@
+#include "kinestat/io/sdformat_reader.hpp"
+
+#include <fmt/format.h>
+
+#if KINESTAT_HAVE_SDFORMAT
+#include <sdf/Error.hh>
+#include <sdf/Joint.hh>
+#include <sdf/JointAxis.hh>
+#include <sdf/Link.hh>
+#include <sdf/Model.hh>
+#include <sdf/Root.hh>
+#include <sdf/World.hh>
+
+#include <Eigen/Geometry>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <iostream>
+
+#include "kinestat/io/text_file.hpp"
+#if KINESTAT_HAVE_TINYXML2
+#include <tinyxml2.h>
+#endif
+#endif
+
+namespace kinestat::io {
+
+#if KINESTAT_HAVE_SDFORMAT
+
+namespace {
+
+/// libsdformat prints every problem to standard error (and urdfdom, which it tries on files
+/// that are not SDFormat, does too), besides returning it. kinestat reports the returned
+/// error as its one located line, so standard error is muted while the library reads.
+class MutedStandardError {
+ public:
+  MutedStandardError() {
+    std::cerr.flush();
+    std::fflush(stderr);
+    saved_ = ::dup(2);
+    const int null = ::open("/dev/null", O_WRONLY);
+    if (saved_ >= 0 && null >= 0) ::dup2(null, 2);
+    if (null >= 0) ::close(null);
+  }
+  ~MutedStandardError() {
+    std::cerr.flush();
+    std::fflush(stderr);
+    if (saved_ >= 0) {
+      ::dup2(saved_, 2);
+      ::close(saved_);
+    }
+  }
+  MutedStandardError(const MutedStandardError&) = delete;
+  MutedStandardError& operator=(const MutedStandardError&) = delete;
+
+ private:
+  int saved_ = -1;
+};
+
+Eigen::Vector3d vector(const ignition::math::Vector3d& v) { return {v.X(), v.Y(), v.Z()}; }
+
+/// x_outer = rotation * x_inner + origin.
+struct Frame {
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+};
+
+Frame frame(const ignition::math::Pose3d& pose) {
+  const auto& q = pose.Rot();
+  return {Eigen::Quaterniond(q.W(), q.X(), q.Y(), q.Z()).normalized().toRotationMatrix(), vector(pose.Pos())};
+}
+
+class SdformatReader {
+ public:
+  explicit SdformatReader(std::string path) : path_(std::move(path)) {}
+
+  ImportedNetwork read(const sdf::Root& root, const sdf::Errors& errors) {
+    if (!errors.empty()) fail(errors.front());
+    std::vector<std::pair<const sdf::Model*, Frame>> models;
+    std::string name;
+    if (const sdf::Model* single = root.Model()) {
+      models.push_back({single, Frame{}});
+      name = single->Name();
+    } else {
+      for (std::uint64_t w = 0; w < root.WorldCount(); ++w) {
+        const sdf::World* world = root.WorldByIndex(w);
+        if (name.empty()) name = world->Name();
+        for (std::uint64_t m = 0; m < world->ModelCount(); ++m) {
+          const sdf::Model* model = world->ModelByIndex(m);
+          ignition::math::Pose3d pose;
+          const sdf::Errors e = model->SemanticPose().Resolve(pose, "world");
+          if (!e.empty()) fail(e.front());
+          models.push_back({model, frame(pose)});
+          world_ = true;  // several models in a world: each link's name is scoped by its model
+        }
+      }
+    }
+    if (models.empty()) throw InputError({path_, 1, 1}, "the file holds no <model>");
+    NetworkBuilder builder(path_, name, "m");  // SDFormat lengths are metres
+    for (const auto& [model, placed] : models) read_model(builder, *model, placed, world_ ? model->Name() + "::" : "");
+    if (grounded_.empty()) grounded_ = ground_candidate_;
+    builder.set_ground(grounded_);
+    ImportedNetwork out{builder.finish(), {}};
+    return out;
+  }
+
+ private:
+  [[noreturn]] void fail(const sdf::Error& error) const {
+    const std::string file = error.FilePath().value_or("");
+    throw InputError({file.empty() ? path_ : file, error.LineNumber().value_or(0), error.LineNumber() ? 1 : 0}, error.Message());
+  }
+
+  SourceLocation where(const sdf::ElementPtr& element) const {
+    if (!element) return {path_, 0, 0};
+    const auto line = element->LineNumber();
+    return {element->FilePath().empty() ? path_ : element->FilePath(), line.value_or(0), line ? 1 : 0};
+  }
+
+  void read_model(NetworkBuilder& builder, const sdf::Model& model, const Frame& placed, const std::string& scope) {
+    for (std::uint64_t l = 0; l < model.LinkCount(); ++l) builder.body(scope + model.LinkByIndex(l)->Name());
+    if (ground_candidate_.empty() && !model.CanonicalLinkName().empty()) ground_candidate_ = scope + model.CanonicalLinkName();
+    for (std::uint64_t j = 0; j < model.JointCount(); ++j) read_joint(builder, *model.JointByIndex(j), placed, scope);
+    for (std::uint64_t m = 0; m < model.ModelCount(); ++m) {
+      const sdf::Model* nested = model.ModelByIndex(m);
+      ignition::math::Pose3d pose;
+      const sdf::Errors e = nested->SemanticPose().Resolve(pose, "__model__");
+      if (!e.empty()) fail(e.front());
+      const Frame inner = frame(pose);
+      read_model(builder, *nested, {placed.rotation * inner.rotation, placed.rotation * inner.origin + placed.origin},
+                 scope + nested->Name() + "::");
+    }
+  }
+
+  std::string link(const sdf::Joint& joint, bool parent, const std::string& scope) {
+    std::string name;
+    const sdf::Errors e = parent ? joint.ResolveParentLink(name) : joint.ResolveChildLink(name);
+    if (!e.empty()) fail(e.front());
+    if (name == "world") {
+      grounded_ = "world";
+      return name;
+    }
+    return scope + name;
+  }
+
+  Eigen::Vector3d axis(const sdf::Joint& joint, unsigned index, const Frame& placed) const {
+    const sdf::JointAxis* a = joint.Axis(index);
+    if (!a) throw InputError(where(joint.Element()), fmt::format("joint '{}' needs an <axis{}>", joint.Name(), index ? "2" : ""));
+    ignition::math::Vector3d xyz;
+    const sdf::Errors e = a->ResolveXyz(xyz, "__model__");
+    if (!e.empty()) fail(e.front());
+    return placed.rotation * vector(xyz);
+  }
+
+  void read_joint(NetworkBuilder& builder, const sdf::Joint& joint, const Frame& placed, const std::string& scope) {
+    ignition::math::Pose3d pose;
+    const sdf::Errors e = joint.SemanticPose().Resolve(pose, "__model__");
+    if (!e.empty()) fail(e.front());
+    const Frame f = frame(pose);
+    JointGeometry g;
+    g.point = placed.rotation * f.origin + placed.origin;
+    screw::CouplingType type = screw::CouplingType::rigid;
+    switch (joint.Type()) {
+      case sdf::JointType::REVOLUTE:
+      case sdf::JointType::CONTINUOUS:
+        type = screw::CouplingType::revolute;
+        g.axis = axis(joint, 0, placed);
+        break;
+      case sdf::JointType::PRISMATIC:
+        type = screw::CouplingType::prismatic;
+        g.axis = axis(joint, 0, placed);
+        break;
+      case sdf::JointType::SCREW:
+        // SDFormat's thread_pitch is in radians per length; kinestat's pitch is length per radian.
+        type = screw::CouplingType::helical;
+        g.axis = axis(joint, 0, placed);
+        if (joint.ThreadPitch() == 0.0)
+          throw InputError(where(joint.Element()), fmt::format("screw joint '{}' has thread_pitch 0", joint.Name()));
+        g.pitch = 1.0 / joint.ThreadPitch();
+        break;
+      case sdf::JointType::UNIVERSAL:
+      case sdf::JointType::REVOLUTE2:
+        type = screw::CouplingType::universal;
+        g.axis = axis(joint, 0, placed);
+        g.axis2 = axis(joint, 1, placed);
+        break;
+      case sdf::JointType::BALL: type = screw::CouplingType::spherical; break;
+      case sdf::JointType::FIXED: type = screw::CouplingType::rigid; break;
+      case sdf::JointType::GEARBOX:
+      case sdf::JointType::INVALID:
+        throw InputError(where(joint.Element()), fmt::format("joint '{}': gearbox joints couple two rotations by a ratio, "
+                                                             "which a coupling network cannot express", joint.Name()));
+    }
+    builder.couple(scope + joint.Name(), type, link(joint, true, scope), link(joint, false, scope), g, where(joint.Element()));
+  }
+
+  std::string path_;
+  bool world_ = false;
+  std::string grounded_, ground_candidate_;
+};
+
+}  // namespace
+
+bool sdformat_reader_built_in() { return true; }
+
+// libsdformat reports malformed XML only as "Unable to read file" (the line goes to its
+// console), and tries a URDF conversion on other roots: check both first, with positions.
+void check_xml(const std::string& path, const std::string& text) {
+#if KINESTAT_HAVE_TINYXML2
+  tinyxml2::XMLDocument document;
+  if (document.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS)
+    throw InputError({path, document.ErrorLineNum(), 1}, fmt::format("malformed XML: {}", document.ErrorStr()));
+#endif
+  if (xml_root_name(text) != "sdf") throw InputError({path, 1, 1}, "an SDFormat file has an <sdf> root element");
+}
+
+ImportedNetwork read_sdformat(const std::string& path) {
+  check_xml(path, read_text_file(path));
+  sdf::Root root;
+  sdf::Errors errors;
+  {
+    const MutedStandardError muted;
+    errors = root.Load(path);
+  }
+  return SdformatReader(path).read(root, errors);
+}
+
+ImportedNetwork parse_sdformat(const std::string& path, const std::string& text) {
+  check_xml(path, text);
+  sdf::Root root;
+  sdf::Errors errors;
+  {
+    const MutedStandardError muted;
+    errors = root.LoadSdfString(text);
+  }
+  return SdformatReader(path).read(root, errors);
+}
+
+#else
+
+bool sdformat_reader_built_in() { return false; }
+
+ImportedNetwork read_sdformat(const std::string& path) {
+  throw InputError({path, 0, 0}, "SDFormat is not built in: rebuild kinestat with libsdformat-dev installed (docs/formats.md)");
+}
+
+ImportedNetwork parse_sdformat(const std::string& path, const std::string&) { return read_sdformat(path); }
+
+#endif
+
+}  // namespace kinestat::io

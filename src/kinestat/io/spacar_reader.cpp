@@ -1,0 +1,509 @@
+#include "kinestat/io/spacar_reader.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <set>
+
+#include "kinestat/io/input_error.hpp"
+#include "kinestat/io/spacar_format.hpp"
+#include "kinestat/io/text_file.hpp"
+
+namespace kinestat::io {
+
+using framework::CoordinateRole;
+using framework::DeformationRole;
+using framework::Element;
+using framework::ElementType;
+using framework::FrameworkModel;
+using framework::Node;
+
+namespace {
+
+/// Largest node or element number accepted: keeps every count far from overflow.
+constexpr long kMaxNumber = 100'000'000;
+/// A local y direction closer than this (sine of the angle) to the beam axis is parallel.
+constexpr double kParallel = 1e-9;
+/// An element shorter than this fraction of the model's characteristic length has zero length.
+constexpr double kZeroLength = 1e-12;
+
+struct Token {
+  std::string text;
+  int line = 0, column = 0;
+};
+
+/// One keyword and its numbers (continuation lines that start with a number are appended).
+struct Record {
+  Token keyword;
+  std::vector<Token> values;
+};
+
+std::string upper(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return text;
+}
+
+bool starts_number(const std::string& text) {
+  const char c = text[0];
+  return std::isdigit(static_cast<unsigned char>(c)) || c == '-' || c == '+' || c == '.';
+}
+
+// What the keywords after END / HALT are about, for the one-line notice.
+std::string ignored_summary(const std::set<std::string>& keywords) {
+  std::string list;
+  for (const auto& k : keywords) list += (list.empty() ? "" : " ") + k;
+  return list;
+}
+
+class SpacarReader {
+ public:
+  SpacarReader(std::string path, const std::string& text) : path_(std::move(path)) { tokenize(text); }
+
+  SpacarImport read() {
+    // SPACAR files have no title: the model is named after the file.
+    model_.name = path_.substr(path_.find_last_of("/\\") == std::string::npos ? 0 : path_.find_last_of("/\\") + 1);
+    decide_dimension();
+    for (const Record& r : records_)
+      if (r.keyword.text == "X") read_position(r);
+    for (const Record& r : records_) read_element(r);
+    if (elements_.empty()) fail(end_, "no elements: a SPACAR model needs BEAM, BEAMW, TRUSS, PLBEAM or PLTRUSS lines");
+    build_nodes();
+    build_elements();
+    for (const Record& r : records_) read_role(r);
+    if (!warped_.empty()) {
+      notices_.push_back(fmt::format("{}: note: BEAMW element(s) {} read as BEAM: warping nodes and warping deformations "
+                                     "(7, 8) have no counterpart in kinestat and are ignored",
+                                     path_, warped_));
+    }
+    if (!ignored_.empty()) {
+      notices_.push_back(fmt::format("{}: note: ignored after the kinematic part (line {}): {} (stiffness, mass, loads, "
+                                     "solver steps and visualisation have no kinematic meaning)",
+                                     path_, end_.line, ignored_summary(ignored_)));
+    }
+    return {std::move(model_), std::move(notices_)};
+  }
+
+ private:
+  [[noreturn]] void fail(const Token& at, const std::string& problem) const {
+    throw InputError({path_, at.line, at.column}, problem);
+  }
+
+  void tokenize(const std::string& text) {
+    if (text.size() > kMaxTextFileBytes)
+      throw InputError({path_, 1, 1}, fmt::format("file is larger than the {} MiB limit", kMaxTextFileBytes >> 20));
+    bool ended = false;
+    int line = 0;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+      std::size_t stop = text.find('\n', start);
+      if (stop == std::string::npos) stop = text.size();
+      ++line;
+      std::vector<Token> tokens;
+      for (std::size_t i = start; i < stop;) {
+        const unsigned char c = static_cast<unsigned char>(text[i]);
+        if (c == '#') break;  // comment to the end of the line
+        if (c == ' ' || c == '\t' || c == '\r' || c == ',') {
+          ++i;
+          continue;
+        }
+        if (c < 0x20 || c >= 0x7f)
+          throw InputError({path_, line, static_cast<int>(i - start) + 1},
+                           "unexpected character: a SPACAR file holds ASCII keywords, numbers and '#' comments");
+        std::size_t j = i;
+        while (j < stop && text[j] != ' ' && text[j] != '\t' && text[j] != '\r' && text[j] != ',' && text[j] != '#') {
+          const unsigned char d = static_cast<unsigned char>(text[j]);
+          if (d < 0x20 || d >= 0x7f)
+            throw InputError({path_, line, static_cast<int>(j - start) + 1},
+                             "unexpected character: a SPACAR file holds ASCII keywords, numbers and '#' comments");
+          ++j;
+        }
+        tokens.push_back({text.substr(i, j - i), line, static_cast<int>(i - start) + 1});
+        i = j;
+      }
+      start = stop + 1;
+      if (tokens.empty()) continue;
+      if (ended) {
+        // After END / HALT only the first word of each line is kept, for the notice.
+        const std::string word = upper(tokens[0].text);
+        if (!starts_number(word) && word != "END" && word != "HALT" && ignored_.size() < 64) ignored_.insert(word);
+        continue;
+      }
+      if (starts_number(tokens[0].text)) {
+        if (records_.empty()) fail(tokens[0], "expected a keyword (X, BEAM, ...) before numbers");
+        auto& values = records_.back().values;
+        values.insert(values.end(), tokens.begin(), tokens.end());
+        continue;
+      }
+      tokens[0].text = upper(tokens[0].text);
+      if (tokens[0].text == "END" || tokens[0].text == "HALT") {
+        ended = true;
+        end_ = tokens[0];
+        continue;
+      }
+      records_.push_back({tokens[0], {tokens.begin() + 1, tokens.end()}});
+    }
+    if (!ended) end_ = {"", line, 1};
+  }
+
+  long integer(const Token& token, const std::string& what) const {
+    long value = 0;
+    const char* first = token.text.data();
+    const char* last = first + token.text.size();
+    if (*first == '+') ++first;
+    const auto [ptr, ec] = std::from_chars(first, last, value);
+    if (ec != std::errc() || ptr != last || value < 1 || value > kMaxNumber)
+      fail(token, fmt::format("expected {} (a whole number from 1 to {}), found '{}'", what, kMaxNumber, token.text));
+    return value;
+  }
+
+  double real(const Token& token, const std::string& what) const {
+    double value = 0;
+    const char* first = token.text.data();
+    const char* last = first + token.text.size();
+    if (*first == '+') ++first;
+    const auto [ptr, ec] = std::from_chars(first, last, value);
+    if (ec != std::errc() || ptr != last || !std::isfinite(value))
+      fail(token, fmt::format("expected {} (a finite number), found '{}'", what, token.text));
+    return value;
+  }
+
+  void expect_count(const Record& r, std::initializer_list<std::size_t> counts, const std::string& layout) const {
+    if (std::find(counts.begin(), counts.end(), r.values.size()) != counts.end()) return;
+    const Token& at = r.values.empty() ? r.keyword : r.values.back();
+    fail(at, fmt::format("{} expects {}; found {} number(s)", r.keyword.text, layout, r.values.size()));
+  }
+
+  void decide_dimension() {
+    const Token* spatial = nullptr;
+    const Token* planar = nullptr;
+    for (const Record& r : records_) {
+      const auto type = spacar::element_keyword(r.keyword.text);
+      if (!type) continue;
+      if (type->planar && !planar) planar = &r.keyword;
+      if (!type->planar && !spatial) spatial = &r.keyword;
+    }
+    if (spatial && planar) {
+      const Token& later = spatial->line > planar->line ? *spatial : *planar;
+      fail(later, fmt::format("{} mixes planar and spatial elements ({} on line {}, {} on line {})", later.text,
+                              planar->text, planar->line, spatial->text, spatial->line));
+    }
+    model_.dimension = planar ? 2 : 3;
+  }
+
+  void read_position(const Record& r) {
+    const std::size_t d = static_cast<std::size_t>(model_.dimension);
+    if (model_.dimension == 2) expect_count(r, {3, 4}, "a node number and its coordinates x y (z = 0)");
+    else expect_count(r, {4}, "a node number and its coordinates x y z");
+    const long n = integer(r.values[0], "a node number");
+    if (positions_.count(n)) fail(r.values[0], fmt::format("node {} is defined twice (first on line {})", n, position_lines_[n]));
+    Eigen::Vector3d x = Eigen::Vector3d::Zero();
+    for (std::size_t i = 0; i + 1 < r.values.size(); ++i) x(static_cast<Eigen::Index>(i)) = real(r.values[i + 1], "a coordinate");
+    if (d == 2 && x.z() != 0.0) fail(r.values[3], "a planar model (PLBEAM, PLTRUSS) lies in the plane z = 0");
+    positions_[n] = x;
+    position_lines_[n] = r.keyword.line;
+    position_order_.push_back(n);
+  }
+
+  struct PendingElement {
+    Token keyword;
+    long number = 0;
+    ElementType type = ElementType::truss;
+    bool warping = false;
+    long p = 0, q = 0;    // position nodes
+    long rp = 0, rq = 0;  // orientation nodes (beams)
+    std::optional<Eigen::Vector3d> y;
+    std::vector<Token> node_tokens;
+  };
+
+  long position_node(const Token& t) const {
+    const long n = integer(t, "a position node number");
+    if (!positions_.count(n)) fail(t, fmt::format("node {} has no position: no X line defines it", n));
+    return n;
+  }
+
+  long orientation_node(const Token& t) const {
+    const long n = integer(t, "an orientation node number");
+    if (positions_.count(n))
+      fail(t, fmt::format("node {} is a position node (defined by X on line {}); an orientation node is expected here", n,
+                          position_lines_.at(n)));
+    return n;
+  }
+
+  void read_element(const Record& r) {
+    const std::string& k = r.keyword.text;
+    const auto type = spacar::element_keyword(k);
+    if (!type) {
+      if (k == "X" || spacar::is_role_keyword(k)) return;
+      if (spacar::is_output_keyword(k)) {
+        if (ignored_kinematic_.insert(k).second)
+          notices_.push_back(fmt::format("{}:{}:{}: note: {} controls SPACAR's output and is ignored", path_, r.keyword.line,
+                                         r.keyword.column, k));
+        return;
+      }
+      fail(r.keyword, fmt::format("unsupported SPACAR keyword '{}' in the kinematic part; kinestat reads {} up to END or HALT",
+                                  k, spacar::kSupportedKeywords));
+    }
+    PendingElement e;
+    e.keyword = r.keyword;
+    e.type = type->beam ? ElementType::beam : ElementType::truss;
+    e.warping = k == "BEAMW";
+    if (k == "TRUSS" || k == "PLTRUSS") {
+      expect_count(r, {3}, "an element number and two position nodes");
+    } else if (k == "PLBEAM") {
+      expect_count(r, {5}, "an element number, position and orientation node at p, then at q");
+    } else if (k == "BEAM") {
+      expect_count(r, {5, 8}, "an element number, position and orientation node at p, then at q, and the local y direction");
+    } else {
+      expect_count(r, {7, 10},
+                   "an element number, position, orientation and warping node at p, then at q, and the local y direction");
+    }
+    e.number = integer(r.values[0], "an element number");
+    if (element_lines_.count(e.number))
+      fail(r.values[0], fmt::format("element {} is defined twice (first on line {})", e.number, element_lines_[e.number]));
+    element_lines_[e.number] = r.keyword.line;
+    if (e.type == ElementType::truss) {
+      e.p = position_node(r.values[1]);
+      e.q = position_node(r.values[2]);
+      e.node_tokens = {r.values[1], r.values[2]};
+    } else {
+      const std::size_t stride = e.warping ? 3 : 2;
+      e.p = position_node(r.values[1]);
+      e.rp = orientation_node(r.values[2]);
+      e.q = position_node(r.values[1 + stride]);
+      e.rq = orientation_node(r.values[2 + stride]);
+      e.node_tokens = {r.values[1], r.values[2], r.values[1 + stride], r.values[2 + stride]};
+      if (e.warping) {
+        // Warping nodes carry the warping deformation only; FIX or INPUTX on them is ignored.
+        warping_nodes_.insert(integer(r.values[3], "a warping node number"));
+        warping_nodes_.insert(integer(r.values[6], "a warping node number"));
+        warped_ += (warped_.empty() ? "" : ", ") + std::to_string(e.number);
+      }
+      const std::size_t y_at = 1 + 2 * stride;
+      if (r.values.size() == y_at + 3) {
+        e.y = Eigen::Vector3d(real(r.values[y_at], "the local y direction"), real(r.values[y_at + 1], "the local y direction"),
+                              real(r.values[y_at + 2], "the local y direction"));
+      }
+    }
+    if (e.p == e.q) fail(e.node_tokens.back(), fmt::format("element {} connects node {} to itself", e.number, e.p));
+    if (e.type == ElementType::beam && e.rp == e.rq)
+      fail(e.node_tokens.back(), fmt::format("element {} has the same orientation node {} at both ends", e.number, e.rp));
+    elements_.push_back(std::move(e));
+  }
+
+  // Each orientation node belongs to one position node; the first orientation node seen at a
+  // position rides on that position's node, any further one gets a joint node of its own.
+  void attach(long position, long orientation, const Token& at) {
+    const auto found = orientation_owner_.find(orientation);
+    if (found != orientation_owner_.end()) {
+      if (found->second != position)
+        fail(at, fmt::format("orientation node {} is used at position node {} and at position node {}: an orientation node "
+                             "belongs to one position", orientation, found->second, position));
+      return;
+    }
+    orientation_owner_[orientation] = position;
+    auto& list = orientations_at_[position];
+    list.push_back(orientation);
+  }
+
+  void build_nodes() {
+    for (const PendingElement& e : elements_) {
+      if (e.type != ElementType::beam) continue;
+      attach(e.p, e.rp, e.node_tokens[1]);
+      attach(e.q, e.rq, e.node_tokens[3]);
+    }
+    for (long n : position_order_) {
+      Node node;
+      node.name = spacar_node_name(n);
+      node.position = positions_[n];
+      const auto& list = orientations_at_[n];
+      node.rotational = !list.empty();
+      position_index_[n] = model_.nodes.size();
+      if (!list.empty()) orientation_index_[list[0]] = model_.nodes.size();
+      model_.nodes.push_back(std::move(node));
+    }
+    for (long n : position_order_) {
+      const auto& list = orientations_at_[n];
+      for (std::size_t k = 1; k < list.size(); ++k) {
+        Node node;
+        node.name = spacar_joint_node_name(n, list[k]);
+        node.position = positions_[n];
+        node.rotational = true;
+        orientation_index_[list[k]] = model_.nodes.size();
+        joints_.push_back({position_index_[n], model_.nodes.size()});
+        model_.nodes.push_back(std::move(node));
+      }
+    }
+  }
+
+  void build_elements() {
+    const double length = framework::characteristic_length(model_);
+    for (const PendingElement& e : elements_) {
+      Element element;
+      element.name = std::to_string(e.number);
+      element.type = e.type;
+      const std::size_t p = e.type == ElementType::beam ? orientation_index_.at(e.rp) : position_index_.at(e.p);
+      const std::size_t q = e.type == ElementType::beam ? orientation_index_.at(e.rq) : position_index_.at(e.q);
+      element.nodes = {p, q};
+      const Eigen::Vector3d axis = model_.nodes[q].position - model_.nodes[p].position;
+      if (!(axis.norm() > kZeroLength * length))
+        fail(e.node_tokens.back(), fmt::format("zero-length element {}: nodes {} and {} coincide", e.number, e.p, e.q));
+      const Eigen::Vector3d x = axis.normalized();
+      if (e.type == ElementType::beam) {
+        if (model_.dimension == 2) {
+          element.frame << x, Eigen::Vector3d::UnitZ().cross(x), Eigen::Vector3d::UnitZ();
+        } else {
+          // SPACAR Light's default local y is the global y axis.
+          const Eigen::Vector3d given = e.y.value_or(Eigen::Vector3d::UnitY());
+          const Eigen::Vector3d across = given - given.dot(x) * x;
+          if (!(given.norm() > 0) || !(across.norm() > kParallel * given.norm()))
+            fail(e.keyword, fmt::format("element {}: the local y direction ({}, {}, {}) is parallel to the element axis "
+                                        "from node {} to node {}", e.number, given.x(), given.y(), given.z(), e.p, e.q));
+          const Eigen::Vector3d y = across.normalized();
+          element.frame << x, y, x.cross(y);
+        }
+      }
+      element.roles.assign(framework::deformation_count(model_.dimension, element), DeformationRole::fixed);
+      element_index_[e.number] = model_.elements.size();
+      element_types_.push_back(&e);
+      model_.elements.push_back(std::move(element));
+    }
+    // A position shared by several orientation nodes is a joint: the positions stay together,
+    // the orientations are free relative to each other (a spherical joint in 3-D, a pin in 2-D).
+    for (const auto& [a, b] : joints_) {
+      Element joint;
+      joint.name = "joint " + model_.nodes[b].name;
+      joint.type = ElementType::rigid_body;
+      joint.nodes = {a, b};
+      joint.roles.assign(framework::deformation_count(model_.dimension, joint), DeformationRole::fixed);
+      const std::size_t translations = model_.dimension == 2 ? 2 : 3;
+      for (std::size_t k = translations; k < joint.roles.size(); ++k) joint.roles[k] = DeformationRole::released;
+      model_.elements.push_back(std::move(joint));
+    }
+  }
+
+  // DYNE, RLSE and INPUTE (deformations of an element), FIX and INPUTX (nodal coordinates).
+  void read_role(const Record& r) {
+    const std::string& k = r.keyword.text;
+    if (!spacar::is_role_keyword(k)) return;
+    if (r.values.empty()) fail(r.keyword, fmt::format("{} expects a{} number", k, k == "FIX" || k == "INPUTX" ? " node" : "n element"));
+    if (k == "FIX" || k == "INPUTX") return read_coordinates(r, k == "FIX" ? CoordinateRole::fixed : CoordinateRole::independent);
+    const long number = integer(r.values[0], "an element number");
+    const auto found = element_index_.find(number);
+    if (found == element_index_.end()) fail(r.values[0], fmt::format("{}: there is no element {}", k, number));
+    Element& element = model_.elements[found->second];
+    const PendingElement& pending = *element_types_[found->second];
+    const DeformationRole role =
+        k == "RLSE" ? DeformationRole::released : (k == "INPUTE" ? DeformationRole::independent : DeformationRole::fixed);
+    const std::size_t count = element.roles.size();
+    const std::size_t spacar_count = pending.warping ? 8 : count;
+    std::vector<std::size_t> list;
+    if (r.values.size() == 1) {
+      for (std::size_t d = 0; d < count; ++d) list.push_back(d);  // no numbers: every deformation
+    }
+    for (std::size_t i = 1; i < r.values.size(); ++i) {
+      const long d = integer(r.values[i], "a deformation number");
+      if (static_cast<std::size_t>(d) > spacar_count)
+        fail(r.values[i], fmt::format("element {} ({}) has deformations 1 to {}, found {}", number, pending.keyword.text,
+                                      spacar_count, d));
+      if (static_cast<std::size_t>(d) > count) continue;  // a warping deformation of BEAMW
+      list.push_back(static_cast<std::size_t>(d - 1));
+    }
+    for (std::size_t d : list) {
+      auto& seen = deformation_keyword_[{number, d}];
+      if (!seen.empty() && seen != k)
+        fail(r.keyword, fmt::format("deformation {} of element {} is both {} and {}", d + 1, number, seen, k));
+      seen = k;
+      element.roles[d] = role;
+    }
+  }
+
+  void read_coordinates(const Record& r, CoordinateRole role) {
+    const std::string& k = r.keyword.text;
+    const long n = integer(r.values[0], "a node number");
+    std::vector<int> slots;
+    Node* node = nullptr;
+    std::vector<int> available;  // SPACAR coordinate number - 1 -> kinestat slot (-1: none)
+    if (const auto p = position_index_.find(n); p != position_index_.end()) {
+      node = &model_.nodes[p->second];
+      available = model_.dimension == 2 ? std::vector<int>{0, 1} : std::vector<int>{0, 1, 2};
+    } else if (const auto o = orientation_index_.find(n); o != orientation_index_.end()) {
+      node = &model_.nodes[o->second];
+      // Spatial orientation nodes are Euler parameters λ0..λ3: λ1, λ2, λ3 follow the rotations
+      // about x, y, z (SPACAR Light writes INPUTX n 4 for rot_x... see docs/formats.md).
+      available = model_.dimension == 2 ? std::vector<int>{5} : std::vector<int>{-1, 3, 4, 5};
+    } else if (warping_nodes_.count(n)) {
+      if (ignored_kinematic_.insert("warping " + k).second)
+        notices_.push_back(fmt::format("{}:{}:{}: note: {} of warping node {} ignored (warping is not modelled)", path_,
+                                       r.keyword.line, r.keyword.column, k, n));
+      return;
+    } else {
+      fail(r.values[0], fmt::format("{}: node {} is neither an X position node nor an orientation node of a beam", k, n));
+    }
+    if (r.values.size() == 1) {
+      for (int s : available)
+        if (s >= 0) slots.push_back(s);
+    }
+    for (std::size_t i = 1; i < r.values.size(); ++i) {
+      const long c = integer(r.values[i], "a coordinate number");
+      if (static_cast<std::size_t>(c) > available.size())
+        fail(r.values[i], fmt::format("node {} has coordinates 1 to {}, found {}", n, available.size(), c));
+      const int slot = available[static_cast<std::size_t>(c - 1)];
+      if (slot < 0) {
+        notices_.push_back(fmt::format("{}:{}:{}: note: {} of Euler parameter λ0 of node {} has no kinematic meaning of its "
+                                       "own and is ignored", path_, r.values[i].line, r.values[i].column, k, n));
+        continue;
+      }
+      slots.push_back(slot);
+    }
+    for (int s : slots) {
+      auto& current = node->roles[static_cast<std::size_t>(s)];
+      if (current != CoordinateRole::dependent && current != role)
+        fail(r.keyword, fmt::format("coordinate {} of node {} is both fixed (FIX) and prescribed (INPUTX)",
+                                    framework::kSlotNames[static_cast<std::size_t>(s)], n));
+      current = role;
+    }
+  }
+
+  std::string path_;
+  std::vector<Record> records_;
+  Token end_;
+  std::set<std::string> ignored_;
+  std::set<std::string> ignored_kinematic_;
+  std::set<long> warping_nodes_;
+  std::vector<std::string> notices_;
+  std::string warped_;
+  FrameworkModel model_;
+  std::map<long, Eigen::Vector3d> positions_;
+  std::map<long, int> position_lines_;
+  std::vector<long> position_order_;
+  std::map<long, int> element_lines_;
+  std::vector<PendingElement> elements_;
+  std::map<long, long> orientation_owner_;
+  std::map<long, std::vector<long>> orientations_at_;
+  std::map<long, std::size_t> position_index_, orientation_index_;
+  std::vector<std::pair<std::size_t, std::size_t>> joints_;
+  std::map<long, std::size_t> element_index_;
+  std::vector<const PendingElement*> element_types_;
+  std::map<std::pair<long, std::size_t>, std::string> deformation_keyword_;
+};
+
+}  // namespace
+
+std::string spacar_node_name(long position) { return std::to_string(position); }
+
+std::string spacar_joint_node_name(long position, long orientation) {
+  return fmt::format("{}r{}", position, orientation);
+}
+
+SpacarImport parse_spacar(const std::string& path, const std::string& text) { return SpacarReader(path, text).read(); }
+
+SpacarImport read_spacar(const std::string& path) { return parse_spacar(path, read_text_file(path)); }
+
+}  // namespace kinestat::io

@@ -1,0 +1,33 @@
+#pragma once
+// Reads the kinematic part of a SPACAR input file (.dat, as written by hand or by SPACAR
+// Light) into a FrameworkModel: X, BEAM, BEAMW, TRUSS, PLBEAM, PLTRUSS, DYNE, RLSE, INPUTE,
+// FIX and INPUTX up to the first END or HALT. How each keyword maps is in docs/formats.md.
+// Every problem is an InputError at file:line:column.
+
+#include <string>
+#include <vector>
+
+#include "kinestat/framework/framework_model.hpp"
+
+namespace kinestat::io {
+
+/// A SPACAR file read into kinestat's framework model, with one line per thing that was
+/// read but has no kinematic meaning (warping, stiffness, loads, visualisation, ...).
+struct SpacarImport {
+  framework::FrameworkModel model;
+  std::vector<std::string> notices;
+};
+
+/// Reads SPACAR input `text` that came from `path` (used in messages only).
+SpacarImport parse_spacar(const std::string& path, const std::string& text);
+
+/// Reads the SPACAR input file at `path`. Throws InputError if it cannot be read.
+SpacarImport read_spacar(const std::string& path);
+
+/// Name of the kinestat node for SPACAR position node `position` ("3"), and of the extra
+/// node that carries orientation node `orientation` at a position whose first orientation
+/// node is another one ("3r8": a joint, see docs/formats.md).
+std::string spacar_node_name(long position);
+std::string spacar_joint_node_name(long position, long orientation);
+
+}  // namespace kinestat::io

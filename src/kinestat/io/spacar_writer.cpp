@@ -1,0 +1,233 @@
+#include "kinestat/io/spacar_writer.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Geometry>
+
+#include <map>
+#include <set>
+
+#include "kinestat/io/input_error.hpp"
+
+namespace kinestat::io {
+
+using framework::CoordinateRole;
+using framework::DeformationRole;
+using framework::Element;
+using framework::ElementType;
+using framework::FrameworkModel;
+
+namespace {
+
+/// Nodes closer than this fraction of the characteristic length coincide (a joint).
+constexpr double kCoincident = 1e-12;
+
+std::string number(double value) { return fmt::format("{}", value == 0.0 ? 0.0 : value); }
+
+class SpacarWriter {
+ public:
+  SpacarWriter(const FrameworkModel& model, const SpacarWriteOptions& options) : model_(model), options_(options) {}
+
+  std::string write() {
+    planar_ = model_.dimension == 2;
+    number_nodes();
+    header();
+    positions();
+    elements();
+    roles(model_, out_);
+    if (options_.proposed) proposal();
+    out_ += "\nEND\nHALT\n";
+    return out_;
+  }
+
+ private:
+  [[noreturn]] void refuse(const std::string& problem) const { throw InputError({options_.source, 0, 0}, problem); }
+
+  bool is_joint(const Element& e) const {
+    if (e.type != ElementType::rigid_body || e.nodes.size() != 2) return false;
+    const double length = framework::characteristic_length(model_);
+    if (!((model_.nodes[e.nodes[0]].position - model_.nodes[e.nodes[1]].position).norm() <= kCoincident * length)) return false;
+    const std::size_t translations = planar_ ? 2 : 3;
+    for (std::size_t k = 0; k < e.roles.size(); ++k) {
+      const DeformationRole want = k < translations ? DeformationRole::fixed : DeformationRole::released;
+      if (e.roles[k] != want) return false;
+    }
+    return true;
+  }
+
+  // SPACAR Light's numbering: node i (1-based) has position node 2i−1 and orientation node 2i.
+  // The second node of a joint shares the first node's position node.
+  void number_nodes() {
+    std::vector<std::size_t> owner(model_.nodes.size());
+    for (std::size_t i = 0; i < owner.size(); ++i) owner[i] = i;
+    const auto root = [&](std::size_t i) {
+      while (owner[i] != i) i = owner[i];
+      return i;
+    };
+    for (const Element& e : model_.elements)
+      if (is_joint(e)) owner[root(e.nodes[1])] = root(e.nodes[0]);
+    position_.resize(model_.nodes.size());
+    for (std::size_t i = 0; i < owner.size(); ++i) position_[i] = static_cast<long>(2 * root(i) + 1);
+  }
+
+  long orientation(std::size_t node) const { return static_cast<long>(2 * node + 2); }
+
+  void header() {
+    out_ += fmt::format("# SPACAR input written by kinestat{}\n", options_.source.empty() ? "" : " from " + options_.source);
+    if (!model_.name.empty()) out_ += fmt::format("# model: {}\n", model_.name);
+    out_ += "# Kinematic part only. Node numbering as SPACAR Light: node i has position node 2i-1 and orientation\n"
+            "# node 2i. Deformations not listed under RLSE or INPUTE are rigid; mark flexible ones DYNE.\n\n";
+  }
+
+  void positions() {
+    out_ += "#NODES    Nn    X    Y" + std::string(planar_ ? "" : "    Z") + "\n";
+    for (std::size_t i = 0; i < model_.nodes.size(); ++i) {
+      if (position_[i] != static_cast<long>(2 * i + 1)) continue;  // shares a joint partner's position node
+      const auto& x = model_.nodes[i].position;
+      if (planar_) out_ += fmt::format("X  {:6}  {}  {}  # node {}\n", position_[i], number(x.x()), number(x.y()), model_.nodes[i].name);
+      else out_ += fmt::format("X  {:6}  {}  {}  {}  # node {}\n", position_[i], number(x.x()), number(x.y()), number(x.z()), model_.nodes[i].name);
+    }
+    out_ += "\n";
+  }
+
+  void beam(long element, std::size_t p, std::size_t q, const Eigen::Vector3d& y, const std::string& comment) {
+    used_orientations_.insert(p);
+    used_orientations_.insert(q);
+    if (planar_) {
+      out_ += fmt::format("PLBEAM  {:4}  {:4} {:4}  {:4} {:4}  # {}\n", element, position_[p], orientation(p), position_[q],
+                          orientation(q), comment);
+    } else {
+      out_ += fmt::format("BEAM  {:4}  {:4} {:4}  {:4} {:4}  {}  {}  {}  # {}\n", element, position_[p], orientation(p),
+                          position_[q], orientation(q), number(y.x()), number(y.y()), number(y.z()), comment);
+    }
+  }
+
+  void elements() {
+    out_ += "#ELEMENTS  Ne   Xp   Rp    Xq   Rq" + std::string(planar_ ? "" : "   local y") + "\n";
+    long next = 1;
+    const double length = framework::characteristic_length(model_);
+    for (std::size_t e = 0; e < model_.elements.size(); ++e) {
+      const Element& element = model_.elements[e];
+      if (is_joint(element)) continue;  // expressed by the shared position node
+      number_.push_back(next);
+      const std::size_t p = element.nodes[0];
+      if (element.type == ElementType::truss) {
+        out_ += fmt::format("{}  {:4}  {:4}  {:4}  # element {}\n", planar_ ? "PLTRUSS" : "TRUSS", next, position_[p],
+                            position_[element.nodes[1]], element.name);
+        ++next;
+      } else if (element.type == ElementType::beam) {
+        beam(next++, p, element.nodes[1], element.frame.col(1), "element " + element.name);
+      } else {
+        for (DeformationRole role : element.roles)
+          if (role != DeformationRole::fixed)
+            refuse(fmt::format("rigid body '{}' has released or independent deformations; SPACAR expresses only rigid "
+                               "bodies (as rigid beams) and joints (a shared position node)", element.name));
+        // A rigid body is a star of rigid beams from its reference node.
+        for (std::size_t k = 1; k < element.nodes.size(); ++k) {
+          const std::size_t q = element.nodes[k];
+          const Eigen::Vector3d axis = model_.nodes[q].position - model_.nodes[p].position;
+          if (!(axis.norm() > kCoincident * length))
+            refuse(fmt::format("rigid body '{}': nodes '{}' and '{}' coincide, so no rigid beam can join them", element.name,
+                               model_.nodes[p].name, model_.nodes[q].name));
+          const Eigen::Vector3d x = axis.normalized();
+          const Eigen::Vector3d reference = std::abs(x.z()) < 0.9 ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitX();
+          const Eigen::Vector3d z = (reference - reference.dot(x) * x).normalized();
+          beam(next++, p, q, z.cross(x), fmt::format("rigid body {} ({} to {})", element.name, model_.nodes[p].name,
+                                                     model_.nodes[q].name));
+        }
+      }
+    }
+    out_ += "\n";
+  }
+
+  // RLSE / INPUTE for deformations, FIX / INPUTX for coordinates, of `model` (the model itself
+  // or, for the proposal, only what the proposal adds).
+  void roles(const FrameworkModel& model, std::string& out, const FrameworkModel* base = nullptr, const char* prefix = "") {
+    std::size_t written = 0;
+    for (std::size_t e = 0, n = 0; e < model.elements.size(); ++e) {
+      const Element& element = model.elements[e];
+      if (is_joint(model_.elements[e])) continue;
+      const long number = number_[n++];
+      if (element.type == ElementType::rigid_body) continue;
+      for (const auto& [role, keyword] : {std::pair{DeformationRole::released, "RLSE"}, std::pair{DeformationRole::independent, "INPUTE"}}) {
+        std::string list;
+        for (std::size_t d = 0; d < element.roles.size(); ++d) {
+          const bool is_new = !base || base->elements[e].roles[d] != role;
+          if (element.roles[d] == role && is_new) list += fmt::format(" {}", d + 1);
+        }
+        if (!list.empty()) {
+          out += fmt::format("{}{:<7} {:4} {}  # element {}\n", prefix, keyword, number, list, element.name);
+          ++written;
+        }
+      }
+    }
+    std::vector<std::string> lines;  // joint partners share a position node: no line twice
+    std::set<std::string> seen;
+    const auto add = [&](std::string line) {
+      if (seen.insert(line).second) lines.push_back(std::move(line));
+    };
+    for (std::size_t i = 0; i < model.nodes.size(); ++i) {
+      const auto& node = model.nodes[i];
+      for (const auto& [role, keyword] : {std::pair{CoordinateRole::fixed, "FIX"}, std::pair{CoordinateRole::independent, "INPUTX"}}) {
+        const auto has = [&](int s) {
+          const bool is_new = !base || base->nodes[i].roles[static_cast<std::size_t>(s)] != role;
+          return node.roles[static_cast<std::size_t>(s)] == role && is_new;
+        };
+        const std::vector<int> translations = planar_ ? std::vector<int>{0, 1} : std::vector<int>{0, 1, 2};
+        std::vector<int> chosen;
+        for (int s : translations)
+          if (has(s)) chosen.push_back(s);
+        if (chosen.size() == translations.size() && role == CoordinateRole::fixed) {
+          add(fmt::format("{}FIX     {:4}       # node {} position", prefix, position_[i], node.name));
+        } else {
+          for (int s : chosen)
+            add(fmt::format("{}{:<7} {:4}  {}    # node {} {}", prefix, keyword, position_[i], s + 1, node.name,
+                                     framework::kSlotNames[static_cast<std::size_t>(s)]));
+        }
+        if (!node.rotational || !used_orientations_.count(i)) continue;
+        // Spatial orientation nodes hold Euler parameters λ0..λ3; λ1, λ2, λ3 are numbers 2, 3, 4.
+        const std::vector<int> rotations = planar_ ? std::vector<int>{5} : std::vector<int>{3, 4, 5};
+        chosen.clear();
+        for (int s : rotations)
+          if (has(s)) chosen.push_back(s);
+        if (chosen.size() == rotations.size() && role == CoordinateRole::fixed) {
+          add(fmt::format("{}FIX     {:4}       # node {} orientation", prefix, orientation(i), node.name));
+        } else {
+          for (int s : chosen)
+            add(fmt::format("{}{:<7} {:4}  {}    # node {} {}", prefix, keyword, orientation(i), planar_ ? 1 : s - 1,
+                                     node.name, framework::kSlotNames[static_cast<std::size_t>(s)]));
+        }
+      }
+    }
+    for (const auto& line : lines) out += line + "\n";
+    written += lines.size();
+    if (!base && written) out += "\n";
+    if (base && written == 0) out += fmt::format("{}(nothing to add: the model is exactly constrained)\n", prefix);
+  }
+
+  void proposal() {
+    if (options_.apply_proposal) {
+      out_ += "# kinestat's proposal for exact constraint (applied):\n";
+      roles(*options_.proposed, out_, &model_, "");
+    } else {
+      out_ += "# kinestat's proposal for exact constraint: remove the '# ' and paste these lines above END\n";
+      roles(*options_.proposed, out_, &model_, "# ");
+    }
+  }
+
+  const FrameworkModel& model_;
+  const SpacarWriteOptions& options_;
+  bool planar_ = false;
+  std::string out_;
+  std::vector<long> position_;
+  std::vector<long> number_;  // SPACAR number of each written kinestat element
+  std::set<std::size_t> used_orientations_;
+};
+
+}  // namespace
+
+std::string spacar_text(const FrameworkModel& model, const SpacarWriteOptions& options) {
+  return SpacarWriter(model, options).write();
+}
+
+}  // namespace kinestat::io

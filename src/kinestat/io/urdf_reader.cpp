@@ -1,0 +1,295 @@
+#include "kinestat/io/urdf_reader.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Geometry>
+
+#include <charconv>
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "kinestat/io/text_file.hpp"
+
+#if KINESTAT_HAVE_TINYXML2
+#include <tinyxml2.h>
+#endif
+
+namespace kinestat::io {
+
+#if KINESTAT_HAVE_TINYXML2
+
+namespace {
+
+using tinyxml2::XMLElement;
+
+/// A rigid transform: x_world = rotation * x_local + origin.
+struct Frame {
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+  Frame then(const Frame& local) const { return {rotation * local.rotation, rotation * local.origin + origin}; }
+};
+
+struct UrdfJoint {
+  const XMLElement* element = nullptr;
+  std::string name, type, parent, child;
+  Frame origin;  ///< joint frame relative to the parent link frame
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitX();
+  bool loop = false;  ///< closes a loop (its child already has a parent, or a <loop_joint>)
+};
+
+class UrdfReader {
+ public:
+  UrdfReader(std::string path, const std::string& text) : path_(std::move(path)), text_(text) {}
+
+  ImportedNetwork read() {
+    tinyxml2::XMLDocument document;
+    if (document.Parse(text_.data(), text_.size()) != tinyxml2::XML_SUCCESS)
+      throw InputError({path_, document.ErrorLineNum(), 1}, fmt::format("malformed XML: {}", document.ErrorStr()));
+    const XMLElement* robot = document.RootElement();
+    if (!robot || std::string(robot->Name()) != "robot")
+      throw InputError({path_, robot ? robot->GetLineNum() : 1, 1}, "a URDF file has a <robot> root element");
+    NetworkBuilder builder(path_, attribute_or(robot, "name", ""), "m");  // URDF lengths are metres
+    std::set<std::string> ignored;
+    for (const XMLElement* e = robot->FirstChildElement(); e; e = e->NextSiblingElement()) {
+      const std::string tag = e->Name();
+      if (tag == "link") read_link(e);
+      else if (tag == "joint") joints_.push_back(read_joint(e, false));
+      else if (tag == "loop_joint") joints_.push_back(read_loop_joint(e));
+      else if (tag == "transmission") transmissions_.push_back(attribute_or(e, "name", "(unnamed)"));
+      else ignored.insert(tag);
+    }
+    if (links_.empty()) fail(robot, "the robot has no <link>");
+    for (const UrdfJoint& j : joints_)
+      for (const std::string* link : {&j.parent, &j.child})
+        if (!links_.count(*link)) fail(j.element, fmt::format("joint '{}' names link '{}', which is not a <link> of the robot", j.name, *link));
+    build_tree();
+    for (const std::string& name : link_order_) builder.body(name);
+    builder.set_ground(root_);
+    for (const UrdfJoint& j : joints_) couple(builder, j);
+
+    ImportedNetwork out{builder.finish(), {}};
+    if (!mimics_.empty())
+      out.notices.push_back(fmt::format("{}: note: mimic joint(s) {} read as independent joints: a mimic relation is a "
+                                        "control law, not a constraint of the mechanism", path_, mimics_));
+    if (!transmissions_.empty()) {
+      std::string names;
+      for (const auto& t : transmissions_) names += (names.empty() ? "" : ", ") + t;
+      out.notices.push_back(fmt::format("{}: note: transmission(s) {} ignored (actuation, not kinematics)", path_, names));
+    }
+    if (!ignored.empty()) {
+      std::string names;
+      for (const auto& t : ignored) names += (names.empty() ? "<" : ", <") + t + ">";
+      out.notices.push_back(fmt::format("{}: note: ignored elements without kinematic meaning: {}", path_, names));
+    }
+    return out;
+  }
+
+ private:
+  // tinyxml2 knows lines only; the column is that of the element's '<' on its line.
+  SourceLocation where(const tinyxml2::XMLNode* node) const {
+    const int line = node->GetLineNum();
+    int column = 1;
+    if (const XMLElement* e = node->ToElement()) {
+      std::size_t start = 0;
+      for (int l = 1; l < line && start != std::string::npos; ++l) {
+        start = text_.find('\n', start);
+        if (start != std::string::npos) ++start;
+      }
+      if (start != std::string::npos) {
+        const std::size_t stop = text_.find('\n', start);
+        const std::size_t at = text_.find(std::string("<") + e->Name(), start);
+        if (at != std::string::npos && (stop == std::string::npos || at < stop)) column = static_cast<int>(at - start) + 1;
+      }
+    }
+    return {path_, line, column};
+  }
+
+  [[noreturn]] void fail(const tinyxml2::XMLNode* at, const std::string& problem) const { throw InputError(where(at), problem); }
+
+  static std::string attribute_or(const XMLElement* e, const char* name, const std::string& fallback) {
+    const char* value = e->Attribute(name);
+    return value ? value : fallback;
+  }
+
+  std::string required(const XMLElement* e, const char* name) const {
+    const char* value = e->Attribute(name);
+    if (!value || !*value) fail(e, fmt::format("<{}> needs a '{}' attribute", e->Name(), name));
+    return value;
+  }
+
+  const XMLElement* required_child(const XMLElement* e, const char* name, const std::string& what) const {
+    const XMLElement* child = e->FirstChildElement(name);
+    if (!child) fail(e, fmt::format("{} needs a <{}> element", what, name));
+    return child;
+  }
+
+  Eigen::Vector3d vector(const XMLElement* e, const char* name, const Eigen::Vector3d& fallback) const {
+    const char* value = e->Attribute(name);
+    if (!value) return fallback;
+    Eigen::Vector3d v;
+    const char* p = value;
+    const char* end = value + std::char_traits<char>::length(value);
+    for (int i = 0; i < 3; ++i) {
+      while (p < end && (*p == ' ' || *p == '\t' || *p == '\n' || *p == '\r')) ++p;
+      double x = 0;
+      const auto [next, ec] = std::from_chars(p, end, x);
+      if (ec != std::errc() || !std::isfinite(x))
+        fail(e, fmt::format("attribute {}=\"{}\" of <{}> must be three finite numbers", name, value, e->Name()));
+      v(i) = x;
+      p = next;
+    }
+    while (p < end && (*p == ' ' || *p == '\t' || *p == '\n' || *p == '\r')) ++p;
+    if (p != end) fail(e, fmt::format("attribute {}=\"{}\" of <{}> must be three finite numbers", name, value, e->Name()));
+    return v;
+  }
+
+  // URDF's origin: translation xyz, then fixed-axis roll, pitch, yaw: R = Rz(y) Ry(p) Rx(r).
+  Frame frame(const XMLElement* e) const {
+    Frame f;
+    if (!e) return f;
+    const Eigen::Vector3d rpy = vector(e, "rpy", Eigen::Vector3d::Zero());
+    f.rotation = (Eigen::AngleAxisd(rpy.z(), Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(rpy.y(), Eigen::Vector3d::UnitY()) *
+                  Eigen::AngleAxisd(rpy.x(), Eigen::Vector3d::UnitX()))
+                     .toRotationMatrix();
+    f.origin = vector(e, "xyz", Eigen::Vector3d::Zero());
+    return f;
+  }
+
+  void read_link(const XMLElement* e) {
+    const std::string name = required(e, "name");
+    if (!links_.emplace(name, e).second) fail(e, fmt::format("duplicate link name '{}'", name));
+    link_order_.push_back(name);
+  }
+
+  UrdfJoint read_joint(const XMLElement* e, bool loop) {
+    UrdfJoint j;
+    j.element = e;
+    j.loop = loop;
+    j.name = required(e, "name");
+    j.type = required(e, "type");
+    j.parent = required(required_child(e, "parent", fmt::format("joint '{}'", j.name)), "link");
+    j.child = required(required_child(e, "child", fmt::format("joint '{}'", j.name)), "link");
+    j.origin = frame(e->FirstChildElement("origin"));
+    if (const XMLElement* axis = e->FirstChildElement("axis")) j.axis = vector(axis, "xyz", Eigen::Vector3d::UnitX());
+    if (e->FirstChildElement("mimic")) mimics_ += (mimics_.empty() ? "" : ", ") + j.name;
+    return j;
+  }
+
+  // Drake's loop joint: <link1 link= xyz= rpy=/> gives the joint frame on the first link,
+  // <link2 .../> the same frame on the second (not needed: the mechanism is assembled).
+  UrdfJoint read_loop_joint(const XMLElement* e) {
+    UrdfJoint j;
+    j.element = e;
+    j.loop = true;
+    j.name = required(e, "name");
+    j.type = required(e, "type");
+    const XMLElement* link1 = required_child(e, "link1", fmt::format("loop joint '{}'", j.name));
+    const XMLElement* link2 = required_child(e, "link2", fmt::format("loop joint '{}'", j.name));
+    j.parent = required(link1, "link");
+    j.child = required(link2, "link");
+    j.origin = frame(link1);
+    if (const XMLElement* axis = e->FirstChildElement("axis")) j.axis = vector(axis, "xyz", Eigen::Vector3d::UnitX());
+    return j;
+  }
+
+  // In file order, the first joint that names a link as child is its tree joint; any later
+  // one closes a loop. The root is the one link that is nobody's child.
+  void build_tree() {
+    std::map<std::string, std::size_t> tree_joint;
+    for (std::size_t k = 0; k < joints_.size(); ++k) {
+      UrdfJoint& j = joints_[k];
+      if (j.loop) continue;
+      if (!tree_joint.emplace(j.child, k).second) j.loop = true;
+    }
+    std::vector<std::string> roots;
+    for (const std::string& name : link_order_)
+      if (!tree_joint.count(name)) roots.push_back(name);
+    if (roots.empty()) fail(joints_.front().element, "every link is the child of a joint: the tree has no root link (the ground)");
+    if (roots.size() > 1) {
+      fail(links_.at(roots[1]), fmt::format("links '{}' and '{}' are both roots (neither is the child of a joint): a URDF "
+                                            "tree has one root, the ground", roots[0], roots[1]));
+    }
+    root_ = roots[0];
+    frames_[root_] = Frame{};
+    // Resolve frames from the root down; a joint whose parent is not resolved yet waits.
+    bool progress = true;
+    while (progress) {
+      progress = false;
+      for (const auto& [child, k] : tree_joint) {
+        if (frames_.count(child)) continue;
+        const UrdfJoint& j = joints_[k];
+        const auto parent = frames_.find(j.parent);
+        if (parent == frames_.end()) continue;
+        frames_[child] = parent->second.then(j.origin);
+        progress = true;
+      }
+    }
+    for (const auto& [child, k] : tree_joint)
+      if (!frames_.count(child))
+        fail(joints_[k].element, fmt::format("link '{}' is not connected to the root link '{}' by the tree of joints", child, root_));
+  }
+
+  void couple(NetworkBuilder& builder, const UrdfJoint& j) const {
+    const Frame joint = frames_.at(j.parent).then(j.origin);
+    JointGeometry g;
+    g.point = joint.origin;
+    const Eigen::Vector3d axis = joint.rotation * j.axis;
+    screw::CouplingType type;
+    if (j.type == "revolute" || j.type == "continuous") {
+      type = screw::CouplingType::revolute;
+      g.axis = axis;
+    } else if (j.type == "prismatic") {
+      type = screw::CouplingType::prismatic;
+      g.axis = axis;
+    } else if (j.type == "fixed") {
+      type = screw::CouplingType::rigid;
+    } else if (j.type == "floating") {
+      type = screw::CouplingType::free;
+    } else if (j.type == "planar") {
+      type = screw::CouplingType::planar;
+      g.normal = axis;
+    } else if (j.type == "ball" || j.type == "spherical") {
+      type = screw::CouplingType::spherical;
+    } else if (j.type == "universal") {
+      // Drake's universal joint: rotations about the joint frame's x and y axes.
+      type = screw::CouplingType::universal;
+      g.axis = joint.rotation.col(0);
+      g.axis2 = joint.rotation.col(1);
+    } else {
+      fail(j.element, fmt::format("joint '{}' has unknown type '{}'; expected revolute, continuous, prismatic, fixed, floating, "
+                                  "planar, ball or universal", j.name, j.type));
+    }
+    builder.couple(j.name, type, j.parent, j.child, g, where(j.element));
+  }
+
+  std::string path_;
+  const std::string& text_;
+  std::map<std::string, const XMLElement*> links_;
+  std::vector<std::string> link_order_;  // bodies in file order
+  std::vector<UrdfJoint> joints_;
+  std::map<std::string, Frame> frames_;
+  std::string root_;
+  std::string mimics_;
+  std::vector<std::string> transmissions_;
+};
+
+}  // namespace
+
+bool urdf_reader_built_in() { return true; }
+
+ImportedNetwork parse_urdf(const std::string& path, const std::string& text) { return UrdfReader(path, text).read(); }
+
+#else
+
+bool urdf_reader_built_in() { return false; }
+
+ImportedNetwork parse_urdf(const std::string& path, const std::string&) {
+  throw InputError({path, 0, 0}, "URDF is not built in: rebuild kinestat with libtinyxml2-dev installed (docs/formats.md)");
+}
+
+#endif
+
+ImportedNetwork read_urdf(const std::string& path) { return parse_urdf(path, read_text_file(path)); }
+
+}  // namespace kinestat::io

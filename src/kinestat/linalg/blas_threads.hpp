@@ -1,0 +1,12 @@
+#pragma once
+// kinestat's dense kernels (LAPACK's SVD, SuiteSparse's frontal matrices) run on Debian's
+// OpenBLAS. Its thread count is pinned rather than left to the machine.
+
+namespace kinestat::linalg {
+
+/// Pins the number of OpenBLAS threads once per process: KINESTAT_BLAS_THREADS when set to a
+/// positive number, else 1 — machines are often shared, and a fixed count keeps floating-point
+/// results independent of the machine. Called by every routine that uses BLAS.
+void pin_blas_threads();
+
+}  // namespace kinestat::linalg

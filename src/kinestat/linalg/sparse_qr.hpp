@@ -1,0 +1,66 @@
+#pragma once
+// Rank-revealing sparse QR by SuiteSparseQR, called through its own C++ interface rather than
+// Eigen's wrapper: a nested-dissection (METIS) fill-reducing ordering, R and the column
+// permutation kept in SuiteSparse's own arrays (never copied), Q never formed.
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace kinestat::linalg {
+
+/// The R factor as SuiteSparse stores it: compressed columns with 64-bit indices.
+using SparseFactorView = Eigen::Map<const Eigen::SparseMatrix<double, Eigen::ColMajor, std::int64_t>>;
+
+/// A·P = Q·R of an m × n sparse matrix A, Q discarded. Columns whose remaining 2-norm falls to
+/// `threshold` or below during the factorisation (Heath's rule, as in SuiteSparseQR) are dead:
+/// P puts the `rank` live columns first, so R = [R11 R12] with R11 rank × rank upper
+/// triangular and non-singular.
+class SparseQr {
+ public:
+  /// Factors `a`; `threshold` is absolute (same units as the entries of `a`).
+  SparseQr(const Eigen::SparseMatrix<double>& a, double threshold);
+  ~SparseQr();
+  SparseQr(const SparseQr&) = delete;
+  SparseQr& operator=(const SparseQr&) = delete;
+  SparseQr(SparseQr&&) noexcept;
+  SparseQr& operator=(SparseQr&&) noexcept;
+
+  Eigen::Index rows() const { return rows_; }
+  Eigen::Index cols() const { return cols_; }
+  Eigen::Index rank() const { return rank_; }
+  /// Column k of R is column permutation()[k] of A: the first rank() are the live columns.
+  const std::vector<Eigen::Index>& permutation() const { return permutation_; }
+  /// R (rank × n) in SuiteSparse's arrays; valid as long as this object lives.
+  SparseFactorView r() const;
+  /// Smallest |R_kk| over the live columns (0 when the rank is 0): the rank decision's evidence.
+  double smallest_pivot() const;
+  /// Peak memory of the factorisation in bytes, as counted by SuiteSparse itself.
+  std::size_t peak_memory() const { return peak_memory_; }
+  /// Live columns of A (a basis of its column space) and dead ones, each in increasing order.
+  std::pair<std::vector<Eigen::Index>, std::vector<Eigen::Index>> live_and_dead_columns() const;
+
+  /// Null vectors of A: for dead columns first, …, first + count − 1 (in the order of P), the
+  /// vector x with x_P = [−R11⁻¹ R12 e_k; e_k], so A x = 0 up to rounding. n × count.
+  Eigen::MatrixXd null_vectors(Eigen::Index first, Eigen::Index count) const;
+
+  /// g − A x with x the least-squares solution of A_live x ≈ g over the live columns (A is the
+  /// matrix factored here, passed again because Q is not kept): g with its component in the
+  /// range of A removed, so a generic g gives a generic vector of the null space of Aᵀ with
+  /// entries of the size of g. Corrected seminormal equations (R11ᵀ R11 x = A_liveᵀ g with one
+  /// refinement step), stable with R alone.
+  Eigen::VectorXd least_squares_residual(const Eigen::SparseMatrix<double>& a, const Eigen::VectorXd& g) const;
+
+ private:
+  struct Factor;
+  std::unique_ptr<Factor> factor_;
+  Eigen::Index rows_ = 0, cols_ = 0, rank_ = 0;
+  std::vector<Eigen::Index> permutation_;
+  std::size_t peak_memory_ = 0;
+};
+
+}  // namespace kinestat::linalg

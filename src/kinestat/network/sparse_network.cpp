@@ -1,0 +1,169 @@
+#include "kinestat/network/sparse_network.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Geometry>
+#include <Eigen/SparseCore>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "kinestat/linalg/sparse_qr.hpp"
+#include "kinestat/linalg/sparse_rank.hpp"
+#include "kinestat/network/analyse_network.hpp"
+#include "kinestat/network/analysis_frame.hpp"
+
+namespace kinestat::network {
+
+namespace {
+
+using Index = Eigen::Index;
+
+// Fixed pseudo-random weights in ±[0.5, 1.5) (a 64-bit mixing hash of the index), so the
+// combination is generic yet the same on every run and machine.
+double weight(Index k) {
+  auto x = static_cast<std::uint64_t>(k) + 0x9e3779b97f4a7c15ULL;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+  x ^= x >> 31;
+  const double unit = static_cast<double>(x >> 11) / 9007199254740992.0;  // [0, 1)
+  return (x & 1U) != 0 ? 0.5 + unit : -0.5 - unit;
+}
+
+// A generic vector of the null space of aᵀ: fixed pseudo-random weights with their component in
+// the range of a removed (qr factors a).
+Eigen::VectorXd generic_left_null_vector(const Eigen::SparseMatrix<double>& a, const linalg::SparseQr& qr) {
+  Eigen::VectorXd g(a.rows());
+  for (Index k = 0; k < g.size(); ++k) g(k) = weight(k);
+  return qr.least_squares_residual(a, g);
+}
+
+int components(int bodies, const std::vector<Coupling>& couplings) {
+  std::vector<int> parent(static_cast<std::size_t>(bodies));
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&parent](int b) {
+    while (parent[static_cast<std::size_t>(b)] != b) b = parent[static_cast<std::size_t>(b)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(b)])];
+    return b;
+  };
+  int count = bodies;
+  for (const auto& c : couplings) {
+    const int a = find(c.from), b = find(c.to);
+    if (a != b) {
+      parent[static_cast<std::size_t>(a)] = b;
+      --count;
+    }
+  }
+  return count;
+}
+
+}  // namespace
+
+SparseNetworkResult analyse_network_sparse(const Model& model, const linalg::RankTolerance& tolerance) {
+  if (model.couplings.empty()) throw ModelError("couplings", -1, "the model has no couplings");
+  SparseNetworkResult r;
+  r.d = model.space.dimension();
+  r.bodies = static_cast<int>(model.bodies.size());
+  r.e = static_cast<int>(model.couplings.size());
+  r.ground = model.ground.value_or(0);
+  if (const int groups = components(r.bodies, model.couplings); groups > 1)
+    throw ModelError("couplings", -1,
+                     fmt::format("the bodies are not all connected by couplings ({} separate groups): analyse each "
+                                 "group as its own model, or add the missing couplings",
+                                 groups));
+  r.l = r.e - r.bodies + 1;
+  const Index d = r.d;
+  // Column block of each body's twist; the ground has none.
+  auto block = [&r, d](int body) -> Index { return body == r.ground ? -1 : (body < r.ground ? body : body - 1) * d; };
+
+  // The conditioned frame of the dense path (centroid, extent), applied in floating point: the
+  // bases are built exactly in the user's frame from its short decimals, while the centroid's
+  // large denominators would make exact arithmetic in the frame itself slow.
+  const AnalysisFrame frame = AnalysisFrame::of(model);
+  const Eigen::Vector3d origin(frame.origin[0].get_d(), frame.origin[1].get_d(), frame.origin[2].get_d());
+  const double scale = frame.scale.get_d();
+  const std::vector<int>& components = model.space.components;
+  std::vector<Eigen::Triplet<double>> entries;
+  std::vector<int> row_coupling;
+  for (std::size_t i = 0; i < model.couplings.size(); ++i) {
+    const Coupling& c = model.couplings[i];
+    screw::CouplingBasis basis;
+    try {
+      basis = screw::coupling_basis(c.type, c.geometry, model.space);
+    } catch (const screw::GeometryError& error) {
+      throw ModelError("couplings", static_cast<int>(i), fmt::format("coupling '{}': {}", c.name, error.what()));
+    }
+    r.F += static_cast<int>(basis.motions.size());
+    for (const auto& action : basis.actions) {
+      const auto row = static_cast<Index>(row_coupling.size());
+      row_coupling.push_back(static_cast<int>(i));
+      // Ray formation (moment at the origin; force): moment about the frame's origin, in
+      // lengths of the frame's scale.
+      Eigen::Matrix<double, 6, 1> full = Eigen::Matrix<double, 6, 1>::Zero();
+      for (Index k = 0; k < d; ++k) full(components[static_cast<std::size_t>(k)]) = action.coordinates[static_cast<std::size_t>(k)].get_d();
+      const Eigen::Vector3d force = full.tail<3>();
+      full.head<3>() = (full.head<3>() - origin.cross(force)) / scale;
+      for (Index k = 0; k < d; ++k) {
+        const double value = full(components[static_cast<std::size_t>(k)]);
+        if (value == 0.0) continue;
+        if (const Index to = block(c.to); to >= 0) entries.emplace_back(row, to + k, value);
+        if (const Index from = block(c.from); from >= 0) entries.emplace_back(row, from + k, -value);
+      }
+    }
+  }
+  r.C = static_cast<int>(row_coupling.size());
+  Eigen::SparseMatrix<double> k(r.C, d * (r.bodies - 1));
+  k.setFromTriplets(entries.begin(), entries.end());  // duplicates (a coupling of a body to itself) add up to zero
+  entries.clear();
+  entries.shrink_to_fit();
+
+  r.rank = linalg::sparse_rank_threshold(k, tolerance);
+  std::vector<bool> stressed(static_cast<std::size_t>(r.e), false), moving(static_cast<std::size_t>(r.e), false);
+  if (k.rows() > 0 && k.cols() > 0) {
+    const Eigen::SparseMatrix<double> kt = k.transpose();
+    {
+      // Motions: a generic body-twist vector with K T = 0 (the null space of (Kᵀ)ᵀ, from the QR
+      // of Kᵀ); a coupling moves when T_to ≠ T_from.
+      const linalg::SparseQr qr(kt, r.rank.threshold);
+      linalg::record_rank(r.rank, qr);
+      const Eigen::VectorXd twists = generic_left_null_vector(kt, qr);
+      if (twists.size() > 0 && twists.norm() > 0) {
+        r.residual = std::max(r.residual, (k * twists).norm() / (r.rank.largest * twists.norm()));
+        const double zero = kSupportZero * twists.cwiseAbs().maxCoeff();
+        for (std::size_t i = 0; i < model.couplings.size(); ++i) {
+          const Coupling& c = model.couplings[i];
+          const Index to = block(c.to), from = block(c.from);
+          for (Index j = 0; j < d; ++j) {
+            const double relative = (to >= 0 ? twists(to + j) : 0.0) - (from >= 0 ? twists(from + j) : 0.0);
+            if (std::abs(relative) > zero) moving[i] = true;
+          }
+        }
+      }
+    }
+    {
+      // Self-stresses: generic action magnitudes λ with Kᵀ λ = 0 (every body in equilibrium),
+      // from the QR of K.
+      const linalg::SparseQr qr(k, r.rank.threshold);
+      const Eigen::VectorXd actions = generic_left_null_vector(k, qr);
+      if (actions.size() > 0 && actions.norm() > 0) {
+        r.residual = std::max(r.residual, (kt * actions).norm() / (r.rank.largest * actions.norm()));
+        const double zero = kSupportZero * actions.cwiseAbs().maxCoeff();
+        for (Index row = 0; row < actions.size(); ++row)
+          if (std::abs(actions(row)) > zero) stressed[static_cast<std::size_t>(row_coupling[static_cast<std::size_t>(row)])] = true;
+      }
+    }
+  } else if (k.cols() > 0) {
+    // No actions at all: every coupling moves freely.
+    std::fill(moving.begin(), moving.end(), true);
+  }
+  r.FN = static_cast<int>(k.cols() - r.rank.rank);
+  r.CN = static_cast<int>(k.rows() - r.rank.rank);
+  r.classification = classify(r.FN, r.CN);
+  for (int i = 0; i < r.e; ++i) {
+    if (stressed[static_cast<std::size_t>(i)]) r.stressed.push_back(i);
+    if (moving[static_cast<std::size_t>(i)]) r.moving.push_back(i);
+  }
+  return r;
+}
+
+}  // namespace kinestat::network

@@ -1,0 +1,129 @@
+// The structural diagram of seed 004 as SVG (declared in structure_report.hpp): one circle per
+// structural group labelled (N_m, n_c) and with its bodies, arrows from the group that gives
+// DOF to the group that receives it. An arrow that would pass under a circle it does not end
+// at is bent around it, so that a frame -> SG-II arrow is never read as frame -> SG-I -> SG-II.
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "kinestat/report/markup_escape.hpp"
+#include "kinestat/report/structure_report.hpp"
+#include "kinestat/structure/structural_diagram.hpp"
+
+namespace kinestat::report {
+
+namespace {
+
+struct Point {
+  double x = 0, y = 0;
+};
+
+/// Point of the quadratic Bézier a -> b with control c at parameter t.
+Point bezier(Point a, Point c, Point b, double t) {
+  const double u = 1 - t;
+  return {u * u * a.x + 2 * u * t * c.x + t * t * b.x, u * u * a.y + 2 * u * t * c.y + t * t * b.y};
+}
+
+/// Smallest distance from `p` to the curve a -> b (control c), sampled finely.
+double distance_to_curve(Point p, Point a, Point c, Point b) {
+  double best = 1e300;
+  constexpr int kSamples = 64;
+  for (int i = 0; i <= kSamples; ++i) {
+    const Point q = bezier(a, c, b, static_cast<double>(i) / kSamples);
+    best = std::min(best, std::hypot(q.x - p.x, q.y - p.y));
+  }
+  return best;
+}
+
+}  // namespace
+
+std::string structure_svg(const structure::StructureModel& model, const structure::Decomposition& d) {
+  const auto diagram = structure::structural_diagram(d);
+  constexpr double radius = 28, dx = 150, dy = 120, margin = 70;
+  // Clearance between an arrow and a circle it passes (beyond the radius), in px.
+  constexpr double clearance = 8;
+  std::vector<int> per_layer(static_cast<std::size_t>(diagram.layers), 0);
+  for (const auto& n : diagram.nodes) ++per_layer[static_cast<std::size_t>(n.layer)];
+  const std::string title = model.name.empty() ? "Structural diagram" : model.name;
+  // Wide enough for the title too (about 7.5 px per character at 15 px).
+  const double width = std::max(margin * 2 + dx * std::max(1, diagram.widest_layer - 1) + 2 * radius,
+                                40 + 7.5 * static_cast<double>(title.size()));
+  const double height = margin * 2 + dy * (diagram.layers - 1) + 2 * radius + 30;
+  std::vector<Point> at(diagram.nodes.size());
+  std::vector<int> index_of(d.groups.size() + 1, 0);
+  for (std::size_t i = 0; i < diagram.nodes.size(); ++i) {
+    const auto& n = diagram.nodes[i];
+    // Each layer is centred; slots follow the order of formation.
+    const double row = dx * (per_layer[static_cast<std::size_t>(n.layer)] - 1);
+    at[i] = {width / 2 - row / 2 + dx * n.slot, margin + 20 + radius + dy * n.layer};
+    index_of[static_cast<std::size_t>(n.group)] = static_cast<int>(i);
+  }
+  std::string out = fmt::format(
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{:.0f}\" height=\"{:.0f}\" viewBox=\"0 0 {:.0f} {:.0f}\" "
+      "font-family=\"Helvetica, Arial, sans-serif\">\n",
+      width, height, width, height);
+  out += "  <defs><marker id=\"arrow\" viewBox=\"0 0 10 10\" refX=\"10\" refY=\"5\" markerWidth=\"8\" markerHeight=\"8\" "
+         "orient=\"auto-start-reverse\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"#333\"/></marker></defs>\n";
+  out += "  <rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  out += fmt::format("  <text x=\"{:.1f}\" y=\"24\" text-anchor=\"middle\" font-size=\"15\">{}</text>\n", width / 2,
+                     markup_escape(title));
+  for (const auto& arrow : diagram.arrows) {
+    const auto from = static_cast<std::size_t>(index_of[static_cast<std::size_t>(arrow.from)]);
+    const auto to = static_cast<std::size_t>(index_of[static_cast<std::size_t>(arrow.to)]);
+    const Point a = at[from], b = at[to];
+    const double len = std::hypot(b.x - a.x, b.y - a.y);
+    if (len <= 2 * radius) continue;
+    const Point normal{-(b.y - a.y) / len, (b.x - a.x) / len};
+    // The straight line if it clears every other circle, else the least bend (alternating
+    // sides) that does.
+    Point control{(a.x + b.x) / 2, (a.y + b.y) / 2};
+    for (int attempt = 0; attempt <= 24; ++attempt) {
+      const double offset = (attempt + 1) / 2 * 30.0 * (attempt % 2 == 1 ? 1.0 : -1.0);
+      const Point c{(a.x + b.x) / 2 + offset * normal.x, (a.y + b.y) / 2 + offset * normal.y};
+      bool clear = true;
+      for (std::size_t k = 0; k < at.size() && clear; ++k)
+        if (k != from && k != to && distance_to_curve(at[k], a, c, b) < radius + clearance) clear = false;
+      if (clear) {
+        control = c;
+        break;
+      }
+    }
+    // Start and end on the circles, toward the control point.
+    const auto toward = [&](Point centre, Point target) {
+      const double l = std::max(std::hypot(target.x - centre.x, target.y - centre.y), 1e-9);
+      return Point{centre.x + radius * (target.x - centre.x) / l, centre.y + radius * (target.y - centre.y) / l};
+    };
+    const Point start = toward(a, control), end = toward(b, control);
+    out += fmt::format(
+        "  <path class=\"arrow\" data-from=\"{}\" data-to=\"{}\" d=\"M{:.1f},{:.1f} Q{:.1f},{:.1f} {:.1f},{:.1f}\" fill=\"none\" "
+        "stroke=\"#333\" stroke-width=\"1.5\" marker-end=\"url(#arrow)\"/>\n",
+        arrow.from, arrow.to, start.x, start.y, control.x, control.y, end.x, end.y);
+  }
+  for (std::size_t i = 0; i < diagram.nodes.size(); ++i) {
+    const auto& n = diagram.nodes[i];
+    const auto [x, y] = at[i];
+    const std::string label = n.group == 0 ? "0" : fmt::format("({}, {})", n.Nm, n.nc);
+    out += fmt::format("  <circle data-group=\"{}\" cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"{:.0f}\" fill=\"{}\" stroke=\"#333\" stroke-width=\"1.5\"/>\n",
+                       n.group, x, y, radius, n.group == 0 ? "#e8e8e8" : "#ffffff");
+    out += fmt::format("  <text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\" font-size=\"14\">{}</text>\n", x, y + 5, label);
+    out += fmt::format("  <text x=\"{:.1f}\" y=\"{:.1f}\" font-size=\"11\" fill=\"#555\">{}</text>\n", x + radius + 4,
+                       y - radius + 6, n.group == 0 ? "frame" : group_name(n.group));
+    // The bodies of the group, under its circle (the frame is named beside its own).
+    std::string bodies;
+    for (const auto& group : d.groups)
+      if (group.number == n.group)
+        for (int body : group.bodies) bodies += (bodies.empty() ? "" : ", ") + structure::body_label(model, body);
+    if (n.group != 0) out += fmt::format("  <text class=\"bodies\" x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\" font-size=\"11\" fill=\"#1f4e79\" "
+                       "paint-order=\"stroke\" stroke=\"white\" stroke-width=\"3\">{}</text>\n",
+                       x, y + radius + 15, markup_escape(bodies));
+  }
+  out += "</svg>\n";
+  return out;
+}
+
+}  // namespace kinestat::report

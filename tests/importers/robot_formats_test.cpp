@@ -1,0 +1,225 @@
+// URDF, SDFormat and MJCF readers: small files exercising every supported element give the
+// coupling network derived by hand, and the four-bar, Stewart-Gough platform and Delta robot
+// written in each format (examples/robots/) give the FN, CN and pair freedoms of the YAML
+// examples.
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "kinestat/io/input_error.hpp"
+#include "kinestat/io/mjcf_reader.hpp"
+#include "kinestat/io/network_reader.hpp"
+#include "kinestat/io/sdformat_reader.hpp"
+#include "kinestat/io/urdf_reader.hpp"
+#include "kinestat/io/yaml_support.hpp"
+#include "kinestat/network/analyse_network.hpp"
+
+namespace kinestat::io {
+namespace {
+
+using screw::CouplingType;
+
+std::string source(const std::string& relative) { return std::string(KINESTAT_SOURCE_DIR) + "/" + relative; }
+
+network::NetworkResult analyse(const network::Model& model) { return network::analyse_network(model); }
+
+ImportedNetwork read(const std::string& relative) {
+  const std::string path = source(relative);
+  if (relative.ends_with(".urdf")) return read_urdf(path);
+  if (relative.ends_with(".sdf")) return read_sdformat(path);
+  return read_mjcf(path);
+}
+
+const network::Coupling& coupling(const network::Model& m, const std::string& name) {
+  for (const auto& c : m.couplings)
+    if (c.name == name) return c;
+  ADD_FAILURE() << "no coupling " << name;
+  return m.couplings.front();
+}
+
+std::string body(const network::Model& m, int index) { return m.bodies[static_cast<std::size_t>(index)]; }
+
+screw::Vec3 v(const char* x, const char* y, const char* z) {
+  return {*parse_exact_decimal(x), *parse_exact_decimal(y), *parse_exact_decimal(z)};
+}
+
+struct Expected {
+  const char* yaml;
+  int fn, cn;
+};
+
+class PublishedMechanism : public ::testing::TestWithParam<std::pair<const char*, Expected>> {};
+
+TEST_P(PublishedMechanism, GivesTheCountsOfTheYamlExample) {
+  const auto& [file, expected] = GetParam();
+  if ((std::string(file).ends_with(".urdf") && !urdf_reader_built_in()) ||
+      (std::string(file).ends_with(".sdf") && !sdformat_reader_built_in()) ||
+      (std::string(file).ends_with(".xml") && !mjcf_reader_built_in()))
+    GTEST_SKIP() << "reader not built in";
+  const network::NetworkResult imported = analyse(read(file).loaded.model);
+  const network::NetworkResult yaml = analyse(read_network_model(YamlFile::load(source(expected.yaml))).model);
+  // Hand-derived counts (in the YAML examples' comments), then agreement with the YAML.
+  EXPECT_EQ(imported.FN, expected.fn) << file;
+  EXPECT_EQ(imported.CN, expected.cn) << file;
+  EXPECT_EQ(yaml.FN, expected.fn) << expected.yaml;
+  EXPECT_EQ(yaml.CN, expected.cn) << expected.yaml;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Robots, PublishedMechanism,
+    ::testing::Values(std::pair{"examples/robots/four-bar.urdf", Expected{"examples/four-bar-spatial.yaml", 1, 3}},
+                      std::pair{"examples/robots/four-bar.sdf", Expected{"examples/four-bar-spatial.yaml", 1, 3}},
+                      std::pair{"examples/robots/four-bar.xml", Expected{"examples/four-bar-spatial.yaml", 1, 3}},
+                      std::pair{"examples/robots/stewart-6ups.urdf", Expected{"examples/stewart-6ups.yaml", 6, 0}},
+                      std::pair{"examples/robots/stewart-6ups.sdf", Expected{"examples/stewart-6ups.yaml", 6, 0}},
+                      std::pair{"examples/robots/stewart-6ups.xml", Expected{"examples/stewart-6ups.yaml", 6, 0}},
+                      std::pair{"examples/robots/delta.urdf", Expected{"examples/delta-robot.yaml", 3, 12}},
+                      std::pair{"examples/robots/delta.sdf", Expected{"examples/delta-robot.yaml", 3, 12}},
+                      std::pair{"examples/robots/delta.xml", Expected{"examples/delta-robot.yaml", 3, 12}}));
+
+TEST(UrdfReader, EveryJointTypeGivesTheHandDerivedCoupling) {
+  if (!urdf_reader_built_in()) GTEST_SKIP();
+  const ImportedNetwork imported = read("tests/importers/data/every-joint.urdf");
+  const network::Model& m = imported.loaded.model;
+  EXPECT_EQ(m.name, "every_joint");
+  ASSERT_TRUE(m.ground);
+  EXPECT_EQ(body(m, *m.ground), "world");
+  ASSERT_EQ(m.couplings.size(), 9u);
+  // base: origin (1, 0, 0), yaw 90°: its x axis is world y.
+  const auto& rev = coupling(m, "rev");
+  EXPECT_EQ(rev.type, CouplingType::revolute);
+  EXPECT_EQ(body(m, rev.from), "base");
+  EXPECT_EQ(body(m, rev.to), "a");
+  EXPECT_EQ(rev.geometry.point, v("1", "2", "0"));  // (1,0,0) + Rz(90°)·(2,0,0)
+  EXPECT_EQ(*rev.geometry.axis, v("0", "1", "0"));  // Rz(90°)·x
+  EXPECT_EQ(coupling(m, "cont").type, CouplingType::revolute);
+  EXPECT_EQ(*coupling(m, "cont").geometry.axis, v("-1", "0", "0"));  // default axis x → Rz(90°)·x... of link a: Rz(90°)·y = −x
+  EXPECT_EQ(coupling(m, "pris").type, CouplingType::prismatic);
+  EXPECT_EQ(*coupling(m, "pris").geometry.axis, v("0", "0", "1"));
+  EXPECT_EQ(coupling(m, "fix").type, CouplingType::rigid);
+  EXPECT_EQ(coupling(m, "float").type, CouplingType::free);
+  EXPECT_EQ(coupling(m, "plan").type, CouplingType::planar);
+  EXPECT_EQ(*coupling(m, "plan").geometry.normal, v("0", "0", "1"));
+  EXPECT_EQ(coupling(m, "ball").type, CouplingType::spherical);
+  const auto& uni = coupling(m, "uni");
+  EXPECT_EQ(uni.type, CouplingType::universal);
+  EXPECT_EQ(*uni.geometry.axis, v("0", "1", "0"));   // joint frame x = Rz(90°)·x
+  EXPECT_EQ(*uni.geometry.axis2, v("-1", "0", "0")); // joint frame y = Rz(90°)·y
+  // The loop closure: joint "close" names link a as child although "rev" made it base's child.
+  const auto& close = coupling(m, "close");
+  EXPECT_EQ(body(m, close.from), "e");
+  EXPECT_EQ(body(m, close.to), "a");
+  ASSERT_EQ(imported.notices.size(), 3u);
+  EXPECT_NE(imported.notices[0].find("mimic joint(s) cont"), std::string::npos) << imported.notices[0];
+  EXPECT_NE(imported.notices[1].find("transmission(s) t1"), std::string::npos) << imported.notices[1];
+  EXPECT_NE(imported.notices[2].find("<gazebo>, <material>"), std::string::npos) << imported.notices[2];
+}
+
+std::string urdf_error(const std::string& text) {
+  try {
+    parse_urdf("bad.urdf", text);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(UrdfReader, ErrorsNameLineAndColumn) {
+  if (!urdf_reader_built_in()) GTEST_SKIP();
+  EXPECT_EQ(urdf_error("<robot name='r'>\n  <link name='a'/>\n  <joint name='j' type='hinge'>\n    <parent link='a'/><child link='b'/>\n"
+                       "  </joint>\n  <link name='b'/>\n</robot>\n"),
+            "bad.urdf:3:3: error: joint 'j' has unknown type 'hinge'; expected revolute, continuous, prismatic, fixed, floating, "
+            "planar, ball or universal");
+  EXPECT_EQ(urdf_error("<robot name='r'>\n  <link name='a'/>\n  <joint name='j' type='fixed'>\n    <parent link='a'/><child link='c'/>\n"
+                       "  </joint>\n</robot>\n"),
+            "bad.urdf:3:3: error: joint 'j' names link 'c', which is not a <link> of the robot");
+  EXPECT_EQ(urdf_error("<robot>\n <link name='a'/>\n <link name='b'/>\n <joint name='j' type='revolute'>\n  <origin xyz='1 2'/>\n"
+                       "  <parent link='a'/><child link='b'/>\n </joint>\n</robot>\n"),
+            "bad.urdf:5:3: error: attribute xyz=\"1 2\" of <origin> must be three finite numbers");
+  EXPECT_EQ(urdf_error("<robot>\n <link name='a'/>\n <link name='b'/>\n</robot>\n"),
+            "bad.urdf:3:2: error: links 'a' and 'b' are both roots (neither is the child of a joint): a URDF tree has one root, "
+            "the ground");
+  EXPECT_EQ(urdf_error("<robot><link name='a'/>\n<joint name='j'"), "bad.urdf:2:1: error: malformed XML: Error=XML_ERROR_PARSING_ELEMENT ErrorID=6 (0x6) Line number=2: XMLElement name=joint");
+  EXPECT_EQ(urdf_error("<model/>"), "bad.urdf:1:1: error: a URDF file has a <robot> root element");
+}
+
+TEST(SdformatReader, EveryJointTypeGivesTheHandDerivedCoupling) {
+  if (!sdformat_reader_built_in()) GTEST_SKIP();
+  const network::Model m = read("tests/importers/data/every-joint.sdf").loaded.model;
+  ASSERT_TRUE(m.ground);
+  EXPECT_EQ(body(m, *m.ground), "world");
+  ASSERT_EQ(m.couplings.size(), 7u);
+  // Joint poses are relative to the child link (SDFormat's default): link a is at (1, 2, 0)
+  // turned 90° about z, joint rev 0.5 along its x: (1, 2.5, 0); axis x of the joint frame → y.
+  const auto& rev = coupling(m, "rev");
+  EXPECT_EQ(rev.type, CouplingType::revolute);
+  EXPECT_EQ(body(m, rev.from), "world");
+  EXPECT_EQ(rev.geometry.point, v("1", "2.5", "0"));
+  EXPECT_EQ(*rev.geometry.axis, v("0", "1", "0"));
+  EXPECT_EQ(coupling(m, "pris").type, CouplingType::prismatic);
+  EXPECT_EQ(*coupling(m, "pris").geometry.axis, v("0", "0", "1"));
+  const auto& screw_joint = coupling(m, "scr");
+  EXPECT_EQ(screw_joint.type, CouplingType::helical);
+  EXPECT_EQ(screw_joint.geometry.pitch, screw::Rational(1, 4));  // thread_pitch 4 rad per length
+  EXPECT_EQ(coupling(m, "uni").type, CouplingType::universal);
+  EXPECT_EQ(*coupling(m, "uni").geometry.axis2, v("0", "0", "1"));
+  EXPECT_EQ(coupling(m, "r2").type, CouplingType::universal);
+  EXPECT_EQ(coupling(m, "ball").type, CouplingType::spherical);
+  EXPECT_EQ(coupling(m, "fix").type, CouplingType::rigid);
+}
+
+TEST(SdformatReader, ErrorsComeWithTheLine) {
+  if (!sdformat_reader_built_in()) GTEST_SKIP();
+  try {
+    read_sdformat(source("tests/importers/data/bad-joint.sdf"));
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().line, 6) << e.what();
+    EXPECT_NE(std::string(e.what()).find("gearbox"), std::string::npos) << e.what();
+  }
+}
+
+TEST(MjcfReader, BodiesJointsAndEqualitiesGiveTheHandDerivedNetwork) {
+  if (!mjcf_reader_built_in()) GTEST_SKIP();
+  const ImportedNetwork imported = read("tests/importers/data/every-element.xml");
+  const network::Model& m = imported.loaded.model;
+  ASSERT_TRUE(m.ground);
+  EXPECT_EQ(body(m, *m.ground), "world");
+  // arm: hinge about z at (1, 0, 0); hand (pos 1 0 0 in arm): two hinges in series (x, then y)
+  // through the intermediate body "hand/h1"; block: slide along x; lid: no joint (welded);
+  // ball body: ball joint; free body: free joint; connect of ball to lid at (3, 0, 1);
+  // weld of free to world; joint equality ignored.
+  const auto& h = coupling(m, "shoulder");
+  EXPECT_EQ(h.type, CouplingType::revolute);
+  EXPECT_EQ(h.geometry.point, v("1", "0", "0"));
+  EXPECT_EQ(*h.geometry.axis, v("0", "0", "1"));
+  EXPECT_EQ(body(m, coupling(m, "h1").to), "hand/h1");
+  EXPECT_EQ(body(m, coupling(m, "h2").from), "hand/h1");
+  EXPECT_EQ(body(m, coupling(m, "h2").to), "hand");
+  EXPECT_EQ(coupling(m, "h2").geometry.point, v("2", "0", "0"));
+  EXPECT_EQ(coupling(m, "slider").type, CouplingType::prismatic);
+  EXPECT_EQ(coupling(m, "lid (welded)").type, CouplingType::rigid);
+  EXPECT_EQ(coupling(m, "knob").type, CouplingType::spherical);
+  EXPECT_EQ(coupling(m, "loose").type, CouplingType::free);
+  const auto& connect = coupling(m, "tie");
+  EXPECT_EQ(connect.type, CouplingType::spherical);
+  EXPECT_EQ(connect.geometry.point, v("3", "0", "1"));
+  EXPECT_EQ(coupling(m, "glue").type, CouplingType::rigid);
+  ASSERT_EQ(imported.notices.size(), 1u);
+  EXPECT_NE(imported.notices[0].find("equality constraint(s) gear ignored"), std::string::npos) << imported.notices[0];
+}
+
+TEST(MjcfReader, ErrorsComeWithTheLine) {
+  if (!mjcf_reader_built_in()) GTEST_SKIP();
+  try {
+    parse_mjcf("bad.xml", "<mujoco>\n  <worldbody>\n    <body name='a'>\n      <joint type='spiral'/>\n    </body>\n  </worldbody>\n</mujoco>\n");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().line, 4) << e.what();
+    EXPECT_NE(std::string(e.what()).find("spiral"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace kinestat::io

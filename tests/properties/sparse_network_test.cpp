@@ -1,0 +1,82 @@
+// The sparse body-twist path against Davies' dense exact path (an independent method: circuit
+// and cutset laws over a spanning tree) on seeded random networks and on every example: FN, CN,
+// the couplings that carry a self-stress and the couplings that move.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <set>
+
+#include "kinestat/io/network_reader.hpp"
+#include "kinestat/io/yaml_support.hpp"
+#include "kinestat/network/analyse_network.hpp"
+#include "kinestat/network/sparse_network.hpp"
+#include "random_network.hpp"
+
+namespace kinestat::network {
+namespace {
+
+// Couplings with a non-zero row in the magnitudes (motions or actions in their primaries).
+std::vector<int> support(const std::vector<Magnitude>& magnitudes, const LinearForms& forms) {
+  std::set<int> couplings;
+  for (Eigen::Index i = 0; i < forms.values.rows(); ++i)
+    if (forms.values.row(i).cwiseAbs().maxCoeff() > 0.0) couplings.insert(magnitudes[static_cast<std::size_t>(i)].coupling);
+  return {couplings.begin(), couplings.end()};
+}
+
+// `arithmetic`: exact for the random networks (rational geometry); the default for the
+// examples, whose long literals are rounded irrationals meant in floating point.
+void expect_same_answers(const Model& model, const std::string& what, Arithmetic arithmetic = Arithmetic::exact) {
+  SCOPED_TRACE(what);
+  AnalysisOptions options;
+  options.arithmetic = arithmetic;
+  options.all_pairs = false;
+  const NetworkResult dense = analyse_network(model, options);
+  const SparseNetworkResult sparse = analyse_network_sparse(model);
+  EXPECT_EQ(sparse.FN, dense.FN);
+  EXPECT_EQ(sparse.CN, dense.CN);
+  EXPECT_EQ(sparse.F, dense.F);
+  EXPECT_EQ(sparse.C, dense.C);
+  EXPECT_EQ(sparse.l, dense.l);
+  const std::vector<int> stressed = dense.CN > 0 ? support(dense.actions, dense.action_magnitudes) : std::vector<int>{};
+  const std::vector<int> moving = dense.FN > 0 ? support(dense.motions, dense.motion_magnitudes) : std::vector<int>{};
+  EXPECT_EQ(sparse.stressed, stressed);
+  EXPECT_EQ(sparse.moving, moving);
+  EXPECT_LT(sparse.residual, 1e-10);
+}
+
+TEST(SparseNetwork, SameAnswersAsDaviesOnRandomSpatialNetworks) {
+  for (int seed = 0; seed < 60; ++seed) {
+    std::mt19937 rng(static_cast<unsigned>(5000 + seed));
+    expect_same_answers(testing::random_network(rng, 2 + seed % 7, 1 + seed % 4, false), "spatial seed " + std::to_string(seed));
+  }
+}
+
+TEST(SparseNetwork, SameAnswersAsDaviesOnRandomPlanarNetworks) {
+  for (int seed = 0; seed < 60; ++seed) {
+    std::mt19937 rng(static_cast<unsigned>(7000 + seed));
+    expect_same_answers(testing::random_network(rng, 3 + seed % 7, 1 + seed % 4, true), "planar seed " + std::to_string(seed));
+  }
+}
+
+TEST(SparseNetwork, SameAnswersAsDaviesOnEveryExample) {
+  int examples = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(KINESTAT_SOURCE_DIR) + "/examples")) {
+    if (entry.path().extension() != ".yaml") continue;
+    const auto file = io::YamlFile::load(entry.path().string());
+    if (io::model_kind(file) != "network") continue;
+    expect_same_answers(io::read_network_model(file).model, entry.path().filename().string(), Arithmetic::automatic);
+    ++examples;
+  }
+  EXPECT_GT(examples, 10);
+}
+
+TEST(SparseNetwork, DaviesTwoCircuitCounts) {
+  // Seed 000, Appendix 3: FN = 3, CN = 2.
+  const auto file = io::YamlFile::load(std::string(KINESTAT_SOURCE_DIR) + "/examples/davies-2-circuit.yaml");
+  const SparseNetworkResult r = analyse_network_sparse(io::read_network_model(file).model);
+  EXPECT_EQ(r.FN, 3);
+  EXPECT_EQ(r.CN, 2);
+}
+
+}  // namespace
+}  // namespace kinestat::network
