@@ -100,7 +100,7 @@ int run_network_analysis(const CommonOptions& common, const io::LoadedNetwork& l
     try {
       sparse = network::analyse_network_sparse(loaded.model, options.tolerance);
     } catch (const network::ModelError& error) {
-      throw io::locate(error, loaded, file.path());
+      throw io::locate(error, loaded, path);
     }
     emit(common, common.json ? report::json_text(report::sparse_network_json(loaded.model, sparse))
                              : report::sparse_network_text(loaded.model, sparse));
