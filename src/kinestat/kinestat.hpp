@@ -34,6 +34,7 @@
 #include "kinestat/linalg/homogeneous_solution.hpp"
 #include "kinestat/linalg/rank_decision.hpp"
 #include "kinestat/linalg/rational_matrix.hpp"
+#include "kinestat/linalg/sign_convention.hpp"
 #include "kinestat/linalg/sparse_qr.hpp"
 #include "kinestat/linalg/sparse_rank.hpp"
 #include "kinestat/linalg/svd_analysis.hpp"
