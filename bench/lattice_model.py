@@ -49,7 +49,7 @@ def lattice(kind, n):
 def write_model(kind, n, path):
     dimension, nodes, bars = lattice(kind, n)
     with open(path, "w") as out:
-        out.write(f"kinestat: 1\nkind: framework\nname: {kind} lattice {n}\ndimension: {dimension}\nnodes:\n")
+        out.write(f"kinestat: 1\nkind: framework\nname: {kind} lattice {n}\ndimension: {'planar' if dimension == 2 else 'spatial'}\nnodes:\n")
         for index, (position, _) in enumerate(nodes):
             out.write(f"  n{index}: [{', '.join(str(c) for c in position)}]\n")
         out.write("supports:\n")

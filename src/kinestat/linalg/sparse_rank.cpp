@@ -30,7 +30,9 @@ RankDecision sparse_rank_threshold(const Eigen::SparseMatrix<double>& a, const R
   if (a.rows() == 0 || a.cols() == 0) return decision;
   decision.largest = estimate_largest_singular_value(a);
   decision.rounding_level = default_relative_tolerance(a.rows(), a.cols()) * decision.largest;
-  decision.threshold = tolerance.relative.value_or(default_relative_tolerance(a.rows(), a.cols())) * decision.largest;
+  decision.threshold = tolerance.relative.value_or(kSparseToleranceFactor * static_cast<double>(a.rows() + a.cols()) *
+                                                   std::numeric_limits<double>::epsilon()) *
+                       decision.largest;
   return decision;
 }
 

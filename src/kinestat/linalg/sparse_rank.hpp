@@ -9,13 +9,18 @@
 
 namespace kinestat::linalg {
 
-/// Rank of `a` from a sparse QR factorisation. The threshold is the same relative rule as the
-/// SVD's (`tolerance`, default max(rows, cols)·eps) times an estimate of σ_max from power
-/// iteration. The evidence reported is the R diagonal: `smallest_kept` is the smallest kept
+/// Rank of `a` from a sparse QR factorisation. The threshold is `tolerance` (default
+/// kSparseToleranceFactor·(rows + cols)·eps) times an estimate of σ_max from power iteration. The evidence reported is the R diagonal: `smallest_kept` is the smallest kept
 /// |R_ii|; `largest_dropped` is 0 because SPQR drops columns without reporting them.
 /// `peak_memory`, when given, receives the factorisation's peak memory in bytes.
 RankDecision sparse_numerical_rank(const Eigen::SparseMatrix<double>& a, const RankTolerance& tolerance = {},
                                    std::size_t* peak_memory = nullptr);
+
+/// Heath's rule compares the remaining norm of each column, which carries rounding of order
+/// (m + n)·eps·σ_max from the whole elimination, so the sparse default is SuiteSparseQR's own:
+/// 20·(m + n)·eps·σ_max (a dependent column kept at 1.7 times the dense threshold made a wrong
+/// release proposal on folded-sheet-guide-6). An explicit tolerance is used as given.
+inline constexpr double kSparseToleranceFactor = 20.0;
 
 /// The absolute threshold of the rank rule for `a`, with σ_max estimated: `decision.largest`,
 /// `decision.threshold` and `decision.rounding_level` are set, the rank is left to the caller.

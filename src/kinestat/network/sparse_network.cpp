@@ -127,7 +127,8 @@ SparseNetworkResult analyse_network_sparse(const Model& model, const linalg::Ran
       const linalg::SparseQr qr(kt, r.rank.threshold);
       linalg::record_rank(r.rank, qr);
       const Eigen::VectorXd twists = generic_left_null_vector(kt, qr);
-      if (twists.size() > 0 && twists.norm() > 0) {
+      // Only when there are motions: otherwise the residual is rounding noise.
+      if (k.cols() > r.rank.rank && twists.norm() > 0) {
         r.residual = std::max(r.residual, (k * twists).norm() / (r.rank.largest * twists.norm()));
         const double zero = kSupportZero * twists.cwiseAbs().maxCoeff();
         for (std::size_t i = 0; i < model.couplings.size(); ++i) {
@@ -145,7 +146,7 @@ SparseNetworkResult analyse_network_sparse(const Model& model, const linalg::Ran
       // from the QR of K.
       const linalg::SparseQr qr(k, r.rank.threshold);
       const Eigen::VectorXd actions = generic_left_null_vector(k, qr);
-      if (actions.size() > 0 && actions.norm() > 0) {
+      if (k.rows() > qr.rank() && actions.norm() > 0) {
         r.residual = std::max(r.residual, (kt * actions).norm() / (r.rank.largest * actions.norm()));
         const double zero = kSupportZero * actions.cwiseAbs().maxCoeff();
         for (Index row = 0; row < actions.size(); ++row)
