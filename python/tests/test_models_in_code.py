@@ -49,7 +49,7 @@ def test_davies_network_from_arrays_equals_its_file(examples):
         types=["spherical", "spherical", "planar", "cylindrical", "cylindrical"],
         bodies=["1", "2", "3", "4"],
         between=np.array([[2, 3], [1, 3], [0, 3], [0, 1], [0, 2]]),
-        points=np.array([[0, 0, 0], [0, 0, 1], [nan] * 3, [1, 0, 0], [0, 0, 0]]),
+        points=np.array([[0, 0, 0], [0, 0, 1], [0, 0, 0], [1, 0, 0], [0, 0, 0]]),
         axes=np.array([[nan] * 3, [nan] * 3, [nan] * 3, [0, 1, 0], [0, 1, 0]]),
         normals=np.array([[nan] * 3, [nan] * 3, [0, 0, 1], [nan] * 3, [nan] * 3]),
         dimension="spatial", ground=0, chords=["B", "E"], primary=["sa", "ta", "vc", "Ub", "We"],
