@@ -173,7 +173,7 @@ TEST(Pictures, VerdictAndUnitsAreShownWhenPresent) {
   verdict.summary = "1 extra motion, 1 redundant constraint.";
   verdict.extra_motions = 1;
   verdict.redundant_constraints = 1;
-  verdict.changes.push_back({"release", "deformation", "bar 7 elongation", "released", "removes the self-stress"});
+  verdict.changes.push_back({"release", "deformation", "bar 7 elongation", "released", "removes the self-stress", "", {}});
   verdict.changes_verified = true;
   scene.verdict = verdict;
   scene.units = "mm";
