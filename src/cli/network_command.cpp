@@ -100,7 +100,7 @@ int run_network_analysis(const CommonOptions& common, const io::LoadedNetwork& l
     try {
       sparse = network::analyse_network_sparse(loaded.model, options.tolerance);
     } catch (const network::ModelError& error) {
-      throw io::locate(error, loaded, file.path());
+      throw io::locate(error, loaded, path);
     }
     emit(common, common.json ? report::json_text(report::sparse_network_json(loaded.model, sparse))
                              : report::sparse_network_text(loaded.model, sparse));
@@ -118,7 +118,7 @@ int run_network_analysis(const CommonOptions& common, const io::LoadedNetwork& l
     const auto values = loaded.field_locations.find("values");
     const io::SourceLocation where = !o.values.empty() ? io::SourceLocation{"--value", 0, 0}
                                      : values != loaded.field_locations.end() ? values->second
-                                                                              : io::SourceLocation{file.path(), 0, 0};
+                                                                              : io::SourceLocation{path, 0, 0};
     throw io::InputError(where, fmt::format("{} overflows a double (beyond about 1e308): the values or coordinates are "
                                             "too large; scale them down (units do not change the counts)",
                                             *overflowing));
