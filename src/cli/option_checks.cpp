@@ -28,6 +28,13 @@ bool all_finite(const Eigen::DenseBase<Derived>& m) {
   return m.allFinite();
 }
 
+// Values of magnitudes: NaN marks a magnitude that partial values leave undetermined (issue 10),
+// so only an infinity is an overflow there.
+template <typename Derived>
+bool no_infinity(const Eigen::DenseBase<Derived>& m) {
+  return !m.derived().array().isInf().any();
+}
+
 }  // namespace
 
 CLI::Validator positive_finite_number() {
@@ -56,10 +63,10 @@ CLI::Validator non_negative_whole_number() {
 }
 
 std::optional<std::string> first_non_finite_result(const network::NetworkResult& result) {
-  if (result.motion_values && !all_finite(*result.motion_values)) return "a motion magnitude";
-  if (result.action_values && !all_finite(*result.action_values)) return "an action magnitude";
-  if (result.coupling_motion_values && !all_finite(*result.coupling_motion_values)) return "a coupling motion";
-  if (result.coupling_action_values && !all_finite(*result.coupling_action_values)) return "a coupling action";
+  if (result.motion_values && !no_infinity(*result.motion_values)) return "a motion magnitude";
+  if (result.action_values && !no_infinity(*result.action_values)) return "an action magnitude";
+  if (result.coupling_motion_values && !no_infinity(*result.coupling_motion_values)) return "a coupling motion";
+  if (result.coupling_action_values && !no_infinity(*result.coupling_action_values)) return "a coupling action";
   if (!all_finite(result.motion_magnitudes.values)) return "a coefficient of the motion magnitudes";
   if (!all_finite(result.action_magnitudes.values)) return "a coefficient of the action magnitudes";
   for (const auto& pair : result.pairs) {

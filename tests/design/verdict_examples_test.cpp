@@ -96,6 +96,9 @@ const std::vector<NetworkCase>& network_cases() {
       // U-P-S legs have no idle spin: FN = 6, CN = 0, so no redundancy to report.
       {"stewart-6ups.yaml", 0, 0, 6, "6-UPS"},
       {"tsai-3upu.yaml", 0, 0, 3, "3-UPU translational"},
+      // The example's header: every body carries revolutes only (no idle spin), FN = 3
+      // translations; F = 21, l = 5, FN - CN = 21 - 30, so CN = 12.
+      {"delta-robot.yaml", 0, 12, 3, "Delta, revolute parallelograms"},
   };
   return cases;
 }
