@@ -15,29 +15,6 @@ using framework::FrameworkModel;
 // Shares below this (of a unit-norm mode or stress state) are rounding, not participation.
 constexpr double kShareZero = 1e-12;
 
-void rank_participants(std::vector<Participant>& list) {
-  std::stable_sort(list.begin(), list.end(),
-                   [](const Participant& a, const Participant& b) { return a.participation > b.participation; });
-}
-
-// The largest share each part has in any of the states, ranked.
-std::vector<Participant> strongest(const std::vector<VerdictState>& states, const std::string& kind) {
-  std::map<std::string, Participant> best;
-  std::vector<std::string> order;
-  for (const auto& state : states) {
-    if (state.kind != kind) continue;
-    for (const auto& p : state.participants) {
-      auto [it, inserted] = best.emplace(p.name, p);
-      if (inserted) order.push_back(p.name);
-      else if (p.participation > it->second.participation) it->second = p;
-    }
-  }
-  std::vector<Participant> list;
-  for (const auto& name : order) list.push_back(best[name]);
-  rank_participants(list);
-  return list;
-}
-
 std::string counted(Eigen::Index n, const char* one, const char* many) { return fmt::format("{} {}", n, n == 1 ? one : many); }
 
 }  // namespace

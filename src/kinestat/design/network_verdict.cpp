@@ -102,11 +102,6 @@ double twist_size(const Screw& t, const Frame& frame) {
   return (w * frame.length).squaredNorm() + v.squaredNorm();
 }
 
-void rank_participants(std::vector<Participant>& list) {
-  std::stable_sort(list.begin(), list.end(),
-                   [](const Participant& a, const Participant& b) { return a.participation > b.participation; });
-}
-
 // Shares of one state from per-coupling sizes.
 void add_shares(VerdictState& state, const std::vector<double>& size, const std::vector<std::string>& names,
                 const std::vector<std::string>& details) {
@@ -116,23 +111,6 @@ void add_shares(VerdictState& state, const std::vector<double>& size, const std:
   for (std::size_t e = 0; e < size.size(); ++e)
     if (size[e] / total > kShareZero) state.participants.push_back({"coupling", names[e], size[e] / total, details[e]});
   rank_participants(state.participants);
-}
-
-std::vector<Participant> strongest(const std::vector<VerdictState>& states, const std::string& kind) {
-  std::map<std::string, Participant> best;
-  std::vector<std::string> order;
-  for (const auto& state : states) {
-    if (state.kind != kind) continue;
-    for (const auto& p : state.participants) {
-      auto [it, inserted] = best.emplace(p.name, p);
-      if (inserted) order.push_back(p.name);
-      else if (p.participation > it->second.participation) it->second = p;
-    }
-  }
-  std::vector<Participant> list;
-  for (const auto& name : order) list.push_back(best[name]);
-  rank_participants(list);
-  return list;
 }
 
 std::string counted(int n, const char* one, const char* many) { return fmt::format("{} {}", n, n == 1 ? one : many); }

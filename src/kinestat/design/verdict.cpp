@@ -1,5 +1,8 @@
 #include "kinestat/design/verdict.hpp"
 
+#include <algorithm>
+#include <map>
+
 #include <fmt/format.h>
 
 namespace kinestat::design {
@@ -24,6 +27,28 @@ std::string summary_sentence(int extra_motions, int redundant_constraints, int i
                                                     : counted(intended_motions, "intended motion", "intended motions");
   if (extra_motions == 0 && redundant_constraints == 0) return fmt::format("Exactly constrained: {}.", motions);
   return fmt::format("Not exactly constrained: {} ({}).", constraint_words(extra_motions, redundant_constraints), motions);
+}
+
+void rank_participants(std::vector<Participant>& list) {
+  std::stable_sort(list.begin(), list.end(),
+                   [](const Participant& a, const Participant& b) { return a.participation > b.participation; });
+}
+
+std::vector<Participant> strongest(const std::vector<VerdictState>& states, const std::string& kind) {
+  std::map<std::string, Participant> best;
+  std::vector<std::string> order;
+  for (const auto& state : states) {
+    if (state.kind != kind) continue;
+    for (const auto& p : state.participants) {
+      auto [it, inserted] = best.emplace(p.name, p);
+      if (inserted) order.push_back(p.name);
+      else if (p.participation > it->second.participation) it->second = p;
+    }
+  }
+  std::vector<Participant> list;
+  for (const auto& name : order) list.push_back(best[name]);
+  rank_participants(list);
+  return list;
 }
 
 }  // namespace kinestat::design

@@ -54,6 +54,13 @@ struct Verdict {
   std::string note;                   ///< why no (verified) change is given, when that is so
 };
 
+/// Sorts participants by decreasing participation; equal shares keep their order.
+void rank_participants(std::vector<Participant>& list);
+
+/// The largest share each part of kind `kind` ("extra motion" or "self-stress" states) has in
+/// any of `states`, ranked by rank_participants.
+std::vector<Participant> strongest(const std::vector<VerdictState>& states, const std::string& kind);
+
 /// "exactly constrained" or "1 extra motion, 2 redundant constraints" (the words of `summary`).
 std::string constraint_words(int extra_motions, int redundant_constraints);
 
