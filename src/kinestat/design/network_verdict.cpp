@@ -405,8 +405,11 @@ struct Search {
   Tally result;
 };
 
+// With `one_way`, a design with only redundant constraints is offered only releases and removals,
+// and one with only extra motions only added constraints: a designer's change, not a removal
+// that frees a motion and a constraint that takes it back.
 Search search_changes(const Model& model, const network::AnalysisOptions& options, bool exact, int intended,
-                      const Tally& start, const std::vector<int>& order) {
+                      const Tally& start, const std::vector<int>& order, bool one_way) {
   Search s;
   s.result = start;
   BasisCache cache(model, exact);
@@ -429,11 +432,14 @@ Search search_changes(const Model& model, const network::AnalysisOptions& option
     const auto current = s.changes.find(e);
     if (current != s.changes.end() && !current->second) return out;  // removed already
     const Coupling& now = current != s.changes.end() ? *current->second : model.couplings[static_cast<std::size_t>(e)];
+    const auto f = [&](const Coupling& c) { return static_cast<int>(cache.of(c).motions.size()); };
     for (auto& candidate : candidates_for(changed_model(model, s.changes), now)) {
       try {
-        const auto f = [&](const Coupling& c) { return static_cast<int>(cache.of(c).motions.size()); };
-        const int delta = std::abs((candidate ? f(*candidate) : 0) - f(now));
-        out.emplace_back(std::move(candidate), delta);
+        // A removal drops the d - f constraints the coupling imposed.
+        const int f_after = candidate ? f(*candidate) : model.space.dimension();
+        if (one_way && start.extra == 0 && f_after < f(now)) continue;  // only releases against redundancy
+        if (one_way && start.CN == 0 && f_after > f(now)) continue;     // only constraints against extra motion
+        out.emplace_back(std::move(candidate), std::abs(f_after - f(now)));
       } catch (const screw::GeometryError&) {
       }
     }
@@ -657,7 +663,13 @@ Verdict network_verdict(const Model& model, const network::NetworkResult& r, con
   for (std::size_t e = 0; e < e_count; ++e)
     if (std::find(order.begin(), order.end(), static_cast<int>(e)) == order.end()) order.push_back(static_cast<int>(e));
 
-  const Search search = search_changes(model, options, r.exact, intended, start, order);
+  Search search = search_changes(model, options, r.exact, intended, start, order, true);
+  if (search.result.score() > 0 || search.result.lost > 0) search = search_changes(model, options, r.exact, intended, start, order, false);
+  // A set that removes some couplings and constrains others moves constraints, it does not
+  // only drop them: say so instead of calling the removed coupling redundant.
+  const bool constrains = std::any_of(search.changes.begin(), search.changes.end(), [&](const auto& entry) {
+    return entry.second && freedoms(*entry.second, model.space) < freedoms(model.couplings[static_cast<std::size_t>(entry.first)], model.space);
+  });
   for (const auto& [e, replacement] : search.changes) {
     const Coupling& before = model.couplings[static_cast<std::size_t>(e)];
     const int f0 = freedoms(before, model.space);
@@ -668,14 +680,16 @@ Verdict network_verdict(const Model& model, const network::NetworkResult& r, con
     if (!replacement) {
       change.action = "remove";
       change.becomes = "removed";
-      change.reason = "the coupling is redundant: the others already impose what it does";
+      change.reason = constrains ? "its constraints move to the couplings this set constrains"
+                                 : "the coupling is redundant: the others already impose what it does";
     } else {
       const int f1 = freedoms(*replacement, model.space);
       change.action = f1 > f0 ? "release" : (f1 < f0 ? "constrain" : "replace");
       change.becomes = std::string(screw::coupling_type_name(replacement->type));
       change.geometry = geometry_of(*replacement);
       change.reason = f1 > f0 ? fmt::format("{} along the locked action (f {} -> {})", counted(f1 - f0, "freedom", "freedoms"), f0, f1)
-                              : fmt::format("{} against the extra motion (f {} -> {})", counted(f0 - f1, "constraint", "constraints"), f0, f1);
+                              : fmt::format("{} against {} (f {} -> {})", counted(f0 - f1, "constraint", "constraints"),
+                                            start.extra > 0 ? "the extra motion" : "the motion the other changes would free", f0, f1);
     }
     v.changes.push_back(std::move(change));
   }
