@@ -42,6 +42,7 @@
 #include "kinestat/network/analyse_network.hpp"
 #include "kinestat/network/analysis_frame.hpp"
 #include "kinestat/network/magnitude_names.hpp"
+#include "kinestat/network/mobility_count.hpp"
 #include "kinestat/network/model.hpp"
 #include "kinestat/network/network_result.hpp"
 #include "kinestat/network/sparse_network.hpp"
