@@ -256,6 +256,8 @@ TEST(MjcfReader, AnEmptyFileIsAnInputError) {
   } catch (const InputError& e) {
     EXPECT_STREQ(e.what(), "empty.xml: error: the file is empty: expected an MJCF model (<mujoco>)");
   }
+  // libmujoco 2.2.2 also reads URDF, and crashed on a malformed one (fuzzer).
+  EXPECT_THROW(parse_mjcf("robot.xml", "<robot name='r'><l:ink name='a'/></robot>"), InputError);
 }
 
 }  // namespace

@@ -179,10 +179,11 @@ mjModel* load(const char* file, const mjVFS* vfs, char (&error)[1024], MjcfReade
   return m;
 }
 
-// MuJoCo ends the process (mju_error, not an error message) on an empty file, so that is
-// refused first.
+// MuJoCo ends the process (mju_error, not an error message) on an empty file, and libmujoco
+// 2.2.2 crashes on some malformed URDF, which it also reads: only an MJCF root reaches it (fuzzer).
 void refuse_empty(const std::string& path, const std::string& text) {
   if (text.empty()) throw InputError({path, 0, 0}, "the file is empty: expected an MJCF model (<mujoco>)");
+  if (xml_root_name(text) != "mujoco") throw InputError({path, 1, 1}, "expected an MJCF model: a <mujoco> root element");
 }
 
 }  // namespace
