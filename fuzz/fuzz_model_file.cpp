@@ -1,12 +1,14 @@
 // libFuzzer harness: any bytes as a model file (network, framework or structure), through the
-// reader of its kind and, for small models, the analyses and every report of them (text, JSON,
-// DOT, SVG drawings of the scene). Input errors are expected; any other exception, crash, hang
-// or sanitizer report is a bug. JSON is dumped strictly (a byte that is not UTF-8 throws), so
-// anything a reader lets through that a report cannot print shows up here.
+// reader of its kind and, for small models, the analyses, the framework and structure verdicts
+// and every report of them (text, JSON, DOT, SVG drawings of the scene). Input errors are
+// expected; any other exception, crash, hang or sanitizer report is a bug. JSON is dumped strictly (a byte that is not UTF-8
+// throws), so anything a reader lets through that a report cannot print shows up here.
 #include <cstddef>
 #include <cstdint>
 #include <string>
 
+#include "kinestat/design/framework_verdict.hpp"
+#include "kinestat/design/structure_verdict.hpp"
 #include "kinestat/framework/framework_analysis.hpp"
 #include "kinestat/io/framework_reader.hpp"
 #include "kinestat/io/input_error.hpp"
@@ -33,7 +35,9 @@ void analyse_structure(const kinestat::structure::StructureModel& model) {
   if (model.body_count() > kMaxAnalysedBodies) return;
   const auto decomposition = kinestat::structure::decompose(model);
   const auto transformations = kinestat::structure::structural_transformations(model, 64);
-  const kinestat::report::StructureReport report{model, decomposition, &transformations};
+  const auto verdict = kinestat::design::structure_verdict(model, decomposition);
+  const kinestat::report::StructureReport report{model, decomposition, &transformations,
+                                                 kinestat::structure::SearchMethod::matching, &verdict, model.units};
   (void)kinestat::report::structure_text(report);
   (void)kinestat::report::structure_json(report);
   (void)kinestat::report::structure_dot(model, decomposition);
@@ -54,8 +58,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       if (loaded.model.couplings.size() <= kMaxAnalysedCouplings) {
         try {
           const auto result = kinestat::network::analyse_network(loaded.model);
-          (void)kinestat::report::network_text(loaded.model, result);
-          (void)kinestat::report::network_json(loaded.model, result).dump();
+          // No network verdict: its search for a change takes about a second even for four
+          // couplings (seconds to minutes under the sanitizers), too slow to fuzz for now.
+          const kinestat::report::NetworkReportOptions options{true, nullptr};
+          (void)kinestat::report::network_text(loaded.model, result, options);
+          (void)kinestat::report::network_json(loaded.model, result, options).dump();
           const auto scene = kinestat::report::network_scene(loaded.model, result);
           (void)kinestat::report::graph_svg(scene);
           (void)kinestat::report::mechanism_svg(scene);
@@ -68,8 +75,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       const auto model = kinestat::io::read_framework(file);
       if (model.elements.size() <= kMaxAnalysedElements) {
         const auto analysis = kinestat::framework::analyse_framework(model);
-        (void)kinestat::report::framework_report_text(model, analysis);
-        (void)kinestat::report::framework_report_json(model, analysis).dump();
+        const auto verdict = kinestat::design::framework_verdict(model, analysis);
+        (void)kinestat::report::framework_report_text(model, analysis, &verdict);
+        (void)kinestat::report::framework_report_json(model, analysis, &verdict).dump();
         (void)kinestat::report::mechanism_svg(kinestat::report::framework_scene(model, analysis));
       }
     } else if (kind == "structure") {

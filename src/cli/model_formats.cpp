@@ -8,6 +8,7 @@
 #include "cli/commands.hpp"
 #include "kinestat/io/input_error.hpp"
 #include "kinestat/io/mjcf_reader.hpp"
+#include "kinestat/io/printable_text.hpp"
 #include "kinestat/io/sdformat_reader.hpp"
 #include "kinestat/io/spacar_reader.hpp"
 #include "kinestat/io/text_file.hpp"
@@ -38,7 +39,7 @@ InputFormat input_format(const std::string& path) {
 
 framework::FrameworkModel read_spacar_model(const std::string& path) {
   io::SpacarImport imported = io::read_spacar(path);
-  for (const std::string& notice : imported.notices) std::cerr << notice << '\n';
+  for (const std::string& notice : imported.notices) std::cerr << io::printable_text(notice) << '\n';
   return std::move(imported.model);
 }
 
@@ -46,7 +47,7 @@ io::LoadedNetwork read_imported_network(const std::string& path, InputFormat for
   io::ImportedNetwork imported = format == InputFormat::urdf       ? io::read_urdf(path)
                                  : format == InputFormat::sdformat ? io::read_sdformat(path)
                                                                    : io::read_mjcf(path);
-  for (const std::string& notice : imported.notices) std::cerr << notice << '\n';
+  for (const std::string& notice : imported.notices) std::cerr << io::printable_text(notice) << '\n';
   return std::move(imported.loaded);
 }
 

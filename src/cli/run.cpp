@@ -1,10 +1,13 @@
 // The body of the `kinestat` command (main() is in main.cpp so fuzz harnesses can call run()).
 
+#include <algorithm>
 #include <iostream>
+#include <string_view>
 
 #include "cli/commands.hpp"
 #include "kinestat/io/input_error.hpp"
 #include "kinestat/io/output_file.hpp"
+#include "kinestat/io/printable_text.hpp"
 #include "kinestat/linalg/gmp_allocation.hpp"
 
 namespace kinestat::cli {
@@ -22,6 +25,17 @@ int run(int argc, const char* const* argv) {
   CLI::App app{"kinestat: nett degrees of freedom and of constraint of mechanisms, compliant mechanisms and structures"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "kinestat 0.1.0");
+  // CLI11's messages echo the arguments: their control characters are shown escaped, line by line.
+  app.failure_message([](const CLI::App* failed, const CLI::Error& error) {
+    const std::string message = CLI::FailureMessage::simple(failed, error);
+    std::string shown;
+    for (std::size_t start = 0; start < message.size();) {
+      const std::size_t end = std::min(message.find('\n', start), message.size());
+      shown += io::printable_text(std::string_view(message).substr(start, end - start)) + (end < message.size() ? "\n" : "");
+      start = end + 1;
+    }
+    return shown;
+  });
   Action action;
   register_analyze(app, action);
   register_structure(app, action);

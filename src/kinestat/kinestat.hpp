@@ -23,6 +23,7 @@
 #include "kinestat/io/network_structure.hpp"
 #include "kinestat/io/network_yaml_writer.hpp"
 #include "kinestat/io/output_file.hpp"
+#include "kinestat/io/printable_text.hpp"
 #include "kinestat/io/sdformat_reader.hpp"
 #include "kinestat/io/spacar_format.hpp"
 #include "kinestat/io/spacar_reader.hpp"

@@ -221,5 +221,44 @@ TEST(MjcfReader, ErrorsComeWithTheLine) {
   }
 }
 
+// XML lets control characters into attribute values (raw, or as &#1;) that the YAML reader
+// refuses: the network written by `convert` did not read back (fuzzer). Such names are refused
+// where they are read, and shown escaped.
+TEST(UrdfReader, NamesWithControlCharactersAreRefused) {
+  if (!urdf_reader_built_in()) GTEST_SKIP();
+  auto urdf = [](const std::string& link, const std::string& joint) {
+    return "<robot name='r'>\n  <link name='a'/>\n  <link name='" + link + "'/>\n  <joint name='" + joint +
+           "' type='continuous'>\n    <parent link='a'/><child link='" + link +
+           "'/><axis xyz='0 0 1'/>\n  </joint>\n</robot>\n";
+  };
+  try {
+    parse_urdf("j.urdf", urdf("b", "P\x01"));
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().line, 4) << e.what();
+    EXPECT_NE(std::string(e.what()).find("the joint name 'P\\x01' contains a control character"), std::string::npos) << e.what();
+  }
+  try {
+    parse_urdf("l.urdf", urdf("b&#27;[2J", "J"));
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("the link name 'b\\x1B[2J' contains a control character"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(parse_urdf("ok.urdf", urdf("b", "J")).loaded.model.couplings.size(), 1u);
+}
+
+// MuJoCo ends the process on an empty file (fuzzer): it is refused before MuJoCo sees it.
+TEST(MjcfReader, AnEmptyFileIsAnInputError) {
+  if (!mjcf_reader_built_in()) GTEST_SKIP();
+  try {
+    parse_mjcf("empty.xml", "");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "empty.xml: error: the file is empty: expected an MJCF model (<mujoco>)");
+  }
+  // libmujoco 2.2.2 also reads URDF, and crashed on a malformed one (fuzzer).
+  EXPECT_THROW(parse_mjcf("robot.xml", "<robot name='r'><l:ink name='a'/></robot>"), InputError);
+}
+
 }  // namespace
 }  // namespace kinestat::io

@@ -94,6 +94,44 @@ elements:
   EXPECT_NE(text.find("\nEND\nHALT\n"), std::string::npos) << text;
 }
 
+// A name may hold a line feed (model files allow tab and line feed in strings): in a comment of
+// the written file it would start a new SPACAR line. Here it would fix node b (position node 3),
+// turning the truss's 2 mechanisms (b moves on a sphere about a) into 0 and a self-stress.
+TEST(SpacarWriter, NamesInCommentsCannotStartALine) {
+  const FrameworkModel model = read_framework(YamlFile::parse("t.yaml", R"(kinestat: 1
+kind: framework
+dimension: spatial
+name: "two\nFIX 3"
+nodes: {a: [0, 0, 0], "b\nFIX 3": [10, 0, 0]}
+supports: {a: fixed}
+elements:
+  - {name: "bar\nFIX 3", type: truss, nodes: [a, "b\nFIX 3"]}
+)"));
+  const std::string text = spacar_text(model, {"t.yaml"});
+  EXPECT_NE(text.find("# model: two\\x0AFIX 3\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("  # node b\\x0AFIX 3\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("  # element bar\\x0AFIX 3\n"), std::string::npos) << text;
+  EXPECT_EQ(text.find("\nFIX 3"), std::string::npos) << text;
+  const auto back = framework::analyse_framework(parse_spacar("t.dat", text).model);
+  EXPECT_EQ(back.mechanisms, 2);
+  EXPECT_EQ(back.self_stresses, 0);
+}
+
+// An exactly constrained model (the planar four-bar, by hand in its header) has nothing to
+// propose; with the proposal applied that note was written without '#', and the file did not
+// read back (fuzzer).
+TEST(SpacarWriter, AnAppliedEmptyProposalStillReadsBack) {
+  const FrameworkModel model = load("tests/importers/data/spacar-planar-four-bar.dat");
+  for (bool applied : {false, true}) {
+    const std::string text = spacar_text(model, {"four-bar.dat", &model, applied});
+    EXPECT_NE(text.find("\n# (nothing to add: the model is exactly constrained)\n"), std::string::npos) << text;
+    const auto back = framework::analyse_framework(parse_spacar("again.dat", text).model);
+    EXPECT_EQ(back.m, 13);
+    EXPECT_EQ(back.n, 13);
+    EXPECT_EQ(back.rank, 13);
+  }
+}
+
 TEST(SpacarWriter, TheProposalMakesTheReReadModelExactlyConstrained) {
   // The symmetric five-sheet guide (seed 002, Fig. 5) is over- and under-constrained.
   const FrameworkModel model = load("examples/folded-sheet-guide-5-symmetric.yaml");

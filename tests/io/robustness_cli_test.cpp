@@ -147,5 +147,28 @@ TEST(RobustCli, MarkupEscapeNeverPassesControlCharacters) {
   EXPECT_EQ(report::markup_escape("tab\tline\n"), "tab\tline\n");
 }
 
+// Control characters that arrive through the command line (an option, a --value name, a file
+// name) are echoed in the error message as escapes (io::printable_text), never raw.
+TEST(RobustCli, ErrorsShowControlCharactersFromTheCommandLineEscaped) {
+  auto raw_control = [](const std::string& text) {
+    for (char c : text)
+      if ((static_cast<unsigned char>(c) < 0x20 && c != '\n') || c == 0x7F) return true;
+    return false;
+  };
+  // sh's printf turns \033 into ESC.
+  const auto option = run_cli("analyze " + example_path("davies-2-circuit.yaml") + " \"--x$(printf '\\033')[2J\"");
+  EXPECT_EQ(option.exit_code, 2);
+  EXPECT_TRUE(has(option.err, "--x\\x1B[2J")) << option.err;
+  EXPECT_FALSE(raw_control(option.err)) << option.err;
+  const auto value = run_cli("analyze " + example_path("davies-2-circuit.yaml") + " --value \"a$(printf '\\033')[31m=1\"");
+  EXPECT_EQ(value.exit_code, 2);
+  EXPECT_TRUE(has(value.err, "a\\x1B[31m")) << value.err;
+  EXPECT_FALSE(raw_control(value.err)) << value.err;
+  const auto file = run_cli("analyze \"no$(printf '\\033')such.yaml\"");
+  EXPECT_EQ(file.exit_code, 2);
+  EXPECT_TRUE(has(file.err, "no\\x1Bsuch.yaml")) << file.err;
+  EXPECT_FALSE(raw_control(file.err)) << file.err;
+}
+
 }  // namespace
 }  // namespace kinestat

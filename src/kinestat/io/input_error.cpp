@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <string_view>
 
+#include "kinestat/io/printable_text.hpp"
+
 namespace kinestat::io {
 
 namespace {
@@ -42,13 +44,14 @@ std::string shortened(const std::string& text) {
 }
 
 std::string format_message(const SourceLocation& where, const std::string& problem) {
-  // Keep the message on one line even if a caller passes a multi-line problem text.
+  // Keep the message on one line even if a caller passes a multi-line problem text, and show
+  // any other control character a name brings along as an escape.
   std::string flat = problem;
   for (char& ch : flat) {
     if (ch == '\n' || ch == '\r') ch = ' ';
   }
-  flat = shortened(flat);
-  const std::string file = where.file.empty() ? "<input>" : where.file;
+  flat = shortened(printable_text(flat));
+  const std::string file = where.file.empty() ? "<input>" : printable_text(where.file);
   if (where.line <= 0) return fmt::format("{}: error: {}", file, flat);
   return fmt::format("{}:{}:{}: error: {}", file, where.line, where.column, flat);
 }

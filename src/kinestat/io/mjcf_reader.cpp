@@ -179,18 +179,28 @@ mjModel* load(const char* file, const mjVFS* vfs, char (&error)[1024], MjcfReade
   return m;
 }
 
+// MuJoCo ends the process (mju_error, not an error message) on an empty file, and libmujoco
+// 2.2.2 crashes on some malformed URDF, which it also reads: only an MJCF root reaches it (fuzzer).
+void refuse_empty(const std::string& path, const std::string& text) {
+  if (text.empty()) throw InputError({path, 0, 0}, "the file is empty: expected an MJCF model (<mujoco>)");
+  if (xml_root_name(text) != "mujoco") throw InputError({path, 1, 1}, "expected an MJCF model: a <mujoco> root element");
+}
+
 }  // namespace
 
 bool mjcf_reader_built_in() { return true; }
 
 ImportedNetwork read_mjcf(const std::string& path) {
-  MjcfReader reader(path, read_text_file(path));
+  const std::string text = read_text_file(path);
+  refuse_empty(path, text);
+  MjcfReader reader(path, text);
   char error[1024] = "";
   mjModel* m = load(path.c_str(), nullptr, error, reader);
   return reader.read(m, error);
 }
 
 ImportedNetwork parse_mjcf(const std::string& path, const std::string& text) {
+  refuse_empty(path, text);
   const std::unique_ptr<mjVFS, VfsDeleter> vfs(new mjVFS);
   mj_defaultVFS(vfs.get());
   if (mj_makeEmptyFileVFS(vfs.get(), "model.xml", static_cast<int>(text.size())) != 0)

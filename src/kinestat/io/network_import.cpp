@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "kinestat/io/printable_text.hpp"
 #include "kinestat/io/yaml_support.hpp"
 
 namespace kinestat::io {
@@ -14,9 +15,20 @@ namespace {
 /// rotation (cos 90° = 6e-17) and are taken as zero; the others keep 12 significant digits of
 /// the largest, so noise of the other program's pose arithmetic (1.8000000000000003) goes.
 constexpr double kNoise = 1e-12;
+
+// A name must print in every report and read back from the YAML the network is written as: it
+// is refused when io::printable_text would change it (XML lets `&#1;` and raw control bytes
+// through; fuzzer).
+void require_printable(const char* what, const std::string& name, const SourceLocation& where) {
+  if (printable_text(name) != name)
+    throw InputError(where, fmt::format("the {} name '{}' contains a control character, a bidirectional control or bytes "
+                                        "that are not UTF-8; names must be printable text",
+                                        what, name));
+}
 }  // namespace
 
 NetworkBuilder::NetworkBuilder(std::string path, std::string name, std::string units) : path_(std::move(path)) {
+  require_printable("model", name, {path_, 0, 0});
   loaded_.model.name = std::move(name);
   loaded_.model.units = std::move(units);
   loaded_.model.space = screw::ScrewSpace::spatial();
@@ -25,6 +37,7 @@ NetworkBuilder::NetworkBuilder(std::string path, std::string name, std::string u
 int NetworkBuilder::body(const std::string& name) {
   const auto found = bodies_.find(name);
   if (found != bodies_.end()) return found->second;
+  require_printable("link", name, {path_, 0, 0});
   const int index = static_cast<int>(loaded_.model.bodies.size());
   bodies_[name] = index;
   loaded_.model.bodies.push_back(name);
@@ -58,6 +71,9 @@ screw::Vec3 NetworkBuilder::exact(const Eigen::Vector3d& v) {
 
 void NetworkBuilder::couple(const std::string& name, screw::CouplingType type, const std::string& from, const std::string& to,
                             const JointGeometry& geometry, const SourceLocation& where) {
+  require_printable("joint", name, where);
+  for (const std::string& link : {from, to})
+    if (!bodies_.count(link)) require_printable("link", link, where);
   for (const auto& other : loaded_.model.couplings)
     if (other.name == name) throw InputError(where, fmt::format("duplicate joint name '{}'", name));
   if (from == to) throw InputError(where, fmt::format("joint '{}' joins link '{}' to itself", name, from));

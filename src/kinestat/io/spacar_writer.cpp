@@ -8,6 +8,7 @@
 #include <set>
 
 #include "kinestat/io/input_error.hpp"
+#include "kinestat/io/printable_text.hpp"
 
 namespace kinestat::io {
 
@@ -73,8 +74,8 @@ class SpacarWriter {
   long orientation(std::size_t node) const { return static_cast<long>(2 * node + 2); }
 
   void header() {
-    out_ += fmt::format("# SPACAR input written by kinestat{}\n", options_.source.empty() ? "" : " from " + options_.source);
-    if (!model_.name.empty()) out_ += fmt::format("# model: {}\n", model_.name);
+    out_ += fmt::format("# SPACAR input written by kinestat{}\n", options_.source.empty() ? "" : " from " + printable_text(options_.source));
+    if (!model_.name.empty()) out_ += fmt::format("# model: {}\n", printable_text(model_.name));
     out_ += "# Kinematic part only. Node numbering as SPACAR Light: node i has position node 2i-1 and orientation\n"
             "# node 2i. Deformations not listed under RLSE or INPUTE are rigid; mark flexible ones DYNE.\n\n";
   }
@@ -84,8 +85,8 @@ class SpacarWriter {
     for (std::size_t i = 0; i < model_.nodes.size(); ++i) {
       if (position_[i] != static_cast<long>(2 * i + 1)) continue;  // shares a joint partner's position node
       const auto& x = model_.nodes[i].position;
-      if (planar_) out_ += fmt::format("X  {:6}  {}  {}  # node {}\n", position_[i], number(x.x()), number(x.y()), model_.nodes[i].name);
-      else out_ += fmt::format("X  {:6}  {}  {}  {}  # node {}\n", position_[i], number(x.x()), number(x.y()), number(x.z()), model_.nodes[i].name);
+      if (planar_) out_ += fmt::format("X  {:6}  {}  {}  # node {}\n", position_[i], number(x.x()), number(x.y()), printable_text(model_.nodes[i].name));
+      else out_ += fmt::format("X  {:6}  {}  {}  {}  # node {}\n", position_[i], number(x.x()), number(x.y()), number(x.z()), printable_text(model_.nodes[i].name));
     }
     out_ += "\n";
   }
@@ -113,10 +114,10 @@ class SpacarWriter {
       const std::size_t p = element.nodes[0];
       if (element.type == ElementType::truss) {
         out_ += fmt::format("{}  {:4}  {:4}  {:4}  # element {}\n", planar_ ? "PLTRUSS" : "TRUSS", next, position_[p],
-                            position_[element.nodes[1]], element.name);
+                            position_[element.nodes[1]], printable_text(element.name));
         ++next;
       } else if (element.type == ElementType::beam) {
-        beam(next++, p, element.nodes[1], element.frame.col(1), "element " + element.name);
+        beam(next++, p, element.nodes[1], element.frame.col(1), "element " + printable_text(element.name));
       } else {
         for (DeformationRole role : element.roles)
           if (role != DeformationRole::fixed)
@@ -132,8 +133,8 @@ class SpacarWriter {
           const Eigen::Vector3d x = axis.normalized();
           const Eigen::Vector3d reference = std::abs(x.z()) < 0.9 ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitX();
           const Eigen::Vector3d z = (reference - reference.dot(x) * x).normalized();
-          beam(next++, p, q, z.cross(x), fmt::format("rigid body {} ({} to {})", element.name, model_.nodes[p].name,
-                                                     model_.nodes[q].name));
+          beam(next++, p, q, z.cross(x), fmt::format("rigid body {} ({} to {})", printable_text(element.name), printable_text(model_.nodes[p].name),
+                                                     printable_text(model_.nodes[q].name)));
         }
       }
     }
@@ -156,7 +157,7 @@ class SpacarWriter {
           if (element.roles[d] == role && is_new) list += fmt::format(" {}", d + 1);
         }
         if (!list.empty()) {
-          out += fmt::format("{}{:<7} {:4} {}  # element {}\n", prefix, keyword, number, list, element.name);
+          out += fmt::format("{}{:<7} {:4} {}  # element {}\n", prefix, keyword, number, list, printable_text(element.name));
           ++written;
         }
       }
@@ -169,19 +170,20 @@ class SpacarWriter {
     for (std::size_t i = 0; i < model.nodes.size(); ++i) {
       const auto& node = model.nodes[i];
       for (const auto& [role, keyword] : {std::pair{CoordinateRole::fixed, "FIX"}, std::pair{CoordinateRole::independent, "INPUTX"}}) {
-        const auto has = [&](int s) {
-          const bool is_new = !base || base->nodes[i].roles[static_cast<std::size_t>(s)] != role;
-          return node.roles[static_cast<std::size_t>(s)] == role && is_new;
+        // `wanted` copies the structured binding: clang 14 refuses one named inside a lambda.
+        const auto has = [&, wanted = role](int s) {
+          const bool is_new = !base || base->nodes[i].roles[static_cast<std::size_t>(s)] != wanted;
+          return node.roles[static_cast<std::size_t>(s)] == wanted && is_new;
         };
         const std::vector<int> translations = planar_ ? std::vector<int>{0, 1} : std::vector<int>{0, 1, 2};
         std::vector<int> chosen;
         for (int s : translations)
           if (has(s)) chosen.push_back(s);
         if (chosen.size() == translations.size() && role == CoordinateRole::fixed) {
-          add(fmt::format("{}FIX     {:4}       # node {} position", prefix, position_[i], node.name));
+          add(fmt::format("{}FIX     {:4}       # node {} position", prefix, position_[i], printable_text(node.name)));
         } else {
           for (int s : chosen)
-            add(fmt::format("{}{:<7} {:4}  {}    # node {} {}", prefix, keyword, position_[i], s + 1, node.name,
+            add(fmt::format("{}{:<7} {:4}  {}    # node {} {}", prefix, keyword, position_[i], s + 1, printable_text(node.name),
                                      framework::kSlotNames[static_cast<std::size_t>(s)]));
         }
         if (!node.rotational || !used_orientations_.count(i)) continue;
@@ -191,18 +193,19 @@ class SpacarWriter {
         for (int s : rotations)
           if (has(s)) chosen.push_back(s);
         if (chosen.size() == rotations.size() && role == CoordinateRole::fixed) {
-          add(fmt::format("{}FIX     {:4}       # node {} orientation", prefix, orientation(i), node.name));
+          add(fmt::format("{}FIX     {:4}       # node {} orientation", prefix, orientation(i), printable_text(node.name)));
         } else {
           for (int s : chosen)
             add(fmt::format("{}{:<7} {:4}  {}    # node {} {}", prefix, keyword, orientation(i), planar_ ? 1 : s - 1,
-                                     node.name, framework::kSlotNames[static_cast<std::size_t>(s)]));
+                                     printable_text(node.name), framework::kSlotNames[static_cast<std::size_t>(s)]));
         }
       }
     }
     for (const auto& line : lines) out += line + "\n";
     written += lines.size();
     if (!base && written) out += "\n";
-    if (base && written == 0) out += fmt::format("{}(nothing to add: the model is exactly constrained)\n", prefix);
+    // A comment also when the proposal is applied (prefix ""): the reader takes any other line as a keyword.
+    if (base && written == 0) out += "# (nothing to add: the model is exactly constrained)\n";
   }
 
   void proposal() {

@@ -1,5 +1,7 @@
 #include "kinestat/io/yaml_support.hpp"
 
+#include "kinestat/io/printable_text.hpp"
+
 #include <fcntl.h>
 #include <fmt/format.h>
 #include <sys/stat.h>
@@ -38,22 +40,8 @@ TextPosition first_unreadable_character(std::string_view text, bool unescaped = 
   std::size_t i = 0;
   while (i < text.size()) {
     const auto byte = static_cast<unsigned char>(text[i]);
-    std::size_t length = 0;
-    unsigned char low = 0x80, high = 0xBF;  // allowed range of the second byte
-    if (byte < 0x80) length = 1;
-    else if (byte >= 0xC2 && byte <= 0xDF) length = 2;
-    else if (byte == 0xE0) length = 3, low = 0xA0;
-    else if ((byte >= 0xE1 && byte <= 0xEC) || byte == 0xEE || byte == 0xEF) length = 3;
-    else if (byte == 0xED) length = 3, high = 0x9F;
-    else if (byte == 0xF0) length = 4, low = 0x90;
-    else if (byte >= 0xF1 && byte <= 0xF3) length = 4;
-    else if (byte == 0xF4) length = 4, high = 0x8F;
-    else return {line, column, i, false};
-    if (i + length > text.size()) return {line, column, i, false};
-    for (std::size_t k = 1; k < length; ++k) {
-      const auto next = static_cast<unsigned char>(text[i + k]);
-      if (next < (k == 1 ? low : 0x80) || next > (k == 1 ? high : 0xBF)) return {line, column, i, false};
-    }
+    const std::size_t length = utf8_character_length(text, i);
+    if (length == 0) return {line, column, i, false};
     const bool allowed_control = byte == '\t' || byte == '\n' || (byte == '\r' && !unescaped);
     if ((byte < 0x20 && !allowed_control) || byte == 0x7F) return {line, column, i, true};
     // C1 controls (U+0080-U+009F) reach a terminal as escape sequences too.

@@ -8,6 +8,7 @@
 #include <string>
 #include <utility>
 
+#include "kinestat/io/printable_text.hpp"
 #include "kinestat/report/verdict_report.hpp"
 
 namespace kinestat::report {
@@ -185,11 +186,15 @@ nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const 
 }
 
 std::string framework_report_text(const FrameworkModel& model, const FrameworkAnalysis& a, const design::Verdict* verdict) {
+  using io::printable_text;
   std::string out = verdict ? verdict_text(*verdict) : std::string();
   auto line = [&out](const std::string& text) { out += text + "\n"; };
-  line(fmt::format("framework{} ({}, {} nodes, {} elements{})", model.name.empty() ? "" : " " + model.name,
+  // Labels carry node and element names: printed through io::printable_text.
+  auto row_label = [&](Eigen::Index row) { return printable_text(framework_row_label(model, a, row)); };
+  auto column_label = [&](Eigen::Index column) { return printable_text(framework_column_label(model, a, column)); };
+  line(fmt::format("framework{} ({}, {} nodes, {} elements{})", model.name.empty() ? "" : " " + printable_text(model.name),
                    model.dimension == 2 ? "planar" : "spatial", model.nodes.size(), model.elements.size(),
-                   model.units.empty() ? "" : ", lengths in " + model.units));
+                   model.units.empty() ? "" : ", lengths in " + printable_text(model.units)));
   const auto& c = a.count;
   line(fmt::format("coordinates: {} = {} fixed + {} dependent + {} independent", c.coordinates, c.fixed_coordinates,
                    c.dependent_coordinates, c.independent_coordinates));
@@ -223,22 +228,22 @@ std::string framework_report_text(const FrameworkModel& model, const FrameworkAn
   for (std::size_t k = 0; k < a.modes.size(); ++k) {
     line(fmt::format("mode {} (velocities; translations per characteristic length):", k + 1));
     for (Eigen::Index col : a.modes[k].moving)
-      line(fmt::format("  {:>16} {:>12}", framework_column_label(model, a, col), number(a.modes[k].velocities(col))));
+      line(fmt::format("  {:>16} {:>12}", column_label(col), number(a.modes[k].velocities(col))));
   }
   for (std::size_t k = 0; k < a.stresses.size(); ++k) {
     line(fmt::format("stress state {} (generalised stress resultants):", k + 1));
     for (Eigen::Index row = 0; row < a.stresses[k].resultants.size(); ++row)
       if (a.stresses[k].resultants(row) != 0.0)
-        line(fmt::format("  {:>24} {:>12}", framework_row_label(model, a, row), number(a.stresses[k].resultants(row))));
+        line(fmt::format("  {:>24} {:>12}", row_label(row), number(a.stresses[k].resultants(row))));
   }
   if (!a.releases.empty()) {
     std::string list;
-    for (Eigen::Index row : a.releases) list += (list.empty() ? "" : ", ") + framework_row_label(model, a, row);
+    for (Eigen::Index row : a.releases) list += (list.empty() ? "" : ", ") + row_label(row);
     line("release (one minimal set): " + list);
   }
   if (!a.constrain.empty()) {
     std::string list;
-    for (Eigen::Index col : a.constrain) list += (list.empty() ? "" : ", ") + framework_column_label(model, a, col);
+    for (Eigen::Index col : a.constrain) list += (list.empty() ? "" : ", ") + column_label(col);
     line("constrain or declare independent (one minimal set): " + list);
   }
   if (!a.vectors && (a.mechanisms > 0 || a.self_stresses > 0))

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "kinestat/io/printable_text.hpp"
 #include "kinestat/report/linear_form_text.hpp"
 #include "kinestat/report/verdict_report.hpp"
 
@@ -16,6 +17,15 @@ using network::LinearForms;
 using network::NetworkResult;
 using Index = Eigen::Index;
 using Json = nlohmann::ordered_json;
+using io::printable_text;
+
+// Names as the text reports print them: control characters escaped (io::printable_text).
+std::vector<std::string> printable_names(const std::vector<std::string>& names) {
+  std::vector<std::string> out;
+  out.reserve(names.size());
+  for (const auto& name : names) out.push_back(printable_text(name));
+  return out;
+}
 
 std::vector<std::string> names_of(const std::vector<int>& indices, const std::vector<network::Magnitude>& magnitudes) {
   std::vector<std::string> names;
@@ -149,7 +159,7 @@ std::string contracted_text(const network::Model& model, const NetworkResult& r,
   std::vector<std::vector<std::string>> cells(static_cast<std::size_t>(r.d));
   std::vector<std::size_t> width(static_cast<std::size_t>(r.e), 1);
   for (int e = 0; e < r.e; ++e) {
-    width[static_cast<std::size_t>(e)] = model.couplings[static_cast<std::size_t>(e)].name.size();
+    width[static_cast<std::size_t>(e)] = printable_text(model.couplings[static_cast<std::size_t>(e)].name).size();
     for (int c = 0; c < r.d; ++c) {
       cells[static_cast<std::size_t>(c)].push_back(linear_form_text(forms, e * r.d + c, primaries, noise));
       width[static_cast<std::size_t>(e)] = std::max(width[static_cast<std::size_t>(e)], cells[static_cast<std::size_t>(c)].back().size());
@@ -157,7 +167,7 @@ std::string contracted_text(const network::Model& model, const NetworkResult& r,
   }
   std::string text = "      ";
   for (int e = 0; e < r.e; ++e)
-    text += fmt::format("  {:>{}}", model.couplings[static_cast<std::size_t>(e)].name, width[static_cast<std::size_t>(e)]);
+    text += fmt::format("  {:>{}}", printable_text(model.couplings[static_cast<std::size_t>(e)].name), width[static_cast<std::size_t>(e)]);
   text += "\n";
   const auto letters = coordinate_letters(r, motion);
   for (int c = 0; c < r.d; ++c) {
@@ -180,12 +190,13 @@ std::string joined_or_dash(const std::vector<std::string>& names) { return names
 }  // namespace
 
 std::string network_text(const network::Model& model, const NetworkResult& r, const NetworkReportOptions& options) {
-  const auto motion_primaries = names_of(r.primary_motion, r.motions);
-  const auto action_primaries = names_of(r.primary_action, r.actions);
+  const auto motion_primaries = printable_names(names_of(r.primary_motion, r.motions));
+  const auto action_primaries = printable_names(names_of(r.primary_action, r.actions));
+  const auto coupling_name = [&](std::size_t e) { return printable_text(model.couplings[e].name); };
   std::string t = options.verdict ? verdict_text(*options.verdict) : std::string();
-  t += fmt::format("{}\n", r.model_name.empty() ? "Coupling network" : r.model_name);
+  t += fmt::format("{}\n", r.model_name.empty() ? "Coupling network" : printable_text(r.model_name));
   t += fmt::format("  coupling network, {} (d = {}){}; {}\n", r.d == 6 ? "spatial" : "planar", r.d,
-                   model.units.empty() ? "" : ", lengths in " + model.units, r.arithmetic_reason);
+                   model.units.empty() ? "" : ", lengths in " + printable_text(model.units), printable_text(r.arithmetic_reason));
   t += fmt::format("  bodies n = {}, couplings e = {}, circuits l = {}, cutsets k = {}\n", r.bodies, r.e, r.l, r.k);
   t += fmt::format("  gross degree of freedom F = {}, gross degree of constraint C = {}\n", r.F, r.C);
   t += fmt::format("  rank of the network unit motion matrix: {}\n", rank_text("m", r.circulation.solution.rank));
@@ -197,8 +208,8 @@ std::string network_text(const network::Model& model, const NetworkResult& r, co
                    r.identities_hold ? "hold" : "FAIL");
   t += "\n";
   std::vector<std::string> branch_names, chord_names;
-  for (int b : r.branches) branch_names.push_back(model.couplings[static_cast<std::size_t>(b)].name);
-  for (int c : r.chords) chord_names.push_back(model.couplings[static_cast<std::size_t>(c)].name);
+  for (int b : r.branches) branch_names.push_back(coupling_name(static_cast<std::size_t>(b)));
+  for (int c : r.chords) chord_names.push_back(coupling_name(static_cast<std::size_t>(c)));
   t += fmt::format("Spanning tree: branches {}; chords {}\n", joined_or_dash(branch_names), joined_or_dash(chord_names));
   t += fmt::format("Primary variables: motions {}; actions {}\n", joined_or_dash(motion_primaries), joined_or_dash(action_primaries));
   t += "\n";
@@ -208,7 +219,7 @@ std::string network_text(const network::Model& model, const NetworkResult& r, co
     t += fmt::format("{}\n", title);
     const double noise = noise_level(forms);
     for (std::size_t i = 0; i < magnitudes.size(); ++i) {
-      t += fmt::format("  {:<10} = {}", magnitudes[i].name, linear_form_text(forms, static_cast<Index>(i), primaries, noise));
+      t += fmt::format("  {:<10} = {}", printable_text(magnitudes[i].name), linear_form_text(forms, static_cast<Index>(i), primaries, noise));
       if (values) t += fmt::format("   = {}", value_text((*values)(static_cast<Index>(i))));
       t += "\n";
     }
@@ -224,17 +235,17 @@ std::string network_text(const network::Model& model, const NetworkResult& r, co
     for (int e = 0; e < r.e; ++e) {
       std::vector<std::string> coordinates;
       for (int c = 0; c < r.d; ++c) coordinates.push_back(value_text(columns(c, e)));
-      t += fmt::format("  {:<10} ({})\n", model.couplings[static_cast<std::size_t>(e)].name, fmt::join(coordinates, ", "));
+      t += fmt::format("  {:<10} ({})\n", coupling_name(static_cast<std::size_t>(e)), fmt::join(coordinates, ", "));
     }
   };
   if (r.coupling_motion_values) numeric_screws("Numeric motion of each coupling (axis formation):", *r.coupling_motion_values);
   if (r.coupling_action_values) numeric_screws("Numeric action of each coupling (ray formation):", *r.coupling_action_values);
   if (!r.missing_motion_values.empty())
     t += fmt::format("\nValues: no value for the motion primaries {}; what depends on them is shown as ?\n",
-                     fmt::join(r.missing_motion_values, ", "));
+                     fmt::join(printable_names(r.missing_motion_values), ", "));
   if (!r.missing_action_values.empty())
     t += fmt::format("\nValues: no value for the action primaries {}; what depends on them is shown as ?\n",
-                     fmt::join(r.missing_action_values, ", "));
+                     fmt::join(printable_names(r.missing_action_values), ", "));
   t += fmt::format("\nMethods agree: circulation law and cutset motions {}; cutset law and circuit actions {}\n",
                    r.motion_methods_agree ? "yes" : "NO", r.action_methods_agree ? "yes" : "NO");
 
@@ -242,8 +253,9 @@ std::string network_text(const network::Model& model, const NetworkResult& r, co
   t += fmt::format("  {:<12} {:<10} {:>3} {:>4}  {:<18} {:>3} {:>4}  {}\n", "bodies", "coupling", "f", "fij",
                    "motion primaries", "c", "cij", "action primaries");
   for (const auto& p : r.pairs) {
-    const std::string bodies = model.bodies[static_cast<std::size_t>(p.body_i)] + ", " + model.bodies[static_cast<std::size_t>(p.body_j)];
-    const std::string coupling = p.coupling ? model.couplings[static_cast<std::size_t>(*p.coupling)].name : "absent";
+    const std::string bodies = printable_text(model.bodies[static_cast<std::size_t>(p.body_i)]) + ", " +
+                               printable_text(model.bodies[static_cast<std::size_t>(p.body_j)]);
+    const std::string coupling = p.coupling ? coupling_name(static_cast<std::size_t>(*p.coupling)) : "absent";
     std::vector<std::string> mp, ap;
     for (int i : p.motion_primaries) mp.push_back(motion_primaries[static_cast<std::size_t>(i)]);
     for (int i : p.action_primaries) ap.push_back(action_primaries[static_cast<std::size_t>(i)]);
@@ -406,7 +418,7 @@ std::vector<std::string> coupling_names(const network::Model& model, const std::
 
 std::string sparse_network_text(const network::Model& model, const network::SparseNetworkResult& r) {
   std::string t;
-  t += fmt::format("{}\n", model.name.empty() ? "Coupling network" : model.name);
+  t += fmt::format("{}\n", model.name.empty() ? "Coupling network" : printable_text(model.name));
   t += fmt::format("  coupling network, {} (d = {}); sparse body-twist form, floating point\n", r.d == 6 ? "spatial" : "planar", r.d);
   t += fmt::format("  bodies n = {}, couplings e = {}, circuits l = {}\n", r.bodies, r.e, r.l);
   t += fmt::format("  gross degree of freedom F = {}, gross degree of constraint C = {}\n", r.F, r.C);
@@ -414,8 +426,8 @@ std::string sparse_network_text(const network::Model& model, const network::Spar
   t += fmt::format("  nett degree of freedom    FN = d(n-1) - rank K = {}\n", r.FN);
   t += fmt::format("  nett degree of constraint CN = C - rank K = {}\n", r.CN);
   t += fmt::format("  class: {}\n", network::class_description(r.classification));
-  t += fmt::format("Couplings that carry a self-stress ({}): {}\n", r.stressed.size(), joined_or_dash(coupling_names(model, r.stressed)));
-  t += fmt::format("Couplings that move ({}): {}\n", r.moving.size(), joined_or_dash(coupling_names(model, r.moving)));
+  t += fmt::format("Couplings that carry a self-stress ({}): {}\n", r.stressed.size(), joined_or_dash(printable_names(coupling_names(model, r.stressed))));
+  t += fmt::format("Couplings that move ({}): {}\n", r.moving.size(), joined_or_dash(printable_names(coupling_names(model, r.moving))));
   t += fmt::format("Not computed on the sparse path (use the dense path for these): {}\n", fmt::join(kSparseLeftOut, "; "));
   if (r.rank.close()) t += "Warning: the rank of K is a close decision: the geometry is near one with a different FN and CN\n";
   return t;

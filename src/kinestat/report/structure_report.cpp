@@ -1,5 +1,6 @@
 #include "kinestat/report/structure_report.hpp"
 
+#include "kinestat/io/printable_text.hpp"
 #include "kinestat/report/json_text.hpp"
 #include "kinestat/report/verdict_report.hpp"
 #include "kinestat/report/markup_escape.hpp"
@@ -47,7 +48,7 @@ bool named(const StructureModel& model) {
 
 std::string names_of(const StructureModel& model, const std::vector<int>& bodies) {
   std::string out;
-  for (std::size_t i = 0; i < bodies.size(); ++i) out += (i ? ", " : "") + structure::body_label(model, bodies[i]);
+  for (std::size_t i = 0; i < bodies.size(); ++i) out += (i ? ", " : "") + io::printable_text(structure::body_label(model, bodies[i]));
   return out;
 }
 
@@ -123,8 +124,8 @@ std::string structure_text(const StructureReport& report) {
   const Decomposition& d = report.decomposition;
   std::string out;
   if (report.verdict) out += verdict_text(*report.verdict);
-  out += "Structural analysis" + (model.name.empty() ? std::string() : ": " + model.name) + "\n";
-  if (!report.units.empty()) out += fmt::format("  units: {}\n", report.units);
+  out += "Structural analysis" + (model.name.empty() ? std::string() : ": " + io::printable_text(model.name)) + "\n";
+  if (!report.units.empty()) out += fmt::format("  units: {}\n", io::printable_text(report.units));
   out += fmt::format("  {} (d = {}), {} bodies (body 1 is the frame), {} pairs, {} input(s), mobility {}\n",
                      space_name(model), model.dimension, model.body_count(), model.pairs.size(), model.input_count(),
                      model.mobility());
@@ -279,13 +280,11 @@ std::string structure_json(const StructureReport& report) {
 std::string structure_dot(const StructureModel& model, const Decomposition& d) {
   const auto diagram = structure::structural_diagram(d);
   std::string out = "digraph structure {\n";
+  // A DOT string: control characters escaped as in every text report, then quoted.
   std::string title;
-  for (char c : model.name.empty() ? std::string("structural diagram") : model.name) {
+  for (char c : io::printable_text(model.name.empty() ? std::string("structural diagram") : model.name)) {
     if (c == '"' || c == '\\') title += '\\';
-    const auto byte = static_cast<unsigned char>(c);
-    if (c == '\n' || c == '\r') continue;
-    if (byte < 0x20 || byte == 0x7F) title += "\xEF\xBF\xBD";  // no control character in a DOT label
-    else title += c;
+    title += c;
   }
   out += "  label=\"" + title + "\";\n  labelloc=t;\n";
   out += "  rankdir=TB;\n  node [shape=circle, fontname=\"Helvetica\"];\n";

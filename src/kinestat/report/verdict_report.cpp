@@ -4,11 +4,14 @@
 
 #include <cmath>
 
+#include "kinestat/io/printable_text.hpp"
+
 namespace kinestat::report {
 
 namespace {
 
 using Json = nlohmann::ordered_json;
+using io::printable_text;
 
 // Participations to four digits: enough to rank by eye, stable against last-bit noise.
 double share(double x) { return std::round(x * 1e4) / 1e4; }
@@ -40,15 +43,17 @@ std::string vector_text(const std::vector<double>& v) {
   return fmt::format("({})", fmt::join(parts, ", "));
 }
 
+// Every string of the verdict can carry a name from the model: each is printed through
+// io::printable_text.
 std::string change_text(const design::DesignChange& c) {
-  std::string text = fmt::format("{} {} {}", c.action, c.target_kind, c.target);
-  if (!c.from.empty() && c.becomes != "removed") text += fmt::format(": {} -> {}", c.from, c.becomes);
-  else text += fmt::format(" -> {}", c.becomes);
+  std::string text = fmt::format("{} {} {}", c.action, c.target_kind, printable_text(c.target));
+  if (!c.from.empty() && c.becomes != "removed") text += fmt::format(": {} -> {}", printable_text(c.from), printable_text(c.becomes));
+  else text += fmt::format(" -> {}", printable_text(c.becomes));
   std::vector<std::string> geometry;
   for (const auto& [key, value] : c.geometry)
     if (key != "point") geometry.push_back(fmt::format("{} {}", key, vector_text(value)));
   if (!geometry.empty()) text += fmt::format(" ({})", fmt::join(geometry, ", "));
-  if (!c.reason.empty()) text += ": " + c.reason;
+  if (!c.reason.empty()) text += ": " + printable_text(c.reason);
   return text;
 }
 
@@ -100,12 +105,13 @@ Json lead_with_verdict(const design::Verdict& verdict, const Json& report, const
 }
 
 std::string verdict_text(const design::Verdict& v) {
-  std::string t = fmt::format("Verdict: {}\n", v.summary);
+  std::string t = fmt::format("Verdict: {}\n", printable_text(v.summary));
   for (const auto& s : v.states) {
-    t += fmt::format("  {}: {}\n", s.kind, s.description);
+    t += fmt::format("  {}: {}\n", s.kind, printable_text(s.description));
     for (std::size_t i = 0; i < s.participants.size() && i < kTextParticipants; ++i) {
       const auto& p = s.participants[i];
-      t += fmt::format("    {:>3.0f}%  {} {}{}\n", 100.0 * p.participation, p.kind, p.name, p.detail.empty() ? "" : ": " + p.detail);
+      t += fmt::format("    {:>3.0f}%  {} {}{}\n", 100.0 * p.participation, p.kind, printable_text(p.name),
+                       p.detail.empty() ? "" : ": " + printable_text(p.detail));
     }
     if (s.participants.size() > kTextParticipants)
       t += fmt::format("    ... and {} more (see --json)\n", s.participants.size() - kTextParticipants);
@@ -115,8 +121,8 @@ std::string verdict_text(const design::Verdict& v) {
                      v.changes_verified ? "one minimal set, verified by re-analysis" : "NOT verified: the re-analysis is not exactly constrained");
     for (const auto& c : v.changes) t += "    - " + change_text(c) + "\n";
   }
-  if (!v.becomes.empty() && !v.exactly_constrained) t += fmt::format("  becomes: {}\n", v.becomes);
-  if (!v.note.empty()) t += fmt::format("  note: {}\n", v.note);
+  if (!v.becomes.empty() && !v.exactly_constrained) t += fmt::format("  becomes: {}\n", printable_text(v.becomes));
+  if (!v.note.empty()) t += fmt::format("  note: {}\n", printable_text(v.note));
   t += "\n";
   return t;
 }
