@@ -1,5 +1,5 @@
 // libFuzzer harness: any bytes as a model file (network, framework or structure), through the
-// reader of its kind and, for small models, the analyses, the framework and structure verdicts
+// reader of its kind and, for small models, the analyses, the network, framework and structure verdicts
 // and every report of them (text, JSON, DOT, SVG drawings of the scene). Input errors are
 // expected; any other exception, crash, hang or sanitizer report is a bug. JSON is dumped strictly (a byte that is not UTF-8
 // throws), so anything a reader lets through that a report cannot print shows up here.
@@ -8,6 +8,7 @@
 #include <string>
 
 #include "kinestat/design/framework_verdict.hpp"
+#include "kinestat/design/network_verdict.hpp"
 #include "kinestat/design/structure_verdict.hpp"
 #include "kinestat/framework/framework_analysis.hpp"
 #include "kinestat/io/framework_reader.hpp"
@@ -58,9 +59,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       if (loaded.model.couplings.size() <= kMaxAnalysedCouplings) {
         try {
           const auto result = kinestat::network::analyse_network(loaded.model);
-          // No network verdict: its search for a change takes about a second even for four
-          // couplings (seconds to minutes under the sanitizers), too slow to fuzz for now.
-          const kinestat::report::NetworkReportOptions options{true, nullptr};
+          // The verdict's change search screens copies with one rank each (milliseconds).
+          const auto verdict = kinestat::design::network_verdict(loaded.model, result);
+          const kinestat::report::NetworkReportOptions options{true, &verdict};
           (void)kinestat::report::network_text(loaded.model, result, options);
           (void)kinestat::report::network_json(loaded.model, result, options).dump();
           const auto scene = kinestat::report::network_scene(loaded.model, result);
