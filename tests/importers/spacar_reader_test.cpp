@@ -152,6 +152,48 @@ double mode_rate(const framework::FrameworkAnalysis& a, const FrameworkModel& m,
   return 0.0;
 }
 
+// Cosines of the principal angles between the column spans of `a` and `b` (both of full column
+// rank): the singular values of Qaᵀ Qb. Equal spaces give cosines 1.
+Eigen::VectorXd principal_cosines(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+  const Eigen::MatrixXd qa = Eigen::HouseholderQR<Eigen::MatrixXd>(a).householderQ() * Eigen::MatrixXd::Identity(a.rows(), a.cols());
+  const Eigen::MatrixXd qb = Eigen::HouseholderQR<Eigen::MatrixXd>(b).householderQ() * Eigen::MatrixXd::Identity(b.rows(), b.cols());
+  return Eigen::JacobiSVD<Eigen::MatrixXd>(qa.transpose() * qb).singularValues();
+}
+
+using Names = std::map<std::string, std::string>;
+
+// Modes (as rates of "node.slot") and stress states (as resultants of "element.deformation") of
+// an analysis, rows in the order of `keys`, with node and element names mapped through `nodes`
+// and `elements` (SPACAR numbers -> YAML names).
+Eigen::MatrixXd mode_basis(const framework::FrameworkAnalysis& a, const FrameworkModel& m, const std::vector<std::string>& keys,
+                           const Names& nodes) {
+  Eigen::MatrixXd basis = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(keys.size()), static_cast<Eigen::Index>(a.modes.size()));
+  for (std::size_t c = 0; c < a.partition.dependent_coordinates.size(); ++c) {
+    const auto& ref = a.indexing.coordinates[static_cast<std::size_t>(a.partition.dependent_coordinates[c])];
+    const std::string& name = m.nodes[ref.node].name;
+    const std::string key = (nodes.empty() ? name : nodes.at(name)) + "." + framework::kSlotNames[static_cast<std::size_t>(ref.slot)];
+    const auto row = std::find(keys.begin(), keys.end(), key) - keys.begin();
+    EXPECT_LT(row, static_cast<long>(keys.size())) << key;
+    for (std::size_t k = 0; k < a.modes.size(); ++k) basis(row, static_cast<Eigen::Index>(k)) = a.modes[k].velocities(static_cast<Eigen::Index>(c));
+  }
+  return basis;
+}
+
+Eigen::MatrixXd stress_basis(const framework::FrameworkAnalysis& a, const FrameworkModel& m, const std::vector<std::string>& keys,
+                             const Names& elements) {
+  Eigen::MatrixXd basis = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(keys.size()), static_cast<Eigen::Index>(a.stresses.size()));
+  const auto rows = a.partition.jacobian_rows();
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    const auto& ref = a.indexing.deformations[static_cast<std::size_t>(rows[r])];
+    const std::string& name = m.elements[ref.element].name;
+    const std::string key = (elements.empty() ? name : elements.at(name)) + "." + std::to_string(ref.deformation);
+    const auto row = std::find(keys.begin(), keys.end(), key) - keys.begin();
+    EXPECT_LT(row, static_cast<long>(keys.size())) << key;
+    for (std::size_t k = 0; k < a.stresses.size(); ++k) basis(row, static_cast<Eigen::Index>(k)) = a.stresses[k].resultants(static_cast<Eigen::Index>(r));
+  }
+  return basis;
+}
+
 TEST(SpacarReader, PlanarFourBarJoinedByPlanarHingesHasOneMechanism) {
   FrameworkModel m = read_spacar(data("spacar-planar-hinged-four-bar.dat")).model;
   EXPECT_EQ(m.dimension, 2);
@@ -218,6 +260,41 @@ TEST(SpacarReader, SpacarLightHingeAndPinBodyGiveAPendulum) {
   EXPECT_NEAR(mode_rate(a, m, 0, "7", 1), w * 1.0 / (2.0 / 3.0), 1e-12);
   for (int slot : {0, 2, 3, 4}) EXPECT_NEAR(mode_rate(a, m, 0, "7", slot), 0.0, 1e-12) << slot;
   for (int slot : {0, 1, 2, 3, 4}) EXPECT_NEAR(mode_rate(a, m, 0, "4", slot), 0.0, 1e-12) << slot;
+}
+
+TEST(SpacarReader, TwoSpacarLightHingesInSeriesAreAUniversalJoint) {
+  FrameworkModel m = read_spacar(data("spacar-universal-joint.dat")).model;
+  ASSERT_EQ(m.nodes.size(), 4u);  // 1, 4, 7, 10: every orientation rides on its user node's position
+  EXPECT_EQ(element(m, "1").nodes, (std::vector<std::size_t>{node(m, "1"), node(m, "4")}));
+  EXPECT_EQ(element(m, "3").nodes, (std::vector<std::size_t>{node(m, "4"), node(m, "7")}));
+  EXPECT_EQ(element(m, "3").roles, (std::vector<R>{R::released, R::released, R::released, R::fixed, R::fixed, R::fixed}));
+  EXPECT_EQ(element(m, "4").nodes, (std::vector<std::size_t>{node(m, "4"), node(m, "7")}));
+  auto a = framework::analyse_framework(m);
+  EXPECT_EQ(a.n, 18);
+  EXPECT_EQ(a.m, 18);
+  EXPECT_TRUE(a.exactly_constrained());
+
+  m.elements[0].roles[5] = R::released;  // hinge 1: rz
+  m.elements[2].roles[4] = R::released;  // hinge 3: ry
+  a = framework::analyse_framework(m);
+  EXPECT_EQ(a.m, 16);
+  EXPECT_EQ(a.rank, 16);
+  EXPECT_EQ(a.mechanisms, 2);
+  EXPECT_EQ(a.self_stresses, 0);
+  // The two turns by hand (translations per characteristic length L = 0.75: nodes at x = 0, 0,
+  // 0, 1 around x = 1/4): about z, the cross, the arm and its tip turn and the tip (1, 0, 0)
+  // moves along +y; about y, the arm and its tip turn and the tip moves along -z.
+  std::vector<std::string> keys;
+  for (const char* n : {"4", "7", "10"})
+    for (const char* slot : framework::kSlotNames) keys.push_back(std::string(n) + "." + slot);
+  Eigen::MatrixXd expected = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(keys.size()), 2);
+  const auto at = [&](const std::string& key) { return std::find(keys.begin(), keys.end(), key) - keys.begin(); };
+  for (const char* key : {"4.rz", "7.rz", "10.rz"}) expected(at(key), 0) = 1.0;
+  expected(at("10.y"), 0) = 1.0 / 0.75;
+  for (const char* key : {"7.ry", "10.ry"}) expected(at(key), 1) = 1.0;
+  expected(at("10.z"), 1) = -1.0 / 0.75;
+  const Eigen::VectorXd cosines = principal_cosines(mode_basis(a, m, keys, {}), expected);
+  EXPECT_NEAR(cosines.minCoeff(), 1.0, 1e-12) << cosines.transpose();
 }
 
 TEST(SpacarReader, HingeBetweenTwoBeamsAboutY) {
@@ -298,48 +375,6 @@ TEST(SpacarReader, FoldedSheetGuideMatchesTheYamlExampleAndTheSeed) {
     EXPECT_TRUE(dat.elements[e].frame.isApprox(yaml.elements[e].frame, 1e-12)) << yaml.elements[e].name;
     EXPECT_EQ(dat.elements[e].roles, yaml.elements[e].roles) << yaml.elements[e].name;
   }
-}
-
-// Cosines of the principal angles between the column spans of `a` and `b` (both of full column
-// rank): the singular values of Qaᵀ Qb. Equal spaces give cosines 1.
-Eigen::VectorXd principal_cosines(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
-  const Eigen::MatrixXd qa = Eigen::HouseholderQR<Eigen::MatrixXd>(a).householderQ() * Eigen::MatrixXd::Identity(a.rows(), a.cols());
-  const Eigen::MatrixXd qb = Eigen::HouseholderQR<Eigen::MatrixXd>(b).householderQ() * Eigen::MatrixXd::Identity(b.rows(), b.cols());
-  return Eigen::JacobiSVD<Eigen::MatrixXd>(qa.transpose() * qb).singularValues();
-}
-
-using Names = std::map<std::string, std::string>;
-
-// Modes (as rates of "node.slot") and stress states (as resultants of "element.deformation") of
-// an analysis, rows in the order of `keys`, with node and element names mapped through `nodes`
-// and `elements` (SPACAR numbers -> YAML names).
-Eigen::MatrixXd mode_basis(const framework::FrameworkAnalysis& a, const FrameworkModel& m, const std::vector<std::string>& keys,
-                           const Names& nodes) {
-  Eigen::MatrixXd basis = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(keys.size()), static_cast<Eigen::Index>(a.modes.size()));
-  for (std::size_t c = 0; c < a.partition.dependent_coordinates.size(); ++c) {
-    const auto& ref = a.indexing.coordinates[static_cast<std::size_t>(a.partition.dependent_coordinates[c])];
-    const std::string& name = m.nodes[ref.node].name;
-    const std::string key = (nodes.empty() ? name : nodes.at(name)) + "." + framework::kSlotNames[static_cast<std::size_t>(ref.slot)];
-    const auto row = std::find(keys.begin(), keys.end(), key) - keys.begin();
-    EXPECT_LT(row, static_cast<long>(keys.size())) << key;
-    for (std::size_t k = 0; k < a.modes.size(); ++k) basis(row, static_cast<Eigen::Index>(k)) = a.modes[k].velocities(static_cast<Eigen::Index>(c));
-  }
-  return basis;
-}
-
-Eigen::MatrixXd stress_basis(const framework::FrameworkAnalysis& a, const FrameworkModel& m, const std::vector<std::string>& keys,
-                             const Names& elements) {
-  Eigen::MatrixXd basis = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(keys.size()), static_cast<Eigen::Index>(a.stresses.size()));
-  const auto rows = a.partition.jacobian_rows();
-  for (std::size_t r = 0; r < rows.size(); ++r) {
-    const auto& ref = a.indexing.deformations[static_cast<std::size_t>(rows[r])];
-    const std::string& name = m.elements[ref.element].name;
-    const std::string key = (elements.empty() ? name : elements.at(name)) + "." + std::to_string(ref.deformation);
-    const auto row = std::find(keys.begin(), keys.end(), key) - keys.begin();
-    EXPECT_LT(row, static_cast<long>(keys.size())) << key;
-    for (std::size_t k = 0; k < a.stresses.size(); ++k) basis(row, static_cast<Eigen::Index>(k)) = a.stresses[k].resultants(static_cast<Eigen::Index>(r));
-  }
-  return basis;
 }
 
 // The SPACAR model and the YAML model give the same counts and the same spaces of modes and of

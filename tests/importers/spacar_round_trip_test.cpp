@@ -70,6 +70,7 @@ INSTANTIATE_TEST_SUITE_P(Models, RoundTrip,
                                            "tests/importers/data/spacar-planar-hinged-four-bar.dat",
                                            "tests/importers/data/spacar-hinged-pendulum.dat",
                                            "tests/importers/data/spacar-hinge-between-beams.dat",
+                                           "tests/importers/data/spacar-universal-joint.dat",
                                            "examples/parallel-leaf-spring-guide.yaml", "examples/truss-12.yaml",
                                            "examples/wire-flexure-guide.yaml", "examples/folded-sheet-guide-5-symmetric.yaml",
                                            "examples/folded-sheet-guide-6.yaml", "examples/pellegrino-calladine-two-bar.yaml"));
@@ -151,6 +152,28 @@ elements:
   EXPECT_NE(flat.find("PLHINGE     2     2    4  # hinge k\n"), std::string::npos) << flat;
   EXPECT_NE(flat.find("RLSE       2  1  # element k\n"), std::string::npos) << flat;
   expect_same_counts(planar, parse_spacar("t.dat", flat).model, "planar hinge");
+}
+
+TEST(SpacarWriter, RefusesAPlanarJointToANodeOnlyHingesTurn) {
+  // c shares b's position through the joint and turns only through the hinge: SPACAR would need
+  // a planar pin body to keep c's own position node on b.
+  const FrameworkModel model = read_framework(YamlFile::parse("t.yaml", R"(kinestat: 1
+kind: framework
+dimension: planar
+nodes: {a: [0, 0], b: [1, 0], c: [1, 0]}
+supports: {a: fixed}
+elements:
+  - {name: arm, type: beam, nodes: [a, b]}
+  - {name: pin, type: rigid_body, nodes: [b, c], released: [c.rz]}
+  - {name: h, type: rigid_body, nodes: [b, c], released: [c.x, c.y]}
+)"));
+  try {
+    spacar_text(model, {"t.yaml"});
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "t.yaml: error: joint 'pin': node 'c' turns only through PLHINGE elements, so it needs a position "
+                           "node of its own, and SPACAR has no planar pin body to join it to 'b'");
+  }
 }
 
 TEST(SpacarWriter, RefusesRigidBodiesWithReleasesThatAreNotJoints) {

@@ -73,19 +73,42 @@ class SpacarWriter {
   }
 
   // SPACAR Light's numbering: node i (1-based) has position node 2i−1 and orientation node 2i.
-  // The second node of a joint shares the first node's position node.
+  // The second node of a joint shares the first node's position node, unless only hinges use
+  // its orientation: then no BEAM would tie that orientation node to the shared position, so
+  // the node keeps its own position node (numbered one below its orientation node, which the
+  // reader relies on) and the joint is written as a PINBODY, as SPACAR Light writes the pin of
+  // a hinge. SPACAR has no planar pin body: such a planar joint is refused.
   void number_nodes() {
+    std::set<std::size_t> hinged, beamed;
+    for (const Element& e : model_.elements) {
+      if (hinge_axis(e) >= 0) hinged.insert(e.nodes.begin(), e.nodes.end());
+      else if (e.type == ElementType::beam || (e.type == ElementType::rigid_body && !is_joint(e)))
+        beamed.insert(e.nodes.begin(), e.nodes.end());
+    }
+    for (std::size_t n : hinged)
+      if (!beamed.count(n)) hinge_only_.insert(n);
     std::vector<std::size_t> owner(model_.nodes.size());
     for (std::size_t i = 0; i < owner.size(); ++i) owner[i] = i;
     const auto root = [&](std::size_t i) {
       while (owner[i] != i) i = owner[i];
       return i;
     };
-    for (const Element& e : model_.elements)
-      if (is_joint(e)) owner[root(e.nodes[1])] = root(e.nodes[0]);
+    for (const Element& e : model_.elements) {
+      if (!is_joint(e)) continue;
+      if (!is_shared_joint(e)) {
+        if (planar_)
+          refuse(fmt::format("joint '{}': node '{}' turns only through PLHINGE elements, so it needs a position node of "
+                             "its own, and SPACAR has no planar pin body to join it to '{}'", e.name,
+                             model_.nodes[e.nodes[1]].name, model_.nodes[e.nodes[0]].name));
+        continue;
+      }
+      owner[root(e.nodes[1])] = root(e.nodes[0]);
+    }
     position_.resize(model_.nodes.size());
     for (std::size_t i = 0; i < owner.size(); ++i) position_[i] = static_cast<long>(2 * root(i) + 1);
   }
+
+  bool is_shared_joint(const Element& e) const { return is_joint(e) && !hinge_only_.count(e.nodes[1]); }
 
   long orientation(std::size_t node) const { return static_cast<long>(2 * node + 2); }
 
@@ -125,10 +148,14 @@ class SpacarWriter {
     const double length = framework::characteristic_length(model_);
     for (std::size_t e = 0; e < model_.elements.size(); ++e) {
       const Element& element = model_.elements[e];
-      if (is_joint(element)) continue;  // expressed by the shared position node
+      if (is_shared_joint(element)) continue;  // expressed by the shared position node
       number_.push_back(next);
       const std::size_t p = element.nodes[0];
-      if (element.type == ElementType::truss) {
+      if (is_joint(element)) {
+        used_orientations_.insert(p);
+        out_ += fmt::format("PINBODY  {:4}  {:4} {:4}  {:4}  # joint {}\n", next++, position_[p], orientation(p),
+                            position_[element.nodes[1]], element.name);
+      } else if (element.type == ElementType::truss) {
         out_ += fmt::format("{}  {:4}  {:4}  {:4}  # element {}\n", planar_ ? "PLTRUSS" : "TRUSS", next, position_[p],
                             position_[element.nodes[1]], element.name);
         ++next;
@@ -176,7 +203,7 @@ class SpacarWriter {
     std::size_t written = 0;
     for (std::size_t e = 0, n = 0; e < model.elements.size(); ++e) {
       const Element& element = model.elements[e];
-      if (is_joint(model_.elements[e])) continue;
+      if (is_shared_joint(model_.elements[e])) continue;
       const long number = number_[n++];
       // SPACAR's deformation numbers: a hinge's 1 is its axis, 2 and 3 the rotations across it
       // (written only together); other elements number kinestat's deformations in order.
@@ -270,6 +297,7 @@ class SpacarWriter {
   std::vector<long> position_;
   std::vector<long> number_;  // SPACAR number of each written kinestat element
   std::set<std::size_t> used_orientations_;
+  std::set<std::size_t> hinge_only_;  // nodes whose orientation only hinges use
 };
 
 }  // namespace
