@@ -2,6 +2,7 @@
 // kinestat: every public header. Layers: screw, graph, linalg -> network, framework, structure,
 // design -> io -> report (docs/architecture.md). The installed-package check
 // (tests/consumer) fails when a public header is missing here.
+#include "kinestat/error.hpp"
 #include "kinestat/design/framework_verdict.hpp"
 #include "kinestat/design/network_verdict.hpp"
 #include "kinestat/design/structure_verdict.hpp"

@@ -186,7 +186,8 @@ class BasisCache {
 // FN, CN and idle spins of a changed copy from cached bases: one rank of M^N and one small rank
 // per body, instead of a full analysis. The search compares hundreds of copies this way; the
 // change set it settles on is verified by a full analysis (network_verdict).
-Standing screen(const Model& model, BasisCache& cache, bool exact, const linalg::RankTolerance& tolerance) {
+Standing screen(const Model& model, BasisCache& cache, bool exact, const linalg::RankTolerance& tolerance,
+                double& work) {
   const int d = model.space.dimension();
   std::vector<graph::Edge> edges;
   std::vector<const screw::CouplingBasis*> bases;
@@ -195,6 +196,8 @@ Standing screen(const Model& model, BasisCache& cache, bool exact, const linalg:
     bases.push_back(&cache.of(c));
   }
   const auto count = network::count_mobility(static_cast<int>(model.bodies.size()), edges, bases, d, exact, tolerance);
+  const double equations = d * count.l, unknowns = count.F;
+  work += equations * unknowns * std::min(equations, unknowns);
   Standing s{count.FN, count.CN, 0};
   // Idle spins: the motions common to every coupling of a body, d less the rank of their actions.
   const int ground = model.ground.value_or(0);
@@ -409,15 +412,16 @@ struct Search {
 // and one with only extra motions only added constraints: a designer's change, not a removal
 // that frees a motion and a constraint that takes it back.
 Search search_changes(const Model& model, const network::AnalysisOptions& options, bool exact, int intended,
-                      const Tally& start, const std::vector<int>& order, bool one_way) {
+                      const Tally& start, const std::vector<int>& order, bool one_way, double& work) {
   Search s;
   s.result = start;
   BasisCache cache(model, exact);
   int analyses = 0;
+  const auto within_budget = [&] { return analyses < kNetworkDesignSearchAnalyses && work < kNetworkDesignSearchWork; };
   auto evaluate = [&](const ChangeSet& changes) -> std::optional<Tally> {
     ++analyses;
     try {
-      return tally(screen(changed_model(model, changes), cache, exact, options.tolerance), intended);
+      return tally(screen(changed_model(model, changes), cache, exact, options.tolerance, work), intended);
     } catch (const graph::TreeError&) {
       return std::nullopt;  // a removal that disconnects a body
     } catch (const screw::GeometryError&) {
@@ -445,7 +449,7 @@ Search search_changes(const Model& model, const network::AnalysisOptions& option
     }
     return out;
   };
-  while (s.result.score() > 0 && analyses < kNetworkDesignSearchAnalyses) {
+  while (s.result.score() > 0 && within_budget()) {
     std::optional<Key> best_key;
     ChangeSet best;
     Tally best_tally;
@@ -461,7 +465,7 @@ Search search_changes(const Model& model, const network::AnalysisOptions& option
     };
     for (std::size_t rank = 0; rank < order.size(); ++rank) {
       const auto list = options_at(rank);
-      for (std::size_t k = 0; k < list.size() && analyses < kNetworkDesignSearchAnalyses; ++k) {
+      for (std::size_t k = 0; k < list.size() && within_budget(); ++k) {
         ChangeSet trial = s.changes;
         trial[order[rank]] = list[k].first;
         consider(trial, list[k].second, rank, k);
@@ -475,7 +479,7 @@ Search search_changes(const Model& model, const network::AnalysisOptions& option
       for (std::size_t r2 = r1 + 1; r2 < paired; ++r2) {
         const auto second = options_at(r2);
         for (std::size_t k1 = 0; k1 < first.size(); ++k1)
-          for (std::size_t k2 = 0; k2 < second.size() && analyses < kNetworkDesignSearchAnalyses; ++k2) {
+          for (std::size_t k2 = 0; k2 < second.size() && within_budget(); ++k2) {
             ChangeSet trial = s.changes;
             trial[order[r1]] = first[k1].first;
             trial[order[r2]] = second[k2].first;
@@ -663,8 +667,10 @@ Verdict network_verdict(const Model& model, const network::NetworkResult& r, con
   for (std::size_t e = 0; e < e_count; ++e)
     if (std::find(order.begin(), order.end(), static_cast<int>(e)) == order.end()) order.push_back(static_cast<int>(e));
 
-  Search search = search_changes(model, options, r.exact, intended, start, order, true);
-  if (search.result.score() > 0 || search.result.lost > 0) search = search_changes(model, options, r.exact, intended, start, order, false);
+  double work = 0.0;  // shared by both searches
+  Search search = search_changes(model, options, r.exact, intended, start, order, true, work);
+  if (search.result.score() > 0 || search.result.lost > 0)
+    search = search_changes(model, options, r.exact, intended, start, order, false, work);
   // A set that removes some couplings and constrains others moves constraints, it does not
   // only drop them: say so instead of calling the removed coupling redundant.
   const bool constrains = std::any_of(search.changes.begin(), search.changes.end(), [&](const auto& entry) {
@@ -694,7 +700,9 @@ Verdict network_verdict(const Model& model, const network::NetworkResult& r, con
     v.changes.push_back(std::move(change));
   }
   if (v.changes.empty()) {
-    v.note = "no change of a single coupling type reduces the extra motions or redundant constraints";
+    v.note = work >= kNetworkDesignSearchWork
+                 ? "no change set found within the search budget: analyse a smaller part of the network to get one"
+                 : "no change of a single coupling type reduces the extra motions or redundant constraints";
     return v;
   }
   // Verified by a full re-analysis of the changed copy, with the user's arithmetic.
@@ -713,7 +721,9 @@ Verdict network_verdict(const Model& model, const network::NetworkResult& r, con
   } catch (const std::exception& error) {
     v.becomes = fmt::format("the changed model could not be analysed: {}", error.what());
   }
-  if (!v.changes_verified && v.note.empty()) v.note = "the change set found removes only part of the problem";
+  if (!v.changes_verified && v.note.empty())
+    v.note = work >= kNetworkDesignSearchWork ? "the change set found removes only part of the problem (search budget spent)"
+                                              : "the change set found removes only part of the problem";
   return v;
 }
 
