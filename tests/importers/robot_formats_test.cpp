@@ -144,6 +144,37 @@ TEST(UrdfReader, ErrorsNameLineAndColumn) {
   EXPECT_EQ(urdf_error("<model/>"), "bad.urdf:1:1: error: a URDF file has a <robot> root element");
 }
 
+TEST(UrdfReader, DrakeLoopJointClosesAtLink1sFrame) {
+  if (!urdf_reader_built_in()) GTEST_SKIP();
+  // crank: origin (1, 0, 0), yaw 90°; rocker at the crank's (2, 0, 0): (1, 2, 0), still turned
+  // 90°. The loop joint's frame is link1's (rocker) frame offset by (3, 0, 0) and turned a
+  // further 90°: point (1, 2, 0) + Rz(90°)·(3, 0, 0) = (1, 5, 0), axis x -> Rz(180°)·x = (−1, 0, 0).
+  const ImportedNetwork imported = parse_urdf(
+      "loop.urdf",
+      "<robot name='loop'>\n"
+      "  <link name='ground'/><link name='crank'/><link name='rocker'/>\n"
+      "  <joint name='A' type='continuous'><parent link='ground'/><child link='crank'/>\n"
+      "    <origin xyz='1 0 0' rpy='0 0 1.5707963267948966'/><axis xyz='0 0 1'/></joint>\n"
+      "  <joint name='B' type='continuous'><parent link='crank'/><child link='rocker'/>\n"
+      "    <origin xyz='2 0 0'/><axis xyz='0 0 1'/></joint>\n"
+      "  <loop_joint name='C' type='revolute'>\n"
+      "    <link1 link='rocker' xyz='3 0 0' rpy='0 0 1.5707963267948966'/>\n"
+      "    <link2 link='ground' xyz='1 5 0' rpy='0 0 0'/>\n"
+      "    <axis xyz='1 0 0'/>\n"
+      "  </loop_joint>\n"
+      "</robot>\n");
+  const network::Model& m = imported.loaded.model;
+  ASSERT_EQ(m.couplings.size(), 3u);
+  const auto& c = coupling(m, "C");
+  EXPECT_EQ(c.type, CouplingType::revolute);
+  EXPECT_EQ(body(m, c.from), "rocker");
+  EXPECT_EQ(body(m, c.to), "ground");
+  EXPECT_EQ(c.geometry.point, v("1", "5", "0"));
+  EXPECT_EQ(*c.geometry.axis, v("-1", "0", "0"));
+  EXPECT_EQ(coupling(m, "B").geometry.point, v("1", "2", "0"));
+  EXPECT_TRUE(imported.notices.empty());
+}
+
 TEST(SdformatReader, EveryJointTypeGivesTheHandDerivedCoupling) {
   if (!sdformat_reader_built_in()) GTEST_SKIP();
   const network::Model m = read("tests/importers/data/every-joint.sdf").loaded.model;
@@ -161,7 +192,11 @@ TEST(SdformatReader, EveryJointTypeGivesTheHandDerivedCoupling) {
   EXPECT_EQ(*coupling(m, "pris").geometry.axis, v("0", "0", "1"));
   const auto& screw_joint = coupling(m, "scr");
   EXPECT_EQ(screw_joint.type, CouplingType::helical);
-  EXPECT_EQ(screw_joint.geometry.pitch, screw::Rational(1, 4));  // thread_pitch 4 rad per length
+  // thread_pitch 4: radians per length, positive for a left-handed thread (SDFormat 1.11's
+  // joint.sdf); libsdformat's screw_thread_pitch = -2 pi / 4 = -pi / 2 length per revolution
+  // (positive right-handed), i.e. -(pi / 2) / (2 pi) = -1/4 length per radian: a left-handed
+  // helix, which moves back along +x while it turns positively about +x.
+  EXPECT_EQ(screw_joint.geometry.pitch, screw::Rational(-1, 4));
   EXPECT_EQ(coupling(m, "uni").type, CouplingType::universal);
   EXPECT_EQ(*coupling(m, "uni").geometry.axis2, v("0", "0", "1"));
   EXPECT_EQ(coupling(m, "r2").type, CouplingType::universal);
@@ -202,10 +237,15 @@ TEST(MjcfReader, BodiesJointsAndEqualitiesGiveTheHandDerivedNetwork) {
   EXPECT_EQ(coupling(m, "lid (welded)").type, CouplingType::rigid);
   EXPECT_EQ(coupling(m, "knob").type, CouplingType::spherical);
   EXPECT_EQ(coupling(m, "loose").type, CouplingType::free);
-  const auto& connect = coupling(m, "tie");
+  const auto& connect = coupling(m, "tie");  // body1 -> body2, the loop it closes
   EXPECT_EQ(connect.type, CouplingType::spherical);
-  EXPECT_EQ(connect.geometry.point, v("3", "0", "1"));
-  EXPECT_EQ(coupling(m, "glue").type, CouplingType::rigid);
+  EXPECT_EQ(body(m, connect.from), "knobbody");
+  EXPECT_EQ(body(m, connect.to), "lid");
+  EXPECT_EQ(connect.geometry.point, v("3", "0", "1"));  // anchor (0, 0, 1) in knobbody's frame at (3, 0, 0)
+  const auto& weld = coupling(m, "glue");
+  EXPECT_EQ(weld.type, CouplingType::rigid);
+  EXPECT_EQ(body(m, weld.from), "loosebody");
+  EXPECT_EQ(body(m, weld.to), "world");
   ASSERT_EQ(imported.notices.size(), 1u);
   EXPECT_NE(imported.notices[0].find("equality constraint(s) gear ignored"), std::string::npos) << imported.notices[0];
 }

@@ -5,7 +5,15 @@
 
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
+#include <Eigen/QR>
+#include <Eigen/SVD>
+
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
 #include <string>
 
 #include "kinestat/framework/framework_analysis.hpp"
@@ -135,6 +143,175 @@ TEST(SpacarReader, PlanarFourBarIsExactlyConstrained) {
   EXPECT_TRUE(a.exactly_constrained());
 }
 
+// D(c) has `rows` x `columns` and rank `rank`: n − rank mechanisms, m − rank self-stresses.
+void expect_counts(const framework::FrameworkAnalysis& a, Eigen::Index rows, Eigen::Index columns, Eigen::Index rank) {
+  EXPECT_EQ(a.m, rows);
+  EXPECT_EQ(a.n, columns);
+  EXPECT_EQ(a.rank, rank);
+  EXPECT_EQ(a.mechanisms, columns - rank);
+  EXPECT_EQ(a.self_stresses, rows - rank);
+}
+
+// The rate of coordinate `slot` of node `name` in mode `mode` (0 when it is not dependent).
+double mode_rate(const framework::FrameworkAnalysis& a, const FrameworkModel& m, std::size_t mode, const std::string& name,
+                 int slot) {
+  const auto column = a.indexing.coordinate_of[node(m, name)][static_cast<std::size_t>(slot)];
+  for (std::size_t c = 0; c < a.partition.dependent_coordinates.size(); ++c)
+    if (a.partition.dependent_coordinates[c] == column) return a.modes[mode].velocities(static_cast<Eigen::Index>(c));
+  return 0.0;
+}
+
+// Cosines of the principal angles between the column spans of `a` and `b` (both of full column
+// rank): the singular values of Qaᵀ Qb. Equal spaces give cosines 1.
+Eigen::VectorXd principal_cosines(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+  const Eigen::MatrixXd qa = Eigen::HouseholderQR<Eigen::MatrixXd>(a).householderQ() * Eigen::MatrixXd::Identity(a.rows(), a.cols());
+  const Eigen::MatrixXd qb = Eigen::HouseholderQR<Eigen::MatrixXd>(b).householderQ() * Eigen::MatrixXd::Identity(b.rows(), b.cols());
+  return Eigen::JacobiSVD<Eigen::MatrixXd>(qa.transpose() * qb).singularValues();
+}
+
+using Names = std::map<std::string, std::string>;
+
+// Modes (as rates of "node.slot") and stress states (as resultants of "element.deformation") of
+// an analysis, rows in the order of `keys`, with node and element names mapped through `nodes`
+// and `elements` (SPACAR numbers -> YAML names).
+Eigen::MatrixXd mode_basis(const framework::FrameworkAnalysis& a, const FrameworkModel& m, const std::vector<std::string>& keys,
+                           const Names& nodes) {
+  Eigen::MatrixXd basis = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(keys.size()), static_cast<Eigen::Index>(a.modes.size()));
+  for (std::size_t c = 0; c < a.partition.dependent_coordinates.size(); ++c) {
+    const auto& ref = a.indexing.coordinates[static_cast<std::size_t>(a.partition.dependent_coordinates[c])];
+    const std::string& name = m.nodes[ref.node].name;
+    const std::string key = (nodes.empty() ? name : nodes.at(name)) + "." + framework::kSlotNames[static_cast<std::size_t>(ref.slot)];
+    const auto row = std::find(keys.begin(), keys.end(), key) - keys.begin();
+    EXPECT_LT(row, static_cast<long>(keys.size())) << key;
+    for (std::size_t k = 0; k < a.modes.size(); ++k) basis(row, static_cast<Eigen::Index>(k)) = a.modes[k].velocities(static_cast<Eigen::Index>(c));
+  }
+  return basis;
+}
+
+Eigen::MatrixXd stress_basis(const framework::FrameworkAnalysis& a, const FrameworkModel& m, const std::vector<std::string>& keys,
+                             const Names& elements) {
+  Eigen::MatrixXd basis = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(keys.size()), static_cast<Eigen::Index>(a.stresses.size()));
+  const auto rows = a.partition.jacobian_rows();
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    const auto& ref = a.indexing.deformations[static_cast<std::size_t>(rows[r])];
+    const std::string& name = m.elements[ref.element].name;
+    const std::string key = (elements.empty() ? name : elements.at(name)) + "." + std::to_string(ref.deformation);
+    const auto row = std::find(keys.begin(), keys.end(), key) - keys.begin();
+    EXPECT_LT(row, static_cast<long>(keys.size())) << key;
+    for (std::size_t k = 0; k < a.stresses.size(); ++k) basis(row, static_cast<Eigen::Index>(k)) = a.stresses[k].resultants(static_cast<Eigen::Index>(r));
+  }
+  return basis;
+}
+
+TEST(SpacarReader, PlanarFourBarJoinedByPlanarHingesHasOneMechanism) {
+  FrameworkModel m = read_spacar(data("spacar-planar-hinged-four-bar.dat")).model;
+  EXPECT_EQ(m.dimension, 2);
+  ASSERT_EQ(m.nodes.size(), 6u);  // 1, 3, 5, 7 and the nodes of orientation 10 at 3 and 12 at 5
+  // PLHINGE 4 joins orientation 4 (riding on node 3) and 10 (node 3r10): a rigid body whose
+  // relative translations are free and whose relative rotation is deformation 1, released.
+  const auto& h4 = element(m, "4");
+  EXPECT_EQ(h4.type, ElementType::rigid_body);
+  EXPECT_EQ(h4.nodes, (std::vector<std::size_t>{node(m, "3"), node(m, "3r10")}));
+  EXPECT_EQ(h4.roles, (std::vector<R>{R::released, R::released, R::released}));
+  EXPECT_EQ(element(m, "5").nodes, (std::vector<std::size_t>{node(m, "5"), node(m, "5r12")}));
+  EXPECT_EQ(element(m, "5").roles, (std::vector<R>{R::released, R::released, R::released}));  // RLSE 5: all (one)
+  EXPECT_EQ(element(m, "joint 3r10").roles, (std::vector<R>{R::fixed, R::fixed, R::released}));
+  auto a = framework::analyse_framework(m);
+  expect_counts(a, 13, 14, 13);  // one mechanism
+  // With hinge 5 rigid (as DYNE 5 would keep it) coupler and rocker are one body: a triangle of
+  // three bodies and three pins, exactly constrained.
+  m.elements[3 + 1].roles[2] = R::fixed;
+  a = framework::analyse_framework(m);
+  expect_counts(a, 14, 14, 14);
+}
+
+TEST(SpacarReader, SpacarLightHingeAndPinBodyGiveAPendulum) {
+  const SpacarImport imported = read_spacar(data("spacar-hinged-pendulum.dat"));
+  FrameworkModel m = imported.model;
+  EXPECT_EQ(m.dimension, 3);
+  ASSERT_EQ(m.nodes.size(), 3u);  // the hinge's orientation 5 rides on position 4, which PINBODY carries
+  const char* names[] = {"1", "4", "7"};
+  for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(m.nodes[i].name, names[i]);
+  const auto& hinge = element(m, "1");  // about z: deformation 1 is the relative rz, DYNE keeps it
+  EXPECT_EQ(hinge.type, ElementType::rigid_body);
+  EXPECT_EQ(hinge.nodes, (std::vector<std::size_t>{node(m, "1"), node(m, "4")}));
+  EXPECT_EQ(hinge.roles, (std::vector<R>{R::released, R::released, R::released, R::fixed, R::fixed, R::fixed}));
+  const auto& pin = element(m, "2");  // position 4 on the body of (1, 2); orientation free
+  EXPECT_EQ(pin.nodes, (std::vector<std::size_t>{node(m, "1"), node(m, "4")}));
+  EXPECT_EQ(pin.roles, (std::vector<R>{R::fixed, R::fixed, R::fixed, R::released, R::released, R::released}));
+  EXPECT_EQ(element(m, "3").nodes, (std::vector<std::size_t>{node(m, "4"), node(m, "7")}));
+  EXPECT_EQ(m.nodes[node(m, "1")].roles, (std::array<C, 6>{C::fixed, C::fixed, C::fixed, C::fixed, C::fixed, C::fixed}));
+  auto a = framework::analyse_framework(m);
+  expect_counts(a, 12, 12, 12);
+
+  // Released, the hinge lets the arm swing about z: node 4 and 7 turn at the same rate w and
+  // node 7, one unit out along x, moves along y at w x 1 (scaled by the characteristic length
+  // L = 2/3: nodes at x = 0, 0, 1 around their centroid x = 1/3).
+  m.elements[0].roles[5] = R::released;
+  a = framework::analyse_framework(m);
+  expect_counts(a, 11, 12, 11);
+  ASSERT_EQ(a.modes.size(), 1u);
+  const double w = mode_rate(a, m, 0, "7", 5);
+  EXPECT_GT(std::abs(w), 0.1);
+  EXPECT_NEAR(mode_rate(a, m, 0, "4", 5), w, 1e-12);
+  EXPECT_NEAR(mode_rate(a, m, 0, "7", 1), w * 1.0 / (2.0 / 3.0), 1e-12);
+  for (int slot : {0, 2, 3, 4}) EXPECT_NEAR(mode_rate(a, m, 0, "7", slot), 0.0, 1e-12) << slot;
+  for (int slot : {0, 1, 2, 3, 4}) EXPECT_NEAR(mode_rate(a, m, 0, "4", slot), 0.0, 1e-12) << slot;
+}
+
+TEST(SpacarReader, TwoSpacarLightHingesInSeriesAreAUniversalJoint) {
+  FrameworkModel m = read_spacar(data("spacar-universal-joint.dat")).model;
+  ASSERT_EQ(m.nodes.size(), 4u);  // 1, 4, 7, 10: every orientation rides on its user node's position
+  EXPECT_EQ(element(m, "1").nodes, (std::vector<std::size_t>{node(m, "1"), node(m, "4")}));
+  EXPECT_EQ(element(m, "3").nodes, (std::vector<std::size_t>{node(m, "4"), node(m, "7")}));
+  EXPECT_EQ(element(m, "3").roles, (std::vector<R>{R::released, R::released, R::released, R::fixed, R::fixed, R::fixed}));
+  EXPECT_EQ(element(m, "4").nodes, (std::vector<std::size_t>{node(m, "4"), node(m, "7")}));
+  auto a = framework::analyse_framework(m);
+  expect_counts(a, 18, 18, 18);
+
+  m.elements[0].roles[5] = R::released;  // hinge 1: rz
+  m.elements[2].roles[4] = R::released;  // hinge 3: ry
+  a = framework::analyse_framework(m);
+  expect_counts(a, 16, 18, 16);  // two mechanisms
+  // The two turns by hand (translations per characteristic length L = 0.75: nodes at x = 0, 0,
+  // 0, 1 around x = 1/4): about z, the cross, the arm and its tip turn and the tip (1, 0, 0)
+  // moves along +y; about y, the arm and its tip turn and the tip moves along -z.
+  std::vector<std::string> keys;
+  for (const char* n : {"4", "7", "10"})
+    for (const char* slot : framework::kSlotNames) keys.push_back(std::string(n) + "." + slot);
+  Eigen::MatrixXd expected = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(keys.size()), 2);
+  const auto at = [&](const std::string& key) { return std::find(keys.begin(), keys.end(), key) - keys.begin(); };
+  for (const char* key : {"4.rz", "7.rz", "10.rz"}) expected(at(key), 0) = 1.0;
+  expected(at("10.y"), 0) = 1.0 / 0.75;
+  for (const char* key : {"7.ry", "10.ry"}) expected(at(key), 1) = 1.0;
+  expected(at("10.z"), 1) = -1.0 / 0.75;
+  const Eigen::VectorXd cosines = principal_cosines(mode_basis(a, m, keys, {}), expected);
+  EXPECT_NEAR(cosines.minCoeff(), 1.0, 1e-12) << cosines.transpose();
+}
+
+TEST(SpacarReader, HingeBetweenTwoBeamsAboutY) {
+  const FrameworkModel m = read_spacar(data("spacar-hinge-between-beams.dat")).model;
+  ASSERT_EQ(m.nodes.size(), 4u);
+  EXPECT_EQ(m.nodes[3].name, "3r6");
+  const auto& hinge = element(m, "3");  // axis y: deformation 1 is ry (released), 2 and 3 rx, rz
+  EXPECT_EQ(hinge.nodes, (std::vector<std::size_t>{node(m, "3"), node(m, "3r6")}));
+  EXPECT_EQ(hinge.roles, (std::vector<R>{R::released, R::released, R::released, R::fixed, R::released, R::fixed}));
+  EXPECT_EQ(element(m, "joint 3r6").roles,
+            (std::vector<R>{R::fixed, R::fixed, R::fixed, R::released, R::released, R::released}));
+  const auto a = framework::analyse_framework(m);
+  expect_counts(a, 17, 18, 17);  // one mechanism
+  ASSERT_EQ(a.modes.size(), 1u);
+  // ω = (0, w, 0) about y through (1, 0, 0): node 5 at (2, 0, 0) moves with ω × (1, 0, 0) = (0, 0, −w).
+  // L: nodes at x = 0, 1, 2, 1 around x = 1 -> L = 1.
+  const double w = mode_rate(a, m, 0, "3r6", 4);
+  EXPECT_GT(std::abs(w), 0.1);
+  EXPECT_NEAR(mode_rate(a, m, 0, "5", 4), w, 1e-12);
+  EXPECT_NEAR(mode_rate(a, m, 0, "5", 2), -w, 1e-12);
+  for (const char* n : {"3", "5", "3r6"})
+    for (int slot : {0, 1, 3, 5}) EXPECT_NEAR(mode_rate(a, m, 0, n, slot), 0.0, 1e-12) << n << " " << slot;
+  EXPECT_NEAR(mode_rate(a, m, 0, "3", 4), 0.0, 1e-12);
+}
+
 TEST(SpacarReader, ParallelLeafSpringGuideHasOneSelfStress) {
   FrameworkModel m = read_spacar(spacar_example("parallel-leaf-spring-guide.dat")).model;
   auto a = framework::analyse_framework(m);
@@ -188,6 +365,88 @@ TEST(SpacarReader, FoldedSheetGuideMatchesTheYamlExampleAndTheSeed) {
   }
 }
 
+// The SPACAR model and the YAML model give the same counts and the same spaces of modes and of
+// self-stresses (all principal angles zero), nodes and elements matched through the maps.
+void expect_same_analysis(const FrameworkModel& dat, const FrameworkModel& yaml, const Names& nodes, const Names& elements,
+                          const std::string& what) {
+  SCOPED_TRACE(what);
+  const auto a = framework::analyse_framework(dat);
+  const auto b = framework::analyse_framework(yaml);
+  EXPECT_EQ(a.m, b.m);
+  EXPECT_EQ(a.n, b.n);
+  EXPECT_EQ(a.rank, b.rank);
+  ASSERT_EQ(a.mechanisms, b.mechanisms);
+  ASSERT_EQ(a.self_stresses, b.self_stresses);
+  std::vector<std::string> coordinate_keys, deformation_keys;
+  for (const Eigen::Index c : b.partition.dependent_coordinates) {
+    const auto& ref = b.indexing.coordinates[static_cast<std::size_t>(c)];
+    coordinate_keys.push_back(yaml.nodes[ref.node].name + "." + framework::kSlotNames[static_cast<std::size_t>(ref.slot)]);
+  }
+  for (const Eigen::Index r : b.partition.jacobian_rows()) {
+    const auto& ref = b.indexing.deformations[static_cast<std::size_t>(r)];
+    deformation_keys.push_back(yaml.elements[ref.element].name + "." + std::to_string(ref.deformation));
+  }
+  if (a.mechanisms > 0) {
+    const Eigen::VectorXd cosines = principal_cosines(mode_basis(a, dat, coordinate_keys, nodes), mode_basis(b, yaml, coordinate_keys, {}));
+    EXPECT_NEAR(cosines.minCoeff(), 1.0, 1e-9) << cosines.transpose();
+  }
+  if (a.self_stresses > 0) {
+    const Eigen::VectorXd cosines =
+        principal_cosines(stress_basis(a, dat, deformation_keys, elements), stress_basis(b, yaml, deformation_keys, {}));
+    EXPECT_NEAR(cosines.minCoeff(), 1.0, 1e-9) << cosines.transpose();
+  }
+}
+
+FrameworkModel yaml_example(const std::string& name) {
+  return read_framework(YamlFile::load(std::string(KINESTAT_SOURCE_DIR) + "/examples/" + name));
+}
+
+std::size_t element_index(const FrameworkModel& m, const std::string& name) {
+  for (std::size_t i = 0; i < m.elements.size(); ++i)
+    if (m.elements[i].name == name) return i;
+  ADD_FAILURE() << "no element " << name;
+  return 0;
+}
+
+TEST(SpacarPublished, LeafSpringGuideHasTheModesAndSelfStressesOfTheYamlExample) {
+  FrameworkModel dat = read_spacar(spacar_example("parallel-leaf-spring-guide.dat")).model;
+  FrameworkModel yaml = yaml_example("parallel-leaf-spring-guide.yaml");
+  const Names nodes{{"1", "B1"}, {"3", "B2"}, {"5", "T1"}, {"7", "T2"}};
+  const Names elements{{"1", "leaf1"}, {"2", "leaf2"}, {"3", "connector"}};
+  // The header's hand count: 12 x 11, rank 11, one self-stress, no mode.
+  expect_counts(framework::analyse_framework(yaml), 12, 11, 11);
+  expect_same_analysis(dat, yaml, nodes, elements, "as written");
+  // Without the prescribed x translation: one mode (along x) and the self-stress.
+  dat.nodes[node(dat, "5")].roles[0] = C::dependent;
+  yaml.nodes[node(yaml, "T1")].roles[0] = C::dependent;
+  expect_same_analysis(dat, yaml, nodes, elements, "T1.x dependent");
+}
+
+TEST(SpacarPublished, FoldedSheetGuideHasTheModesAndSelfStressesOfTheYamlExample) {
+  FrameworkModel dat = read_spacar(spacar_example("folded-sheet-guide-5.dat")).model;
+  FrameworkModel yaml = yaml_example("folded-sheet-guide-5.yaml");
+  const Names nodes{{"1", "C"},   {"3", "A1"},  {"5", "F1"},  {"7", "A2"},  {"9", "F2"}, {"11", "A3"},
+                    {"13", "F3"}, {"15", "A4"}, {"17", "F4"}, {"19", "A5"}, {"21", "F5"}};
+  Names elements;
+  for (int f = 1; f <= 5; ++f)
+    for (int s = 1; s <= 2; ++s) elements[std::to_string(2 * (f - 1) + s)] = fmt::format("f{}.s{}", f, s);
+  expect_same_analysis(dat, yaml, nodes, elements, "as written (exactly constrained)");
+  // Torsion of the second sheet of flexure 1 made rigid: 36 rows on 35 columns of a design
+  // whose 35 rows had rank 35, so exactly one self-stress.
+  FrameworkModel dat_stiff = dat, yaml_stiff = yaml;
+  dat_stiff.elements[element_index(dat, "2")].roles[1] = R::fixed;
+  yaml_stiff.elements[element_index(yaml, "f1.s2")].roles[1] = R::fixed;
+  const auto a = framework::analyse_framework(yaml_stiff);
+  EXPECT_EQ(a.self_stresses, 1);
+  EXPECT_EQ(a.mechanisms, 0);
+  expect_same_analysis(dat_stiff, yaml_stiff, nodes, elements, "f1.s2 torsion rigid");
+  // C.z dependent: 35 rows of rank 35 on 36 columns, one mode (the guidance along z).
+  dat.nodes[node(dat, "1")].roles[2] = C::dependent;
+  yaml.nodes[node(yaml, "C")].roles[2] = C::dependent;
+  EXPECT_EQ(framework::analyse_framework(yaml).mechanisms, 1);
+  expect_same_analysis(dat, yaml, nodes, elements, "C.z dependent");
+}
+
 TEST(SpacarReader, ErrorsNameLineAndColumn) {
   EXPECT_EQ(error_of("X 1 0 0 0\nX 3 1 0 0\nBEAM 1 1 2 3\n"),
             "bad.dat:3:12: error: BEAM expects an element number, position and orientation node at p, then at q, and the "
@@ -195,9 +454,36 @@ TEST(SpacarReader, ErrorsNameLineAndColumn) {
   EXPECT_EQ(error_of("X 1 0 0 0\nTRUSS 1 1 5\n"), "bad.dat:2:11: error: node 5 has no position: no X line defines it");
   EXPECT_EQ(error_of("X 1 0 0 0\nX 1 1 0 0\n"), "bad.dat:2:3: error: node 1 is defined twice (first on line 1)");
   EXPECT_EQ(error_of("X 1 0 0 nan\n"), "bad.dat:1:9: error: expected a coordinate (a finite number), found 'nan'");
-  EXPECT_EQ(error_of("X 1 0 0 0\nX 3 1 0 0\nTRUSS 1 1 3\nHINGE 2 2 4\n"),
-            "bad.dat:4:1: error: unsupported SPACAR keyword 'HINGE' in the kinematic part; kinestat reads X, BEAM, BEAMW, "
-            "TRUSS, PLBEAM, PLTRUSS, DYNE, RLSE, INPUTE, FIX and INPUTX up to END or HALT");
+  EXPECT_EQ(error_of("X 1 0 0 0\nX 3 1 0 0\nTRUSS 1 1 3\nCYLINDER 2 2 4\n"),
+            "bad.dat:4:1: error: unsupported SPACAR keyword 'CYLINDER' in the kinematic part; kinestat reads X, BEAM, BEAMW, "
+            "TRUSS, HINGE, PINBODY, PLBEAM, PLTRUSS, PLHINGE, DYNE, RLSE, INPUTE, FIX and INPUTX up to END or HALT");
+  // Hinges and pin bodies: what kinestat cannot express is refused, never guessed.
+  const std::string beams = "X 1 0 0 0\nX 3 1 0 0\nX 5 2 0 0\nBEAM 1 1 2 3 4\nBEAM 2 3 6 5 7\n";
+  EXPECT_EQ(error_of(beams + "HINGE 3 4 6 0 1\n"),
+            "bad.dat:6:15: error: HINGE expects an element number, two orientation nodes and the hinge axis x y z; found 5 number(s)");
+  EXPECT_EQ(error_of(beams + "HINGE 3 4 6 1 1 0\n"),
+            "bad.dat:6:13: error: element 3: the hinge axis (1, 1, 0) is not along a global axis x, y or z; kinestat couples "
+            "two orientations through their relative rotations about the global axes, so a hinge about another axis is not "
+            "supported");
+  EXPECT_EQ(error_of(beams + "HINGE 3 4 6 0 0 0\n"), "bad.dat:6:13: error: element 3: the hinge axis is the zero vector");
+  EXPECT_EQ(error_of(beams + "HINGE 3 4 9 0 0 1\n"),
+            "bad.dat:6:11: error: orientation node 9 of hinge 3 belongs to no position node: no BEAM or PINBODY uses it "
+            "with one, and no X line defines node 8");
+  EXPECT_EQ(error_of(beams + "HINGE 3 4 4 0 0 1\n"),
+            "bad.dat:6:11: error: element 3 has the same orientation node 4 at both ends");
+  EXPECT_EQ(error_of(beams + "HINGE 3 4 6 0 0 1\nRLSE 3 2\n"),
+            "bad.dat:7:1: error: RLSE of HINGE 3: deformations 2 and 3 (the relative rotations about the two axes across the "
+            "hinge axis) must be given together; which is which is not documented publicly");
+  EXPECT_EQ(error_of(beams + "HINGE 3 4 6 0 0 1\nRLSE 3 4\n"),
+            "bad.dat:7:8: error: element 3 (HINGE) has deformations 1 to 3, found 4");
+  EXPECT_EQ(error_of(beams + "X 9 1 0 0\nPINBODY 3 3 4 9\n"),
+            "bad.dat:7:15: error: PINBODY 3 carries position node 9, which no BEAM or HINGE gives an orientation node: "
+            "kinestat cannot pin a node without one to a body");
+  EXPECT_EQ(error_of(beams + "X 9 1 0 0\nBEAM 4 9 10 5 11\nPINBODY 3 3 4 9\nRLSE 3 1\n"),
+            "bad.dat:9:1: error: RLSE of PINBODY 3: kinestat keeps a pin body rigid (its deformations are not documented "
+            "publicly, so which is which is not known)");
+  EXPECT_EQ(error_of("X 1 0 0\nX 3 1 0\nPLBEAM 1 1 2 3 4\nHINGE 2 2 4 0 0 1\n"),
+            "bad.dat:4:1: error: HINGE mixes planar and spatial elements (PLBEAM on line 3, HINGE on line 4)");
   EXPECT_EQ(error_of("X 1 0 0 0\nX 3 1 0 0\nTRUSS 1 1 3\nRLSE 1 2\n"),
             "bad.dat:4:8: error: element 1 (TRUSS) has deformations 1 to 1, found 2");
   EXPECT_EQ(error_of("X 1 0 0 0\nX 3 1 0 0\nTRUSS 1 1 3\nRLSE 1 1\nDYNE 1 1\n"),
@@ -209,7 +495,9 @@ TEST(SpacarReader, ErrorsNameLineAndColumn) {
   EXPECT_EQ(error_of("X 1 0 0\nX 3 1 0\nPLTRUSS 1 1 3\nTRUSS 2 1 3\n"),
             "bad.dat:4:1: error: TRUSS mixes planar and spatial elements (PLTRUSS on line 3, TRUSS on line 4)");
   EXPECT_EQ(error_of("1 2 3\n"), "bad.dat:1:1: error: expected a keyword (X, BEAM, ...) before numbers");
-  EXPECT_EQ(error_of("X 1 0 0 0\nEND\n"), "bad.dat:2:1: error: no elements: a SPACAR model needs BEAM, BEAMW, TRUSS, PLBEAM or PLTRUSS lines");
+  EXPECT_EQ(error_of("X 1 0 0 0\nEND\n"),
+            "bad.dat:2:1: error: no elements: a SPACAR model needs BEAM, BEAMW, TRUSS, HINGE, PINBODY, PLBEAM, PLTRUSS or "
+            "PLHINGE lines");
   EXPECT_EQ(error_of("X 1 0 0 0\nX 3 0 0 0\nTRUSS 1 1 3\n"), "bad.dat:3:11: error: zero-length element 1: nodes 1 and 3 coincide");
   EXPECT_EQ(error_of("X 1 0 0 0\nX 3 1 0 0\nTRUSS 1 1 3\nFIX 7\n"),
             "bad.dat:4:5: error: FIX: node 7 is neither an X position node nor an orientation node of a beam");

@@ -172,12 +172,15 @@ class SdformatReader {
         g.axis = axis(joint, 0, placed);
         break;
       case sdf::JointType::SCREW:
-        // SDFormat's thread_pitch is in radians per length; kinestat's pitch is length per radian.
+        // SDFormat's thread_pitch is radians per length with a positive value for a left-handed
+        // thread (SDFormat 1.11 spec; libsdformat's Joint.cc: screw_thread_pitch, length per
+        // revolution and positive right-handed, is -2 pi / thread_pitch). kinestat's pitch is
+        // length per radian, positive right-handed: -1 / thread_pitch.
         type = screw::CouplingType::helical;
         g.axis = axis(joint, 0, placed);
         if (joint.ThreadPitch() == 0.0)
           throw InputError(where(joint.Element()), fmt::format("screw joint '{}' has thread_pitch 0", joint.Name()));
-        g.pitch = 1.0 / joint.ThreadPitch();
+        g.pitch = -1.0 / joint.ThreadPitch();
         break;
       case sdf::JointType::UNIVERSAL:
       case sdf::JointType::REVOLUTE2:

@@ -7,18 +7,26 @@
 
 namespace kinestat::io::spacar {
 
-/// What an element keyword is: a beam (with orientation nodes) or a truss, planar or spatial.
+/// What an element keyword describes: a truss (two position nodes), a beam (position and
+/// orientation node at each end), a hinge (two orientation nodes) or a pin body (a position and
+/// orientation node of a body and a position node it carries); planar or spatial.
+enum class ElementKind { truss, beam, hinge, pin_body };
+
 struct ElementKeyword {
-  bool beam = false;
+  ElementKind kind = ElementKind::truss;
   bool planar = false;
 };
 
-/// The element keywords kinestat reads: BEAM, BEAMW, TRUSS, PLBEAM, PLTRUSS (upper case).
+/// The element keywords kinestat reads: BEAM, BEAMW, TRUSS, HINGE, PINBODY, PLBEAM, PLTRUSS,
+/// PLHINGE (upper case).
 inline std::optional<ElementKeyword> element_keyword(std::string_view keyword) {
-  if (keyword == "BEAM" || keyword == "BEAMW") return ElementKeyword{true, false};
-  if (keyword == "TRUSS") return ElementKeyword{false, false};
-  if (keyword == "PLBEAM") return ElementKeyword{true, true};
-  if (keyword == "PLTRUSS") return ElementKeyword{false, true};
+  if (keyword == "BEAM" || keyword == "BEAMW") return ElementKeyword{ElementKind::beam, false};
+  if (keyword == "TRUSS") return ElementKeyword{ElementKind::truss, false};
+  if (keyword == "HINGE") return ElementKeyword{ElementKind::hinge, false};
+  if (keyword == "PINBODY") return ElementKeyword{ElementKind::pin_body, false};
+  if (keyword == "PLBEAM") return ElementKeyword{ElementKind::beam, true};
+  if (keyword == "PLTRUSS") return ElementKeyword{ElementKind::truss, true};
+  if (keyword == "PLHINGE") return ElementKeyword{ElementKind::hinge, true};
   return std::nullopt;
 }
 
@@ -31,6 +39,6 @@ inline bool is_role_keyword(std::string_view keyword) {
 inline bool is_output_keyword(std::string_view keyword) { return keyword == "OUTLEVEL"; }
 
 inline constexpr std::string_view kSupportedKeywords =
-    "X, BEAM, BEAMW, TRUSS, PLBEAM, PLTRUSS, DYNE, RLSE, INPUTE, FIX and INPUTX";
+    "X, BEAM, BEAMW, TRUSS, HINGE, PINBODY, PLBEAM, PLTRUSS, PLHINGE, DYNE, RLSE, INPUTE, FIX and INPUTX";
 
 }  // namespace kinestat::io::spacar

@@ -73,7 +73,8 @@ class SpacarReader {
     for (const Record& r : records_)
       if (r.keyword.text == "X") read_position(r);
     for (const Record& r : records_) read_element(r);
-    if (elements_.empty()) fail(end_, "no elements: a SPACAR model needs BEAM, BEAMW, TRUSS, PLBEAM or PLTRUSS lines");
+    if (elements_.empty())
+      fail(end_, "no elements: a SPACAR model needs BEAM, BEAMW, TRUSS, HINGE, PINBODY, PLBEAM, PLTRUSS or PLHINGE lines");
     build_nodes();
     build_elements();
     for (const Record& r : records_) read_role(r);
@@ -214,11 +215,12 @@ class SpacarReader {
   struct PendingElement {
     Token keyword;
     long number = 0;
-    ElementType type = ElementType::truss;
+    spacar::ElementKind kind = spacar::ElementKind::truss;
     bool warping = false;
-    long p = 0, q = 0;    // position nodes
-    long rp = 0, rq = 0;  // orientation nodes (beams)
+    long p = 0, q = 0;    // position nodes (trusses, beams; a pin body's body and carried node)
+    long rp = 0, rq = 0;  // orientation nodes (beams and hinges; rp: a pin body's body)
     std::optional<Eigen::Vector3d> y;
+    int axis_slot = 5;  // hinges: the slot (rx, ry, rz) of the relative rotation about the axis
     std::vector<Token> node_tokens;
   };
 
@@ -234,6 +236,23 @@ class SpacarReader {
       fail(t, fmt::format("node {} is a position node (defined by X on line {}); an orientation node is expected here", n,
                           position_lines_.at(n)));
     return n;
+  }
+
+  // A hinge's axis must lie along a global axis: kinestat's rigid-body coupling of two
+  // orientations keeps their relative rotations about the global axes (docs/formats.md).
+  int hinge_axis_slot(const Record& r, long number) const {
+    Eigen::Vector3d axis;
+    for (int i = 0; i < 3; ++i) axis(i) = real(r.values[static_cast<std::size_t>(3 + i)], "the hinge axis");
+    Eigen::Index along = 0;
+    const double largest = axis.cwiseAbs().maxCoeff(&along);
+    if (!(largest > 0)) fail(r.values[3], fmt::format("element {}: the hinge axis is the zero vector", number));
+    // Compared with the largest component, so that huge numbers cannot overflow the test.
+    const Eigen::Vector3d unit = axis / largest;
+    if (std::sqrt(unit.squaredNorm() - 1.0) > kParallel)
+      fail(r.values[3], fmt::format("element {}: the hinge axis ({}, {}, {}) is not along a global axis x, y or z; kinestat "
+                                    "couples two orientations through their relative rotations about the global axes, so "
+                                    "a hinge about another axis is not supported", number, axis.x(), axis.y(), axis.z()));
+    return 3 + static_cast<int>(along);
   }
 
   void read_element(const Record& r) {
@@ -252,7 +271,7 @@ class SpacarReader {
     }
     PendingElement e;
     e.keyword = r.keyword;
-    e.type = type->beam ? ElementType::beam : ElementType::truss;
+    e.kind = type->kind;
     e.warping = k == "BEAMW";
     if (k == "TRUSS" || k == "PLTRUSS") {
       expect_count(r, {3}, "an element number and two position nodes");
@@ -260,39 +279,62 @@ class SpacarReader {
       expect_count(r, {5}, "an element number, position and orientation node at p, then at q");
     } else if (k == "BEAM") {
       expect_count(r, {5, 8}, "an element number, position and orientation node at p, then at q, and the local y direction");
-    } else {
+    } else if (k == "BEAMW") {
       expect_count(r, {7, 10},
                    "an element number, position, orientation and warping node at p, then at q, and the local y direction");
+    } else if (k == "HINGE") {
+      expect_count(r, {6}, "an element number, two orientation nodes and the hinge axis x y z");
+    } else if (k == "PLHINGE") {
+      expect_count(r, {3}, "an element number and two orientation nodes");
+    } else {
+      expect_count(r, {4}, "an element number, the position and orientation node of the body, and the position node it carries");
     }
     e.number = integer(r.values[0], "an element number");
     if (element_lines_.count(e.number))
       fail(r.values[0], fmt::format("element {} is defined twice (first on line {})", e.number, element_lines_[e.number]));
     element_lines_[e.number] = r.keyword.line;
-    if (e.type == ElementType::truss) {
-      e.p = position_node(r.values[1]);
-      e.q = position_node(r.values[2]);
-      e.node_tokens = {r.values[1], r.values[2]};
-    } else {
-      const std::size_t stride = e.warping ? 3 : 2;
-      e.p = position_node(r.values[1]);
-      e.rp = orientation_node(r.values[2]);
-      e.q = position_node(r.values[1 + stride]);
-      e.rq = orientation_node(r.values[2 + stride]);
-      e.node_tokens = {r.values[1], r.values[2], r.values[1 + stride], r.values[2 + stride]};
-      if (e.warping) {
-        // Warping nodes carry the warping deformation only; FIX or INPUTX on them is ignored.
-        warping_nodes_.insert(integer(r.values[3], "a warping node number"));
-        warping_nodes_.insert(integer(r.values[6], "a warping node number"));
-        warped_ += (warped_.empty() ? "" : ", ") + std::to_string(e.number);
-      }
-      const std::size_t y_at = 1 + 2 * stride;
-      if (r.values.size() == y_at + 3) {
-        e.y = Eigen::Vector3d(real(r.values[y_at], "the local y direction"), real(r.values[y_at + 1], "the local y direction"),
-                              real(r.values[y_at + 2], "the local y direction"));
+    switch (e.kind) {
+      case spacar::ElementKind::truss:
+        e.p = position_node(r.values[1]);
+        e.q = position_node(r.values[2]);
+        e.node_tokens = {r.values[1], r.values[2]};
+        break;
+      case spacar::ElementKind::hinge:
+        e.rp = orientation_node(r.values[1]);
+        e.rq = orientation_node(r.values[2]);
+        e.node_tokens = {r.values[1], r.values[2]};
+        if (k == "HINGE") e.axis_slot = hinge_axis_slot(r, e.number);
+        break;
+      case spacar::ElementKind::pin_body:
+        e.p = position_node(r.values[1]);
+        e.rp = orientation_node(r.values[2]);
+        e.q = position_node(r.values[3]);
+        e.node_tokens = {r.values[1], r.values[2], r.values[3]};
+        break;
+      case spacar::ElementKind::beam: {
+        const std::size_t stride = e.warping ? 3 : 2;
+        e.p = position_node(r.values[1]);
+        e.rp = orientation_node(r.values[2]);
+        e.q = position_node(r.values[1 + stride]);
+        e.rq = orientation_node(r.values[2 + stride]);
+        e.node_tokens = {r.values[1], r.values[2], r.values[1 + stride], r.values[2 + stride]};
+        if (e.warping) {
+          // Warping nodes carry the warping deformation only; FIX or INPUTX on them is ignored.
+          warping_nodes_.insert(integer(r.values[3], "a warping node number"));
+          warping_nodes_.insert(integer(r.values[6], "a warping node number"));
+          warped_ += (warped_.empty() ? "" : ", ") + std::to_string(e.number);
+        }
+        const std::size_t y_at = 1 + 2 * stride;
+        if (r.values.size() == y_at + 3) {
+          e.y = Eigen::Vector3d(real(r.values[y_at], "the local y direction"), real(r.values[y_at + 1], "the local y direction"),
+                                real(r.values[y_at + 2], "the local y direction"));
+        }
+        break;
       }
     }
-    if (e.p == e.q) fail(e.node_tokens.back(), fmt::format("element {} connects node {} to itself", e.number, e.p));
-    if (e.type == ElementType::beam && e.rp == e.rq)
+    if (e.kind != spacar::ElementKind::hinge && e.p == e.q)
+      fail(e.node_tokens.back(), fmt::format("element {} connects node {} to itself", e.number, e.p));
+    if ((e.kind == spacar::ElementKind::beam || e.kind == spacar::ElementKind::hinge) && e.rp == e.rq)
       fail(e.node_tokens.back(), fmt::format("element {} has the same orientation node {} at both ends", e.number, e.rp));
     elements_.push_back(std::move(e));
   }
@@ -313,10 +355,34 @@ class SpacarReader {
   }
 
   void build_nodes() {
+    using spacar::ElementKind;
+    std::multimap<long, long> carried_by_body;  // a pin body's orientation node -> the position node it carries
     for (const PendingElement& e : elements_) {
-      if (e.type != ElementType::beam) continue;
-      attach(e.p, e.rp, e.node_tokens[1]);
-      attach(e.q, e.rq, e.node_tokens[3]);
+      if (e.kind == ElementKind::beam) {
+        attach(e.p, e.rp, e.node_tokens[1]);
+        attach(e.q, e.rq, e.node_tokens[3]);
+      } else if (e.kind == ElementKind::pin_body) {
+        attach(e.p, e.rp, e.node_tokens[1]);
+        carried_by_body.emplace(e.rp, e.q);
+      }
+    }
+    // SPACAR Light writes a hinge between user nodes p and q as HINGE e rp rq and PINBODY e+1
+    // xp rp xq: the hinge's second orientation node rq belongs to the carried position node xq.
+    // An orientation node still without a position belongs to the position node numbered one
+    // below it, as SPACAR Light numbers them (2i-1, 2i in 1.23; 3i-2, 3i-1 in 1.37). A hinge
+    // couples orientations only, so the position chosen never changes what can move.
+    for (const PendingElement& h : elements_) {
+      if (h.kind != ElementKind::hinge) continue;
+      const auto [first, last] = carried_by_body.equal_range(h.rp);
+      for (auto it = first; it != last && !orientation_owner_.count(h.rq); ++it) attach(it->second, h.rq, h.node_tokens[1]);
+      for (std::size_t k = 0; k < 2; ++k) {
+        const long r = k == 0 ? h.rp : h.rq;
+        if (orientation_owner_.count(r)) continue;
+        if (!positions_.count(r - 1))
+          fail(h.node_tokens[k], fmt::format("orientation node {} of hinge {} belongs to no position node: no BEAM or "
+                                             "PINBODY uses it with one, and no X line defines node {}", r, h.number, r - 1));
+        attach(r - 1, r, h.node_tokens[k]);
+      }
     }
     for (long n : position_order_) {
       Node node;
@@ -344,32 +410,61 @@ class SpacarReader {
 
   void build_elements() {
     const double length = framework::characteristic_length(model_);
+    const std::size_t translations = model_.dimension == 2 ? 2 : 3;
     for (const PendingElement& e : elements_) {
       Element element;
       element.name = std::to_string(e.number);
-      element.type = e.type;
-      const std::size_t p = e.type == ElementType::beam ? orientation_index_.at(e.rp) : position_index_.at(e.p);
-      const std::size_t q = e.type == ElementType::beam ? orientation_index_.at(e.rq) : position_index_.at(e.q);
-      element.nodes = {p, q};
-      const Eigen::Vector3d axis = model_.nodes[q].position - model_.nodes[p].position;
-      if (!(axis.norm() > kZeroLength * length))
-        fail(e.node_tokens.back(), fmt::format("zero-length element {}: nodes {} and {} coincide", e.number, e.p, e.q));
-      const Eigen::Vector3d x = axis.normalized();
-      if (e.type == ElementType::beam) {
-        if (model_.dimension == 2) {
-          element.frame << x, Eigen::Vector3d::UnitZ().cross(x), Eigen::Vector3d::UnitZ();
-        } else {
-          // SPACAR Light's default local y is the global y axis.
-          const Eigen::Vector3d given = e.y.value_or(Eigen::Vector3d::UnitY());
-          const Eigen::Vector3d across = given - given.dot(x) * x;
-          if (!(given.norm() > 0) || !(across.norm() > kParallel * given.norm()))
-            fail(e.keyword, fmt::format("element {}: the local y direction ({}, {}, {}) is parallel to the element axis "
-                                        "from node {} to node {}", e.number, given.x(), given.y(), given.z(), e.p, e.q));
-          const Eigen::Vector3d y = across.normalized();
-          element.frame << x, y, x.cross(y);
+      switch (e.kind) {
+        case spacar::ElementKind::hinge:
+          // Two orientations joined: relative translations free, relative rotations rigid (the
+          // one about the axis is deformation 1; see read_role).
+          element.type = ElementType::rigid_body;
+          element.nodes = {orientation_index_.at(e.rp), orientation_index_.at(e.rq)};
+          element.roles.assign(framework::deformation_count(model_.dimension, element), DeformationRole::fixed);
+          for (std::size_t k = 0; k < translations; ++k) element.roles[k] = DeformationRole::released;
+          break;
+        case spacar::ElementKind::pin_body: {
+          // The carried position node moves with the body; its orientation is free.
+          const std::size_t carried = position_index_.at(e.q);
+          if (!model_.nodes[carried].rotational)
+            fail(e.node_tokens[2], fmt::format("PINBODY {} carries position node {}, which no BEAM or HINGE gives an "
+                                               "orientation node: kinestat cannot pin a node without one to a body",
+                                               e.number, e.q));
+          element.type = ElementType::rigid_body;
+          element.nodes = {orientation_index_.at(e.rp), carried};
+          element.roles.assign(framework::deformation_count(model_.dimension, element), DeformationRole::released);
+          for (std::size_t k = 0; k < translations; ++k) element.roles[k] = DeformationRole::fixed;
+          break;
+        }
+        case spacar::ElementKind::truss:
+        case spacar::ElementKind::beam: {
+          const bool beam = e.kind == spacar::ElementKind::beam;
+          element.type = beam ? ElementType::beam : ElementType::truss;
+          const std::size_t p = beam ? orientation_index_.at(e.rp) : position_index_.at(e.p);
+          const std::size_t q = beam ? orientation_index_.at(e.rq) : position_index_.at(e.q);
+          element.nodes = {p, q};
+          const Eigen::Vector3d axis = model_.nodes[q].position - model_.nodes[p].position;
+          if (!(axis.norm() > kZeroLength * length))
+            fail(e.node_tokens.back(), fmt::format("zero-length element {}: nodes {} and {} coincide", e.number, e.p, e.q));
+          const Eigen::Vector3d x = axis.normalized();
+          if (beam) {
+            if (model_.dimension == 2) {
+              element.frame << x, Eigen::Vector3d::UnitZ().cross(x), Eigen::Vector3d::UnitZ();
+            } else {
+              // SPACAR Light's default local y is the global y axis.
+              const Eigen::Vector3d given = e.y.value_or(Eigen::Vector3d::UnitY());
+              const Eigen::Vector3d across = given - given.dot(x) * x;
+              if (!(given.norm() > 0) || !(across.norm() > kParallel * given.norm()))
+                fail(e.keyword, fmt::format("element {}: the local y direction ({}, {}, {}) is parallel to the element "
+                                            "axis from node {} to node {}", e.number, given.x(), given.y(), given.z(), e.p, e.q));
+              const Eigen::Vector3d y = across.normalized();
+              element.frame << x, y, x.cross(y);
+            }
+          }
+          element.roles.assign(framework::deformation_count(model_.dimension, element), DeformationRole::fixed);
+          break;
         }
       }
-      element.roles.assign(framework::deformation_count(model_.dimension, element), DeformationRole::fixed);
       element_index_[e.number] = model_.elements.size();
       element_types_.push_back(&e);
       model_.elements.push_back(std::move(element));
@@ -382,7 +477,6 @@ class SpacarReader {
       joint.type = ElementType::rigid_body;
       joint.nodes = {a, b};
       joint.roles.assign(framework::deformation_count(model_.dimension, joint), DeformationRole::fixed);
-      const std::size_t translations = model_.dimension == 2 ? 2 : 3;
       for (std::size_t k = translations; k < joint.roles.size(); ++k) joint.roles[k] = DeformationRole::released;
       model_.elements.push_back(std::move(joint));
     }
@@ -401,27 +495,50 @@ class SpacarReader {
     const PendingElement& pending = *element_types_[found->second];
     const DeformationRole role =
         k == "RLSE" ? DeformationRole::released : (k == "INPUTE" ? DeformationRole::independent : DeformationRole::fixed);
-    const std::size_t count = element.roles.size();
-    const std::size_t spacar_count = pending.warping ? 8 : count;
-    std::vector<std::size_t> list;
+    if (pending.kind == spacar::ElementKind::pin_body && role != DeformationRole::fixed)
+      fail(r.keyword, fmt::format("{} of PINBODY {}: kinestat keeps a pin body rigid (its deformations are not documented "
+                                  "publicly, so which is which is not known)", k, number));
+    const std::vector<int> map = deformation_map(pending, element);
+    std::vector<std::size_t> list;  // SPACAR deformation numbers - 1
     if (r.values.size() == 1) {
-      for (std::size_t d = 0; d < count; ++d) list.push_back(d);  // no numbers: every deformation
+      for (std::size_t d = 0; d < map.size(); ++d) list.push_back(d);  // no numbers: every deformation
     }
     for (std::size_t i = 1; i < r.values.size(); ++i) {
       const long d = integer(r.values[i], "a deformation number");
-      if (static_cast<std::size_t>(d) > spacar_count)
+      if (static_cast<std::size_t>(d) > map.size())
         fail(r.values[i], fmt::format("element {} ({}) has deformations 1 to {}, found {}", number, pending.keyword.text,
-                                      spacar_count, d));
-      if (static_cast<std::size_t>(d) > count) continue;  // a warping deformation of BEAMW
+                                      map.size(), d));
       list.push_back(static_cast<std::size_t>(d - 1));
     }
+    if (pending.kind == spacar::ElementKind::hinge && map.size() == 3 &&
+        std::count(list.begin(), list.end(), 1) != std::count(list.begin(), list.end(), 2))
+      fail(r.keyword, fmt::format("{} of HINGE {}: deformations 2 and 3 (the relative rotations about the two axes across "
+                                  "the hinge axis) must be given together; which is which is not documented publicly",
+                                  k, number));
     for (std::size_t d : list) {
       auto& seen = deformation_keyword_[{number, d}];
       if (!seen.empty() && seen != k)
         fail(r.keyword, fmt::format("deformation {} of element {} is both {} and {}", d + 1, number, seen, k));
       seen = k;
-      element.roles[d] = role;
+      if (map[d] >= 0) element.roles[static_cast<std::size_t>(map[d])] = role;  // -1: a warping deformation of BEAMW
     }
+  }
+
+  // SPACAR's deformation numbers (minus 1) of `e` -> the deformations of its kinestat element
+  // (-1: not modelled). Hinge: 1 is the rotation about the axis, 2 and 3 those across it.
+  static std::vector<int> deformation_map(const PendingElement& e, const Element& element) {
+    if (e.kind == spacar::ElementKind::hinge) {
+      if (element.roles.size() == 3) return {2};  // planar: x, y, rz
+      std::vector<int> map = {e.axis_slot};
+      for (int slot = 3; slot < 6; ++slot)
+        if (slot != e.axis_slot) map.push_back(slot);
+      return map;
+    }
+    if (e.kind == spacar::ElementKind::pin_body) return {0, 1, 2};
+    std::vector<int> map;
+    for (std::size_t d = 0; d < element.roles.size(); ++d) map.push_back(static_cast<int>(d));
+    if (e.warping) map.insert(map.end(), {-1, -1});
+    return map;
   }
 
   void read_coordinates(const Record& r, CoordinateRole role) {

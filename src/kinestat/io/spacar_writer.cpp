@@ -56,20 +56,60 @@ class SpacarWriter {
     return true;
   }
 
+  // A two-node rigid body whose relative translations are released couples the orientations
+  // only: a SPACAR HINGE (PLHINGE in 2-D). Its axis is the global axis whose relative rotation
+  // has a role of its own (deformation 1); the two others (2 and 3) share one. -1: not a hinge.
+  int hinge_axis(const Element& e) const {
+    if (e.type != ElementType::rigid_body || e.nodes.size() != 2) return -1;
+    const std::size_t translations = planar_ ? 2 : 3;
+    for (std::size_t k = 0; k < translations; ++k)
+      if (e.roles[k] != DeformationRole::released) return -1;
+    if (planar_) return 5;
+    const auto& r = e.roles;
+    if (r[3] == r[4] && r[4] == r[5]) return 5;
+    if (r[4] == r[5]) return 3;
+    if (r[3] == r[5]) return 4;
+    if (r[3] == r[4]) return 5;
+    return -1;
+  }
+
   // SPACAR Light's numbering: node i (1-based) has position node 2i−1 and orientation node 2i.
-  // The second node of a joint shares the first node's position node.
+  // The second node of a joint shares the first node's position node, unless only hinges use
+  // its orientation: then no BEAM would tie that orientation node to the shared position, so
+  // the node keeps its own position node (numbered one below its orientation node, which the
+  // reader relies on) and the joint is written as a PINBODY, as SPACAR Light writes the pin of
+  // a hinge. SPACAR has no planar pin body: such a planar joint is refused.
   void number_nodes() {
+    std::set<std::size_t> hinged, beamed;
+    for (const Element& e : model_.elements) {
+      if (hinge_axis(e) >= 0) hinged.insert(e.nodes.begin(), e.nodes.end());
+      else if (e.type == ElementType::beam || (e.type == ElementType::rigid_body && !is_joint(e)))
+        beamed.insert(e.nodes.begin(), e.nodes.end());
+    }
+    for (std::size_t n : hinged)
+      if (!beamed.count(n)) hinge_only_.insert(n);
     std::vector<std::size_t> owner(model_.nodes.size());
     for (std::size_t i = 0; i < owner.size(); ++i) owner[i] = i;
     const auto root = [&](std::size_t i) {
       while (owner[i] != i) i = owner[i];
       return i;
     };
-    for (const Element& e : model_.elements)
-      if (is_joint(e)) owner[root(e.nodes[1])] = root(e.nodes[0]);
+    for (const Element& e : model_.elements) {
+      if (!is_joint(e)) continue;
+      if (!is_shared_joint(e)) {
+        if (planar_)
+          refuse(fmt::format("joint '{}': node '{}' turns only through PLHINGE elements, so it needs a position node of "
+                             "its own, and SPACAR has no planar pin body to join it to '{}'", e.name,
+                             model_.nodes[e.nodes[1]].name, model_.nodes[e.nodes[0]].name));
+        continue;
+      }
+      owner[root(e.nodes[1])] = root(e.nodes[0]);
+    }
     position_.resize(model_.nodes.size());
     for (std::size_t i = 0; i < owner.size(); ++i) position_[i] = static_cast<long>(2 * root(i) + 1);
   }
+
+  bool is_shared_joint(const Element& e) const { return is_joint(e) && !hinge_only_.count(e.nodes[1]); }
 
   long orientation(std::size_t node) const { return static_cast<long>(2 * node + 2); }
 
@@ -109,20 +149,37 @@ class SpacarWriter {
     const double length = framework::characteristic_length(model_);
     for (std::size_t e = 0; e < model_.elements.size(); ++e) {
       const Element& element = model_.elements[e];
-      if (is_joint(element)) continue;  // expressed by the shared position node
+      if (is_shared_joint(element)) continue;  // expressed by the shared position node
       number_.push_back(next);
       const std::size_t p = element.nodes[0];
-      if (element.type == ElementType::truss) {
+      if (is_joint(element)) {
+        used_orientations_.insert(p);
+        out_ += fmt::format("PINBODY  {:4}  {:4} {:4}  {:4}  # joint {}\n", next++, position_[p], orientation(p),
+                            position_[element.nodes[1]], printable_text(element.name));
+      } else if (element.type == ElementType::truss) {
         out_ += fmt::format("{}  {:4}  {:4}  {:4}  # element {}\n", planar_ ? "PLTRUSS" : "TRUSS", next, position_[p],
                             position_[element.nodes[1]], printable_text(element.name));
         ++next;
       } else if (element.type == ElementType::beam) {
         beam(next++, p, element.nodes[1], element.frame.col(1), "element " + printable_text(element.name));
+      } else if (const int hinge = hinge_axis(element); hinge >= 0) {
+        const std::size_t q = element.nodes[1];
+        used_orientations_.insert(p);
+        used_orientations_.insert(q);
+        if (planar_) {
+          out_ += fmt::format("PLHINGE  {:4}  {:4} {:4}  # hinge {}\n", next++, orientation(p), orientation(q), printable_text(element.name));
+        } else {
+          const Eigen::Vector3d direction = Eigen::Matrix3d::Identity().col(hinge - 3);
+          out_ += fmt::format("HINGE  {:4}  {:4} {:4}  {}  {}  {}  # hinge {} (about {})\n", next++, orientation(p),
+                              orientation(q), number(direction.x()), number(direction.y()), number(direction.z()),
+                              printable_text(element.name), framework::kSlotNames[static_cast<std::size_t>(hinge)]);
+        }
       } else {
         for (DeformationRole role : element.roles)
           if (role != DeformationRole::fixed)
             refuse(fmt::format("rigid body '{}' has released or independent deformations; SPACAR expresses only rigid "
-                               "bodies (as rigid beams) and joints (a shared position node)", element.name));
+                               "bodies (as rigid beams), joints (a shared position node) and hinges (two nodes, relative "
+                               "translations released, two of the relative rotations in the same role)", element.name));
         // A rigid body is a star of rigid beams from its reference node.
         for (std::size_t k = 1; k < element.nodes.size(); ++k) {
           const std::size_t q = element.nodes[k];
@@ -147,14 +204,32 @@ class SpacarWriter {
     std::size_t written = 0;
     for (std::size_t e = 0, n = 0; e < model.elements.size(); ++e) {
       const Element& element = model.elements[e];
-      if (is_joint(model_.elements[e])) continue;
+      if (is_shared_joint(model_.elements[e])) continue;
       const long number = number_[n++];
-      if (element.type == ElementType::rigid_body) continue;
+      // SPACAR's deformation numbers: a hinge's 1 is its axis, 2 and 3 the rotations across it
+      // (written only together); other elements number kinestat's deformations in order.
+      const int axis = hinge_axis(model_.elements[e]);
+      std::vector<std::vector<std::size_t>> numbered;  // SPACAR deformation -> kinestat deformations
+      if (axis >= 0) {
+        numbered.push_back({static_cast<std::size_t>(axis) - (planar_ ? 3 : 0)});
+        if (!planar_) numbered.push_back({});
+        for (std::size_t d = 3; d < element.roles.size(); ++d)
+          if (d != static_cast<std::size_t>(axis)) numbered.back().push_back(d);
+      } else if (element.type != ElementType::rigid_body) {
+        for (std::size_t d = 0; d < element.roles.size(); ++d) numbered.push_back({d});
+      }
       for (const auto& [role, keyword] : {std::pair{DeformationRole::released, "RLSE"}, std::pair{DeformationRole::independent, "INPUTE"}}) {
         std::string list;
-        for (std::size_t d = 0; d < element.roles.size(); ++d) {
-          const bool is_new = !base || base->elements[e].roles[d] != role;
-          if (element.roles[d] == role && is_new) list += fmt::format(" {}", d + 1);
+        for (std::size_t k = 0; k < numbered.size(); ++k) {
+          std::size_t matching = 0;
+          for (std::size_t d : numbered[k]) {
+            const bool is_new = !base || base->elements[e].roles[d] != role;
+            if (element.roles[d] == role && is_new) ++matching;
+          }
+          if (matching == numbered[k].size()) list += k == 1 && axis >= 0 ? " 2 3" : fmt::format(" {}", k + 1);
+          else if (matching > 0)
+            out += fmt::format("{}# {} of one rotation across hinge {} alone cannot be written: SPACAR gives its "
+                               "deformations 2 and 3 together\n", prefix, keyword, printable_text(element.name));
         }
         if (!list.empty()) {
           out += fmt::format("{}{:<7} {:4} {}  # element {}\n", prefix, keyword, number, list, printable_text(element.name));
@@ -225,6 +300,7 @@ class SpacarWriter {
   std::vector<long> position_;
   std::vector<long> number_;  // SPACAR number of each written kinestat element
   std::set<std::size_t> used_orientations_;
+  std::set<std::size_t> hinge_only_;  // nodes whose orientation only hinges use
 };
 
 }  // namespace
