@@ -24,6 +24,17 @@ std::string point_text(const Eigen::Vector3d& p) { return fmt::format("({}, {}, 
 
 std::string direction_text(const Eigen::Vector3d& d) { return point_text(d.normalized()); }
 
+// A screw as the line of its vector `a` (force, angular velocity) with moment `m` about the
+// origin: "<line> (a) through (point)" [" with pitch p"], or "<pure> (m)" when a vanishes.
+std::string line_text(const Eigen::Vector3d& a, const Eigen::Vector3d& m, double length, const char* pure, const char* line) {
+  if (a.norm() * length <= kPureCouple * m.norm() || a.norm() == 0.0) return std::string(pure) + " " + direction_text(m);
+  const Eigen::Vector3d p = a.cross(m) / a.squaredNorm();
+  const double pitch = a.dot(m) / a.squaredNorm();
+  std::string text = fmt::format("{} {} through {}", line, direction_text(a), point_text(p));
+  if (std::abs(pitch) > kPureCouple * length) text += fmt::format(" with pitch {}", number(pitch));
+  return text;
+}
+
 }  // namespace
 
 Screw6 embed(const std::vector<double>& coordinates, const screw::ScrewSpace& space) {
@@ -32,24 +43,8 @@ Screw6 embed(const std::vector<double>& coordinates, const screw::ScrewSpace& sp
   return s;
 }
 
-std::string action_text(const Screw6& w, double length) {
-  const Eigen::Vector3d m = w.head<3>(), f = w.tail<3>();
-  if (f.norm() * length <= kPureCouple * m.norm() || f.norm() == 0.0) return "torque about " + direction_text(m);
-  const Eigen::Vector3d p = f.cross(m) / f.squaredNorm();
-  const double pitch = f.dot(m) / f.squaredNorm();
-  std::string text = fmt::format("force along {} through {}", direction_text(f), point_text(p));
-  if (std::abs(pitch) > kPureCouple * length) text += fmt::format(" with pitch {}", number(pitch));
-  return text;
-}
+std::string action_text(const Screw6& w, double length) { return line_text(w.tail<3>(), w.head<3>(), length, "torque about", "force along"); }
 
-std::string motion_text(const Screw6& t, double length) {
-  const Eigen::Vector3d w = t.head<3>(), v = t.tail<3>();
-  if (w.norm() * length <= kPureCouple * v.norm() || w.norm() == 0.0) return "translation along " + direction_text(v);
-  const Eigen::Vector3d p = w.cross(v) / w.squaredNorm();
-  const double pitch = w.dot(v) / w.squaredNorm();
-  std::string text = fmt::format("rotation about {} through {}", direction_text(w), point_text(p));
-  if (std::abs(pitch) > kPureCouple * length) text += fmt::format(" with pitch {}", number(pitch));
-  return text;
-}
+std::string motion_text(const Screw6& t, double length) { return line_text(t.head<3>(), t.tail<3>(), length, "translation along", "rotation about"); }
 
 }  // namespace kinestat::design
