@@ -11,7 +11,7 @@ int main(int argc, char** argv) try {
     const kinestat::framework::FrameworkAnalysis result = kinestat::framework::analyse_framework(*file.framework);
     std::cout << file.framework->name << ": modes = " << result.mechanisms << ", self-stresses = " << result.self_stresses << '\n';
   }
-} catch (const kinestat::io::InputError& error) {
+} catch (const kinestat::Error& error) {  // every error kinestat throws: message, exit code, position
   std::cerr << error.what() << '\n';
-  return 2;
+  return error.exit_code();
 }

@@ -219,6 +219,14 @@ PYBIND11_MODULE(_core, m) {
       instance.attr("column") = error.where().column;
       instance.attr("problem") = error.problem();
       PyErr_SetObject(input_error.ptr(), instance.ptr());
+    } catch (const kinestat::Error& error) {  // the root of the library's other errors: no position
+      const auto type = py::reinterpret_borrow<py::object>(input_error.ptr());
+      py::object instance = type(error.what());
+      instance.attr("file") = error.where().file;
+      instance.attr("line") = error.where().line;
+      instance.attr("column") = error.where().column;
+      instance.attr("problem") = std::string(error.what());
+      PyErr_SetObject(input_error.ptr(), instance.ptr());
     }
   });
 

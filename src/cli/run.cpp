@@ -41,7 +41,10 @@ int run(int argc, const char* const* argv) {
     return action ? action() : 2;
   } catch (const io::InputError& error) {
     std::cerr << error.what() << '\n';
-    return 2;
+    return error.exit_code();
+  } catch (const Error& error) {  // not converted to a file position on the way: still the input's fault
+    std::cerr << "kinestat: error: " << error.what() << '\n';
+    return error.exit_code();
   } catch (const std::bad_alloc&) {
     std::cerr << "kinestat: error: out of memory (the model is too large for this machine)\n";
     return 3;

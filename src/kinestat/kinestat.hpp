@@ -2,6 +2,7 @@
 // kinestat: every public header. Layers: screw, graph, linalg -> network, framework, structure,
 // design -> io -> report (docs/architecture.md). The installed-package check
 // (tests/consumer) fails when a public header is missing here.
+#include "kinestat/error.hpp"
 #include "kinestat/design/framework_verdict.hpp"
 #include "kinestat/design/network_verdict.hpp"
 #include "kinestat/design/screw_text.hpp"
@@ -43,6 +44,7 @@
 #include "kinestat/network/analyse_network.hpp"
 #include "kinestat/network/analysis_frame.hpp"
 #include "kinestat/network/magnitude_names.hpp"
+#include "kinestat/network/mobility_count.hpp"
 #include "kinestat/network/model.hpp"
 #include "kinestat/network/network_result.hpp"
 #include "kinestat/network/sparse_network.hpp"

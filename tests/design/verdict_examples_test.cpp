@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <map>
 
+#include "kinestat/design/network_verdict.hpp"
 #include "kinestat/framework/framework_analysis.hpp"
 #include "kinestat/io/framework_reader.hpp"
 #include "kinestat/io/network_reader.hpp"
@@ -293,6 +294,36 @@ TEST(StructureVerdict, CountsAndVerifiedChangesOfEveryExample) {
     }
     EXPECT_TRUE(structure::decompose(model).complete());
   }
+}
+
+// ---- the change search's budget --------------------------------------------------------------
+
+// A dense 12-body network of 58 revolutes (47 circuits, M^N of 282 x 58): each screened copy
+// costs about 282 * 58 * 58 = 9.5 10^5 of the 5 10^7 budget, so the search stops after about
+// fifty copies and says so, instead of spending minutes; the counts keep the identity
+// CN = FN - F + d l of seed 000.
+TEST(NetworkVerdict, LargeSearchStopsAtItsBudgetAndSaysSo) {
+  network::Model model;
+  for (int b = 0; b < 12; ++b) model.bodies.push_back("b" + std::to_string(b));
+  int k = 0;
+  for (int i = 0; i < 12 && k < 58; ++i)
+    for (int j = i + 1; j < 12 && k < 58; ++j, ++k) {
+      network::Coupling c;
+      c.name = "C" + std::to_string(k);
+      c.type = screw::CouplingType::revolute;
+      c.from = i;
+      c.to = j;
+      c.geometry.point = {screw::Rational(k % 7 - 3), screw::Rational(k % 5 - 2), screw::Rational(k % 11 - 5)};
+      c.geometry.axis = screw::Vec3{screw::Rational(1), screw::Rational(k % 3), screw::Rational(k % 4 + 1)};
+      model.couplings.push_back(c);
+    }
+  const network::NetworkResult r = network::analyse_network(model);
+  EXPECT_EQ(r.l, 58 - 12 + 1);
+  EXPECT_EQ(r.CN, r.FN - r.F + 6 * r.l);
+  const design::Verdict v = design::network_verdict(model, r);
+  EXPECT_FALSE(v.exactly_constrained);
+  EXPECT_TRUE(v.changes.empty());
+  EXPECT_NE(v.note.find("search budget"), std::string::npos) << v.note;
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 // Deriving a structure model from a coupling list (what a coupling-network model provides).
 #include <gtest/gtest.h>
 
+#include "kinestat/error.hpp"
+
 #include "kinestat/structure/decomposition.hpp"
 
 namespace kinestat::structure {
@@ -36,9 +38,9 @@ TEST(CouplingDerivation, SpatialFreedomsAndBadCouplings) {
   EXPECT_EQ(rsur.mobility(), 1);
   EXPECT_TRUE(adjacency_of(rsur).empty());  // spatial: no Table-1 matrix
   EXPECT_TRUE(decompose(rsur).complete());
-  EXPECT_THROW(model_from_couplings({"0", "1"}, {{0, 2, PairKind::lower, 0, {}}}), std::invalid_argument);
-  EXPECT_THROW(model_from_couplings({"0", "1"}, {{1, 1, PairKind::lower, 0, {}}}), std::invalid_argument);
-  EXPECT_THROW(model_from_couplings({"0", "1"}, {{0, 1, PairKind::lower, 2, {}}}), std::invalid_argument);
+  EXPECT_THROW(model_from_couplings({"0", "1"}, {{0, 2, PairKind::lower, 0, {}}}), kinestat::Error);
+  EXPECT_THROW(model_from_couplings({"0", "1"}, {{1, 1, PairKind::lower, 0, {}}}), kinestat::Error);
+  EXPECT_THROW(model_from_couplings({"0", "1"}, {{0, 1, PairKind::lower, 2, {}}}), kinestat::Error);
 }
 
 }  // namespace

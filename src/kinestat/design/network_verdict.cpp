@@ -10,7 +10,11 @@
 #include <tuple>
 
 #include "kinestat/design/screw_text.hpp"
+#include "kinestat/graph/coupling_graph.hpp"
 #include "kinestat/linalg/homogeneous_solution.hpp"
+#include "kinestat/linalg/svd_analysis.hpp"
+#include "kinestat/network/analysis_frame.hpp"
+#include "kinestat/network/mobility_count.hpp"
 #include "kinestat/screw/coupling_basis.hpp"
 
 namespace kinestat::design {
@@ -95,9 +99,90 @@ int idle_count(const std::vector<IdleMotion>& idle) {
   return n;
 }
 
-Standing stand(const Model& model, const network::AnalysisOptions& options, bool exact) {
-  const network::NetworkResult r = network::analyse_network(model, options);
-  return {r.FN, r.CN, idle_count(idle_motions(model, exact, options.tolerance))};
+// ---- screening changed copies -----------------------------------------------------------
+
+// The bases of every coupling the search meets, built once each: in the analysis frame when
+// floating point (so numerical ranks are placement- and unit-free), keyed by type and geometry.
+class BasisCache {
+ public:
+  BasisCache(const Model& model, bool exact)
+      : space_(model.space), frame_(exact ? network::AnalysisFrame{} : network::AnalysisFrame::of(model)) {}
+
+  const screw::CouplingBasis& of(const Coupling& c) {
+    std::string key = key_of(c);
+    auto it = bases_.find(key);
+    if (it == bases_.end())
+      it = bases_.emplace(std::move(key), screw::coupling_basis(c.type, frame_.to_frame(c.geometry, space_), space_)).first;
+    return it->second;  // std::map: stays valid while others are added
+  }
+
+ private:
+  static std::string key_of(const Coupling& c) {
+    const auto& g = c.geometry;
+    std::string key = std::string(screw::coupling_type_name(c.type));
+    auto add = [&](const auto& values) {
+      key += '|';
+      for (const auto& x : values) key += linalg::to_string(x) + ',';
+    };
+    add(g.point);
+    for (const auto* v : {&g.axis, &g.axis2, &g.normal})
+      if (*v) add(**v);
+      else key += "|-";
+    key += '|' + linalg::to_string(g.pitch);
+    for (const auto& m : g.custom_motions) add(m);
+    key += "|actions";
+    for (const auto& a : g.custom_actions) add(a);
+    return key;
+  }
+
+  screw::ScrewSpace space_;
+  network::AnalysisFrame frame_;
+  std::map<std::string, screw::CouplingBasis> bases_;
+};
+
+// FN, CN and idle spins of a changed copy from cached bases: one rank of M^N and one small rank
+// per body, instead of a full analysis. The search compares hundreds of copies this way; the
+// change set it settles on is verified by a full analysis (network_verdict).
+Standing screen(const Model& model, BasisCache& cache, bool exact, const linalg::RankTolerance& tolerance,
+                double& work) {
+  const int d = model.space.dimension();
+  std::vector<graph::Edge> edges;
+  std::vector<const screw::CouplingBasis*> bases;
+  for (const auto& c : model.couplings) {
+    edges.push_back({c.from, c.to});
+    bases.push_back(&cache.of(c));
+  }
+  const auto count = network::count_mobility(static_cast<int>(model.bodies.size()), edges, bases, d, exact, tolerance);
+  const double equations = d * count.l, unknowns = count.F;
+  work += equations * unknowns * std::min(equations, unknowns);
+  Standing s{count.FN, count.CN, 0};
+  // Idle spins: the motions common to every coupling of a body, d less the rank of their actions.
+  const int ground = model.ground.value_or(0);
+  for (int b = 0; b < static_cast<int>(model.bodies.size()); ++b) {
+    std::vector<const std::vector<Rational>*> actions;
+    int couplings = 0;
+    for (std::size_t e = 0; e < edges.size(); ++e) {
+      if (b == ground || (edges[e].from != b && edges[e].to != b)) continue;
+      ++couplings;
+      for (const auto& a : bases[e]->actions) actions.push_back(&a.coordinates);
+    }
+    if (couplings < 2) continue;
+    const auto rows = static_cast<Eigen::Index>(actions.size());
+    if (rows == 0) {
+      s.idle += d;
+    } else if (exact) {
+      linalg::RationalMatrix a(rows, d);
+      for (Eigen::Index r = 0; r < rows; ++r)
+        for (int k = 0; k < d; ++k) a(r, k) = (*actions[static_cast<std::size_t>(r)])[static_cast<std::size_t>(k)];
+      s.idle += d - static_cast<int>(linalg::exact_rank(a));
+    } else {
+      Eigen::MatrixXd a(rows, d);
+      for (Eigen::Index r = 0; r < rows; ++r)
+        for (int k = 0; k < d; ++k) a(r, k) = (*actions[static_cast<std::size_t>(r)])[static_cast<std::size_t>(k)].get_d();
+      s.idle += d - static_cast<int>(linalg::numerical_rank(a, tolerance).rank);
+    }
+  }
+  return s;
 }
 
 // ---- candidate changes ------------------------------------------------------------------
@@ -280,21 +365,22 @@ struct Search {
   Tally result;
 };
 
+// With `one_way`, a design with only redundant constraints is offered only releases and removals,
+// and one with only extra motions only added constraints: a designer's change, not a removal
+// that frees a motion and a constraint that takes it back.
 Search search_changes(const Model& model, const network::AnalysisOptions& options, bool exact, int intended,
-                      const Tally& start, const std::vector<int>& order) {
+                      const Tally& start, const std::vector<int>& order, bool one_way, double& work) {
   Search s;
   s.result = start;
-  network::AnalysisOptions counting = options;
-  counting.primary.reset();
-  counting.values.clear();
-  counting.all_pairs = false;
+  BasisCache cache(model, exact);
   int analyses = 0;
+  const auto within_budget = [&] { return analyses < kNetworkDesignSearchAnalyses && work < kNetworkDesignSearchWork; };
   auto evaluate = [&](const ChangeSet& changes) -> std::optional<Tally> {
     ++analyses;
     try {
-      return tally(stand(changed_model(model, changes), counting, exact), intended);
-    } catch (const network::ModelError&) {
-      return std::nullopt;  // e.g. a removal that disconnects a body
+      return tally(screen(changed_model(model, changes), cache, exact, options.tolerance, work), intended);
+    } catch (const graph::TreeError&) {
+      return std::nullopt;  // a removal that disconnects a body
     } catch (const screw::GeometryError&) {
       return std::nullopt;
     }
@@ -307,16 +393,20 @@ Search search_changes(const Model& model, const network::AnalysisOptions& option
     const auto current = s.changes.find(e);
     if (current != s.changes.end() && !current->second) return out;  // removed already
     const Coupling& now = current != s.changes.end() ? *current->second : model.couplings[static_cast<std::size_t>(e)];
+    const auto f = [&](const Coupling& c) { return static_cast<int>(cache.of(c).motions.size()); };
     for (auto& candidate : candidates_for(changed_model(model, s.changes), now)) {
       try {
-        const int delta = std::abs((candidate ? freedoms(*candidate, model.space) : 0) - freedoms(now, model.space));
-        out.emplace_back(std::move(candidate), delta);
+        // A removal drops the d - f constraints the coupling imposed.
+        const int f_after = candidate ? f(*candidate) : model.space.dimension();
+        if (one_way && start.extra == 0 && f_after < f(now)) continue;  // only releases against redundancy
+        if (one_way && start.CN == 0 && f_after > f(now)) continue;     // only constraints against extra motion
+        out.emplace_back(std::move(candidate), std::abs(f_after - f(now)));
       } catch (const screw::GeometryError&) {
       }
     }
     return out;
   };
-  while (s.result.score() > 0 && analyses < kNetworkDesignSearchAnalyses) {
+  while (s.result.score() > 0 && within_budget()) {
     std::optional<Key> best_key;
     ChangeSet best;
     Tally best_tally;
@@ -332,7 +422,7 @@ Search search_changes(const Model& model, const network::AnalysisOptions& option
     };
     for (std::size_t rank = 0; rank < order.size(); ++rank) {
       const auto list = options_at(rank);
-      for (std::size_t k = 0; k < list.size() && analyses < kNetworkDesignSearchAnalyses; ++k) {
+      for (std::size_t k = 0; k < list.size() && within_budget(); ++k) {
         ChangeSet trial = s.changes;
         trial[order[rank]] = list[k].first;
         consider(trial, list[k].second, rank, k);
@@ -346,7 +436,7 @@ Search search_changes(const Model& model, const network::AnalysisOptions& option
       for (std::size_t r2 = r1 + 1; r2 < paired; ++r2) {
         const auto second = options_at(r2);
         for (std::size_t k1 = 0; k1 < first.size(); ++k1)
-          for (std::size_t k2 = 0; k2 < second.size() && analyses < kNetworkDesignSearchAnalyses; ++k2) {
+          for (std::size_t k2 = 0; k2 < second.size() && within_budget(); ++k2) {
             ChangeSet trial = s.changes;
             trial[order[r1]] = first[k1].first;
             trial[order[r2]] = second[k2].first;
@@ -534,7 +624,15 @@ Verdict network_verdict(const Model& model, const network::NetworkResult& r, con
   for (std::size_t e = 0; e < e_count; ++e)
     if (std::find(order.begin(), order.end(), static_cast<int>(e)) == order.end()) order.push_back(static_cast<int>(e));
 
-  const Search search = search_changes(model, options, r.exact, intended, start, order);
+  double work = 0.0;  // shared by both searches
+  Search search = search_changes(model, options, r.exact, intended, start, order, true, work);
+  if (search.result.score() > 0 || search.result.lost > 0)
+    search = search_changes(model, options, r.exact, intended, start, order, false, work);
+  // A set that removes some couplings and constrains others moves constraints, it does not
+  // only drop them: say so instead of calling the removed coupling redundant.
+  const bool constrains = std::any_of(search.changes.begin(), search.changes.end(), [&](const auto& entry) {
+    return entry.second && freedoms(*entry.second, model.space) < freedoms(model.couplings[static_cast<std::size_t>(entry.first)], model.space);
+  });
   for (const auto& [e, replacement] : search.changes) {
     const Coupling& before = model.couplings[static_cast<std::size_t>(e)];
     const int f0 = freedoms(before, model.space);
@@ -545,19 +643,23 @@ Verdict network_verdict(const Model& model, const network::NetworkResult& r, con
     if (!replacement) {
       change.action = "remove";
       change.becomes = "removed";
-      change.reason = "the coupling is redundant: the others already impose what it does";
+      change.reason = constrains ? "its constraints move to the couplings this set constrains"
+                                 : "the coupling is redundant: the others already impose what it does";
     } else {
       const int f1 = freedoms(*replacement, model.space);
       change.action = f1 > f0 ? "release" : (f1 < f0 ? "constrain" : "replace");
       change.becomes = std::string(screw::coupling_type_name(replacement->type));
       change.geometry = geometry_of(*replacement);
       change.reason = f1 > f0 ? fmt::format("{} along the locked action (f {} -> {})", counted(f1 - f0, "freedom", "freedoms"), f0, f1)
-                              : fmt::format("{} against the extra motion (f {} -> {})", counted(f0 - f1, "constraint", "constraints"), f0, f1);
+                              : fmt::format("{} against {} (f {} -> {})", counted(f0 - f1, "constraint", "constraints"),
+                                            start.extra > 0 ? "the extra motion" : "the motion the other changes would free", f0, f1);
     }
     v.changes.push_back(std::move(change));
   }
   if (v.changes.empty()) {
-    v.note = "no change of a single coupling type reduces the extra motions or redundant constraints";
+    v.note = work >= kNetworkDesignSearchWork
+                 ? "no change set found within the search budget: analyse a smaller part of the network to get one"
+                 : "no change of a single coupling type reduces the extra motions or redundant constraints";
     return v;
   }
   // Verified by a full re-analysis of the changed copy, with the user's arithmetic.
@@ -576,7 +678,9 @@ Verdict network_verdict(const Model& model, const network::NetworkResult& r, con
   } catch (const std::exception& error) {
     v.becomes = fmt::format("the changed model could not be analysed: {}", error.what());
   }
-  if (!v.changes_verified && v.note.empty()) v.note = "the change set found removes only part of the problem";
+  if (!v.changes_verified && v.note.empty())
+    v.note = work >= kNetworkDesignSearchWork ? "the change set found removes only part of the problem (search budget spent)"
+                                              : "the change set found removes only part of the problem";
   return v;
 }
 

@@ -17,8 +17,13 @@ namespace kinestat::design {
 /// Networks with more couplings than this get the verdict's counts and participants but no
 /// searched change set (each candidate costs one re-analysis).
 inline constexpr int kNetworkDesignSearchCouplings = 60;
-/// Largest number of re-analyses the change search may spend.
+/// Largest number of changed copies the change search may screen.
 inline constexpr int kNetworkDesignSearchAnalyses = 800;
+/// Largest elimination work the change search may spend, as the sum over screened copies of
+/// rows x columns x min(rows, columns) of their M^N: a deterministic bound on its time (the
+/// Delta robot's search, 30 x 21 per copy, spends about 1.5 10^7; a 60-coupling network with 30
+/// circuits stops after a few dozen copies).
+inline constexpr double kNetworkDesignSearchWork = 5e7;
 /// When no single change helps, pairs of changes are tried among this many couplings (those
 /// taking the largest part).
 inline constexpr std::size_t kNetworkDesignPairCouplings = 4;

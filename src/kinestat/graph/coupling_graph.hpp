@@ -3,6 +3,7 @@
 // edges `between: [i, j]` from i to j. Circuits take the orientation of their chord, cutsets
 // that of their branch.
 
+#include "kinestat/error.hpp"
 #include <Eigen/Core>
 
 #include <stdexcept>
@@ -32,9 +33,9 @@ struct TreeWalk {
 };
 
 /// The tree requested by the user is not a spanning tree; the message says why.
-class TreeError : public std::invalid_argument {
+class TreeError : public Error {
  public:
-  explicit TreeError(const std::string& what, int edge = -1) : std::invalid_argument(what), edge_(edge) {}
+  explicit TreeError(const std::string& what, int edge = -1) : Error(what), edge_(edge) {}
   /// The edge that closes a circuit among the non-chords, or -1.
   int edge() const { return edge_; }
 

@@ -55,6 +55,6 @@ std::string format_message(const SourceLocation& where, const std::string& probl
 }  // namespace
 
 InputError::InputError(SourceLocation where, const std::string& problem)
-    : std::runtime_error(format_message(where, problem)), where_(std::move(where)), problem_(problem) {}
+    : Error(format_message(where, problem), where), problem_(problem) {}  // not moved: read first
 
 }  // namespace kinestat::io

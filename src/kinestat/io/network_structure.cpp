@@ -43,7 +43,7 @@ structure::StructureModel structure_of_network(const LoadedNetwork& loaded, cons
   }
   try {
     return structure::model_from_couplings(names, pairs, model.space.dimension() == 6 ? 6 : 3);
-  } catch (const std::invalid_argument& error) {
+  } catch (const Error& error) {  // model_from_couplings: inputs beyond a pair's freedoms
     const auto it = loaded.field_locations.find("inputs");
     throw InputError(it != loaded.field_locations.end() ? it->second : SourceLocation{path, 1, 1}, error.what());
   }

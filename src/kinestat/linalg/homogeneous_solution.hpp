@@ -3,6 +3,7 @@
 // variables (Davies' "primary variables"), exactly or in floating point. This is the one
 // piece of linear algebra that all four of Davies' methods share.
 
+#include "kinestat/error.hpp"
 #include <Eigen/Core>
 
 #include <optional>
@@ -49,10 +50,9 @@ HomogeneousSolution solve_homogeneous(const Eigen::MatrixXd& a, const RankTolera
 Eigen::MatrixXd echelon_null_basis(const Eigen::MatrixXd& null_basis, std::vector<Eigen::Index>& free_variables);
 
 /// Thrown when requested free variables cannot all be free together.
-class DependentFreeVariable : public std::invalid_argument {
+class DependentFreeVariable : public Error {
  public:
-  DependentFreeVariable(Eigen::Index variable, const char* why)
-      : std::invalid_argument(why), variable_(variable) {}
+  DependentFreeVariable(Eigen::Index variable, const char* why) : Error(why), variable_(variable) {}
   /// The first requested variable that is determined by the ones before it (or by nothing).
   Eigen::Index variable() const { return variable_; }
 

@@ -3,6 +3,7 @@
 // motions, the cutset law for actions, and their virtual-power duals (cutset motions and
 // circuit actions). A pure function: model in, plain result out.
 
+#include "kinestat/error.hpp"
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -40,10 +41,10 @@ struct AnalysisOptions {
 /// A problem with the model that the reader cannot see (it needs the analysis): `field` names
 /// the model entry ("couplings", "chords", "primary", "values", "bodies"), `index` the item in
 /// it (-1 for the whole field), so io can point at the file position.
-class ModelError : public std::invalid_argument {
+class ModelError : public Error {
  public:
   ModelError(std::string field, int index, const std::string& message)
-      : std::invalid_argument(message), field_(std::move(field)), index_(index) {}
+      : Error(message), field_(std::move(field)), index_(index) {}
   const std::string& field() const { return field_; }
   int index() const { return index_; }
 

@@ -4,6 +4,7 @@
 // actions in ray formation (p x f; f) or (tau; 0). Rotations come before translations and
 // torques before forces, each in frame-axis order, so the seed is reproduced digit for digit.
 
+#include "kinestat/error.hpp"
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -48,9 +49,9 @@ struct CouplingBasis {
 
 /// Degenerate geometry (parallel universal axes, custom screws that are dependent or not
 /// reciprocal, ...). The message says what is wrong; readers attach the file position.
-class GeometryError : public std::invalid_argument {
+class GeometryError : public Error {
  public:
-  using std::invalid_argument::invalid_argument;
+  explicit GeometryError(const std::string& what) : Error(what) {}
 };
 
 /// Builds the basis of a coupling in `space`. For a planar space the spatial basis is

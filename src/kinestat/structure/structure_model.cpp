@@ -1,5 +1,7 @@
 #include "kinestat/structure/structure_model.hpp"
 
+#include "kinestat/error.hpp"
+
 #include <algorithm>
 #include <stdexcept>
 #include <string>
@@ -33,7 +35,7 @@ Pair pair_from_code(int a, int b, int code) {
     case 3: p.kind = PairKind::lower; p.inputs = 1; break;
     case 4: p.kind = PairKind::higher; p.inputs = 1; break;
     case 5: p.kind = PairKind::higher; p.inputs = 2; break;
-    default: throw std::invalid_argument("pair code must be 1..5, got " + std::to_string(code));
+    default: throw Error("pair code must be 1..5, got " + std::to_string(code));
   }
   // Table 1 is planar: a lower pair allows one relative freedom, a higher pair two.
   p.freedoms = p.kind == PairKind::lower ? 1 : 2;
@@ -66,15 +68,15 @@ std::vector<std::vector<int>> adjacency_of(const StructureModel& model) {
 
 StructureModel model_from_couplings(std::vector<std::string> body_names, const std::vector<CouplingPair>& couplings,
                                     int dimension) {
-  if (dimension != 3 && dimension != 6) throw std::invalid_argument("dimension must be 3 (planar) or 6 (spatial)");
+  if (dimension != 3 && dimension != 6) throw Error("dimension must be 3 (planar) or 6 (spatial)");
   StructureModel model;
   model.dimension = dimension;
   model.body_names = std::move(body_names);
   const int n = model.body_count();
   for (const CouplingPair& c : couplings) {
     if (c.body_i < 0 || c.body_i >= n || c.body_j < 0 || c.body_j >= n)
-      throw std::invalid_argument("coupling refers to a body outside 0.." + std::to_string(n - 1));
-    if (c.body_i == c.body_j) throw std::invalid_argument("coupling joins a body to itself");
+      throw Error("coupling refers to a body outside 0.." + std::to_string(n - 1));
+    if (c.body_i == c.body_j) throw Error("coupling joins a body to itself");
     Pair p;
     p.a = std::min(c.body_i, c.body_j);
     p.b = std::max(c.body_i, c.body_j);
@@ -82,9 +84,9 @@ StructureModel model_from_couplings(std::vector<std::string> body_names, const s
     p.freedoms = c.freedoms.value_or(c.kind == PairKind::lower ? 1 : 2);
     p.inputs = c.inputs;
     if (p.freedoms < 1 || p.freedoms >= dimension)
-      throw std::invalid_argument("a pair must allow 1.." + std::to_string(dimension - 1) + " freedoms");
+      throw Error("a pair must allow 1.." + std::to_string(dimension - 1) + " freedoms");
     if (p.inputs < 0 || p.inputs > p.freedoms)
-      throw std::invalid_argument("a pair can carry 0.." + std::to_string(p.freedoms) + " inputs");
+      throw Error("a pair can carry 0.." + std::to_string(p.freedoms) + " inputs");
     model.pairs.push_back(p);
   }
   return model;

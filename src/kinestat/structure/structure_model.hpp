@@ -63,7 +63,7 @@ StructureModel model_from_adjacency(const std::vector<std::vector<int>>& adjacen
 std::vector<std::vector<int>> adjacency_of(const StructureModel& model);
 
 /// Builds a model from a coupling list: `body_names[0]` is the frame, pairs refer to
-/// indices into `body_names`. Throws std::invalid_argument for out-of-range bodies, a pair
+/// indices into `body_names`. Throws kinestat::Error for out-of-range bodies, a pair
 /// of a body with itself, or inputs outside 0..freedoms.
 StructureModel model_from_couplings(std::vector<std::string> body_names, const std::vector<CouplingPair>& couplings,
                                     int dimension = 3);
