@@ -57,6 +57,9 @@ struct LoadedScene {
   std::string kind;
   report::Scene scene;
   std::optional<structure::StructureModel> structure_model;  ///< networks and structures
+  /// Why a network has no structure model (e.g. a rigid coupling is no pair): raised only when
+  /// the structural diagram is asked for, so the other pictures of the network still draw.
+  std::optional<io::InputError> structure_error;
 };
 LoadedScene load_scene(const std::string& path, std::optional<double> tolerance);
 

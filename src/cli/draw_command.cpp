@@ -42,6 +42,7 @@ int run(const DrawOptions& options) {
              std::to_string(loaded.scene.stresses.size()) + " self-stress state(s)");
     emit(options.common, report::mechanism_svg(loaded.scene, {options.mode, options.stress}));
   } else {
+    if (loaded.structure_error) throw *loaded.structure_error;
     if (!loaded.structure_model) refuse("a framework has no structural diagram; draw it with --what mechanism");
     emit(options.common, report::structure_svg(*loaded.structure_model, structure::decompose(*loaded.structure_model)));
   }

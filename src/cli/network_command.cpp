@@ -7,6 +7,7 @@
 #include "cli/commands.hpp"
 #include "cli/option_checks.hpp"
 #include "kinestat/design/network_verdict.hpp"
+#include "kinestat/design/sparse_network_verdict.hpp"
 #include "kinestat/io/network_reader.hpp"
 #include "kinestat/network/analyse_network.hpp"
 #include "kinestat/network/sparse_network.hpp"
@@ -98,12 +99,13 @@ int run_network_analysis(const CommonOptions& common, const io::LoadedNetwork& l
   if (o.sparse || (!dense_request && static_cast<int>(loaded.model.couplings.size()) > network::kDenseNetworkLimit)) {
     network::SparseNetworkResult sparse;
     try {
-      sparse = network::analyse_network_sparse(loaded.model, options.tolerance);
+      sparse = network::analyse_network_sparse(loaded.model, options.tolerance, design::kSparseVerdictStates);
     } catch (const network::ModelError& error) {
       throw io::locate(error, loaded, path);
     }
-    emit(common, common.json ? report::json_text(report::sparse_network_json(loaded.model, sparse))
-                             : report::sparse_network_text(loaded.model, sparse));
+    const design::Verdict verdict = design::sparse_network_verdict(loaded.model, sparse, options.tolerance);
+    emit(common, common.json ? report::json_text(report::sparse_network_json(loaded.model, sparse, &verdict))
+                             : report::sparse_network_text(loaded.model, sparse, &verdict));
     return 0;
   }
   network::NetworkResult result;

@@ -29,7 +29,7 @@ report::Scene framework_scene(const framework::FrameworkModel& model, std::optio
 
 LoadedScene load_scene(const std::string& path, std::optional<double> tolerance) {
   const InputFormat format = input_format(path);
-  if (format == InputFormat::spacar) return {"framework", framework_scene(read_spacar_model(path), tolerance), {}};
+  if (format == InputFormat::spacar) return {"framework", framework_scene(read_spacar_model(path), tolerance), {}, {}};
   std::optional<io::YamlFile> file;
   LoadedScene loaded;
   if (format == InputFormat::kinestat) {
@@ -51,7 +51,11 @@ LoadedScene load_scene(const std::string& path, std::optional<double> tolerance)
     loaded.scene = report::network_scene(network.model, result);
     loaded.scene.verdict = design::network_verdict(network.model, result, options);
     loaded.scene.units = network.model.units;
-    loaded.structure_model = io::structure_of_network(network, path);
+    try {
+      loaded.structure_model = io::structure_of_network(network, path);
+    } catch (const io::InputError& error) {
+      loaded.structure_error = error;
+    }
   } else if (loaded.kind == "framework") {
     loaded.scene = framework_scene(io::read_framework(*file), tolerance);
   } else {

@@ -5,6 +5,8 @@
 #include "kinestat/error.hpp"
 #include "kinestat/design/framework_verdict.hpp"
 #include "kinestat/design/network_verdict.hpp"
+#include "kinestat/design/screw_text.hpp"
+#include "kinestat/design/sparse_network_verdict.hpp"
 #include "kinestat/design/structure_verdict.hpp"
 #include "kinestat/design/verdict.hpp"
 #include "kinestat/framework/deformation_functions.hpp"

@@ -9,6 +9,7 @@
 #include <map>
 #include <tuple>
 
+#include "kinestat/design/screw_text.hpp"
 #include "kinestat/graph/coupling_graph.hpp"
 #include "kinestat/linalg/homogeneous_solution.hpp"
 #include "kinestat/linalg/svd_analysis.hpp"
@@ -29,50 +30,6 @@ using Screw = Eigen::Matrix<double, 6, 1>;
 
 // Shares below this are rounding, not participation.
 constexpr double kShareZero = 1e-12;
-// A screw whose force (or angular velocity) is this small against its moment (velocity), both
-// in units of the model's length scale, is a pure torque (translation).
-constexpr double kPureCouple = 1e-9;
-
-// ---- numbers and screws as text ---------------------------------------------------------
-
-std::string number(double x) {
-  if (std::abs(x) < 5e-10) return "0";
-  std::string s = fmt::format("{:.4g}", x);
-  return s == "-0" ? "0" : s;
-}
-
-std::string point_text(const Eigen::Vector3d& p) { return fmt::format("({}, {}, {})", number(p.x()), number(p.y()), number(p.z())); }
-
-std::string direction_text(const Eigen::Vector3d& d) { return point_text(d.normalized()); }
-
-Screw embed(const std::vector<double>& coordinates, const screw::ScrewSpace& space) {
-  Screw s = Screw::Zero();
-  for (std::size_t i = 0; i < space.components.size(); ++i) s(space.components[i]) = coordinates[i];
-  return s;
-}
-
-// A wrench in ray formation (m; f): the force's line, or a pure torque.
-std::string action_text(const Screw& w, double length) {
-  const Eigen::Vector3d m = w.head<3>(), f = w.tail<3>();
-  if (f.norm() * length <= kPureCouple * m.norm() || f.norm() == 0.0) return "torque about " + direction_text(m);
-  const Eigen::Vector3d p = f.cross(m) / f.squaredNorm();
-  const double pitch = f.dot(m) / f.squaredNorm();
-  std::string text = fmt::format("force along {} through {}", direction_text(f), point_text(p));
-  if (std::abs(pitch) > kPureCouple * length) text += fmt::format(" with pitch {}", number(pitch));
-  return text;
-}
-
-// A twist in axis formation (w; v): the rotation axis, or a pure translation.
-std::string motion_text(const Screw& t, double length) {
-  const Eigen::Vector3d w = t.head<3>(), v = t.tail<3>();
-  if (w.norm() * length <= kPureCouple * v.norm() || w.norm() == 0.0) return "translation along " + direction_text(v);
-  const Eigen::Vector3d p = w.cross(v) / w.squaredNorm();
-  const double pitch = w.dot(v) / w.squaredNorm();
-  std::string text = fmt::format("rotation about {} through {}", direction_text(w), point_text(p));
-  if (std::abs(pitch) > kPureCouple * length) text += fmt::format(" with pitch {}", number(pitch));
-  return text;
-}
-
 Eigen::Vector3d to_double(const Vec3& v) { return {v[0].get_d(), v[1].get_d(), v[2].get_d()}; }
 
 // Centroid and RMS radius of the coupling points: screws are compared about the centroid in
@@ -544,7 +501,7 @@ std::vector<IdleMotion> idle_motions(const Model& model, bool exact, const linal
     } else {
       // About the centroid in units of the model's size, so the tolerance is scale-free:
       // an action (m; f) becomes ((m - c x f) / L; f), and a motion (w; v') of that system is
-      // (w; L v' - c x w) in the user's frame.
+      // (w; L v' + c x w) in the user's frame (the same power against (m; f)).
       Eigen::MatrixXd a(static_cast<Eigen::Index>(actions.size()), d);
       for (std::size_t r = 0; r < actions.size(); ++r) {
         std::vector<double> coordinates;
@@ -559,7 +516,7 @@ std::vector<IdleMotion> idle_motions(const Model& model, bool exact, const linal
         Screw t = Screw::Zero();
         for (int k = 0; k < d; ++k) t(model.space.components[static_cast<std::size_t>(k)]) = solution.coefficients(k, j);
         const Eigen::Vector3d w = t.head<3>();
-        t.tail<3>() = Eigen::Vector3d(t.tail<3>()) * frame.length - frame.centre.cross(w);
+        t.tail<3>() = Eigen::Vector3d(t.tail<3>()) * frame.length + frame.centre.cross(w);
         std::vector<double> s;
         for (int c : model.space.components) s.push_back(t(c));
         idle.screws.push_back(s);

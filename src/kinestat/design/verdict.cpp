@@ -23,7 +23,7 @@ std::string constraint_words(int extra_motions, int redundant_constraints) {
 }
 
 std::string summary_sentence(int extra_motions, int redundant_constraints, int intended_motions) {
-  const std::string motions = intended_motions == 0 ? "a structure (no intended motion)"
+  const std::string motions = intended_motions == 0 ? "a structure, no intended motion"
                                                     : counted(intended_motions, "intended motion", "intended motions");
   if (extra_motions == 0 && redundant_constraints == 0) return fmt::format("Exactly constrained: {}.", motions);
   return fmt::format("Not exactly constrained: {} ({}).", constraint_words(extra_motions, redundant_constraints), motions);

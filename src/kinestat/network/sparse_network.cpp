@@ -57,9 +57,25 @@ int components(int bodies, const std::vector<Coupling>& couplings) {
   return count;
 }
 
+// Unit-norm null vectors of the matrix `qr` factors, for its first `count` dead columns (the
+// rank-revealing factor's own basis), their dead columns, and the largest relative residual
+// ‖a x‖ / (σ_max ‖x‖) against `a` (the factored matrix).
+double basis_of(const Eigen::SparseMatrix<double>& a, const linalg::SparseQr& qr, Index count, double largest,
+                Eigen::MatrixXd& basis, std::vector<Index>& dead) {
+  basis = qr.null_vectors(0, count);
+  dead.clear();
+  double residual = 0.0;
+  for (Index j = 0; j < basis.cols(); ++j) {
+    dead.push_back(qr.permutation()[static_cast<std::size_t>(qr.rank() + j)]);
+    basis.col(j).normalize();
+    if (largest > 0) residual = std::max(residual, (a * basis.col(j)).norm() / largest);
+  }
+  return residual;
+}
+
 }  // namespace
 
-SparseNetworkResult analyse_network_sparse(const Model& model, const linalg::RankTolerance& tolerance) {
+SparseNetworkResult analyse_network_sparse(const Model& model, const linalg::RankTolerance& tolerance, Index vectors) {
   if (model.couplings.empty()) throw ModelError("couplings", -1, "the model has no couplings");
   SparseNetworkResult r;
   r.d = model.space.dimension();
@@ -82,9 +98,11 @@ SparseNetworkResult analyse_network_sparse(const Model& model, const linalg::Ran
   const AnalysisFrame frame = AnalysisFrame::of(model);
   const Eigen::Vector3d origin(frame.origin[0].get_d(), frame.origin[1].get_d(), frame.origin[2].get_d());
   const double scale = frame.scale.get_d();
+  r.frame_origin = origin;
+  r.frame_scale = scale;
   const std::vector<int>& components = model.space.components;
   std::vector<Eigen::Triplet<double>> entries;
-  std::vector<int> row_coupling;
+  std::vector<int>& row_coupling = r.row_coupling;
   for (std::size_t i = 0; i < model.couplings.size(); ++i) {
     const Coupling& c = model.couplings[i];
     screw::CouplingBasis basis;
@@ -126,6 +144,8 @@ SparseNetworkResult analyse_network_sparse(const Model& model, const linalg::Ran
       // of Kᵀ); a coupling moves when T_to ≠ T_from.
       const linalg::SparseQr qr(kt, r.rank.threshold);
       linalg::record_rank(r.rank, qr);
+      if (vectors > 0)
+        r.basis_residual = std::max(r.basis_residual, basis_of(kt, qr, vectors, r.rank.largest, r.stress_basis, r.stress_primaries));
       const Eigen::VectorXd twists = generic_left_null_vector(kt, qr);
       // Only when there are motions: otherwise the residual is rounding noise.
       if (k.cols() > r.rank.rank && twists.norm() > 0) {
@@ -139,12 +159,18 @@ SparseNetworkResult analyse_network_sparse(const Model& model, const linalg::Ran
             if (std::abs(relative) > zero) moving[i] = true;
           }
         }
+        for (int body = 0; body < r.bodies; ++body)
+          if (const Index b = block(body); b >= 0 && twists.segment(b, d).cwiseAbs().maxCoeff() > zero) r.moving_bodies.push_back(body);
       }
     }
     {
       // Self-stresses: generic action magnitudes λ with Kᵀ λ = 0 (every body in equilibrium),
       // from the QR of K.
       const linalg::SparseQr qr(k, r.rank.threshold);
+      r.motion_factor_rank = r.rank;
+      linalg::record_rank(r.motion_factor_rank, qr);
+      if (vectors > 0)
+        r.basis_residual = std::max(r.basis_residual, basis_of(k, qr, vectors, r.rank.largest, r.motion_basis, r.motion_primaries));
       const Eigen::VectorXd actions = generic_left_null_vector(k, qr);
       if (k.rows() > qr.rank() && actions.norm() > 0) {
         r.residual = std::max(r.residual, (kt * actions).norm() / (r.rank.largest * actions.norm()));
@@ -154,8 +180,15 @@ SparseNetworkResult analyse_network_sparse(const Model& model, const linalg::Ran
       }
     }
   } else if (k.cols() > 0) {
-    // No actions at all: every coupling moves freely.
+    // No actions at all: every coupling and body moves freely.
     std::fill(moving.begin(), moving.end(), true);
+    for (int body = 0; body < r.bodies; ++body)
+      if (body != r.ground) r.moving_bodies.push_back(body);
+    if (vectors > 0) {
+      const Index count = std::min<Index>(vectors, k.cols());
+      r.motion_basis = Eigen::MatrixXd::Identity(k.cols(), count);
+      for (Index j = 0; j < count; ++j) r.motion_primaries.push_back(j);
+    }
   }
   r.FN = static_cast<int>(k.cols() - r.rank.rank);
   r.CN = static_cast<int>(k.rows() - r.rank.rank);

@@ -10,6 +10,8 @@
 
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "kinestat/linalg/rank_decision.hpp"
 #include "kinestat/network/model.hpp"
 #include "kinestat/network/network_result.hpp"
@@ -28,6 +30,26 @@ struct SparseNetworkResult {
   std::vector<int> stressed, moving;
   /// Largest ‖K x‖ / (σ_max ‖x‖) of the two combined null vectors used for the supports.
   double residual = 0.0;
+  /// Bodies (indices, the ground never) that move in some motion of the network.
+  std::vector<int> moving_bodies;
+  /// Coupling of each row of K (each unit action, in the order of the coupling's action basis).
+  std::vector<int> row_coupling;
+
+  /// Null-space bases on request (`vectors` > 0), from the rank-revealing QR factors: for dead
+  /// column k, x = [−R11⁻¹ R12 e_k; e_k] scaled to unit 2-norm, so the entry of the dead
+  /// column ("the primary") is the largest free choice. In the conditioned analysis frame
+  /// (origin at `frame_origin`, lengths divided by `frame_scale`).
+  Eigen::MatrixXd motion_basis;  ///< d(n − 1) × k body twists (ω; v') from the QR of K
+  Eigen::MatrixXd stress_basis;  ///< C × k action magnitudes, one per row of K, from the QR of Kᵀ
+  std::vector<Eigen::Index> motion_primaries;  ///< the dead column of K of each motion_basis vector
+  std::vector<Eigen::Index> stress_primaries;  ///< the dead row of K of each stress_basis vector
+  /// Rank of the QR of K (the motion vectors' factor; rank K above is from the QR of Kᵀ): the
+  /// two factorisations decide independently, both are reported.
+  linalg::RankDecision motion_factor_rank;
+  /// Largest ‖K x‖ / (σ_max ‖x‖) (motions) or ‖Kᵀ y‖ / (σ_max ‖y‖) (stresses) of the basis vectors.
+  double basis_residual = 0.0;
+  Eigen::Vector3d frame_origin = Eigen::Vector3d::Zero();
+  double frame_scale = 1.0;
 };
 
 /// Couplings above which the `analyze` command takes the sparse path.
@@ -37,7 +59,10 @@ inline constexpr int kDenseNetworkLimit = 300;
 /// factorisations (K and Kᵀ). A coupling belongs to a support when its entries in a fixed
 /// pseudo-random combination of the null vectors exceed kSupportZero of the largest: a
 /// generic combination vanishes only where every null vector does. Throws ModelError.
-SparseNetworkResult analyse_network_sparse(const Model& model, const linalg::RankTolerance& tolerance = {});
+/// With `vectors` > 0 also the first `vectors` basis vectors of the motions and of the
+/// self-stresses (motion_basis, stress_basis), at the cost of one triangular solve each.
+SparseNetworkResult analyse_network_sparse(const Model& model, const linalg::RankTolerance& tolerance = {},
+                                           Eigen::Index vectors = 0);
 
 /// Relative size below which a component of a combined null vector counts as zero.
 inline constexpr double kSupportZero = 1e-9;

@@ -416,8 +416,8 @@ std::vector<std::string> coupling_names(const network::Model& model, const std::
 
 }  // namespace
 
-std::string sparse_network_text(const network::Model& model, const network::SparseNetworkResult& r) {
-  std::string t;
+std::string sparse_network_text(const network::Model& model, const network::SparseNetworkResult& r, const design::Verdict* verdict) {
+  std::string t = verdict ? verdict_text(*verdict) : std::string();
   t += fmt::format("{}\n", model.name.empty() ? "Coupling network" : printable_text(model.name));
   t += fmt::format("  coupling network, {} (d = {}); sparse body-twist form, floating point\n", r.d == 6 ? "spatial" : "planar", r.d);
   t += fmt::format("  bodies n = {}, couplings e = {}, circuits l = {}\n", r.bodies, r.e, r.l);
@@ -428,12 +428,18 @@ std::string sparse_network_text(const network::Model& model, const network::Spar
   t += fmt::format("  class: {}\n", network::class_description(r.classification));
   t += fmt::format("Couplings that carry a self-stress ({}): {}\n", r.stressed.size(), joined_or_dash(printable_names(coupling_names(model, r.stressed))));
   t += fmt::format("Couplings that move ({}): {}\n", r.moving.size(), joined_or_dash(printable_names(coupling_names(model, r.moving))));
+  if (r.motion_basis.cols() > 0 || r.stress_basis.cols() > 0) {
+    t += fmt::format("Basis vectors of the verdict: {} motion(s) from the QR of K ({}), {} self-stress(es) from the QR of K^T; "
+                     "largest residual |K x| / (sigma_max |x|) = {}\n",
+                     r.motion_basis.cols(), rank_text("rank", r.motion_factor_rank), r.stress_basis.cols(), number_text(r.basis_residual));
+  }
   t += fmt::format("Not computed on the sparse path (use the dense path for these): {}\n", fmt::join(kSparseLeftOut, "; "));
   if (r.rank.close()) t += "Warning: the rank of K is a close decision: the geometry is near one with a different FN and CN\n";
   return t;
 }
 
-nlohmann::ordered_json sparse_network_json(const network::Model& model, const network::SparseNetworkResult& r) {
+nlohmann::ordered_json sparse_network_json(const network::Model& model, const network::SparseNetworkResult& r,
+                                           const design::Verdict* verdict) {
   Json j;
   j["kind"] = "network";
   if (!model.name.empty()) j["name"] = model.name;
@@ -452,7 +458,14 @@ nlohmann::ordered_json sparse_network_json(const network::Model& model, const ne
   j["stressed_couplings"] = coupling_names(model, r.stressed);
   j["moving_couplings"] = coupling_names(model, r.moving);
   j["null_space_residual"] = r.residual;
+  if (r.motion_basis.cols() > 0 || r.stress_basis.cols() > 0) {
+    j["basis_vectors"] = {{"motions", r.motion_basis.cols()},
+                          {"self_stresses", r.stress_basis.cols()},
+                          {"motion_factor_rank", rank_json(r.motion_factor_rank)},
+                          {"residual", r.basis_residual}};
+  }
   j["not_computed"] = kSparseLeftOut;
+  if (verdict) return lead_with_verdict(*verdict, j, model.units);
   return j;
 }
 

@@ -27,9 +27,13 @@ std::string network_text(const network::Model& model, const network::NetworkResu
 nlohmann::ordered_json network_json(const network::Model& model, const network::NetworkResult& result,
                                     const NetworkReportOptions& options = {});
 
-/// Bounded report of the sparse path: counts, class, rank evidence, the couplings that carry a
-/// self-stress and those that move, and what was not computed.
-std::string sparse_network_text(const network::Model& model, const network::SparseNetworkResult& result);
-nlohmann::ordered_json sparse_network_json(const network::Model& model, const network::SparseNetworkResult& result);
+/// Bounded report of the sparse path: the verdict first when given
+/// (design::sparse_network_verdict), counts, class, rank evidence (also of the basis vectors the
+/// verdict used), the couplings that carry a self-stress and those that move, and what was not
+/// computed.
+std::string sparse_network_text(const network::Model& model, const network::SparseNetworkResult& result,
+                                const design::Verdict* verdict = nullptr);
+nlohmann::ordered_json sparse_network_json(const network::Model& model, const network::SparseNetworkResult& result,
+                                           const design::Verdict* verdict = nullptr);
 
 }  // namespace kinestat::report

@@ -51,9 +51,48 @@ std::string structure_svg(const structure::StructureModel& model, const structur
   for (const auto& n : diagram.nodes) ++per_layer[static_cast<std::size_t>(n.layer)];
   const std::string title = model.name.empty() ? "Structural diagram" : model.name;
   // Wide enough for the title too (about 7.5 px per character at 15 px).
-  const double width = std::max(margin * 2 + dx * std::max(1, diagram.widest_layer - 1) + 2 * radius,
-                                40 + 7.5 * static_cast<double>(title.size()));
-  const double height = margin * 2 + dy * (diagram.layers - 1) + 2 * radius + 30;
+  const double width = std::max({margin * 2 + dx * std::max(1, diagram.widest_layer - 1) + 2 * radius,
+                                 40 + 7.5 * static_cast<double>(title.size()),
+                                 d.undecomposed.empty() ? 0.0 : 400.0});
+  // Bodies in no group, said under the diagram (a diagram of the frame alone would otherwise
+  // look like a mechanism with nothing to assemble): over-constrained, without an input, blocked.
+  std::vector<std::string> left_out;
+  {
+    const auto& u = d.undecomposed;
+    const auto names = [&model](const std::vector<int>& bodies) {
+      std::string list;
+      for (int body : bodies) list += (list.empty() ? "" : ", ") + structure::body_label(model, body);
+      return list;
+    };
+    if (!u.over_constrained.empty())
+      left_out.push_back(fmt::format("in no group, over-constrained ({} constraint(s) or input(s) too many): {}", u.redundant,
+                                     names(u.over_constrained)));
+    if (!u.under_constrained.empty())
+      left_out.push_back(fmt::format("in no group, under-constrained ({} input(s) missing): {}", u.missing, names(u.under_constrained)));
+    if (!u.blocked.empty()) left_out.push_back("in no group, waiting for the bodies above: " + names(u.blocked));
+  }
+  // About 6.2 px a character at 11 px: wrap the notes to the diagram's width, at least 60 characters.
+  std::vector<std::string> notes;
+  const double note_width = std::max(margin * 2 + dx * std::max(1, diagram.widest_layer - 1) + 2 * radius, 400.0);
+  const auto wrap_chars = static_cast<std::size_t>((note_width - 20) / 6.2);
+  for (const auto& note : left_out) {
+    std::string line;
+    std::size_t start = 0;
+    while (start < note.size()) {
+      std::size_t end = note.find(' ', start);
+      if (end == std::string::npos) end = note.size();
+      const std::string word = note.substr(start, end - start);
+      if (!line.empty() && line.size() + 1 + word.size() > wrap_chars) {
+        notes.push_back(line);
+        line.clear();
+      }
+      line += (line.empty() ? "" : " ") + word;
+      start = end + 1;
+    }
+    if (!line.empty()) notes.push_back(line);
+  }
+  const double notes_height = notes.empty() ? 0.0 : 10.0 + 15.0 * static_cast<double>(notes.size());
+  const double height = margin * 2 + dy * (diagram.layers - 1) + 2 * radius + 30 + notes_height;
   std::vector<Point> at(diagram.nodes.size());
   std::vector<int> index_of(d.groups.size() + 1, 0);
   for (std::size_t i = 0; i < diagram.nodes.size(); ++i) {
@@ -122,6 +161,10 @@ std::string structure_svg(const structure::StructureModel& model, const structur
                        "paint-order=\"stroke\" stroke=\"white\" stroke-width=\"3\">{}</text>\n",
                        x, y + radius + 15, markup_escape(bodies));
   }
+  const double notes_top = height - notes_height + 12;
+  for (std::size_t i = 0; i < notes.size(); ++i)
+    out += fmt::format("  <text class=\"left-out\" x=\"20\" y=\"{:.1f}\" font-size=\"11\" fill=\"#8b1a1a\">{}</text>\n", notes_top + 15.0 * static_cast<double>(i),
+                       markup_escape(notes[i]));
   out += "</svg>\n";
   return out;
 }

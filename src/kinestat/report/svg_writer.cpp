@@ -8,6 +8,8 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <optional>
+#include <string_view>
 #include <set>
 
 namespace kinestat::report {
@@ -459,6 +461,91 @@ void draw_support(std::string& out, const SceneNode& node, P p, const View& view
   out += "</g>\n";
 }
 
+/// Boxes of the labels and marks placed so far in a drawing: a label takes the first of its
+/// candidate places whose box meets none of them, and is left out (counted) when every place is
+/// taken, rather than drawn over another label or a node.
+class LabelSpace {
+ public:
+  struct Place {
+    P at;                ///< the text's anchor point (baseline)
+    const char* anchor;  ///< "start", "middle" or "end"
+  };
+  /// Mean advance of a glyph in Helvetica-like fonts, in em (most labels are lower-case and digits).
+  static constexpr double kAdvance = 0.6;
+
+  /// Labels stay inside x0..x1, y0..y1 (the drawing area): a place that would cross the edge is
+  /// moved in.
+  LabelSpace(double x0, double y0, double x1, double y1) : area_{x0, y0, x1, y1} {}
+
+  /// A mark (node circle, coupling square) of half-size `half` at `centre` that labels avoid.
+  void block(P centre, double half) { boxes_.push_back({centre.x - half, centre.y - half, centre.x + half, centre.y + half}); }
+
+  /// A line of the model (element `id`) that labels keep clear of when they can.
+  void avoid(P a, P b, int id) { segments_.push_back({a, b, id}); }
+
+  /// The first free place for `content` at `font_size`, which is then taken; none when all are.
+  /// Places clear of the model's lines (other than line `own`) come first.
+  std::optional<Place> place(const std::vector<Place>& candidates, const std::string& content, double font_size, int own = -1) {
+    for (const bool clear_of_lines : {true, false}) {
+      for (Place candidate : candidates) {
+        Box b = box(candidate, content, font_size);
+        // Moved inside the drawing area (a label wider than the area keeps its left edge in).
+        const double dx = b.x1 > area_.x1 ? area_.x1 - b.x1 : 0.0, dx0 = b.x0 + dx < area_.x0 ? area_.x0 - (b.x0 + dx) : 0.0;
+        const double dy = b.y1 > area_.y1 ? area_.y1 - b.y1 : (b.y0 < area_.y0 ? area_.y0 - b.y0 : 0.0);
+        candidate.at = candidate.at + P{dx + dx0, dy};
+        b = box(candidate, content, font_size);
+        if (std::any_of(boxes_.begin(), boxes_.end(), [&](const Box& o) { return b.meets(o); })) continue;
+        if (clear_of_lines && std::any_of(segments_.begin(), segments_.end(), [&](const Segment& s) { return s.id != own && b.crosses(s.a, s.b); }))
+          continue;
+        boxes_.push_back(b);
+        return candidate;
+      }
+    }
+    ++left_out_;
+    return std::nullopt;
+  }
+  int left_out() const { return left_out_; }
+
+ private:
+  struct Box {
+    double x0, y0, x1, y1;
+    bool meets(const Box& o) const { return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1; }
+    // Whether segment a-b enters the box (Liang-Barsky clipping).
+    bool crosses(P a, P b) const {
+      double t0 = 0, t1 = 1;
+      const double dx = b.x - a.x, dy = b.y - a.y;
+      const double p[4] = {-dx, dx, -dy, dy}, q[4] = {a.x - x0, x1 - a.x, a.y - y0, y1 - a.y};
+      for (int k = 0; k < 4; ++k) {
+        if (p[k] == 0) {
+          if (q[k] < 0) return false;
+        } else {
+          const double t = q[k] / p[k];
+          if (p[k] < 0) t0 = std::max(t0, t);
+          else t1 = std::min(t1, t);
+          if (t0 > t1) return false;
+        }
+      }
+      return true;
+    }
+  };
+  struct Segment {
+    P a, b;
+    int id;
+  };
+  Box area_;
+  std::vector<Segment> segments_;
+  static Box box(const Place& p, const std::string& content, double size) {
+    // Glyphs, not bytes: UTF-8 continuation bytes (10xxxxxx) do not start a glyph.
+    const auto glyphs = std::count_if(content.begin(), content.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; });
+    const double w = kAdvance * size * static_cast<double>(glyphs);
+    const std::string_view anchor = p.anchor;
+    const double x0 = anchor == "middle" ? p.at.x - w / 2 : (anchor == "end" ? p.at.x - w : p.at.x);
+    return {x0, p.at.y - 0.8 * size, x0 + w, p.at.y + 0.25 * size};
+  }
+  std::vector<Box> boxes_;
+  int left_out_ = 0;
+};
+
 }  // namespace
 
 std::string mechanism_svg(const Scene& scene, const MechanismDrawing& drawing) {
@@ -610,23 +697,43 @@ std::string mechanism_svg(const Scene& scene, const MechanismDrawing& drawing) {
       line(fit(at[ia] + arrow[ia]), fit(at[ib] + arrow[ib]), "#e66101", "1", " stroke-dasharray=\"4,3\" class=\"displaced\"");
     }
   }
-  // Element labels at mid-length (trusses, beams, rigid bodies once), for readable sizes.
+  // Labels never cover each other, a node or a coupling's square: node names are placed first
+  // (the four corners around the node), then element, coupling and screw labels.
+  LabelSpace labels(2, top, width - 2, top + drawing_height - 4);
+  const bool label_nodes = scene.nodes.size() <= 200;
+  const std::size_t labelled = scene.kind == "network" ? scene.bodies.size() : scene.nodes.size();
+  for (std::size_t i = 0; i < scene.nodes.size(); ++i)
+    if (scene.kind != "network" || i < scene.bodies.size()) labels.block(fit(at[i] + shift * arrow[i]), 4.5);
+  for (const auto& glyph : scene.glyphs) labels.block(fit(view.project(glyph.point)), 5.5);
+  for (std::size_t e = 0; e < scene.elements.size(); ++e) {
+    const auto ia = static_cast<std::size_t>(scene.elements[e].a), ib = static_cast<std::size_t>(scene.elements[e].b);
+    labels.avoid(fit(at[ia] + shift * arrow[ia]), fit(at[ib] + shift * arrow[ib]), static_cast<int>(e));
+  }
+  std::vector<std::optional<LabelSpace::Place>> node_label(scene.nodes.size());
+  for (std::size_t i = 0; label_nodes && i < std::min(labelled, scene.nodes.size()); ++i) {
+    const P p = fit(at[i]);
+    node_label[i] = labels.place({{p + P{-7, -7}, "end"}, {p + P{7, -7}, "start"}, {p + P{-7, 15}, "end"}, {p + P{7, 15}, "start"}},
+                                 scene.nodes[i].name, 11);
+  }
+  // Element labels beside the element (mid-length first, then towards either end), for readable sizes.
   if (scene.kind == "framework" && scene.elements.size() <= 60) {
-    for (const auto& element : scene.elements) {
+    for (std::size_t e = 0; e < scene.elements.size(); ++e) {
+      const auto& element = scene.elements[e];
       if (!element.label) continue;
       const auto ia = static_cast<std::size_t>(element.a), ib = static_cast<std::size_t>(element.b);
       const P a = fit(at[ia]), b = fit(at[ib]);
       const P d = unit(b - a);
-      text(out, 0.5 * (a + b) + 8.0 * P{-d.y, d.x} + P{0, 4}, element.name, "middle",
-           "class=\"element-label\" font-size=\"9\" font-style=\"italic\" fill=\"#666\" " + kHalo);
+      std::vector<LabelSpace::Place> places;
+      for (double t : {0.5, 0.35, 0.65, 0.2, 0.8})
+        for (double side : {8.0, -8.0}) places.push_back({a + t * (b - a) + side * P{-d.y, d.x} + P{0, 3}, "middle"});
+      if (const auto place = labels.place(places, element.name, 9, static_cast<int>(e)))
+        text(out, place->at, element.name, place->anchor,
+             "class=\"element-label\" font-size=\"9\" font-style=\"italic\" fill=\"#666\" " + kHalo);
     }
   }
   // Coupling glyphs: a square at the point, the axis as a dash-dotted line.
-  std::map<std::pair<long long, long long>, int> labels_at;
   for (const auto& glyph : scene.glyphs) {
     const P p = fit(view.project(glyph.point));
-    // Couplings at the same point get their labels one below the other.
-    const int below = labels_at[{std::llround(p.x), std::llround(p.y)}]++;
     const auto axis = glyph.axis ? glyph.axis : glyph.normal;
     if (axis && axis->norm() > 0) {
       const Eigen::Vector3d u = axis->normalized() * 0.18 * extent;
@@ -637,14 +744,22 @@ std::string mechanism_svg(const Scene& scene, const MechanismDrawing& drawing) {
     }
     out += fmt::format("<rect x=\"{}\" y=\"{}\" width=\"10\" height=\"10\" fill=\"white\" stroke=\"#1b7837\" stroke-width=\"1.5\"/>\n",
                        f2(p.x - 5), f2(p.y - 5));
-    text(out, p + P{8, 14.0 + 12.0 * below}, glyph.name + " (" + glyph.type + ")", "start", "font-size=\"10\" fill=\"#1b7837\"");
+    // Couplings at the same point get their labels one below the other.
+    const std::string name = glyph.name + " (" + glyph.type + ")";
+    std::vector<LabelSpace::Place> places;
+    for (int k = 0; k < 4; ++k) places.push_back({p + P{8, 14.0 + 12.0 * k}, "start"});
+    for (int k = 0; k < 4; ++k) places.push_back({p + P{-8, 14.0 + 12.0 * k}, "end"});
+    if (const auto place = labels.place(places, name, 10))
+      text(out, place->at, name, place->anchor, "class=\"coupling-label\" font-size=\"10\" fill=\"#1b7837\" " + kHalo);
   }
   // Networks: the screw axes of the mode (body twists) or of the self-stress (coupling wrenches).
-  std::map<std::pair<long long, long long>, int> screw_labels_at;
-  // Labels of screws near one place are stacked upwards, 12 px apart.
+  // Labels of screws near one place are stacked upwards, 12 px apart, to the right or the left.
   const auto screw_label = [&](P at_point, const std::string& content, const std::string& colour) {
-    const int above = screw_labels_at[{std::llround(at_point.x / 24), std::llround(at_point.y / 24)}]++;
-    text(out, at_point + P{8, -8.0 - 12.0 * above}, content, "start", "font-size=\"10\" fill=\"" + colour + "\" " + kHalo);
+    std::vector<LabelSpace::Place> places;
+    for (int k = 0; k < 5; ++k) places.push_back({at_point + P{8, -8.0 - 12.0 * k}, "start"});
+    for (int k = 0; k < 5; ++k) places.push_back({at_point + P{-8, -8.0 - 12.0 * k}, "end"});
+    if (const auto place = labels.place(places, content, 10))
+      text(out, place->at, content, place->anchor, "class=\"screw-label\" font-size=\"10\" fill=\"" + colour + "\" " + kHalo);
   };
   const auto screw_axes = [&](const std::vector<SceneScrew>& screws, const std::string& colour, const std::string& marker,
                               const std::string& cls, bool twist) {
@@ -682,8 +797,6 @@ std::string mechanism_svg(const Scene& scene, const MechanismDrawing& drawing) {
   if (mode) screw_axes(mode->twists, "#e66101", "arrow-orange", "twist", true);
   if (stress) screw_axes(stress->wrenches, "#7b3294", "arrow", "wrench", false);
 
-  const bool label_nodes = scene.nodes.size() <= 200;
-  const std::size_t labelled = scene.kind == "network" ? scene.bodies.size() : scene.nodes.size();
   for (std::size_t i = 0; i < scene.nodes.size(); ++i) {
     const P p = fit(at[i]);
     if (scene.kind == "framework") draw_support(out, scene.nodes[i], p, view);
@@ -691,7 +804,7 @@ std::string mechanism_svg(const Scene& scene, const MechanismDrawing& drawing) {
     const P q = fit(at[i] + shift * arrow[i]);
     out += fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"3.5\" fill=\"{}\" stroke=\"#222\" stroke-width=\"1.2\"/>\n", f2(q.x), f2(q.y),
                        scene.nodes[i].fixed ? "#222" : "white");
-    if (label_nodes && i < labelled) text(out, p + P{-7, -7}, scene.nodes[i].name, "end", "class=\"node-label\" font-size=\"11\"");
+    if (node_label[i]) text(out, node_label[i]->at, scene.nodes[i].name, node_label[i]->anchor, "class=\"node-label\" font-size=\"11\" " + kHalo);
   }
   if (mode) {
     for (std::size_t i = 0; i < at.size(); ++i) {
@@ -783,7 +896,17 @@ std::string mechanism_svg(const Scene& scene, const MechanismDrawing& drawing) {
     text(out, P{58, y}, fmt::format("sheets (beams the model makes leaf springs), drawn {}% of their length wide", fixed(100 * kSheetWidth, 0)), "start");
     y += 20;
   }
-  if (!mode && !stress) text(out, P{20, y}, scene.modes.empty() && scene.stresses.empty() ? "no kinematic modes and no self-stress" : "configuration only", "start");
+  if (!mode && !stress) {
+    text(out, P{20, y}, scene.modes.empty() && scene.stresses.empty() ? "no kinematic modes and no self-stress" : "configuration only", "start");
+    y += 20;
+  }
+  if (labels.left_out() > 0) {
+    // One more legend line: the canvas grows by it (the header is written for the final height).
+    text(out, P{20, y},
+         fmt::format("{} label(s) left out where they would overlap (all names: text report; HTML report: labels)", labels.left_out()),
+         "start", "class=\"labels-left-out\" font-size=\"11\" fill=\"#555\"");
+    out.replace(0, header(width, height).size(), header(width, height + 20));
+  }
   out += "</svg>\n";
   return out;
 }

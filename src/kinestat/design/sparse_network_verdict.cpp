@@ -1,0 +1,266 @@
+#include "kinestat/design/sparse_network_verdict.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "kinestat/design/network_verdict.hpp"
+#include "kinestat/design/screw_text.hpp"
+#include "kinestat/network/magnitude_names.hpp"
+
+namespace kinestat::design {
+
+namespace {
+
+using network::Model;
+using network::SparseNetworkResult;
+using Index = Eigen::Index;
+
+// Shares below this are rounding, not participation.
+constexpr double kShareZero = 1e-12;
+
+std::string counted(std::size_t n, const char* one, const char* many) { return fmt::format("{} {}", n, n == 1 ? one : many); }
+
+// Idle spins body by body: each body with its own couplings, all ending at one stand-in for the
+// rest of the network (the ground of the small model), so the cost is linear in the couplings.
+std::vector<IdleMotion> idle_spins(const Model& model, int ground, const linalg::RankTolerance& tolerance) {
+  std::vector<std::vector<std::size_t>> touching(model.bodies.size());
+  for (std::size_t i = 0; i < model.couplings.size(); ++i) {
+    touching[static_cast<std::size_t>(model.couplings[i].from)].push_back(i);
+    touching[static_cast<std::size_t>(model.couplings[i].to)].push_back(i);
+  }
+  std::vector<IdleMotion> spins;
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    if (static_cast<int>(b) == ground || touching[b].size() < 2) continue;
+    Model star;
+    star.space = model.space;
+    star.bodies = {model.bodies[b], "the rest"};
+    star.ground = 1;
+    for (std::size_t i : touching[b]) {
+      network::Coupling c = model.couplings[i];
+      c.from = c.from == static_cast<int>(b) ? 0 : 1;
+      c.to = c.to == static_cast<int>(b) ? 0 : 1;
+      star.couplings.push_back(std::move(c));
+    }
+    for (IdleMotion& idle : idle_motions(star, false, tolerance)) {
+      idle.body = static_cast<int>(b);
+      spins.push_back(std::move(idle));
+    }
+  }
+  return spins;
+}
+
+// Twists and wrenches of the conditioned analysis frame (origin o, lengths over s) in the
+// user's frame, and their sizes in the conditioned frame (placement- and unit-free).
+struct Conditioning {
+  Eigen::Vector3d origin;
+  double scale = 1.0;
+
+  // (ω; v') -> (ω; s v' + o × ω): the same power against every action (m; f) as
+  // ((m − o × f) / s; f) has against (ω; v').
+  Screw6 twist_to_user(const Screw6& t) const {
+    Screw6 u = t;
+    u.tail<3>() = scale * Eigen::Vector3d(t.tail<3>()) + origin.cross(Eigen::Vector3d(t.head<3>()));
+    return u;
+  }
+  double wrench_size(const Screw6& w) const {
+    const Eigen::Vector3d f = w.tail<3>();
+    return f.squaredNorm() + ((Eigen::Vector3d(w.head<3>()) - origin.cross(f)) / scale).squaredNorm();
+  }
+};
+
+// The unit actions of each coupling (user frame), computed once and only for the couplings asked for.
+class ActionBases {
+ public:
+  explicit ActionBases(const Model& model) : model_(model) {}
+  const std::vector<screw::UnitScrew>& of(int coupling) {
+    auto it = cache_.find(coupling);
+    if (it == cache_.end()) {
+      const auto& c = model_.couplings[static_cast<std::size_t>(coupling)];
+      it = cache_.emplace(coupling, screw::coupling_basis(c.type, c.geometry, model_.space).actions).first;
+    }
+    return it->second;
+  }
+
+ private:
+  const Model& model_;
+  std::map<int, std::vector<screw::UnitScrew>> cache_;
+};
+
+Screw6 screw_of(const screw::UnitScrew& s, const screw::ScrewSpace& space) {
+  std::vector<double> coordinates;
+  for (const auto& x : s.coordinates) coordinates.push_back(x.get_d());
+  return embed(coordinates, space);
+}
+
+// Self-stress `j` of the sparse QR's basis: the wrench each coupling transmits, ranked by its size.
+VerdictState self_stress_state(const Model& model, const SparseNetworkResult& r, const std::vector<Index>& first_row,
+                               ActionBases& bases, const Conditioning& frame, Index j) {
+  const Index primary = r.stress_primaries[static_cast<std::size_t>(j)];
+  const Eigen::VectorXd lambda = r.stress_basis.col(j) / r.stress_basis(primary, j);  // the primary = 1
+  const double zero = network::kSupportZero * lambda.cwiseAbs().maxCoeff();
+  std::map<int, Screw6> wrench;  // by coupling, user frame
+  for (Index row = 0; row < lambda.size(); ++row) {
+    if (std::abs(lambda(row)) <= zero) continue;
+    const int c = r.row_coupling[static_cast<std::size_t>(row)];
+    const auto& actions = bases.of(c);
+    const Screw6 unit = screw_of(actions[static_cast<std::size_t>(row - first_row[static_cast<std::size_t>(c)])], model.space);
+    auto [it, inserted] = wrench.emplace(c, Screw6::Zero());
+    it->second += lambda(row) * unit;
+  }
+  const int c = r.row_coupling[static_cast<std::size_t>(primary)];
+  const auto k = static_cast<int>(primary - first_row[static_cast<std::size_t>(c)]);
+  const auto& coupling = model.couplings[static_cast<std::size_t>(c)];
+  VerdictState state{"self-stress",
+                     fmt::format("self-stress {} (action primary {} = 1; basis vector of the sparse QR of K^T)", j + 1,
+                                 network::magnitude_name(coupling.name, bases.of(c)[static_cast<std::size_t>(k)], k)),
+                     {}};
+  double total = 0.0;
+  for (const auto& [e, w] : wrench) total += frame.wrench_size(w);
+  for (const auto& [e, w] : wrench) {
+    const double share = total > 0 ? frame.wrench_size(w) / total : 0.0;
+    if (share > kShareZero)
+      state.participants.push_back({"coupling", model.couplings[static_cast<std::size_t>(e)].name, share, action_text(w, frame.scale)});
+  }
+  rank_participants(state.participants);
+  return state;
+}
+
+// The motions beyond the declared inputs: the bodies that move in the sparse QR's motion basis,
+// each with its mean share over the basis vectors and the twist of the vector it moves most in.
+VerdictState beyond_state(const Model& model, const SparseNetworkResult& r, const Conditioning& frame, int beyond) {
+  VerdictState state{"extra motion",
+                     fmt::format("{} beyond the {} declared (bodies that move in the first {} of the FN = {} motions, "
+                                 "basis vectors of the sparse QR of K)",
+                                 counted(static_cast<std::size_t>(beyond), "motion", "motions"),
+                                 counted(model.inputs.size(), "input", "inputs"), r.motion_basis.cols(), r.FN),
+                     {}};
+  const Index d = r.d;
+  std::vector<double> share(model.bodies.size(), 0.0), best(model.bodies.size(), 0.0);
+  std::vector<std::string> detail(model.bodies.size());
+  for (Index j = 0; j < r.motion_basis.cols(); ++j) {
+    std::vector<double> size(model.bodies.size(), 0.0);
+    double total = 0.0;
+    for (int b : r.moving_bodies) {
+      const Index column = (b < r.ground ? b : b - 1) * d;
+      size[static_cast<std::size_t>(b)] = r.motion_basis.col(j).segment(column, d).squaredNorm();
+      total += size[static_cast<std::size_t>(b)];
+    }
+    if (total <= 0) continue;
+    for (int b : r.moving_bodies) {
+      const auto ub = static_cast<std::size_t>(b);
+      const double s = size[ub] / total;
+      share[ub] += s / static_cast<double>(r.motion_basis.cols());
+      if (s > best[ub]) {
+        best[ub] = s;
+        const Index column = (b < r.ground ? b : b - 1) * d;
+        std::vector<double> coordinates(r.motion_basis.col(j).data() + column, r.motion_basis.col(j).data() + column + d);
+        detail[ub] = motion_text(frame.twist_to_user(embed(coordinates, model.space)), frame.scale);
+      }
+    }
+  }
+  for (int b : r.moving_bodies) {
+    const auto ub = static_cast<std::size_t>(b);
+    if (share[ub] > kShareZero) state.participants.push_back({"body", model.bodies[ub], share[ub], detail[ub]});
+  }
+  rank_participants(state.participants);
+  return state;
+}
+
+// `listed` followed by every part of `kind` in `names` that is not in it yet (it takes part only
+// in states beyond those listed), with `share`, ranked again.
+void add_unlisted(std::vector<Participant>& listed, const std::string& kind, const std::vector<std::string>& names,
+                  double share, const std::string& detail) {
+  std::set<std::string> present;
+  for (const auto& p : listed)
+    if (p.kind == kind) present.insert(p.name);
+  for (const auto& name : names)
+    if (present.insert(name).second) listed.push_back({kind, name, share, detail});
+  rank_participants(listed);
+}
+
+}  // namespace
+
+Verdict sparse_network_verdict(const Model& model, const SparseNetworkResult& r, const linalg::RankTolerance& tolerance) {
+  Verdict v;
+  const Conditioning frame{r.frame_origin, r.frame_scale};
+  const std::vector<IdleMotion> idle = idle_spins(model, r.ground, tolerance);
+  int idle_count = 0;
+  for (const auto& i : idle) idle_count += i.count;
+  const int moving = r.FN - idle_count;  // motions that are not idle spins
+  const int declared = static_cast<int>(model.inputs.size());
+  const int intended = model.inputs.empty() ? moving : declared;
+  const int beyond = std::max(0, moving - intended);
+  const int lost = std::max(0, intended - moving);
+  v.intended_motions = intended;
+  v.intended_basis = model.inputs.empty() ? "FN less idle spins (no 'inputs:' declared)" : "the declared 'inputs:'";
+  v.extra_motions = idle_count + beyond;
+  v.redundant_constraints = r.CN + lost;  // inputs beyond the motions fight each other
+  v.exactly_constrained = v.extra_motions == 0 && v.redundant_constraints == 0;
+  v.summary = summary_sentence(v.extra_motions, v.redundant_constraints, intended);
+
+  // Extra motions: the idle spins (the first kSparseVerdictStates as states, every one under
+  // `where`), then the motions beyond the declared inputs.
+  std::vector<std::string> spinning;
+  for (const auto& spin : idle) {
+    const std::string& body = model.bodies[static_cast<std::size_t>(spin.body)];
+    spinning.push_back(body);
+    for (const auto& s : spin.screws) {
+      if (static_cast<Index>(v.states.size()) >= kSparseVerdictStates) break;
+      const std::string what = motion_text(embed(s, model.space), frame.scale);
+      VerdictState state{"extra motion", fmt::format("idle spin of body '{}': {}", body, what), {{"body", body, 1.0, what}}};
+      std::vector<std::string> couplings;
+      for (const auto& c : model.couplings)
+        if (c.from == spin.body || c.to == spin.body) couplings.push_back(c.name);
+      for (const auto& name : couplings)
+        state.participants.push_back({"coupling", name, 1.0 / static_cast<double>(couplings.size()), "lets the body spin: " + what});
+      v.states.push_back(std::move(state));
+    }
+  }
+  if (beyond > 0) v.states.push_back(beyond_state(model, r, frame, beyond));
+
+  // Self-stresses: the first kSparseVerdictStates basis vectors, the wrench of every coupling.
+  std::vector<Index> first_row(model.couplings.size(), 0);
+  for (std::size_t row = r.row_coupling.size(); row-- > 0;) first_row[static_cast<std::size_t>(r.row_coupling[row])] = static_cast<Index>(row);
+  ActionBases bases(model);
+  const Index stresses = std::min<Index>(r.stress_basis.cols(), kSparseVerdictStates);
+  for (Index j = 0; j < stresses; ++j) v.states.push_back(self_stress_state(model, r, first_row, bases, frame, j));
+
+  v.motion_participants = strongest(v.states, "extra motion");
+  add_unlisted(v.motion_participants, "body", spinning, 1.0, "spins idle (a state beyond those listed)");
+  if (beyond > 0) {
+    std::vector<std::string> bodies;
+    for (int b : r.moving_bodies) bodies.push_back(model.bodies[static_cast<std::size_t>(b)]);
+    add_unlisted(v.motion_participants, "body", bodies, 0.0, "moves in a motion beyond the basis vectors listed");
+  }
+  v.constraint_participants = strongest(v.states, "self-stress");
+  std::vector<std::string> stressed;
+  for (int c : r.stressed) stressed.push_back(model.couplings[static_cast<std::size_t>(c)].name);
+  if (r.CN > 0) add_unlisted(v.constraint_participants, "coupling", stressed, 0.0, "carries a self-stress beyond those listed");
+
+  if (v.exactly_constrained) {
+    v.changes_verified = true;
+    v.becomes = "unchanged: already exactly constrained";
+    return v;
+  }
+  v.note = fmt::format("no change set searched on the sparse path ({}; each candidate change costs a re-analysis of "
+                       "the whole network): analyse the couplings named under 'where' as a sub-network of at most {} "
+                       "couplings for a verified change set, or run with --dense",
+                       counted(model.couplings.size(), "coupling", "couplings"), kNetworkDesignSearchCouplings);
+  if (lost > 0)
+    v.note = fmt::format("{} declared for {}: drop {} (or add the motions they drive); ", counted(static_cast<std::size_t>(declared), "input is", "inputs are"),
+                         counted(static_cast<std::size_t>(moving), "motion", "motions"), counted(static_cast<std::size_t>(lost), "input", "inputs")) +
+             v.note;
+  const auto listed_stresses = static_cast<int>(stresses);
+  if (r.CN > listed_stresses)
+    v.note += fmt::format("; the states list {} of the {} self-stresses, 'where' names every coupling that carries one",
+                          listed_stresses, r.CN);
+  return v;
+}
+
+}  // namespace kinestat::design

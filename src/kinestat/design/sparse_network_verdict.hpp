@@ -1,0 +1,30 @@
+#pragma once
+// The verdict of a coupling network analysed on the sparse body-twist path (networks of
+// thousands of couplings): the same counts as network_verdict — intended motions are the
+// declared `inputs:` or FN less the idle spins — and where the extra motions and the
+// self-stresses sit, from basis vectors of the rank-revealing sparse QR factors (which bodies
+// move, which couplings carry each self-stress and the wrench each transmits). No change set
+// is searched at this size: each candidate change would cost a re-analysis of the whole network.
+
+#include <Eigen/Core>
+
+#include "kinestat/design/verdict.hpp"
+#include "kinestat/linalg/rank_decision.hpp"
+#include "kinestat/network/model.hpp"
+#include "kinestat/network/sparse_network.hpp"
+
+namespace kinestat::design {
+
+/// Basis vectors of each null space (motions, self-stresses) the sparse verdict lists as
+/// states: pass it as `vectors` to network::analyse_network_sparse. Parts that take part only
+/// in later basis vectors are still named under `where`, with participation 0.
+inline constexpr Eigen::Index kSparseVerdictStates = 8;
+
+/// The verdict for `model` analysed as `result` by network::analyse_network_sparse (with
+/// `vectors` = kSparseVerdictStates for the states; with none the states hold the idle spins
+/// only and `where` comes from the supports). Idle spins are found body by body with
+/// `tolerance`, as on the dense path. `changes` stays empty; `note` says why and how to get one.
+Verdict sparse_network_verdict(const network::Model& model, const network::SparseNetworkResult& result,
+                               const linalg::RankTolerance& tolerance = {});
+
+}  // namespace kinestat::design
