@@ -9,6 +9,7 @@
 
 #include "kinestat/io/input_error.hpp"
 #include "kinestat/io/printable_text.hpp"
+#include "kinestat/tolerances.hpp"
 
 namespace kinestat::io {
 
@@ -20,8 +21,6 @@ using framework::FrameworkModel;
 
 namespace {
 
-/// Nodes closer than this fraction of the characteristic length coincide (a joint).
-constexpr double kCoincident = 1e-12;
 
 std::string number(double value) { return fmt::format("{}", value == 0.0 ? 0.0 : value); }
 
