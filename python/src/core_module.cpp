@@ -178,6 +178,7 @@ py::dict rank_evidence(const linalg::RankDecision& d) {
   evidence["smallest_kept"] = d.smallest_kept;
   evidence["largest_dropped"] = d.largest_dropped;
   evidence["rounding_level"] = d.rounding_level;
+  evidence["input_rounding"] = d.input_rounding;
   return evidence;
 }
 

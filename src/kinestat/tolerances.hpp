@@ -24,6 +24,14 @@ inline constexpr double kCloseRankGap = 1e3;
 /// A dropped singular value this many times the rounding level max(m, n)·ε·σ_max is not
 /// rounding noise: it was dropped by a loose tolerance, and the decision is reported as close.
 inline constexpr double kAboveRounding = 1e4;
+/// The rank threshold rises with the rounding of the input itself: coordinates written at full
+/// precision carry an error of ε × their magnitude, so a model far from the origin (a 10 mm
+/// flexure 1 m from the machine origin) is special only to within ε × offset / size, and the
+/// computed singular value of a special design is of that order (0.1 to 0.9 of it measured on
+/// rotated and translated examples). The default threshold is max(m, n) · max(ε, this factor ×
+/// that input rounding level), so placement never changes the answer and a model near the
+/// origin keeps about the LAPACK rule.
+inline constexpr double kInputRoundingFactor = 2.0;
 /// Sparse QR ranks: the threshold is this factor × (rows + cols) · ε · the largest column norm
 /// (SuiteSparseQR's own default rule uses 20 · (rows + cols) · ε · max column norm).
 inline constexpr double kSparseToleranceFactor = 20.0;

@@ -148,6 +148,14 @@ void sparse_vectors(FrameworkResult& result, const Eigen::SparseMatrix<double>& 
   result.vectors = true;
 }
 
+// The user's tolerance, or the default rule with the rounding of the coordinates as written:
+// ε × the largest coordinate magnitude over the characteristic length (placement-aware).
+linalg::RankTolerance rank_tolerance(const FrameworkModel& model, double length, const Tolerances& tolerances) {
+  double largest = 0.0;
+  for (const Node& node : model.nodes) largest = std::max(largest, node.position.cwiseAbs().maxCoeff());
+  return {tolerances.rank, linalg::input_rounding_level(largest, length)};
+}
+
 }  // namespace
 
 double FrameworkResult::relative_smallest_singular_value() const {
@@ -178,24 +186,25 @@ Eigen::SparseMatrix<double> prepare_analysis(const FrameworkModel& model, Framew
 FrameworkResult analyse_framework(const FrameworkModel& model, const AnalysisOptions& options) {
   FrameworkResult result;
   const Eigen::SparseMatrix<double> jacobian = prepare_analysis(model, result);
+  const linalg::RankTolerance tolerance = rank_tolerance(model, result.length, options.tolerances);
 
   if (std::max(result.m, result.n) > options.dense_limit) {
     result.method = RankMethod::sparse_qr;
     if (options.sparse_vectors > 0 && result.m > 0 && result.n > 0) {
-      result.decision = linalg::sparse_rank_threshold(jacobian, linalg::RankTolerance{options.tolerances.rank});
+      result.decision = linalg::sparse_rank_threshold(jacobian, tolerance);
       sparse_vectors(result, jacobian, options.sparse_vectors);
     } else {
-      result.decision = linalg::sparse_numerical_rank(jacobian, linalg::RankTolerance{options.tolerances.rank}, &result.factor_memory);
+      result.decision = linalg::sparse_numerical_rank(jacobian, tolerance, &result.factor_memory);
     }
   } else if (!options.vectors) {
     // Counts only: singular values without singular vectors.
     if (result.m > 0 && result.n > 0) {
       result.singular_values = linalg::singular_values(Eigen::MatrixXd(jacobian));
-      result.decision = linalg::decide_rank(result.singular_values, result.m, result.n, linalg::RankTolerance{options.tolerances.rank});
+      result.decision = linalg::decide_rank(result.singular_values, result.m, result.n, tolerance);
     }
   } else {
     const Eigen::MatrixXd dense(jacobian);
-    const linalg::SvdAnalysis svd = linalg::analyse_svd(dense, linalg::RankTolerance{options.tolerances.rank});
+    const linalg::SvdAnalysis svd = linalg::analyse_svd(dense, tolerance);
     result.decision = svd.rank;
     result.singular_values = svd.singular_values;
     result.vectors = true;

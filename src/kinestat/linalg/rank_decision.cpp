@@ -6,8 +6,14 @@
 
 namespace kinestat::linalg {
 
-double default_relative_tolerance(Eigen::Index rows, Eigen::Index cols) {
-  return static_cast<double>(std::max<Eigen::Index>({rows, cols, 1})) * std::numeric_limits<double>::epsilon();
+double default_relative_tolerance(Eigen::Index rows, Eigen::Index cols, double input_rounding) {
+  return static_cast<double>(std::max<Eigen::Index>({rows, cols, 1})) *
+         std::max(kEpsilon, kInputRoundingFactor * input_rounding);
+}
+
+double input_rounding_level(double largest_coordinate, double size) {
+  if (!(size > 0.0) || !std::isfinite(largest_coordinate)) return kEpsilon;
+  return kEpsilon * std::max(1.0, largest_coordinate / size);
 }
 
 double RankDecision::gap() const {
@@ -26,8 +32,9 @@ RankDecision decide_rank(const Eigen::VectorXd& singular_values, Eigen::Index ro
                          const RankTolerance& tolerance) {
   RankDecision decision;
   decision.largest = singular_values.size() > 0 ? singular_values(0) : 0.0;
-  decision.rounding_level = default_relative_tolerance(rows, cols) * decision.largest;
-  const double relative = tolerance.relative.value_or(default_relative_tolerance(rows, cols));
+  decision.input_rounding = tolerance.input_rounding;
+  decision.rounding_level = default_relative_tolerance(rows, cols, tolerance.input_rounding) * decision.largest;
+  const double relative = tolerance.relative.value_or(default_relative_tolerance(rows, cols, tolerance.input_rounding));
   decision.threshold = relative * decision.largest;
   for (Eigen::Index i = 0; i < singular_values.size(); ++i) {
     const double sigma = singular_values(i);

@@ -12,12 +12,22 @@ namespace kinestat::linalg {
 
 /// Relative rank tolerance. When unset, the LAPACK/NumPy/MATLAB rule applies:
 /// tol = max(rows, cols) * machine epsilon * sigma_max.
+/// `input_rounding` (relative): how precisely the input fixes the matrix — ε × the largest input
+/// coordinate magnitude / the model's size (`input_rounding_level`); 0 for matrices not built
+/// from coordinates. The default rule becomes max(rows, cols) · max(ε, kInputRoundingFactor ·
+/// input_rounding).
 struct RankTolerance {
   std::optional<double> relative;  ///< threshold as a fraction of sigma_max, overriding the default rule
+  double input_rounding = 0.0;     ///< relative rounding level of the input coordinates (see above)
 };
 
-/// The default relative tolerance factor `max(rows, cols) * eps` of the LAPACK rule.
-double default_relative_tolerance(Eigen::Index rows, Eigen::Index cols);
+/// The default relative tolerance: `max(rows, cols) * eps` (the LAPACK rule), raised to
+/// `max(rows, cols) * kInputRoundingFactor * input_rounding` when the input is coarser.
+double default_relative_tolerance(Eigen::Index rows, Eigen::Index cols, double input_rounding = 0.0);
+
+/// ε × (largest coordinate magnitude) / `size`: the relative error of coordinates written at full
+/// double precision, against the model's size (both in the user's unit and frame).
+double input_rounding_level(double largest_coordinate, double size);
 
 /// Outcome of one rank decision.
 struct RankDecision {
@@ -27,7 +37,8 @@ struct RankDecision {
   double threshold = 0.0;          ///< absolute threshold used: values above it are kept
   double smallest_kept = 0.0;      ///< smallest singular value counted in the rank (0 if rank = 0)
   double largest_dropped = 0.0;    ///< largest singular value below the threshold (0 if none)
-  double rounding_level = 0.0;     ///< max(rows, cols) * eps * sigma_max: what rounding alone produces
+  double rounding_level = 0.0;     ///< default_relative_tolerance * sigma_max: what rounding alone produces
+  double input_rounding = 0.0;     ///< relative rounding level of the input coordinates (0: not from coordinates)
 
   /// Ratio smallest_kept / largest_dropped: large means a clear decision; infinite for exact
   /// decisions or when nothing was dropped.

@@ -29,9 +29,10 @@ RankDecision sparse_rank_threshold(const Eigen::SparseMatrix<double>& a, const R
   RankDecision decision;
   if (a.rows() == 0 || a.cols() == 0) return decision;
   decision.largest = estimate_largest_singular_value(a);
-  decision.rounding_level = default_relative_tolerance(a.rows(), a.cols()) * decision.largest;
+  decision.input_rounding = tolerance.input_rounding;
+  decision.rounding_level = default_relative_tolerance(a.rows(), a.cols(), tolerance.input_rounding) * decision.largest;
   decision.threshold = tolerance.relative.value_or(kSparseToleranceFactor * static_cast<double>(a.rows() + a.cols()) *
-                                                   std::numeric_limits<double>::epsilon()) *
+                                                   std::max(kEpsilon, kInputRoundingFactor * tolerance.input_rounding)) *
                        decision.largest;
   return decision;
 }

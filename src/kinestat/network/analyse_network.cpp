@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <set>
 
@@ -114,9 +115,18 @@ LinearForms blocks_to_user(const LinearForms& forms, int d, ToUser to_user) {
 
 // ---- the four methods -------------------------------------------------------------------
 
-linalg::HomogeneousSolution solve(const RationalMatrix& a, bool exact, const Tolerances& tolerances) {
+linalg::HomogeneousSolution solve(const RationalMatrix& a, bool exact, const Tolerances& tolerances, double input_rounding) {
   return exact ? linalg::solve_homogeneous(a)
-               : linalg::solve_homogeneous(a.to_double(), {tolerances.rank}, tolerances.free_variable);
+               : linalg::solve_homogeneous(a.to_double(), {tolerances.rank, input_rounding}, tolerances.free_variable);
+}
+
+// ε × the largest coupling-point coordinate (user frame) over the analysis frame's length: how
+// precisely coordinates written at full precision fix the geometry (linalg::input_rounding_level).
+double input_rounding(const Model& model, const AnalysisFrame& frame) {
+  double largest = 0.0;
+  for (const auto& c : model.couplings)
+    for (const auto& x : c.geometry.point) largest = std::max(largest, std::abs(x.get_d()));
+  return linalg::input_rounding_level(largest, frame.scale.get_d());
 }
 
 LinearForms solution_forms(const linalg::HomogeneousSolution& s) {
@@ -325,10 +335,11 @@ NetworkResult analyse_network(const Model& model, const AnalysisOptions& options
 
   // (i) circulation law, (ii) cutset law, (iii) cutset motions, (iv) circuit actions.
   const Tolerances& tol = options.tolerances;
-  r.circulation.solution = solve(solved.MN, r.exact, tol);
-  r.cutset_law.solution = solve(solved.AN, r.exact, tol);
-  r.cutset_motion.solution = solve(solved.AN.transpose(), r.exact, tol);
-  r.circuit_action.solution = solve(solved.MN.transpose(), r.exact, tol);
+  const double rounding = r.exact ? 0.0 : input_rounding(model, frame);
+  r.circulation.solution = solve(solved.MN, r.exact, tol, rounding);
+  r.cutset_law.solution = solve(solved.AN, r.exact, tol, rounding);
+  r.cutset_motion.solution = solve(solved.AN.transpose(), r.exact, tol, rounding);
+  r.circuit_action.solution = solve(solved.MN.transpose(), r.exact, tol, rounding);
   if (!r.exact) {
     // The conditioned frame mixes the d rows of each circuit (cutset), so the rows that are
     // redundant there are not the user's: choose them again on the user's M^N and A^N.
@@ -546,8 +557,9 @@ NetworkResult analyse_network(const Model& model, const AnalysisOptions& options
     std::vector<screw::CouplingBasis> bases;
     for (const auto& c : model.couplings) bases.push_back(screw::coupling_basis(c.type, conditioned.to_frame(c.geometry, model.space), model.space));
     const UnitMatrices u = unit_matrices(bases, d, r.B, r.Q);
-    const int fn = r.F - static_cast<int>(linalg::numerical_rank(u.MN.to_double(), {tol.rank}).rank);
-    const int cn = r.C - static_cast<int>(linalg::numerical_rank(u.AN.to_double(), {tol.rank}).rank);
+    const linalg::RankTolerance rounded{tol.rank, input_rounding(model, conditioned)};
+    const int fn = r.F - static_cast<int>(linalg::numerical_rank(u.MN.to_double(), rounded).rank);
+    const int cn = r.C - static_cast<int>(linalg::numerical_rank(u.AN.to_double(), rounded).rank);
     if (fn != r.FN || cn != r.CN) r.floating_point_disagreement = std::make_pair(fn, cn);
   }
   return r;

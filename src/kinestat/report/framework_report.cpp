@@ -126,6 +126,8 @@ nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const 
   decision["threshold"] = significant(d.threshold);
   decision["smallest_kept"] = significant(d.smallest_kept);
   decision["largest_dropped"] = significant(d.largest_dropped);
+  // ε × largest coordinate / size: how precisely the written coordinates fix the geometry.
+  decision["input_rounding"] = significant(d.input_rounding);
   if (std::isfinite(d.gap())) decision["gap"] = significant(d.gap());
   else decision["gap"] = nullptr;
   decision["close"] = d.close();
@@ -217,6 +219,10 @@ std::string framework_report_text(const FrameworkModel& model, const FrameworkRe
   line(fmt::format("rank decision: threshold {}, smallest kept {}, largest dropped {}{}", evidence(a.decision.threshold),
                    evidence(a.decision.smallest_kept), evidence(a.decision.largest_dropped),
                    a.decision.close() ? " -- CLOSE: the design is near a different answer" : ""));
+  if (a.decision.threshold == a.decision.rounding_level && kInputRoundingFactor * a.decision.input_rounding > kEpsilon)
+    line(fmt::format("threshold raised to the rounding of the input: the coordinates, far from the origin against the "
+                     "model's size, fix its geometry only to {} of that size",
+                     evidence(a.decision.input_rounding)));
   if (a.singular_values.size() > 0)
     line(fmt::format("smallest/largest singular value: {}", number(a.relative_smallest_singular_value())));
   line(fmt::format("classification: {}", framework_classification(a)));

@@ -86,6 +86,7 @@ Json rank_json(const linalg::RankDecision& rank) {
     j["threshold"] = rank.threshold;
     j["smallest_kept"] = rank.smallest_kept;
     j["largest_dropped"] = rank.largest_dropped;
+    if (rank.input_rounding > 0) j["input_rounding"] = rank.input_rounding;
     j["gap"] = std::isinf(rank.gap()) ? Json(nullptr) : Json(rank.gap());
     j["close"] = rank.close();
   }
