@@ -8,6 +8,7 @@
 #include "cli/option_checks.hpp"
 #include "kinestat/design/framework_verdict.hpp"
 #include "kinestat/framework/framework_analysis.hpp"
+#include "kinestat/framework/generic_framework.hpp"
 #include "kinestat/report/framework_report.hpp"
 #include "kinestat/report/json_text.hpp"
 
@@ -53,10 +54,12 @@ int run_framework_analysis(const CommonOptions& options, const framework::Framew
   analysis_options.sparse_vectors = static_cast<Eigen::Index>(sparse_vectors);
   const framework::FrameworkAnalysis analysis = framework::analyse_framework(model, analysis_options);
   const design::Verdict verdict = design::framework_verdict(model, analysis, analysis_options);
+  const std::optional<framework::GenericFramework> generic = framework::generic_framework(model, analysis);
+  const framework::GenericFramework* shown = generic ? &*generic : nullptr;
   if (options.json) {
-    emit(options, report::json_text(report::framework_report_json(model, analysis, &verdict)));
+    emit(options, report::json_text(report::framework_report_json(model, analysis, &verdict, shown)));
   } else {
-    emit(options, report::framework_report_text(model, analysis, &verdict));
+    emit(options, report::framework_report_text(model, analysis, &verdict, shown));
   }
   return 0;
 }

@@ -9,6 +9,7 @@
 
 #include "kinestat/design/verdict.hpp"
 #include "kinestat/framework/framework_analysis.hpp"
+#include "kinestat/framework/generic_framework.hpp"
 #include "kinestat/framework/framework_model.hpp"
 
 namespace kinestat::report {
@@ -23,12 +24,16 @@ std::string framework_column_label(const framework::FrameworkModel& model, const
 std::string framework_classification(const framework::FrameworkAnalysis& analysis);
 
 /// The report as JSON (keys documented in docs/framework.md).
-/// With a `verdict`, the report leads with it (design::framework_verdict decides it).
+/// With a `verdict`, the report leads with it (design::framework_verdict decides it); with a
+/// `generic` answer (framework::generic_framework), it has `generic` and every mode and stress
+/// state a `cause`.
 nlohmann::ordered_json framework_report_json(const framework::FrameworkModel& model,
                                              const framework::FrameworkAnalysis& analysis,
-                                             const design::Verdict* verdict = nullptr);
+                                             const design::Verdict* verdict = nullptr,
+                                             const framework::GenericFramework* generic = nullptr);
 /// The report as readable text, the verdict block first when given.
 std::string framework_report_text(const framework::FrameworkModel& model, const framework::FrameworkAnalysis& analysis,
-                                  const design::Verdict* verdict = nullptr);
+                                  const design::Verdict* verdict = nullptr,
+                                  const framework::GenericFramework* generic = nullptr);
 
 }  // namespace kinestat::report
