@@ -52,10 +52,13 @@ int run_framework_analysis(const CommonOptions& options, const framework::Framew
   analysis_options.tolerance.relative = options.tolerance;
   analysis_options.dense_limit = static_cast<Eigen::Index>(dense_limit);
   analysis_options.sparse_vectors = static_cast<Eigen::Index>(sparse_vectors);
-  const framework::FrameworkAnalysis analysis = framework::analyse_framework(model, analysis_options);
-  const design::Verdict verdict = design::framework_verdict(model, analysis, analysis_options);
+  framework::FrameworkAnalysis analysis = framework::analyse_framework(model, analysis_options);
+  // The generic answer first: where only some modes or stress states persist it re-chooses
+  // their basis (one cause per vector), and the verdict describes that basis.
   const std::optional<framework::GenericFramework> generic = framework::generic_framework(model, analysis);
+  if (generic) analysis = framework::with_generic_basis(std::move(analysis), *generic);
   const framework::GenericFramework* shown = generic ? &*generic : nullptr;
+  const design::Verdict verdict = design::framework_verdict(model, analysis, analysis_options);
   if (options.json) {
     emit(options, report::json_text(report::framework_report_json(model, analysis, &verdict, shown)));
   } else {

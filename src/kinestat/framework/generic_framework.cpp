@@ -1,11 +1,15 @@
 #include "kinestat/framework/generic_framework.hpp"
 
 #include <Eigen/Geometry>
+#include <Eigen/QR>
+#include <Eigen/SVD>
 
 #include <algorithm>
 
+#include "kinestat/linalg/homogeneous_solution.hpp"
 #include "kinestat/linalg/modular_rank.hpp"
 #include "kinestat/linalg/seeded_random.hpp"
+#include "kinestat/linalg/sign_convention.hpp"
 #include "kinestat/linalg/svd_analysis.hpp"
 
 namespace kinestat::framework {
@@ -112,7 +116,43 @@ Eigen::MatrixXd columns_of(const std::vector<Eigen::VectorXd>& vectors, Index ro
   return m;
 }
 
+// A canonical basis of the span of `columns` (reduced echelon form, earliest free variables,
+// the analysis's rule), each column oriented by the one sign convention.
+Eigen::MatrixXd canonical(const Eigen::MatrixXd& columns) {
+  if (columns.cols() == 0) return columns;
+  std::vector<Index> free_variables;
+  const Eigen::MatrixXd q = Eigen::HouseholderQR<Eigen::MatrixXd>(columns).householderQ() *
+                            Eigen::MatrixXd::Identity(columns.rows(), columns.cols());
+  Eigen::MatrixXd basis = linalg::echelon_null_basis(q, free_variables);
+  if (basis.cols() != columns.cols()) basis = q;
+  for (Index j = 0; j < basis.cols(); ++j) linalg::orient_unit_vector(basis.col(j), kModeZero);
+  return basis;
+}
+
+// The states `given` (columns) re-chosen as [persisting part, the rest]: the projection of the
+// persisting states onto their span first, then its complement in that span.
+Eigen::MatrixXd rebase(const Eigen::MatrixXd& given, const Eigen::MatrixXd& persisting) {
+  const Index k = given.cols(), g = persisting.cols();
+  const Eigen::MatrixXd q = Eigen::HouseholderQR<Eigen::MatrixXd>(given).householderQ() * Eigen::MatrixXd::Identity(given.rows(), k);
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(q.transpose() * persisting, Eigen::ComputeFullU);
+  Eigen::MatrixXd basis(given.rows(), k);
+  basis << canonical(q * svd.matrixU().leftCols(g)), canonical(q * svd.matrixU().rightCols(k - g));
+  return basis;
+}
+
 }  // namespace
+
+FrameworkAnalysis with_generic_basis(FrameworkAnalysis analysis, const GenericFramework& generic) {
+  if (generic.mode_basis) {
+    analysis.modes.clear();
+    collect_modes(analysis, *generic.mode_basis);
+  }
+  if (generic.stress_basis) {
+    analysis.stresses.clear();
+    collect_stresses(analysis, *generic.stress_basis);
+  }
+  return analysis;
+}
 
 std::optional<LamanCount> laman_count(const FrameworkModel& model, const FrameworkAnalysis& given) {
   if (model.dimension != 2 || !bars_only(model)) return std::nullopt;
@@ -179,13 +219,15 @@ std::optional<GenericFramework> generic_framework(const FrameworkModel& model, c
       const Eigen::MatrixXd persisting = perturbed.column_scale.asDiagonal() * svd.v.rightCols(g.mechanisms);
       std::vector<Eigen::VectorXd> vectors;
       for (const auto& mode : given.modes) vectors.push_back(mode.velocities);
-      modes = linalg::split_by_subspace(columns_of(vectors, given.n), persisting);
+      g.mode_basis = rebase(columns_of(vectors, given.n), persisting);
+      modes = linalg::split_by_subspace(*g.mode_basis, persisting);
     }
     if (mixed_stresses) {
       const Eigen::MatrixXd persisting = perturbed.row_scale.asDiagonal() * svd.u.rightCols(g.self_stresses);
       std::vector<Eigen::VectorXd> vectors;
       for (const auto& state : given.stresses) vectors.push_back(state.resultants);
-      stresses = linalg::split_by_subspace(columns_of(vectors, given.m), persisting);
+      g.stress_basis = rebase(columns_of(vectors, given.m), persisting);
+      stresses = linalg::split_by_subspace(*g.stress_basis, persisting);
     }
   }
   g.mode_causes = modes.causes;

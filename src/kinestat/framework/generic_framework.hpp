@@ -36,8 +36,14 @@ struct GenericFramework {
   Eigen::Index rank = 0, mechanisms = 0, self_stresses = 0;  ///< at a random realisation
   bool exact = false;    ///< modular ranks of an exact D(c) (bars only); else SVD ranks in floating point
   int realisations = 0;  ///< random realisations ranked (the largest rank is kept)
-  std::vector<linalg::Cause> mode_causes, stress_causes;  ///< one per mode / stress state of the analysis
-  double split_residual = 0.0;                              ///< see linalg::CauseSplit::residual
+  /// One per mode / stress state: of the analysis, or of the re-chosen bases below when given.
+  std::vector<linalg::Cause> mode_causes, stress_causes;
+  double split_residual = 0.0;  ///< see linalg::CauseSplit::residual
+  /// When only some modes (stress states) persist: a new basis of the same space, columns in
+  /// D̂'s units, whose first `mechanisms` (`self_stresses`) span the states that persist under a
+  /// small random change of the geometry (their limit) and the rest its complement, each part
+  /// in the reduced echelon form the analysis uses; apply with with_generic_basis.
+  std::optional<Eigen::MatrixXd> mode_basis, stress_basis;
   std::optional<LamanCount> laman;                          ///< planar frameworks of bars only
 };
 
@@ -49,6 +55,10 @@ inline constexpr double kFrameworkCausePerturbation = 1e-6;
 
 /// The generic answer for `model` beside `given`, its analysis; nothing above the size limit.
 std::optional<GenericFramework> generic_framework(const FrameworkModel& model, const FrameworkAnalysis& given);
+
+/// `analysis` with its modes and stress states replaced by the re-chosen bases of `generic`
+/// (unchanged where there are none), so that each basis vector has one cause.
+FrameworkAnalysis with_generic_basis(FrameworkAnalysis analysis, const GenericFramework& generic);
 
 /// Laman's count of `model` by the pebble game; nothing unless it is planar with trusses only.
 std::optional<LamanCount> laman_count(const FrameworkModel& model, const FrameworkAnalysis& given);
