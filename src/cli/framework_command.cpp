@@ -58,7 +58,8 @@ int run_framework_analysis(const CommonOptions& options, const framework::Framew
   const std::optional<framework::GenericFramework> generic = framework::generic_framework(model, analysis);
   if (generic) analysis = framework::with_generic_basis(std::move(analysis), *generic);
   const framework::GenericFramework* shown = generic ? &*generic : nullptr;
-  const design::Verdict verdict = design::framework_verdict(model, analysis, analysis_options);
+  design::Verdict verdict = design::framework_verdict(model, analysis, analysis_options);
+  if (generic) verdict.generic = report::framework_generic_sentences(model, analysis, *generic);
   if (options.json) {
     emit(options, report::json_text(report::framework_report_json(model, analysis, &verdict, shown)));
   } else {

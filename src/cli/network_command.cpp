@@ -126,12 +126,15 @@ int run_network_analysis(const CommonOptions& common, const io::LoadedNetwork& l
                                             "too large; scale them down (units do not change the counts)",
                                             *overflowing));
   }
-  const design::Verdict verdict = design::network_verdict(loaded.model, result, options);
+  design::Verdict verdict = design::network_verdict(loaded.model, result, options);
   report::NetworkReportOptions report_options;
   report_options.matrices = o.matrices;
   report_options.verdict = &verdict;
   const std::optional<network::GenericNetwork> generic = network::generic_network(loaded.model, result);
-  if (generic) report_options.generic = &*generic;
+  if (generic) {
+    report_options.generic = &*generic;
+    verdict.generic = report::network_generic_sentences(loaded.model, result, *generic);
+  }
   emit(common, common.json ? report::json_text(report::network_json(loaded.model, result, report_options))
                            : report::network_text(loaded.model, result, report_options));
   return 0;

@@ -173,7 +173,9 @@ std::optional<GenericNetwork> generic_network(const Model& model, const NetworkR
   g.action_causes = actions.causes;
   g.split_residual = std::max(motions.residual, actions.residual);
 
-  if (given.exact && given.m < g.m && given.e <= kSpecialCouplingLimit) {
+  const auto rows = static_cast<double>(given.d * given.l), cols = static_cast<double>(given.F);
+  const double work = static_cast<double>(given.e) * rows * cols * std::min(rows, cols);
+  if (given.exact && given.m < g.m && work <= kSpecialCouplingWork) {
     std::vector<int> special;
     const std::vector<screw::CouplingGeometry> geometry = given_geometry(model);
     for (int e = 0; e < given.e; ++e) {

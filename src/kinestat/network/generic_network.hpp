@@ -41,8 +41,10 @@ struct GenericNetwork {
 /// Relative size of the change of geometry (in the analysis frame, lengths over the model's
 /// extent) whose motions and self-stresses decide the causes of a mixed basis.
 inline constexpr double kCausePerturbation = 1e-6;
-/// Largest model (couplings) for which each coupling's part in the special geometry is ranked.
-inline constexpr int kSpecialCouplingLimit = 200;
+/// Each coupling's part in the special geometry takes one modular elimination of M^N per
+/// coupling; it is found only when e · rows · columns · min(rows, columns) stays below this
+/// (about a second).
+inline constexpr double kSpecialCouplingWork = 2e9;
 
 /// The generic answer for `model` beside `given`, its analysis. Returns nothing for screw
 /// spaces other than spatial and planar (a random realisation there is not defined).

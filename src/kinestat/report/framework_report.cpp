@@ -161,6 +161,11 @@ nlohmann::ordered_json generic_json(const FrameworkModel& model, const Framework
 
 }  // namespace
 
+std::vector<std::string> framework_generic_sentences(const FrameworkModel& model, const FrameworkAnalysis& analysis,
+                                                     const framework::GenericFramework& generic) {
+  return generic_explanation(model, analysis, generic, false);
+}
+
 std::string framework_row_label(const FrameworkModel& model, const FrameworkAnalysis& analysis, Eigen::Index row) {
   const auto& d = row_ref(analysis, row);
   return model.elements[d.element].name + "." + deformation_name(model, d);

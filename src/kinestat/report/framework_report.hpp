@@ -23,6 +23,10 @@ std::string framework_column_label(const framework::FrameworkModel& model, const
 /// Table 1 class, e.g. "statically indeterminate, kinematically determinate".
 std::string framework_classification(const framework::FrameworkAnalysis& analysis);
 
+/// The generic answer in one sentence per count (mechanisms, self-stresses), raw names.
+std::vector<std::string> framework_generic_sentences(const framework::FrameworkModel& model, const framework::FrameworkAnalysis& analysis,
+                                                     const framework::GenericFramework& generic);
+
 /// The report as JSON (keys documented in docs/framework.md).
 /// With a `verdict`, the report leads with it (design::framework_verdict decides it); with a
 /// `generic` answer (framework::generic_framework), it has `generic` and every mode and stress

@@ -248,13 +248,17 @@ Json generic_json(const network::Model& model, const NetworkResult& r, const net
   j["split_residual"] = std::round(g.split_residual * 1e6) / 1e6;
   if (g.special_couplings) j["special_couplings"] = special_coupling_names(model, g);
   else j["special_couplings"] = nullptr;
-  const auto involved = special_coupling_names(model, g);
-  j["explanation"] = {generic_count_text("FN", r.FN, g.FN, involved, "couplings"), generic_count_text("CN", r.CN, g.CN, involved, "couplings")};
+  j["explanation"] = network_generic_sentences(model, r, g);
   return j;
 }
 
 
 }  // namespace
+
+std::vector<std::string> network_generic_sentences(const network::Model& model, const NetworkResult& r, const network::GenericNetwork& g) {
+  const auto involved = special_coupling_names(model, g);
+  return {generic_count_text("FN", r.FN, g.FN, involved, "couplings"), generic_count_text("CN", r.CN, g.CN, involved, "couplings")};
+}
 
 std::string network_text(const network::Model& model, const NetworkResult& r, const NetworkReportOptions& options) {
   const auto motion_primaries = printable_names(names_of(r.primary_motion, r.motions));

@@ -29,6 +29,10 @@ std::string network_text(const network::Model& model, const network::NetworkResu
 nlohmann::ordered_json network_json(const network::Model& model, const network::NetworkResult& result,
                                     const NetworkReportOptions& options = {});
 
+/// The generic answer in one sentence per count (FN, CN), raw names (not escaped).
+std::vector<std::string> network_generic_sentences(const network::Model& model, const network::NetworkResult& result,
+                                                   const network::GenericNetwork& generic);
+
 /// Bounded report of the sparse path: the verdict first when given
 /// (design::sparse_network_verdict), counts, class, rank evidence (also of the basis vectors the
 /// verdict used), the couplings that carry a self-stress and those that move, and what was not
