@@ -169,3 +169,55 @@ TEST(GenericNetwork, SameAnswerWhenTranslatedAndRenamed) {
 
 }  // namespace
 }  // namespace kinestat::network
+
+namespace kinestat::network {
+namespace {
+
+// A ladder of n + 1 bodies: revolutes b_i - b_{i+1} and spherical rungs b_i - b_{i+2}, every
+// point and axis pseudo-random whole numbers (general position). Grübler: 6n - 5n - 3(n - 1) =
+// 3 - 2n < 0 and, in general position, M^N has full column rank F = n + 3(n - 1): FN = 0 and
+// CN = d l - F = 6(n - 1) - (4n - 3) = 2n - 3.
+std::string ladder(int n) {
+  std::uint64_t state = 12345;
+  const auto next = [&state](int range) {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<int>((state >> 33) % static_cast<std::uint64_t>(2 * range + 1)) - range;
+  };
+  std::string text = "kinestat: 1\nkind: network\nname: ladder\ndimension: spatial\nground: b0\ncouplings:\n";
+  for (int i = 0; i < n; ++i) {
+    int a[3] = {next(9), next(9), next(9)};
+    if (a[0] == 0 && a[1] == 0 && a[2] == 0) a[0] = 1;
+    text += "  - {name: R" + std::to_string(i) + ", type: revolute, between: [b" + std::to_string(i) + ", b" + std::to_string(i + 1) +
+            "], point: [" + std::to_string(next(50)) + ", " + std::to_string(next(50)) + ", " + std::to_string(next(50)) +
+            "], axis: [" + std::to_string(a[0]) + ", " + std::to_string(a[1]) + ", " + std::to_string(a[2]) + "]}\n";
+    if (i + 2 <= n)
+      text += "  - {name: S" + std::to_string(i) + ", type: spherical, between: [b" + std::to_string(i) + ", b" + std::to_string(i + 2) +
+              "], point: [" + std::to_string(next(50)) + ", " + std::to_string(next(50)) + ", " + std::to_string(next(50)) + "]}\n";
+  }
+  return text;
+}
+
+// Issue 12, item 4: short decimals, but M^N (174 x 117: 2.4e6 > kExactEliminationWork) too large
+// for exact elimination by default: floating point, checked by the rank modulo two primes.
+TEST(ModularCheck, LargeRationalNetworkIsCheckedByModularRank) {
+  const int n = 30;
+  const auto loaded = testing::parse_network(ladder(n));
+  const NetworkResult r = analyse_network(loaded.model);
+  EXPECT_FALSE(r.exact);
+  ASSERT_TRUE(r.modular_check.has_value());
+  EXPECT_EQ(r.modular_check->rank, 4 * n - 3);
+  EXPECT_EQ(r.modular_check->primes, 2);
+  EXPECT_EQ(r.modular_check->agreeing, 2);
+  EXPECT_FALSE(r.modular_check->followed);
+  EXPECT_EQ(r.FN, 0);
+  EXPECT_EQ(r.CN, 2 * n - 3);
+  EXPECT_NE(r.arithmetic_reason.find("modular"), std::string::npos);
+  // A small model keeps exact elimination and has no modular check.
+  const NetworkResult small = analyse_network(testing::parse_network(ladder(5)).model);
+  EXPECT_TRUE(small.exact);
+  EXPECT_FALSE(small.modular_check.has_value());
+  EXPECT_EQ(small.CN, 2 * 5 - 3);
+}
+
+}  // namespace
+}  // namespace kinestat::network

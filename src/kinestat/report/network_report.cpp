@@ -272,6 +272,10 @@ std::string network_text(const network::Model& model, const NetworkResult& r, co
   t += fmt::format("  gross degree of freedom F = {}, gross degree of constraint C = {}\n", r.F, r.C);
   t += fmt::format("  rank of the network unit motion matrix: {}\n", rank_text("m", r.circulation.solution.rank));
   t += fmt::format("  rank of the network unit action matrix: {}\n", rank_text("a", r.cutset_law.solution.rank));
+  if (r.modular_check)
+    t += fmt::format("  modular check: M^N has rank {} modulo {} large primes ({} agree), a certain lower bound of its exact rank; {}\n",
+                     r.modular_check->rank, r.modular_check->primes, r.modular_check->agreeing,
+                     r.modular_check->followed ? "the floating-point decisions were moved to it" : "the floating-point decision agrees");
   t += fmt::format("  nett degree of freedom    FN = {}\n", r.FN);
   t += fmt::format("  nett degree of constraint CN = {}\n", r.CN);
   t += fmt::format("  class: {}\n", network::class_description(r.classification));
@@ -381,6 +385,11 @@ Json network_json(const network::Model& model, const NetworkResult& r, const Net
   j["identities_hold"] = r.identities_hold;
   if (options.generic) j["generic"] = generic_json(model, r, *options.generic, motion_primaries, action_primaries);
   j["rank_evidence"] = {{"motion", rank_json(r.circulation.solution.rank)}, {"action", rank_json(r.cutset_law.solution.rank)}};
+  if (r.modular_check)
+    j["rank_evidence"]["modular"] = {{"rank_motion", r.modular_check->rank},
+                                     {"primes", r.modular_check->primes},
+                                     {"agreeing", r.modular_check->agreeing},
+                                     {"followed", r.modular_check->followed}};
   if (!r.exact) j["length_scale"] = r.length_scale;
   Json branches = Json::array(), chords = Json::array();
   for (int b : r.branches) branches.push_back(model.couplings[static_cast<std::size_t>(b)].name);
