@@ -220,7 +220,7 @@ TEST(FrameworkVerdict, CountsAndVerifiedChangesOfEveryExample) {
     EXPECT_TRUE(v["changes_verified"].get<bool>());
     // A minimal set: one release per self-stress, one constrained coordinate per mechanism.
     int releases = 0, constrained = 0;
-    framework::FrameworkModel model = io::read_framework(io::YamlFile::load(example_path(expected.file)));
+    framework::FrameworkModel model = io::read_framework_model(io::YamlFile::load(example_path(expected.file)));
     for (const auto& change : v["changes"]) {
       const std::string target = change["target"];
       if (change["action"] == "release") {
@@ -292,7 +292,7 @@ TEST(StructureVerdict, CountsAndVerifiedChangesOfEveryExample) {
       else if (change["action"] == "undrive") --pair->inputs;
       else ++pair->freedoms;
     }
-    EXPECT_TRUE(structure::decompose(model).complete());
+    EXPECT_TRUE(structure::analyse_structure(model).complete());
   }
 }
 

@@ -18,7 +18,7 @@ using testing::load_example;
 
 long count(const std::vector<Cause>& causes, Cause cause) { return std::count(causes.begin(), causes.end(), cause); }
 
-GenericFramework generic_of(const FrameworkModel& model, const FrameworkAnalysis& a) {
+GenericFramework generic_of(const FrameworkModel& model, const FrameworkResult& a) {
   const auto g = generic_framework(model, a);
   EXPECT_TRUE(g.has_value());
   return g.value_or(GenericFramework{});
@@ -30,7 +30,7 @@ GenericFramework generic_of(const FrameworkModel& model, const FrameworkAnalysis
 // generic realisation is isostatic. So the one mode and the one self-stress are geometric.
 TEST(GenericFramework, TwelveBarTrussModeAndStressAreGeometric) {
   const FrameworkModel model = load_example("truss-12.yaml");
-  const FrameworkAnalysis a = analyse_framework(model);
+  const FrameworkResult a = analyse_framework(model);
   ASSERT_EQ(a.mechanisms, 1);
   ASSERT_EQ(a.self_stresses, 1);
   const GenericFramework g = generic_of(model, a);
@@ -48,7 +48,7 @@ TEST(GenericFramework, TwelveBarTrussModeAndStressAreGeometric) {
 // one extra mode and one self-stress exist (the prestress): both geometric.
 TEST(GenericFramework, TensegrityPrismOneModeAndOneStressFromGeometry) {
   const FrameworkModel model = load_example("simplex-tensegrity.yaml");
-  const FrameworkAnalysis a = analyse_framework(model);
+  const FrameworkResult a = analyse_framework(model);
   ASSERT_EQ(a.mechanisms, 7);
   ASSERT_EQ(a.self_stresses, 1);
   const GenericFramework g = generic_of(model, a);
@@ -62,7 +62,7 @@ TEST(GenericFramework, TensegrityPrismOneModeAndOneStressFromGeometry) {
   // velocities are v = w x p + t at every node (checked by solving for w and t).
   EXPECT_LT(g.split_residual, 1e-3);
   ASSERT_TRUE(g.mode_basis.has_value());
-  const FrameworkAnalysis rebased = with_generic_basis(a, g);
+  const FrameworkResult rebased = with_generic_basis(a, g);
   ASSERT_EQ(rebased.modes.size(), 7U);
   for (std::size_t k = 0; k < 7; ++k) {
     // Least-squares fit of a rigid motion (w, t) to the 6 nodes' velocities (in D̂ units).
@@ -91,7 +91,7 @@ TEST(GenericFramework, TensegrityPrismOneModeAndOneStressFromGeometry) {
 // puts C with the ground in one rigid component.
 TEST(GenericFramework, CollinearTwoBarIsSpecialAndLamanAgrees) {
   const FrameworkModel model = load_example("pellegrino-calladine-two-bar.yaml");
-  const FrameworkAnalysis a = analyse_framework(model);
+  const FrameworkResult a = analyse_framework(model);
   const GenericFramework g = generic_of(model, a);
   EXPECT_EQ(g.mechanisms, 0);
   EXPECT_EQ(g.self_stresses, 0);
@@ -113,7 +113,7 @@ TEST(GenericFramework, CollinearTwoBarIsSpecialAndLamanAgrees) {
 TEST(GenericFramework, LamanRigidLatticeIsGeneric) {
   const int n = 4;
   const FrameworkModel model = planar_lattice(n, true);
-  const FrameworkAnalysis a = analyse_framework(model);
+  const FrameworkResult a = analyse_framework(model);
   ASSERT_EQ(a.mechanisms, 0);
   ASSERT_EQ(a.self_stresses, (n - 1) * (n - 1));
   const GenericFramework g = generic_of(model, a);
@@ -135,7 +135,7 @@ TEST(GenericFramework, LamanRigidLatticeIsGeneric) {
 TEST(GenericFramework, SquareGridMechanismsAreTopological) {
   const int n = 5;
   const FrameworkModel model = planar_lattice(n, false);
-  const FrameworkAnalysis a = analyse_framework(model);
+  const FrameworkResult a = analyse_framework(model);
   ASSERT_EQ(a.mechanisms, n - 1);
   const GenericFramework g = generic_of(model, a);
   EXPECT_EQ(g.mechanisms, n - 1);

@@ -39,7 +39,7 @@ Positions random_positions(const FrameworkModel& model, SeededRandom& random) {
 
 // Rank of D(c) of a bar framework at integer positions, modulo every prime: each bar's row is
 // its direction p − q unnormalised (a row scaled by the bar's length has the same rank).
-Index modular_bar_rank(const FrameworkModel& model, const FrameworkAnalysis& given, const Positions& positions) {
+Index modular_bar_rank(const FrameworkModel& model, const FrameworkResult& given, const Positions& positions) {
   std::vector<Index> column(given.indexing.coordinates.size(), -1);
   for (std::size_t j = 0; j < given.partition.dependent_coordinates.size(); ++j)
     column[static_cast<std::size_t>(given.partition.dependent_coordinates[j])] = static_cast<Index>(j);
@@ -104,7 +104,7 @@ Index floating_rank(const FrameworkModel& model, SeededRandom& random) {
   std::vector<Eigen::Vector3d> positions, hints;
   for (std::size_t n = 0; n < model.nodes.size(); ++n) positions.push_back(random_vector(random, model.dimension));
   for (std::size_t e = 0; e < model.elements.size(); ++e) hints.push_back(random_vector(random, 3));
-  FrameworkAnalysis scratch;
+  FrameworkResult scratch;
   const Eigen::MatrixXd jacobian(prepare_analysis(moved(model, positions, hints), scratch));
   if (jacobian.size() == 0) return 0;
   return linalg::numerical_rank(jacobian).rank;
@@ -142,7 +142,7 @@ Eigen::MatrixXd rebase(const Eigen::MatrixXd& given, const Eigen::MatrixXd& pers
 
 }  // namespace
 
-FrameworkAnalysis with_generic_basis(FrameworkAnalysis analysis, const GenericFramework& generic) {
+FrameworkResult with_generic_basis(FrameworkResult analysis, const GenericFramework& generic) {
   if (generic.mode_basis) {
     analysis.modes.clear();
     collect_modes(analysis, *generic.mode_basis);
@@ -154,7 +154,7 @@ FrameworkAnalysis with_generic_basis(FrameworkAnalysis analysis, const GenericFr
   return analysis;
 }
 
-std::optional<LamanCount> laman_count(const FrameworkModel& model, const FrameworkAnalysis& given) {
+std::optional<LamanCount> laman_count(const FrameworkModel& model, const FrameworkResult& given) {
   if (model.dimension != 2 || !bars_only(model)) return std::nullopt;
   const std::size_t nodes = model.nodes.size();
   const std::size_t ground0 = nodes, ground1 = nodes + 1;
@@ -184,7 +184,7 @@ std::optional<LamanCount> laman_count(const FrameworkModel& model, const Framewo
   return count;
 }
 
-std::optional<GenericFramework> generic_framework(const FrameworkModel& model, const FrameworkAnalysis& given) {
+std::optional<GenericFramework> generic_framework(const FrameworkModel& model, const FrameworkResult& given) {
   if (std::max(given.m, given.n) > kGenericFrameworkLimit) return std::nullopt;
   GenericFramework g;
   g.exact = bars_only(model);
@@ -211,7 +211,7 @@ std::optional<GenericFramework> generic_framework(const FrameworkModel& model, c
     std::vector<Eigen::Vector3d> positions, hints;
     for (const Node& node : model.nodes) positions.push_back(node.position + step * random_vector(random, model.dimension));
     for (const Element& element : model.elements) hints.push_back(element.frame.col(1));
-    FrameworkAnalysis perturbed;
+    FrameworkResult perturbed;
     const Eigen::MatrixXd jacobian(prepare_analysis(moved(model, positions, hints), perturbed));
     const linalg::SvdAnalysis svd = linalg::analyse_svd(jacobian);
     // Null vectors of the scaled matrix back in D̂'s units, as the analysis reports its states.

@@ -54,13 +54,13 @@ inline constexpr Eigen::Index kGenericFrameworkLimit = 1500;
 inline constexpr double kFrameworkCausePerturbation = 1e-6;
 
 /// The generic answer for `model` beside `given`, its analysis; nothing above the size limit.
-std::optional<GenericFramework> generic_framework(const FrameworkModel& model, const FrameworkAnalysis& given);
+std::optional<GenericFramework> generic_framework(const FrameworkModel& model, const FrameworkResult& given);
 
 /// `analysis` with its modes and stress states replaced by the re-chosen bases of `generic`
 /// (unchanged where there are none), so that each basis vector has one cause.
-FrameworkAnalysis with_generic_basis(FrameworkAnalysis analysis, const GenericFramework& generic);
+FrameworkResult with_generic_basis(FrameworkResult analysis, const GenericFramework& generic);
 
 /// Laman's count of `model` by the pebble game; nothing unless it is planar with trusses only.
-std::optional<LamanCount> laman_count(const FrameworkModel& model, const FrameworkAnalysis& given);
+std::optional<LamanCount> laman_count(const FrameworkModel& model, const FrameworkResult& given);
 
 }  // namespace kinestat::framework

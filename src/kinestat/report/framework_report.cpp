@@ -11,10 +11,11 @@
 #include "kinestat/io/printable_text.hpp"
 #include "kinestat/report/generic_text.hpp"
 #include "kinestat/report/verdict_report.hpp"
+#include "kinestat/tolerances.hpp"
 
 namespace kinestat::report {
 
-using framework::FrameworkAnalysis;
+using framework::FrameworkResult;
 using framework::FrameworkModel;
 
 namespace {
@@ -22,7 +23,7 @@ namespace {
 // Ten significant digits: enough to read, and stable against last-bit noise of the SVD.
 double rounded(double value) {
   if (!std::isfinite(value)) return value;
-  if (std::abs(value) < 1e-12) return 0.0;
+  if (std::abs(value) < kPrintedZero) return 0.0;
   const double r = std::stod(fmt::format("{:.10g}", value));
   return r == 0.0 ? 0.0 : r;
 }
@@ -48,11 +49,11 @@ double spread(const Eigen::VectorXd& factors) { return factors.size() == 0 ? 1.0
 // The text report mentions the scaling only when it does something noticeable.
 constexpr double kShownScaleSpread = 1.01;
 
-const framework::CoordinateRef& column_ref(const FrameworkAnalysis& a, Eigen::Index column) {
+const framework::CoordinateRef& column_ref(const FrameworkResult& a, Eigen::Index column) {
   return a.indexing.coordinates[static_cast<std::size_t>(a.partition.dependent_coordinates[static_cast<std::size_t>(column)])];
 }
 
-const framework::DeformationRef& row_ref(const FrameworkAnalysis& a, Eigen::Index row) {
+const framework::DeformationRef& row_ref(const FrameworkResult& a, Eigen::Index row) {
   return a.indexing.deformations[static_cast<std::size_t>(a.rows[static_cast<std::size_t>(row)])];
 }
 
@@ -61,10 +62,10 @@ std::string deformation_name(const FrameworkModel& model, const framework::Defor
 }
 
 // Large models (the sparse path) write vectors compactly: only their non-zero components.
-bool compact(const FrameworkAnalysis& a) { return a.method == framework::RankMethod::sparse_qr; }
+bool compact(const FrameworkResult& a) { return a.method == framework::RankMethod::sparse_qr; }
 
 // Mode velocities grouped by node, in node order, coordinates in slot order.
-nlohmann::ordered_json velocities_by_node(const FrameworkModel& model, const FrameworkAnalysis& a, const Eigen::VectorXd& v) {
+nlohmann::ordered_json velocities_by_node(const FrameworkModel& model, const FrameworkResult& a, const Eigen::VectorXd& v) {
   nlohmann::ordered_json nodes = nlohmann::ordered_json::object();
   for (Eigen::Index j = 0; j < v.size(); ++j) {
     if (compact(a) && v(j) == 0.0) continue;
@@ -76,24 +77,24 @@ nlohmann::ordered_json velocities_by_node(const FrameworkModel& model, const Fra
 
 // Names of the parts that take part in the states of cause `geometry`: the nodes the modes move
 // and the elements the stress states load, in model order.
-std::vector<std::string> geometric_nodes(const FrameworkModel& model, const FrameworkAnalysis& a, const framework::GenericFramework& g) {
+std::vector<std::string> geometric_nodes(const FrameworkModel& model, const FrameworkResult& a, const framework::GenericFramework& g) {
   std::vector<bool> involved(model.nodes.size(), false);
   for (std::size_t k = 0; k < a.modes.size() && k < g.mode_causes.size(); ++k)
     if (g.mode_causes[k] == linalg::Cause::geometry)
       for (Eigen::Index col : a.modes[k].moving)
-        if (std::abs(a.modes[k].velocities(col)) > framework::kModeZero) involved[column_ref(a, col).node] = true;
+        if (std::abs(a.modes[k].velocities(col)) > kinestat::kModeZero) involved[column_ref(a, col).node] = true;
   std::vector<std::string> names;
   for (std::size_t n = 0; n < involved.size(); ++n)
     if (involved[n]) names.push_back(model.nodes[n].name);
   return names;
 }
 
-std::vector<std::string> geometric_elements(const FrameworkModel& model, const FrameworkAnalysis& a, const framework::GenericFramework& g) {
+std::vector<std::string> geometric_elements(const FrameworkModel& model, const FrameworkResult& a, const framework::GenericFramework& g) {
   std::vector<bool> involved(model.elements.size(), false);
   for (std::size_t k = 0; k < a.stresses.size() && k < g.stress_causes.size(); ++k)
     if (g.stress_causes[k] == linalg::Cause::geometry)
       for (Eigen::Index row = 0; row < a.stresses[k].resultants.size(); ++row)
-        if (std::abs(a.stresses[k].resultants(row)) > framework::kModeZero) involved[row_ref(a, row).element] = true;
+        if (std::abs(a.stresses[k].resultants(row)) > kinestat::kModeZero) involved[row_ref(a, row).element] = true;
   std::vector<std::string> names;
   for (std::size_t e = 0; e < involved.size(); ++e)
     if (involved[e]) names.push_back(model.elements[e].name);
@@ -111,7 +112,7 @@ std::vector<std::string> printable_all(const std::vector<std::string>& names) {
   return out;
 }
 
-std::vector<std::string> generic_explanation(const FrameworkModel& model, const FrameworkAnalysis& a, const framework::GenericFramework& g,
+std::vector<std::string> generic_explanation(const FrameworkModel& model, const FrameworkResult& a, const framework::GenericFramework& g,
                                              bool printable) {
   auto nodes = geometric_nodes(model, a, g), elements = geometric_elements(model, a, g);
   if (printable) {
@@ -129,7 +130,7 @@ std::string component_text(const FrameworkModel& model, const framework::LamanCo
   return fmt::format("{{{}}}", fmt::join(names, ", "));
 }
 
-nlohmann::ordered_json generic_json(const FrameworkModel& model, const FrameworkAnalysis& a, const framework::GenericFramework& g) {
+nlohmann::ordered_json generic_json(const FrameworkModel& model, const FrameworkResult& a, const framework::GenericFramework& g) {
   nlohmann::ordered_json j;
   j["mechanisms"] = g.mechanisms;
   j["self_stresses"] = g.self_stresses;
@@ -161,27 +162,27 @@ nlohmann::ordered_json generic_json(const FrameworkModel& model, const Framework
 
 }  // namespace
 
-std::vector<std::string> framework_generic_sentences(const FrameworkModel& model, const FrameworkAnalysis& analysis,
+std::vector<std::string> framework_generic_sentences(const FrameworkModel& model, const FrameworkResult& analysis,
                                                      const framework::GenericFramework& generic) {
   return generic_explanation(model, analysis, generic, false);
 }
 
-std::string framework_row_label(const FrameworkModel& model, const FrameworkAnalysis& analysis, Eigen::Index row) {
+std::string framework_row_label(const FrameworkModel& model, const FrameworkResult& analysis, Eigen::Index row) {
   const auto& d = row_ref(analysis, row);
   return model.elements[d.element].name + "." + deformation_name(model, d);
 }
 
-std::string framework_column_label(const FrameworkModel& model, const FrameworkAnalysis& analysis, Eigen::Index column) {
+std::string framework_column_label(const FrameworkModel& model, const FrameworkResult& analysis, Eigen::Index column) {
   const auto& c = column_ref(analysis, column);
   return model.nodes[c.node].name + "." + framework::kSlotNames[static_cast<std::size_t>(c.slot)];
 }
 
-std::string framework_classification(const FrameworkAnalysis& a) {
+std::string framework_classification(const FrameworkResult& a) {
   return fmt::format("statically {}, kinematically {}", a.statically_determinate() ? "determinate" : "indeterminate",
                      a.kinematically_determinate() ? "determinate" : "indeterminate");
 }
 
-nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const FrameworkAnalysis& a, const design::Verdict* verdict,
+nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const FrameworkResult& a, const design::Verdict* verdict,
                                              const framework::GenericFramework* generic) {
   nlohmann::ordered_json j;
   j["kind"] = "framework";
@@ -282,7 +283,7 @@ nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const 
   return j;
 }
 
-std::string framework_report_text(const FrameworkModel& model, const FrameworkAnalysis& a, const design::Verdict* verdict,
+std::string framework_report_text(const FrameworkModel& model, const FrameworkResult& a, const design::Verdict* verdict,
                                   const framework::GenericFramework* generic) {
   using io::printable_text;
   std::string out = verdict ? verdict_text(*verdict) : std::string();

@@ -15,16 +15,16 @@
 namespace kinestat::report {
 
 /// Label of row `row` of D(c): "<element>.<deformation>".
-std::string framework_row_label(const framework::FrameworkModel& model, const framework::FrameworkAnalysis& analysis,
+std::string framework_row_label(const framework::FrameworkModel& model, const framework::FrameworkResult& analysis,
                                 Eigen::Index row);
 /// Label of column `column` of D(c): "<node>.<coordinate>".
-std::string framework_column_label(const framework::FrameworkModel& model, const framework::FrameworkAnalysis& analysis,
+std::string framework_column_label(const framework::FrameworkModel& model, const framework::FrameworkResult& analysis,
                                    Eigen::Index column);
 /// Table 1 class, e.g. "statically indeterminate, kinematically determinate".
-std::string framework_classification(const framework::FrameworkAnalysis& analysis);
+std::string framework_classification(const framework::FrameworkResult& analysis);
 
 /// The generic answer in one sentence per count (mechanisms, self-stresses), raw names.
-std::vector<std::string> framework_generic_sentences(const framework::FrameworkModel& model, const framework::FrameworkAnalysis& analysis,
+std::vector<std::string> framework_generic_sentences(const framework::FrameworkModel& model, const framework::FrameworkResult& analysis,
                                                      const framework::GenericFramework& generic);
 
 /// The report as JSON (keys documented in docs/framework.md).
@@ -32,11 +32,11 @@ std::vector<std::string> framework_generic_sentences(const framework::FrameworkM
 /// `generic` answer (framework::generic_framework), it has `generic` and every mode and stress
 /// state a `cause`.
 nlohmann::ordered_json framework_report_json(const framework::FrameworkModel& model,
-                                             const framework::FrameworkAnalysis& analysis,
+                                             const framework::FrameworkResult& analysis,
                                              const design::Verdict* verdict = nullptr,
                                              const framework::GenericFramework* generic = nullptr);
 /// The report as readable text, the verdict block first when given.
-std::string framework_report_text(const framework::FrameworkModel& model, const framework::FrameworkAnalysis& analysis,
+std::string framework_report_text(const framework::FrameworkModel& model, const framework::FrameworkResult& analysis,
                                   const design::Verdict* verdict = nullptr,
                                   const framework::GenericFramework* generic = nullptr);
 
