@@ -215,19 +215,19 @@ std::optional<GenericFramework> generic_framework(const FrameworkModel& model, c
     const Eigen::MatrixXd jacobian(prepare_analysis(moved(model, positions, hints), perturbed));
     const linalg::SvdAnalysis svd = linalg::analyse_svd(jacobian);
     // Null vectors of the scaled matrix back in D̂'s units, as the analysis reports its states.
+    const auto split = [](const Eigen::MatrixXd& given_states, const Eigen::MatrixXd& persisting, std::optional<Eigen::MatrixXd>& basis) {
+      basis = rebase(given_states, persisting);
+      return linalg::split_by_subspace(*basis, persisting);
+    };
     if (mixed_modes) {
-      const Eigen::MatrixXd persisting = perturbed.column_scale.asDiagonal() * svd.v.rightCols(g.mechanisms);
       std::vector<Eigen::VectorXd> vectors;
       for (const auto& mode : given.modes) vectors.push_back(mode.velocities);
-      g.mode_basis = rebase(columns_of(vectors, given.n), persisting);
-      modes = linalg::split_by_subspace(*g.mode_basis, persisting);
+      modes = split(columns_of(vectors, given.n), perturbed.column_scale.asDiagonal() * svd.v.rightCols(g.mechanisms), g.mode_basis);
     }
     if (mixed_stresses) {
-      const Eigen::MatrixXd persisting = perturbed.row_scale.asDiagonal() * svd.u.rightCols(g.self_stresses);
       std::vector<Eigen::VectorXd> vectors;
       for (const auto& state : given.stresses) vectors.push_back(state.resultants);
-      g.stress_basis = rebase(columns_of(vectors, given.m), persisting);
-      stresses = linalg::split_by_subspace(*g.stress_basis, persisting);
+      stresses = split(columns_of(vectors, given.m), perturbed.row_scale.asDiagonal() * svd.u.rightCols(g.self_stresses), g.stress_basis);
     }
   }
   g.mode_causes = modes.causes;
