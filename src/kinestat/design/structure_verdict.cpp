@@ -129,10 +129,28 @@ Verdict structure_verdict(const StructureModel& model, const StructureResult& d)
     steps.emplace_back(best.pair, best.action, best.becomes);
     now = std::get<0>(*best_key);
   }
+  // Steps on the same pair with the same action are one change to the pair's final state
+  // (release 1 -> 5 freedoms, not four changes 1 -> 2, 1 -> 3, ...), in the order first taken.
+  std::vector<std::tuple<std::size_t, std::string, std::string, int>> merged;  // pair, action, becomes, steps
   for (const auto& [k, action, becomes] : steps) {
+    const auto same = std::find_if(merged.begin(), merged.end(), [&, k = k, &action = action](const auto& m) {
+      return std::get<0>(m) == k && std::get<1>(m) == action;
+    });
+    if (same == merged.end()) {
+      merged.emplace_back(k, action, becomes, 1);
+    } else {
+      std::get<2>(*same) = becomes;
+      ++std::get<3>(*same);
+    }
+  }
+  for (const auto& [k, action, becomes, count] : merged) {
     const Pair& p = model.pairs[k];
-    v.changes.push_back({action, "pair", structure_pair_name(model, p), becomes,
-                         action == "drive" ? "drives a freedom no input drives" : "removes a constraint or input too many",
+    const std::string reason = action == "drive"
+                                   ? (count == 1 ? "drives a freedom no input drives"
+                                                 : fmt::format("drives {} freedoms no input drives", count))
+                                   : (count == 1 ? "removes a constraint or input too many"
+                                                 : fmt::format("removes {} constraints or inputs too many", count));
+    v.changes.push_back({action, "pair", structure_pair_name(model, p), becomes, reason,
                          fmt::format("{} freedom(s), {} input(s)", p.freedoms, p.inputs), {}});
   }
   const StructureResult after = structure::analyse_structure(current);
