@@ -36,6 +36,8 @@
       verdictBox.appendChild(text('p', title + ': ' + list.slice(0, 8).map((p) => p.name + ' (' + Math.round(100 * p.participation) + '%)').join(', ') +
         (list.length > 8 ? ', ...' : ''), 'note'));
     };
+    // The generic answer: what the topology gives and what only this geometry adds.
+    (v.special_geometry || []).forEach((sentence) => verdictBox.appendChild(text('p', 'Generic: ' + sentence, 'note')));
     where('Extra motion in', v.motion_participants);
     where('Redundancy in', v.constraint_participants);
     if (v.changes.length) {

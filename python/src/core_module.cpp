@@ -18,9 +18,11 @@
 #include "kinestat/design/structure_verdict.hpp"
 #include "kinestat/framework/framework_analysis.hpp"
 #include "kinestat/framework/framework_jacobian.hpp"
+#include "kinestat/framework/generic_framework.hpp"
 #include "kinestat/io/model_file.hpp"
 #include "kinestat/io/network_structure.hpp"
 #include "kinestat/network/analyse_network.hpp"
+#include "kinestat/network/generic_network.hpp"
 #include "kinestat/report/framework_report.hpp"
 #include "kinestat/report/html_writer.hpp"
 #include "kinestat/report/json_text.hpp"
@@ -49,6 +51,8 @@ struct Analysed {
   std::optional<structure::StructureResult> decomposition;
   std::optional<structure::TransformationSet> transformations;
   design::Verdict verdict;  ///< what every report leads with (design layer)
+  std::optional<network::GenericNetwork> network_generic;        ///< the generic answer, as `kinestat analyze`
+  std::optional<framework::GenericFramework> framework_generic;
 
   /// The scene of `kinestat draw` and `kinestat report` (src/cli/scene_loading.cpp).
   report::Scene scene() const {
@@ -88,11 +92,20 @@ std::shared_ptr<Analysed> analyse(const std::string& path, const std::optional<s
     if (!primary.empty()) options.primary = primary;
     analysed->network = io::analyse_network_file(*file.network, file.path, options);
     analysed->verdict = design::network_verdict(file.network->model, *analysed->network, options);
+    analysed->network_generic = network::generic_network(file.network->model, *analysed->network);
+    if (analysed->network_generic)
+      analysed->verdict.generic = report::network_generic_sentences(file.network->model, *analysed->network, *analysed->network_generic);
   } else if (file.framework) {
     framework::AnalysisOptions options;
     options.tolerances = Tolerances::with_rank(tolerance);
     analysed->framework = framework::analyse_framework(*file.framework, options);
+    // As src/cli/framework_command.cpp: the generic answer may re-choose the basis first.
+    analysed->framework_generic = framework::generic_framework(*file.framework, *analysed->framework);
+    if (analysed->framework_generic)
+      analysed->framework = framework::with_generic_basis(std::move(*analysed->framework), *analysed->framework_generic);
     analysed->verdict = design::framework_verdict(*file.framework, *analysed->framework, options);
+    if (analysed->framework_generic)
+      analysed->verdict.generic = report::framework_generic_sentences(*file.framework, *analysed->framework, *analysed->framework_generic);
   } else {
     analysed->structure_model = *file.structure;
     analysed->decomposition = structure::analyse_structure(*file.structure);
@@ -121,9 +134,12 @@ std::string json_report(const Analysed& a) {
   if (a.network) {
     report::NetworkReportOptions options;
     options.verdict = &a.verdict;
+    if (a.network_generic) options.generic = &*a.network_generic;
     return report::json_text(report::network_report_json(a.file.network->model, *a.network, options));
   }
-  if (a.framework) return report::json_text(report::framework_report_json(*a.file.framework, *a.framework, &a.verdict));
+  if (a.framework)
+    return report::json_text(report::framework_report_json(*a.file.framework, *a.framework, &a.verdict,
+                                                           a.framework_generic ? &*a.framework_generic : nullptr));
   if (!a.decomposition) throw py::value_error("the model has not been analysed");
   const report::StructureReport structure_report{*a.structure_model, *a.decomposition,
                                                  a.transformations ? &*a.transformations : nullptr,

@@ -8,6 +8,7 @@
 #include "cli/option_checks.hpp"
 #include "kinestat/design/framework_verdict.hpp"
 #include "kinestat/framework/framework_analysis.hpp"
+#include "kinestat/framework/generic_framework.hpp"
 #include "kinestat/report/framework_report.hpp"
 #include "kinestat/report/json_text.hpp"
 
@@ -51,12 +52,18 @@ int run_framework_analysis(const CommonOptions& options, const framework::Framew
   analysis_options.tolerances = Tolerances::with_rank(options.tolerance);
   analysis_options.dense_limit = static_cast<Eigen::Index>(dense_limit);
   analysis_options.sparse_vectors = static_cast<Eigen::Index>(sparse_vectors);
-  const framework::FrameworkResult analysis = framework::analyse_framework(model, analysis_options);
-  const design::Verdict verdict = design::framework_verdict(model, analysis, analysis_options);
+  framework::FrameworkResult analysis = framework::analyse_framework(model, analysis_options);
+  // The generic answer first: where only some modes or stress states persist it re-chooses
+  // their basis (one cause per vector), and the verdict describes that basis.
+  const std::optional<framework::GenericFramework> generic = framework::generic_framework(model, analysis);
+  if (generic) analysis = framework::with_generic_basis(std::move(analysis), *generic);
+  const framework::GenericFramework* shown = generic ? &*generic : nullptr;
+  design::Verdict verdict = design::framework_verdict(model, analysis, analysis_options);
+  if (generic) verdict.generic = report::framework_generic_sentences(model, analysis, *generic);
   if (options.json) {
-    emit(options, report::json_text(report::framework_report_json(model, analysis, &verdict)));
+    emit(options, report::json_text(report::framework_report_json(model, analysis, &verdict, shown)));
   } else {
-    emit(options, report::framework_report_text(model, analysis, &verdict));
+    emit(options, report::framework_report_text(model, analysis, &verdict, shown));
   }
   return 0;
 }

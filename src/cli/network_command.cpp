@@ -10,6 +10,7 @@
 #include "kinestat/design/sparse_network_verdict.hpp"
 #include "kinestat/io/network_reader.hpp"
 #include "kinestat/network/analyse_network.hpp"
+#include "kinestat/network/generic_network.hpp"
 #include "kinestat/network/sparse_network.hpp"
 #include "kinestat/report/json_text.hpp"
 #include "kinestat/report/network_report.hpp"
@@ -125,10 +126,15 @@ int run_network_analysis(const CommonOptions& common, const io::LoadedNetwork& l
                                             "too large; scale them down (units do not change the counts)",
                                             *overflowing));
   }
-  const design::Verdict verdict = design::network_verdict(loaded.model, result, options);
+  design::Verdict verdict = design::network_verdict(loaded.model, result, options);
   report::NetworkReportOptions report_options;
   report_options.matrices = o.matrices;
   report_options.verdict = &verdict;
+  const std::optional<network::GenericNetwork> generic = network::generic_network(loaded.model, result);
+  if (generic) {
+    report_options.generic = &*generic;
+    verdict.generic = report::network_generic_sentences(loaded.model, result, *generic);
+  }
   emit(common, common.json ? report::json_text(report::network_report_json(loaded.model, result, report_options))
                            : report::network_report_text(loaded.model, result, report_options));
   return 0;

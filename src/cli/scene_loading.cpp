@@ -6,11 +6,15 @@
 #include "kinestat/design/network_verdict.hpp"
 #include "kinestat/design/structure_verdict.hpp"
 #include "kinestat/framework/framework_analysis.hpp"
+#include "kinestat/framework/generic_framework.hpp"
 #include "kinestat/io/framework_reader.hpp"
 #include "kinestat/io/network_reader.hpp"
 #include "kinestat/io/network_structure.hpp"
 #include "kinestat/io/structure_reader.hpp"
 #include "kinestat/network/analyse_network.hpp"
+#include "kinestat/network/generic_network.hpp"
+#include "kinestat/report/framework_report.hpp"
+#include "kinestat/report/network_report.hpp"
 #include "kinestat/structure/decomposition.hpp"
 
 namespace kinestat::cli {
@@ -19,9 +23,12 @@ namespace {
 report::Scene framework_scene(const framework::FrameworkModel& model, std::optional<double> tolerance) {
   framework::AnalysisOptions options;
   options.tolerances = Tolerances::with_rank(tolerance);
-  const framework::FrameworkResult analysis = framework::analyse_framework(model, options);
+  framework::FrameworkResult analysis = framework::analyse_framework(model, options);
+  const std::optional<framework::GenericFramework> generic = framework::generic_framework(model, analysis);
+  if (generic) analysis = framework::with_generic_basis(std::move(analysis), *generic);  // as `analyze` shows it
   report::Scene scene = report::framework_scene(model, analysis);
   scene.verdict = design::framework_verdict(model, analysis, options);
+  if (generic) scene.verdict->generic = report::framework_generic_sentences(model, analysis, *generic);
   scene.units = model.units;
   return scene;
 }
@@ -50,6 +57,8 @@ LoadedScene load_scene(const std::string& path, std::optional<double> tolerance)
     }
     loaded.scene = report::network_scene(network.model, result);
     loaded.scene.verdict = design::network_verdict(network.model, result, options);
+    if (const auto generic = network::generic_network(network.model, result))
+      loaded.scene.verdict->generic = report::network_generic_sentences(network.model, result, *generic);
     loaded.scene.units = network.model.units;
     try {
       loaded.structure_model = io::structure_of_network(network, path);

@@ -52,6 +52,10 @@ struct Verdict {
   bool changes_verified = false;      ///< the changed design was re-analysed and is exactly constrained
   std::string becomes;                ///< what the changed design is, e.g. "exactly constrained, 1 motion"
   std::string note;                   ///< why no (verified) change is given, when that is so
+  /// The generic answer beside the given one, one sentence per count, e.g. "FN = 1, all from the
+  /// geometry of couplings A, B, C, D: generic FN = 0" (filled by the caller from
+  /// report::network_generic_sentences / framework_generic_sentences; empty when not computed).
+  std::vector<std::string> generic;
 };
 
 /// Sorts participants by decreasing participation; equal shares keep their order.

@@ -51,7 +51,8 @@ std::pair<std::vector<Eigen::Index>, std::vector<Eigen::Index>> pivot_columns(co
   return {kept, rest};
 }
 
-// Modes from a basis of the null space of D(c) (columns, already in D̂'s units and normalised).
+}  // namespace
+
 void collect_modes(FrameworkResult& result, const Eigen::MatrixXd& basis) {
   for (Eigen::Index j = 0; j < basis.cols(); ++j) {
     KinematicMode mode{basis.col(j), {}};
@@ -61,7 +62,6 @@ void collect_modes(FrameworkResult& result, const Eigen::MatrixXd& basis) {
   }
 }
 
-// Stress states from a basis of the null space of D(c)ᵀ; candidates are the fixed rows.
 void collect_stresses(FrameworkResult& result, const Eigen::MatrixXd& basis) {
   const auto fixed_rows = static_cast<Eigen::Index>(result.partition.fixed_deformations.size());
   for (Eigen::Index j = 0; j < basis.cols(); ++j) {
@@ -71,6 +71,8 @@ void collect_stresses(FrameworkResult& result, const Eigen::MatrixXd& basis) {
     result.stresses.push_back(std::move(state));
   }
 }
+
+namespace {
 
 // Rows of independent deformations (ε^m) are weighted up so that a pivoting QR keeps them
 // whenever it has a choice: the proposal should release rigid deformations, not demote a

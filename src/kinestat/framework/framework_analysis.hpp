@@ -94,6 +94,13 @@ using FrameworkAnalysis = FrameworkResult;
 /// decision is made on, S_r D̂ S_c (non-dimensional, m × n).
 Eigen::SparseMatrix<double> prepare_analysis(const FrameworkModel& model, FrameworkResult& result);
 
+/// Appends one mode per column of `basis` (a basis of the null space of D(c), in D̂'s units,
+/// normalised), with its moving coordinates.
+void collect_modes(FrameworkAnalysis& result, const Eigen::MatrixXd& basis);
+/// Appends one stress state per column of `basis` (of the null space of D(c)ᵀ, normalised);
+/// candidates are the fixed rows with a non-zero resultant.
+void collect_stresses(FrameworkAnalysis& result, const Eigen::MatrixXd& basis);
+
 /// Runs the analysis of seed 002 on `model`.
 FrameworkResult analyse_framework(const FrameworkModel& model, const AnalysisOptions& options = {});
 

@@ -9,6 +9,7 @@
 
 #include "kinestat/graph/coupling_graph.hpp"
 #include "kinestat/linalg/svd_analysis.hpp"
+#include "kinestat/linalg/modular_rank.hpp"
 #include "kinestat/network/analysis_frame.hpp"
 #include "kinestat/network/magnitude_names.hpp"
 #include "kinestat/network/unit_matrices.hpp"
@@ -238,6 +239,43 @@ void check_connected(const Model& model, const graph::CouplingGraph& graph) {
                                components.size(), list));
 }
 
+double elimination_work(int rows, int cols) {
+  return static_cast<double>(rows) * cols * std::min(rows, cols);
+}
+
+// A relative tolerance that makes decide_rank keep exactly `rank` of `singular_values`: the
+// geometric mean of the last kept and the first dropped value.
+Tolerances tolerance_for_rank(Tolerances t, const Eigen::VectorXd& singular_values, Index rank) {
+  const double largest = singular_values.size() > 0 ? singular_values(0) : 0.0;
+  if (largest <= 0.0 || rank >= singular_values.size()) {
+    t.rank = 0.0;
+  } else if (rank <= 0) {
+    t.rank = 1.0;
+  } else {
+    const double kept = singular_values(rank - 1), dropped = singular_values(rank);
+    t.rank = (dropped > 0.0 ? std::sqrt(kept * dropped) : kept / 2) / largest;
+  }
+  return t;
+}
+
+// The rank of the user's (rational) M^N modulo large primes is a certain lower bound of its
+// exact rank, and equal to it unless both primes divide every non-zero maximal minor. The
+// floating-point decisions follow it when they differ (a = C - (d l - m) by the identities),
+// unless `follow` is false (the user set the tolerance).
+void certify_ranks(NetworkResult& r, const RationalMatrix& user_mn, const UnitMatrices& solved, const Tolerances& base, bool follow) {
+  const linalg::ModularRank check = linalg::modular_rank(user_mn);
+  r.modular_check = ModularCheck{static_cast<int>(check.rank), check.primes, check.agreeing, false};
+  if (!follow || check.primes == 0 || check.rank == r.circulation.solution.rank.rank) return;
+  const Index m = check.rank, a = r.C - (static_cast<Index>(r.d) * r.l - m);
+  const Eigen::VectorXd motion_values = r.circulation.solution.singular_values;
+  const Eigen::VectorXd action_values = r.cutset_law.solution.singular_values;
+  r.circulation.solution = solve(solved.MN, false, tolerance_for_rank(base, motion_values, m), 0.0);
+  r.circuit_action.solution = solve(solved.MN.transpose(), false, tolerance_for_rank(base, motion_values, m), 0.0);
+  r.cutset_law.solution = solve(solved.AN, false, tolerance_for_rank(base, action_values, a), 0.0);
+  r.cutset_motion.solution = solve(solved.AN.transpose(), false, tolerance_for_rank(base, action_values, a), 0.0);
+  r.modular_check->followed = true;
+}
+
 bool choose_exact(const Model& model, Arithmetic arithmetic, std::string& reason) {
   switch (arithmetic) {
     case Arithmetic::exact: reason = "exact rational arithmetic (requested)"; return true;
@@ -296,18 +334,32 @@ NetworkResult analyse_network(const Model& model, const AnalysisOptions& options
 
   // Bases in the user's frame (reported) and in the analysis frame (solved).
   r.exact = choose_exact(model, options.arithmetic, r.arithmetic_reason);
-  const AnalysisFrame frame = r.exact ? AnalysisFrame{} : AnalysisFrame::of(model);
-  r.length_scale = frame.scale.get_d();
-  std::vector<screw::CouplingBasis> user_bases, frame_bases;
-  for (std::size_t i = 0; i < model.couplings.size(); ++i) {
+  const auto basis_of = [&](std::size_t i, const screw::CouplingGeometry& geometry) {
     const auto& c = model.couplings[i];
     try {
-      user_bases.push_back(screw::coupling_basis(c.type, c.geometry, model.space));
-      frame_bases.push_back(screw::coupling_basis(c.type, frame.to_frame(c.geometry, model.space), model.space));
+      return screw::coupling_basis(c.type, geometry, model.space);
     } catch (const screw::GeometryError& error) {
       throw ModelError("couplings", static_cast<int>(i), fmt::format("coupling '{}': {}", c.name, error.what()));
     }
+  };
+  std::vector<screw::CouplingBasis> user_bases, frame_bases;
+  for (std::size_t i = 0; i < model.couplings.size(); ++i) user_bases.push_back(basis_of(i, model.couplings[i].geometry));
+  // Large models of short decimals: floating point, its ranks checked by modular arithmetic.
+  int freedoms = 0;
+  for (const auto& b : user_bases) freedoms += static_cast<int>(b.motions.size());
+  const bool certify = r.exact && options.arithmetic == Arithmetic::automatic &&
+                       elimination_work(d * r.l, freedoms) > kExactEliminationWork;
+  if (certify) {
+    r.exact = false;
+    r.arithmetic_reason = fmt::format(
+        "floating point with ranks checked by modular arithmetic: every number is a short decimal, but exact elimination of "
+        "the {} x {} matrix M^N would be slow",
+        d * r.l, freedoms);
   }
+  const AnalysisFrame frame = r.exact ? AnalysisFrame{} : AnalysisFrame::of(model);
+  r.length_scale = frame.scale.get_d();
+  for (std::size_t i = 0; i < model.couplings.size(); ++i)
+    frame_bases.push_back(basis_of(i, frame.to_frame(model.couplings[i].geometry, model.space)));
   const UnitMatrices user = unit_matrices(user_bases, d, r.B, r.Q);
   const UnitMatrices solved = unit_matrices(frame_bases, d, r.B, r.Q);
   r.BM = user.BM;
@@ -340,6 +392,8 @@ NetworkResult analyse_network(const Model& model, const AnalysisOptions& options
   r.cutset_law.solution = solve(solved.AN, r.exact, tol, rounding);
   r.cutset_motion.solution = solve(solved.AN.transpose(), r.exact, tol, rounding);
   r.circuit_action.solution = solve(solved.MN.transpose(), r.exact, tol, rounding);
+  // A tolerance the user chose is kept; the check is still reported.
+  if (certify) certify_ranks(r, user.MN, solved, tol, !tol.rank);
   if (!r.exact) {
     // The conditioned frame mixes the d rows of each circuit (cutset), so the rows that are
     // redundant there are not the user's: choose them again on the user's M^N and A^N.

@@ -63,6 +63,15 @@ struct MethodResult {
   LinearForms contracted;                ///< rows: coupling 0 coordinates 0..d-1, coupling 1, ...
 };
 
+/// The rank of the user's rational M^N modulo large primes, beside a floating-point analysis of a
+/// model of short decimals too large for exact elimination (analyse_network, automatic).
+struct ModularCheck {
+  int rank = 0;           ///< certain lower bound of the exact rank of M^N (equal to it but for unlucky primes)
+  int primes = 0;         ///< primes used
+  int agreeing = 0;       ///< primes that gave `rank`
+  bool followed = false;  ///< the floating-point decisions differed and were moved to this rank
+};
+
 struct NetworkResult {
   std::string model_name;
   bool exact = false;                 ///< exact rational arithmetic was used
@@ -109,6 +118,9 @@ struct NetworkResult {
   /// When exact arithmetic was used on long literals: the floating-point FN and CN, if they
   /// differ (the geometry is within rounding of a configuration with other FN, CN).
   std::optional<std::pair<int, int>> floating_point_disagreement;
+
+  /// Set when the ranks were decided in floating point and checked by modular arithmetic.
+  std::optional<ModularCheck> modular_check;
 };
 
 }  // namespace kinestat::network

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "kinestat/io/printable_text.hpp"
+#include "kinestat/report/generic_text.hpp"
 #include "kinestat/report/verdict_report.hpp"
 #include "kinestat/tolerances.hpp"
 
@@ -74,7 +75,97 @@ nlohmann::ordered_json velocities_by_node(const FrameworkModel& model, const Fra
   return nodes;
 }
 
+// Names of the parts that take part in the states of cause `geometry`: the nodes the modes move
+// and the elements the stress states load, in model order.
+std::vector<std::string> geometric_nodes(const FrameworkModel& model, const FrameworkResult& a, const framework::GenericFramework& g) {
+  std::vector<bool> involved(model.nodes.size(), false);
+  for (std::size_t k = 0; k < a.modes.size() && k < g.mode_causes.size(); ++k)
+    if (g.mode_causes[k] == linalg::Cause::geometry)
+      for (Eigen::Index col : a.modes[k].moving)
+        if (std::abs(a.modes[k].velocities(col)) > kinestat::kModeZero) involved[column_ref(a, col).node] = true;
+  std::vector<std::string> names;
+  for (std::size_t n = 0; n < involved.size(); ++n)
+    if (involved[n]) names.push_back(model.nodes[n].name);
+  return names;
+}
+
+std::vector<std::string> geometric_elements(const FrameworkModel& model, const FrameworkResult& a, const framework::GenericFramework& g) {
+  std::vector<bool> involved(model.elements.size(), false);
+  for (std::size_t k = 0; k < a.stresses.size() && k < g.stress_causes.size(); ++k)
+    if (g.stress_causes[k] == linalg::Cause::geometry)
+      for (Eigen::Index row = 0; row < a.stresses[k].resultants.size(); ++row)
+        if (std::abs(a.stresses[k].resultants(row)) > kinestat::kModeZero) involved[row_ref(a, row).element] = true;
+  std::vector<std::string> names;
+  for (std::size_t e = 0; e < involved.size(); ++e)
+    if (involved[e]) names.push_back(model.elements[e].name);
+  return names;
+}
+
+std::string generic_method(const framework::GenericFramework& g) {
+  return g.exact ? fmt::format("exact rank of D(c) (bars, modulo primes) at {} random realisations", g.realisations)
+                 : fmt::format("SVD rank of D(c) at {} random realisations (floating point: beams or rigid bodies)", g.realisations);
+}
+
+std::vector<std::string> printable_all(const std::vector<std::string>& names) {
+  std::vector<std::string> out;
+  for (const auto& n : names) out.push_back(io::printable_text(n));
+  return out;
+}
+
+std::vector<std::string> generic_explanation(const FrameworkModel& model, const FrameworkResult& a, const framework::GenericFramework& g,
+                                             bool printable) {
+  auto nodes = geometric_nodes(model, a, g), elements = geometric_elements(model, a, g);
+  if (printable) {
+    nodes = printable_all(nodes);
+    elements = printable_all(elements);
+  }
+  return {generic_count_text("mechanisms", a.mechanisms, g.mechanisms, nodes, "nodes"),
+          generic_count_text("self_stresses", a.self_stresses, g.self_stresses, elements, "elements")};
+}
+
+std::string component_text(const FrameworkModel& model, const framework::LamanCount::Component& component) {
+  std::vector<std::string> names;
+  if (component.ground) names.push_back("ground");
+  for (std::size_t n : component.nodes) names.push_back(io::printable_text(model.nodes[n].name));
+  return fmt::format("{{{}}}", fmt::join(names, ", "));
+}
+
+nlohmann::ordered_json generic_json(const FrameworkModel& model, const FrameworkResult& a, const framework::GenericFramework& g) {
+  nlohmann::ordered_json j;
+  j["mechanisms"] = g.mechanisms;
+  j["self_stresses"] = g.self_stresses;
+  j["rank"] = g.rank;
+  j["method"] = generic_method(g);
+  j["exact"] = g.exact;
+  j["special"] = {{"mechanisms", a.mechanisms - g.mechanisms}, {"self_stresses", a.self_stresses - g.self_stresses}};
+  j["split_residual"] = std::round(g.split_residual * 1e6) / 1e6;
+  j["special_nodes"] = geometric_nodes(model, a, g);
+  j["special_elements"] = geometric_elements(model, a, g);
+  j["explanation"] = generic_explanation(model, a, g, false);
+  if (g.laman) {
+    nlohmann::ordered_json components = nlohmann::ordered_json::array();
+    for (const auto& c : g.laman->rigid_components) {
+      std::vector<std::string> names;
+      for (std::size_t n : c.nodes) names.push_back(model.nodes[n].name);
+      components.push_back({{"nodes", names}, {"ground", c.ground}});
+    }
+    j["laman"] = {{"rank", g.laman->rank},
+                  {"mechanisms", g.laman->mechanisms},
+                  {"self_stresses", g.laman->self_stresses},
+                  {"agrees", g.laman->rank == g.rank},
+                  {"rigid_components", components}};
+  } else {
+    j["laman"] = nullptr;
+  }
+  return j;
+}
+
 }  // namespace
+
+std::vector<std::string> framework_generic_sentences(const FrameworkModel& model, const FrameworkResult& analysis,
+                                                     const framework::GenericFramework& generic) {
+  return generic_explanation(model, analysis, generic, false);
+}
 
 std::string framework_row_label(const FrameworkModel& model, const FrameworkResult& analysis, Eigen::Index row) {
   const auto& d = row_ref(analysis, row);
@@ -91,7 +182,8 @@ std::string framework_classification(const FrameworkResult& a) {
                      a.kinematically_determinate() ? "determinate" : "indeterminate");
 }
 
-nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const FrameworkResult& a, const design::Verdict* verdict) {
+nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const FrameworkResult& a, const design::Verdict* verdict,
+                                             const framework::GenericFramework* generic) {
   nlohmann::ordered_json j;
   j["kind"] = "framework";
   if (!model.name.empty()) j["name"] = model.name;
@@ -106,6 +198,7 @@ nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const 
   j["exactly_constrained"] = a.exactly_constrained();
   j["mechanisms"] = a.mechanisms;
   j["self_stresses"] = a.self_stresses;
+  if (generic) j["generic"] = generic_json(model, a, *generic);
   const auto& c = a.count;
   j["count"] = {{"coordinates", c.coordinates},
                 {"fixed_coordinates", c.fixed_coordinates},
@@ -154,6 +247,8 @@ nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const 
     m["velocities"] = velocities_by_node(model, a, mode.velocities);
     m["moving"] = nlohmann::ordered_json::array();
     for (Eigen::Index col : mode.moving) m["moving"].push_back(framework_column_label(model, a, col));
+    const auto k = j["modes"].size();
+    if (generic && k < generic->mode_causes.size()) m["cause"] = linalg::cause_name(generic->mode_causes[k]);
     j["modes"].push_back(std::move(m));
   }
   j["stresses"] = nlohmann::ordered_json::array();
@@ -171,6 +266,8 @@ nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const 
     }
     s["candidates"] = nlohmann::ordered_json::array();
     for (Eigen::Index row : state.candidates) s["candidates"].push_back(framework_row_label(model, a, row));
+    const auto k = j["stresses"].size();
+    if (generic && k < generic->stress_causes.size()) s["cause"] = linalg::cause_name(generic->stress_causes[k]);
     j["stresses"].push_back(std::move(s));
   }
   j["releases"] = nlohmann::ordered_json::array();
@@ -188,7 +285,8 @@ nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const 
   return j;
 }
 
-std::string framework_report_text(const FrameworkModel& model, const FrameworkResult& a, const design::Verdict* verdict) {
+std::string framework_report_text(const FrameworkModel& model, const FrameworkResult& a, const design::Verdict* verdict,
+                                  const framework::GenericFramework* generic) {
   using io::printable_text;
   std::string out = verdict ? verdict_text(*verdict) : std::string();
   auto line = [&out](const std::string& text) { out += text + "\n"; };
@@ -228,17 +326,33 @@ std::string framework_report_text(const FrameworkModel& model, const FrameworkRe
   line(fmt::format("classification: {}", framework_classification(a)));
   line(fmt::format("{} kinematically indeterminate mode(s), {} statically indeterminate stress state(s){}", a.mechanisms,
                    a.self_stresses, a.exactly_constrained() ? ": exactly constrained" : ""));
+  if (generic) {
+    line(fmt::format("generic answer (the same nodes, elements and supports at a random realisation): {} mode(s), {} stress state(s); {}",
+                     generic->mechanisms, generic->self_stresses, generic_method(*generic)));
+    for (const auto& sentence : generic_explanation(model, a, *generic, true)) line("  " + sentence);
+    if (generic->laman) {
+      std::vector<std::string> components;
+      for (const auto& component : generic->laman->rigid_components) components.push_back(component_text(model, component));
+      line(fmt::format("  Laman count (pebble game): rank {}, {} mode(s), {} stress state(s){}; rigid components: {}", generic->laman->rank,
+                       generic->laman->mechanisms, generic->laman->self_stresses,
+                       generic->laman->rank == generic->rank ? ", agrees" : ", DISAGREES with the generic rank",
+                       components.empty() ? "-" : fmt::format("{}", fmt::join(components, " "))));
+    }
+  }
   if (compact(a) && a.vectors)
     line(fmt::format("vectors from the sparse R factors: first {} of {} mode(s), first {} of {} stress state(s); "
                      "largest relative residual {}",
                      a.modes.size(), a.mechanisms, a.stresses.size(), a.self_stresses, evidence(a.null_space_residual)));
   for (std::size_t k = 0; k < a.modes.size(); ++k) {
-    line(fmt::format("mode {} (velocities; translations per characteristic length):", k + 1));
+    const std::string cause = generic && k < generic->mode_causes.size() ? ", from the " + linalg::cause_name(generic->mode_causes[k]) : "";
+    line(fmt::format("mode {} (velocities; translations per characteristic length){}:", k + 1, cause));
     for (Eigen::Index col : a.modes[k].moving)
       line(fmt::format("  {:>16} {:>12}", column_label(col), number(a.modes[k].velocities(col))));
   }
   for (std::size_t k = 0; k < a.stresses.size(); ++k) {
-    line(fmt::format("stress state {} (generalised stress resultants):", k + 1));
+    const std::string cause =
+        generic && k < generic->stress_causes.size() ? ", from the " + linalg::cause_name(generic->stress_causes[k]) : "";
+    line(fmt::format("stress state {} (generalised stress resultants){}:", k + 1, cause));
     for (Eigen::Index row = 0; row < a.stresses[k].resultants.size(); ++row)
       if (a.stresses[k].resultants(row) != 0.0)
         line(fmt::format("  {:>24} {:>12}", row_label(row), number(a.stresses[k].resultants(row))));

@@ -9,6 +9,7 @@
 
 #include "kinestat/design/verdict.hpp"
 #include "kinestat/framework/framework_analysis.hpp"
+#include "kinestat/framework/generic_framework.hpp"
 #include "kinestat/framework/framework_model.hpp"
 
 namespace kinestat::report {
@@ -22,13 +23,21 @@ std::string framework_column_label(const framework::FrameworkModel& model, const
 /// Table 1 class, e.g. "statically indeterminate, kinematically determinate".
 std::string framework_classification(const framework::FrameworkResult& analysis);
 
+/// The generic answer in one sentence per count (mechanisms, self-stresses), raw names.
+std::vector<std::string> framework_generic_sentences(const framework::FrameworkModel& model, const framework::FrameworkResult& analysis,
+                                                     const framework::GenericFramework& generic);
+
 /// The report as JSON (keys documented in docs/framework.md).
-/// With a `verdict`, the report leads with it (design::framework_verdict decides it).
+/// With a `verdict`, the report leads with it (design::framework_verdict decides it); with a
+/// `generic` answer (framework::generic_framework), it has `generic` and every mode and stress
+/// state a `cause`.
 nlohmann::ordered_json framework_report_json(const framework::FrameworkModel& model,
                                              const framework::FrameworkResult& analysis,
-                                             const design::Verdict* verdict = nullptr);
+                                             const design::Verdict* verdict = nullptr,
+                                             const framework::GenericFramework* generic = nullptr);
 /// The report as readable text, the verdict block first when given.
 std::string framework_report_text(const framework::FrameworkModel& model, const framework::FrameworkResult& analysis,
-                                  const design::Verdict* verdict = nullptr);
+                                  const design::Verdict* verdict = nullptr,
+                                  const framework::GenericFramework* generic = nullptr);
 
 }  // namespace kinestat::report

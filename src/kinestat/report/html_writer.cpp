@@ -55,6 +55,7 @@ nlohmann::ordered_json verdict_json(const design::Verdict& v) {
     j["changes"].push_back({{"action", c.action}, {"target_kind", c.target_kind}, {"target", c.target}, {"becomes", c.becomes}, {"reason", c.reason}});
   j["changes_verified"] = v.changes_verified;
   j["becomes"] = v.becomes;
+  if (!v.generic.empty()) j["special_geometry"] = v.generic;
   return j;
 }
 

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "kinestat/io/printable_text.hpp"
+#include "kinestat/report/generic_text.hpp"
 #include "kinestat/report/linear_form_text.hpp"
 #include "kinestat/report/verdict_report.hpp"
 #include "kinestat/tolerances.hpp"
@@ -188,8 +189,78 @@ Json value_json(double value) { return std::isnan(value) ? Json(nullptr) : Json(
 
 std::string joined_or_dash(const std::vector<std::string>& names) { return names.empty() ? "-" : fmt::format("{}", fmt::join(names, ", ")); }
 
+std::string generic_method(const network::GenericNetwork& g) {
+  return fmt::format("rank of M^N at {} random realisations of the same couplings, each modulo {} primes (exact)", g.realisations,
+                     g.primes);
+}
+
+std::vector<std::string> special_coupling_names(const network::Model& model, const network::GenericNetwork& g) {
+  std::vector<std::string> names;
+  if (g.special_couplings)
+    for (int e : *g.special_couplings) names.push_back(model.couplings[static_cast<std::size_t>(e)].name);
+  return names;
+}
+
+// The primaries of one cause, e.g. "sa, ta".
+std::vector<std::string> primaries_of(const std::vector<std::string>& primaries, const std::vector<network::Cause>& causes,
+                                      network::Cause cause) {
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < primaries.size() && i < causes.size(); ++i)
+    if (causes[i] == cause) out.push_back(primaries[i]);
+  return out;
+}
+
+std::string generic_text(const network::Model& model, const NetworkResult& r, const network::GenericNetwork& g,
+                         const std::vector<std::string>& motion_primaries, const std::vector<std::string>& action_primaries) {
+  const auto involved = printable_names(special_coupling_names(model, g));
+  std::string t = fmt::format("Generic answer (the same couplings at a random realisation): FN = {}, CN = {}; m = {} by the {}\n", g.FN,
+                              g.CN, g.m, generic_method(g));
+  t += "  " + generic_count_text("FN", r.FN, g.FN, involved, "couplings") + "\n";
+  t += "  " + generic_count_text("CN", r.CN, g.CN, involved, "couplings") + "\n";
+  auto causes_line = [&](const char* what, const std::vector<std::string>& primaries, const std::vector<network::Cause>& causes) {
+    const auto topology = primaries_of(primaries, causes, network::Cause::topology);
+    const auto geometry = primaries_of(primaries, causes, network::Cause::geometry);
+    if (!primaries.empty())
+      t += fmt::format("  {} by primary variable: topology {}; geometry {}\n", what, joined_or_dash(topology), joined_or_dash(geometry));
+  };
+  causes_line("motions", motion_primaries, g.motion_causes);
+  causes_line("self-stresses", action_primaries, g.action_causes);
+  if (g.special_couplings && !g.special_couplings->empty())
+    t += fmt::format("  special geometry: a random change of any one of couplings {} alone removes a special motion or self-stress\n",
+                     fmt::join(involved, ", "));
+  return t;
+}
+
+Json generic_json(const network::Model& model, const NetworkResult& r, const network::GenericNetwork& g,
+                  const std::vector<std::string>& motion_primaries, const std::vector<std::string>& action_primaries) {
+  Json j;
+  j["FN"] = g.FN;
+  j["CN"] = g.CN;
+  j["rank_motion"] = g.m;
+  j["method"] = generic_method(g);
+  j["special"] = {{"FN", r.FN - g.FN}, {"CN", r.CN - g.CN}};
+  auto states = [](const std::vector<std::string>& primaries, const std::vector<network::Cause>& causes) {
+    Json out = Json::array();
+    for (std::size_t i = 0; i < primaries.size() && i < causes.size(); ++i)
+      out.push_back({{"primary", primaries[i]}, {"cause", network::cause_name(causes[i])}});
+    return out;
+  };
+  j["motions"] = states(motion_primaries, g.motion_causes);
+  j["self_stresses"] = states(action_primaries, g.action_causes);
+  j["split_residual"] = std::round(g.split_residual * 1e6) / 1e6;
+  if (g.special_couplings) j["special_couplings"] = special_coupling_names(model, g);
+  else j["special_couplings"] = nullptr;
+  j["explanation"] = network_generic_sentences(model, r, g);
+  return j;
+}
+
 
 }  // namespace
+
+std::vector<std::string> network_generic_sentences(const network::Model& model, const NetworkResult& r, const network::GenericNetwork& g) {
+  const auto involved = special_coupling_names(model, g);
+  return {generic_count_text("FN", r.FN, g.FN, involved, "couplings"), generic_count_text("CN", r.CN, g.CN, involved, "couplings")};
+}
 
 std::string network_report_text(const network::Model& model, const NetworkResult& r, const NetworkReportOptions& options) {
   const auto motion_primaries = printable_names(names_of(r.primary_motion, r.motions));
@@ -203,12 +274,17 @@ std::string network_report_text(const network::Model& model, const NetworkResult
   t += fmt::format("  gross degree of freedom F = {}, gross degree of constraint C = {}\n", r.F, r.C);
   t += fmt::format("  rank of the network unit motion matrix: {}\n", rank_text("m", r.circulation.solution.rank));
   t += fmt::format("  rank of the network unit action matrix: {}\n", rank_text("a", r.cutset_law.solution.rank));
+  if (r.modular_check)
+    t += fmt::format("  modular check: M^N has rank {} modulo {} large primes ({} agree), a certain lower bound of its exact rank; {}\n",
+                     r.modular_check->rank, r.modular_check->primes, r.modular_check->agreeing,
+                     r.modular_check->followed ? "the floating-point decisions were moved to it" : "the floating-point decision agrees");
   t += fmt::format("  nett degree of freedom    FN = {}\n", r.FN);
   t += fmt::format("  nett degree of constraint CN = {}\n", r.CN);
   t += fmt::format("  class: {}\n", network::class_description(r.classification));
   t += fmt::format("  identities FN = F - m = d*k - a, CN = C - a = d*l - m, FN - CN = F - d*l: {}\n",
                    r.identities_hold ? "hold" : "FAIL");
   t += "\n";
+  if (options.generic) t += generic_text(model, r, *options.generic, motion_primaries, action_primaries) + "\n";
   std::vector<std::string> branch_names, chord_names;
   for (int b : r.branches) branch_names.push_back(coupling_name(static_cast<std::size_t>(b)));
   for (int c : r.chords) chord_names.push_back(coupling_name(static_cast<std::size_t>(c)));
@@ -309,7 +385,13 @@ Json network_report_json(const network::Model& model, const NetworkResult& r, co
   j["classification"] = network::class_id(r.classification);
   j["classification_description"] = network::class_description(r.classification);
   j["identities_hold"] = r.identities_hold;
+  if (options.generic) j["generic"] = generic_json(model, r, *options.generic, motion_primaries, action_primaries);
   j["rank_evidence"] = {{"motion", rank_json(r.circulation.solution.rank)}, {"action", rank_json(r.cutset_law.solution.rank)}};
+  if (r.modular_check)
+    j["rank_evidence"]["modular"] = {{"rank_motion", r.modular_check->rank},
+                                     {"primes", r.modular_check->primes},
+                                     {"agreeing", r.modular_check->agreeing},
+                                     {"followed", r.modular_check->followed}};
   if (!r.exact) j["length_scale"] = r.length_scale;
   Json branches = Json::array(), chords = Json::array();
   for (int b : r.branches) branches.push_back(model.couplings[static_cast<std::size_t>(b)].name);

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "kinestat/design/verdict.hpp"
+#include "kinestat/network/generic_network.hpp"
 #include "kinestat/network/model.hpp"
 #include "kinestat/network/network_result.hpp"
 #include "kinestat/network/sparse_network.hpp"
@@ -15,6 +16,7 @@ namespace kinestat::report {
 struct NetworkReportOptions {
   bool matrices = false;  ///< include B, Q, BM, QA, M^D, A^D, M^N, A^N
   const design::Verdict* verdict = nullptr;  ///< printed first when given (design::network_verdict)
+  const network::GenericNetwork* generic = nullptr;  ///< the generic answer (network::generic_network), when computed
 };
 
 /// Human-readable report: summary with rank evidence, class, primaries, magnitudes,
@@ -26,6 +28,10 @@ std::string network_report_text(const network::Model& model, const network::Netw
 /// byte-identical output.
 nlohmann::ordered_json network_report_json(const network::Model& model, const network::NetworkResult& result,
                                     const NetworkReportOptions& options = {});
+
+/// The generic answer in one sentence per count (FN, CN), raw names (not escaped).
+std::vector<std::string> network_generic_sentences(const network::Model& model, const network::NetworkResult& result,
+                                                   const network::GenericNetwork& generic);
 
 /// Bounded report of the sparse path: the verdict first when given
 /// (design::sparse_network_verdict), counts, class, rank evidence (also of the basis vectors the

@@ -94,6 +94,7 @@ Json verdict_json(const design::Verdict& v) {
   j["changes_verified"] = v.changes_verified;
   j["becomes"] = v.becomes;
   if (!v.note.empty()) j["note"] = v.note;
+  if (!v.generic.empty()) j["special_geometry"] = v.generic;
   return j;
 }
 
@@ -107,6 +108,7 @@ Json lead_with_verdict(const design::Verdict& verdict, const Json& report, const
 
 std::string verdict_text(const design::Verdict& v) {
   std::string t = fmt::format("Verdict: {}\n", printable_text(v.summary));
+  for (const auto& sentence : v.generic) t += fmt::format("  generic: {}\n", printable_text(sentence));
   for (const auto& s : v.states) {
     t += fmt::format("  {}: {}\n", s.kind, printable_text(s.description));
     for (std::size_t i = 0; i < s.participants.size() && i < kTextParticipants; ++i) {
