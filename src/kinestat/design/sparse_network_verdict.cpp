@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <Eigen/Geometry>
+#include <Eigen/SVD>
 
 #include <algorithm>
 #include <cmath>
@@ -26,9 +27,35 @@ constexpr double kShareZero = 1e-12;
 
 std::string counted(std::size_t n, const char* one, const char* many) { return fmt::format("{} {}", n, n == 1 ? one : many); }
 
-// Idle spins body by body: each body with its own couplings, all ending at one stand-in for the
-// rest of the network (the ground of the small model), so the cost is linear in the couplings.
-std::vector<IdleMotion> idle_spins(const Model& model, int ground, const linalg::RankTolerance& tolerance) {
+// A body's own unit actions (its column block of K) whose smallest singular value exceeds this
+// share of the largest span every twist: the body cannot spin idle. Far above rounding (1e-16)
+// and above any rank tolerance the screen is used with (see spins_freely), so the screen never
+// hides a spin the small-model analysis below would find; closer cases go to that analysis.
+constexpr double kClearlyFullRank = 1e-4;
+
+// True unless body b's actions in K (the rows of its own couplings in its column block, the
+// conditioned frame) clearly span all d twists: a floating-point screen that keeps the exact
+// small-model analysis below for the bodies that might spin (most bodies of a network cannot).
+bool may_spin(const SparseNetworkResult& r, int b, const linalg::RankTolerance& tolerance) {
+  if (r.K.cols() == 0) return true;
+  const Index d = r.d, first = (b < r.ground ? b : b - 1) * d;
+  std::map<Index, Index> local;  // row of K -> row of the block
+  for (Index k = 0; k < d; ++k)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(r.K, first + k); it; ++it) local.try_emplace(it.row(), static_cast<Index>(local.size()));
+  if (static_cast<Index>(local.size()) < d) return true;
+  Eigen::MatrixXd block = Eigen::MatrixXd::Zero(static_cast<Index>(local.size()), d);
+  for (Index k = 0; k < d; ++k)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(r.K, first + k); it; ++it) block(local[it.row()], k) = it.value();
+  const Eigen::VectorXd sigma = Eigen::JacobiSVD<Eigen::MatrixXd>(block).singularValues();
+  const double relative = tolerance.relative.value_or(linalg::default_relative_tolerance(block.rows(), d));
+  return !(sigma(d - 1) > std::max(kClearlyFullRank, 100.0 * relative) * sigma(0));
+}
+
+// Idle spins body by body: each body that may spin (may_spin) with its own couplings, all ending
+// at one stand-in for the rest of the network (the ground of the small model), so the cost is
+// linear in the couplings.
+std::vector<IdleMotion> idle_spins(const Model& model, const SparseNetworkResult& r, const linalg::RankTolerance& tolerance) {
+  const int ground = r.ground;
   std::vector<std::vector<std::size_t>> touching(model.bodies.size());
   for (std::size_t i = 0; i < model.couplings.size(); ++i) {
     touching[static_cast<std::size_t>(model.couplings[i].from)].push_back(i);
@@ -36,7 +63,7 @@ std::vector<IdleMotion> idle_spins(const Model& model, int ground, const linalg:
   }
   std::vector<IdleMotion> spins;
   for (std::size_t b = 0; b < model.bodies.size(); ++b) {
-    if (static_cast<int>(b) == ground || touching[b].size() < 2) continue;
+    if (static_cast<int>(b) == ground || touching[b].size() < 2 || !may_spin(r, static_cast<int>(b), tolerance)) continue;
     Model star;
     star.space = model.space;
     star.bodies = {model.bodies[b], "the rest"};
@@ -189,7 +216,7 @@ void add_unlisted(std::vector<Participant>& listed, const std::string& kind, con
 Verdict sparse_network_verdict(const Model& model, const SparseNetworkResult& r, const linalg::RankTolerance& tolerance) {
   Verdict v;
   const Conditioning frame{r.frame_origin, r.frame_scale};
-  const std::vector<IdleMotion> idle = idle_spins(model, r.ground, tolerance);
+  const std::vector<IdleMotion> idle = idle_spins(model, r, tolerance);
   int idle_count = 0;
   for (const auto& i : idle) idle_count += i.count;
   const int moving = r.FN - idle_count;  // motions that are not idle spins
