@@ -13,6 +13,7 @@
 #include "kinestat/design/network_verdict.hpp"
 #include "kinestat/design/screw_text.hpp"
 #include "kinestat/network/magnitude_names.hpp"
+#include "kinestat/tolerances.hpp"
 
 namespace kinestat::design {
 
@@ -22,21 +23,14 @@ using network::Model;
 using network::SparseNetworkResult;
 using Index = Eigen::Index;
 
-// Shares below this are rounding, not participation.
-constexpr double kShareZero = 1e-12;
 
 std::string counted(std::size_t n, const char* one, const char* many) { return fmt::format("{} {}", n, n == 1 ? one : many); }
 
-// A body's own unit actions (its column block of K) whose smallest singular value exceeds this
-// share of the largest span every twist: the body cannot spin idle. Far above rounding (1e-16)
-// and above any rank tolerance the screen is used with (see spins_freely), so the screen never
-// hides a spin the small-model analysis below would find; closer cases go to that analysis.
-constexpr double kClearlyFullRank = 1e-4;
-
 // True unless body b's actions in K (the rows of its own couplings in its column block, the
-// conditioned frame) clearly span all d twists: a floating-point screen that keeps the exact
-// small-model analysis below for the bodies that might spin (most bodies of a network cannot).
-bool may_spin(const SparseNetworkResult& r, int b, const linalg::RankTolerance& tolerance) {
+// conditioned frame) clearly span all d twists (kIdleSpinScreen): a floating-point screen that
+// keeps the exact small-model analysis below for the bodies that might spin; most bodies of a
+// network cannot, and the screen costs one SVD of at most a few dozen rows.
+bool may_spin(const SparseNetworkResult& r, int b, const Tolerances& tolerances) {
   if (r.K.cols() == 0) return true;
   const Index d = r.d, first = (b < r.ground ? b : b - 1) * d;
   std::map<Index, Index> local;  // row of K -> row of the block
@@ -47,14 +41,14 @@ bool may_spin(const SparseNetworkResult& r, int b, const linalg::RankTolerance& 
   for (Index k = 0; k < d; ++k)
     for (Eigen::SparseMatrix<double>::InnerIterator it(r.K, first + k); it; ++it) block(local[it.row()], k) = it.value();
   const Eigen::VectorXd sigma = Eigen::JacobiSVD<Eigen::MatrixXd>(block).singularValues();
-  const double relative = tolerance.relative.value_or(linalg::default_relative_tolerance(block.rows(), d));
-  return !(sigma(d - 1) > std::max(kClearlyFullRank, 100.0 * relative) * sigma(0));
+  const double relative = tolerances.rank.value_or(linalg::default_relative_tolerance(block.rows(), d));
+  return !(sigma(d - 1) > std::max(kIdleSpinScreen, kIdleSpinScreenMargin * relative) * sigma(0));
 }
 
 // Idle spins body by body: each body that may spin (may_spin) with its own couplings, all ending
 // at one stand-in for the rest of the network (the ground of the small model), so the cost is
 // linear in the couplings.
-std::vector<IdleMotion> idle_spins(const Model& model, const SparseNetworkResult& r, const linalg::RankTolerance& tolerance) {
+std::vector<IdleMotion> idle_spins(const Model& model, const SparseNetworkResult& r, const Tolerances& tolerances) {
   const int ground = r.ground;
   std::vector<std::vector<std::size_t>> touching(model.bodies.size());
   for (std::size_t i = 0; i < model.couplings.size(); ++i) {
@@ -63,7 +57,7 @@ std::vector<IdleMotion> idle_spins(const Model& model, const SparseNetworkResult
   }
   std::vector<IdleMotion> spins;
   for (std::size_t b = 0; b < model.bodies.size(); ++b) {
-    if (static_cast<int>(b) == ground || touching[b].size() < 2 || !may_spin(r, static_cast<int>(b), tolerance)) continue;
+    if (static_cast<int>(b) == ground || touching[b].size() < 2 || !may_spin(r, static_cast<int>(b), tolerances)) continue;
     Model star;
     star.space = model.space;
     star.bodies = {model.bodies[b], "the rest"};
@@ -74,7 +68,7 @@ std::vector<IdleMotion> idle_spins(const Model& model, const SparseNetworkResult
       c.to = c.to == static_cast<int>(b) ? 0 : 1;
       star.couplings.push_back(std::move(c));
     }
-    for (IdleMotion& idle : idle_motions(star, false, tolerance)) {
+    for (IdleMotion& idle : idle_motions(star, false, tolerances)) {
       idle.body = static_cast<int>(b);
       spins.push_back(std::move(idle));
     }
@@ -130,7 +124,7 @@ VerdictState self_stress_state(const Model& model, const SparseNetworkResult& r,
                                ActionBases& bases, const Conditioning& frame, Index j) {
   const Index primary = r.stress_primaries[static_cast<std::size_t>(j)];
   const Eigen::VectorXd lambda = r.stress_basis.col(j) / r.stress_basis(primary, j);  // the primary = 1
-  const double zero = network::kSupportZero * lambda.cwiseAbs().maxCoeff();
+  const double zero = kSupportZero * lambda.cwiseAbs().maxCoeff();
   std::map<int, Screw6> wrench;  // by coupling, user frame
   for (Index row = 0; row < lambda.size(); ++row) {
     if (std::abs(lambda(row)) <= zero) continue;
@@ -213,10 +207,10 @@ void add_unlisted(std::vector<Participant>& listed, const std::string& kind, con
 
 }  // namespace
 
-Verdict sparse_network_verdict(const Model& model, const SparseNetworkResult& r, const linalg::RankTolerance& tolerance) {
+Verdict sparse_network_verdict(const Model& model, const SparseNetworkResult& r, const Tolerances& tolerances) {
   Verdict v;
   const Conditioning frame{r.frame_origin, r.frame_scale};
-  const std::vector<IdleMotion> idle = idle_spins(model, r, tolerance);
+  const std::vector<IdleMotion> idle = idle_spins(model, r, tolerances);
   int idle_count = 0;
   for (const auto& i : idle) idle_count += i.count;
   const int moving = r.FN - idle_count;  // motions that are not idle spins

@@ -25,10 +25,11 @@ namespace {
 // S_c⁻¹ times one of D̂, so `unscale` (S_c, or S_r for the left null space) brings it back
 // before normalising. The echelon basis maps to the echelon basis of D̂ itself (same free
 // variables), so the result is the one an unscaled analysis would print.
-Eigen::MatrixXd deterministic_null_space(const Eigen::MatrixXd& svd_basis, const Eigen::VectorXd& unscale) {
+Eigen::MatrixXd deterministic_null_space(const Eigen::MatrixXd& svd_basis, const Eigen::VectorXd& unscale,
+                                         double free_variable) {
   if (svd_basis.cols() == 0) return svd_basis;
   std::vector<Eigen::Index> free_variables;
-  const Eigen::MatrixXd echelon = linalg::echelon_null_basis(svd_basis, free_variables);
+  const Eigen::MatrixXd echelon = linalg::echelon_null_basis(svd_basis, free_variables, free_variable);
   Eigen::MatrixXd basis = echelon.cols() == svd_basis.cols() ? echelon : svd_basis;
   basis = unscale.asDiagonal() * basis;
   // The one sign convention (linalg/sign_convention.hpp): every report shows this sign.
@@ -51,7 +52,7 @@ std::pair<std::vector<Eigen::Index>, std::vector<Eigen::Index>> pivot_columns(co
 }
 
 // Modes from a basis of the null space of D(c) (columns, already in D̂'s units and normalised).
-void collect_modes(FrameworkAnalysis& result, const Eigen::MatrixXd& basis) {
+void collect_modes(FrameworkResult& result, const Eigen::MatrixXd& basis) {
   for (Eigen::Index j = 0; j < basis.cols(); ++j) {
     KinematicMode mode{basis.col(j), {}};
     for (Eigen::Index i = 0; i < mode.velocities.size(); ++i)
@@ -61,7 +62,7 @@ void collect_modes(FrameworkAnalysis& result, const Eigen::MatrixXd& basis) {
 }
 
 // Stress states from a basis of the null space of D(c)ᵀ; candidates are the fixed rows.
-void collect_stresses(FrameworkAnalysis& result, const Eigen::MatrixXd& basis) {
+void collect_stresses(FrameworkResult& result, const Eigen::MatrixXd& basis) {
   const auto fixed_rows = static_cast<Eigen::Index>(result.partition.fixed_deformations.size());
   for (Eigen::Index j = 0; j < basis.cols(); ++j) {
     StressState state{basis.col(j), {}};
@@ -95,7 +96,7 @@ double relative_residual(const Eigen::SparseMatrix<double>& a, const Eigen::Matr
 // Sparse path with vectors: the first `limit` modes from the QR of D(c), the first `limit`
 // stress states and the releases from the QR of the row-weighted D(c)ᵀ, and the coordinates
 // to constrain from the QR of the kept rows. Same threshold for all three.
-void sparse_vectors(FrameworkAnalysis& result, const Eigen::SparseMatrix<double>& jacobian, Eigen::Index limit) {
+void sparse_vectors(FrameworkResult& result, const Eigen::SparseMatrix<double>& jacobian, Eigen::Index limit) {
   const double threshold = result.decision.threshold;
   const double largest = result.decision.largest;
   result.vector_limit = limit;
@@ -149,14 +150,14 @@ void sparse_vectors(FrameworkAnalysis& result, const Eigen::SparseMatrix<double>
 
 }  // namespace
 
-double FrameworkAnalysis::relative_smallest_singular_value() const {
+double FrameworkResult::relative_smallest_singular_value() const {
   if (m == 0 || n == 0) return 1.0;
   if (singular_values.size() == 0 || singular_values(0) == 0.0) return 0.0;
   if (rank < std::min(m, n)) return 0.0;
   return singular_values(singular_values.size() - 1) / singular_values(0);
 }
 
-Eigen::SparseMatrix<double> prepare_analysis(const FrameworkModel& model, FrameworkAnalysis& result) {
+Eigen::SparseMatrix<double> prepare_analysis(const FrameworkModel& model, FrameworkResult& result) {
   result.indexing = index_framework(model);
   result.partition = partition_framework(model, result.indexing);
   result.count = count_constraints(result.partition);
@@ -174,37 +175,37 @@ Eigen::SparseMatrix<double> prepare_analysis(const FrameworkModel& model, Framew
   return jacobian;
 }
 
-FrameworkAnalysis analyse_framework(const FrameworkModel& model, const AnalysisOptions& options) {
-  FrameworkAnalysis result;
+FrameworkResult analyse_framework(const FrameworkModel& model, const AnalysisOptions& options) {
+  FrameworkResult result;
   const Eigen::SparseMatrix<double> jacobian = prepare_analysis(model, result);
 
   if (std::max(result.m, result.n) > options.dense_limit) {
     result.method = RankMethod::sparse_qr;
     if (options.sparse_vectors > 0 && result.m > 0 && result.n > 0) {
-      result.decision = linalg::sparse_rank_threshold(jacobian, options.tolerance);
+      result.decision = linalg::sparse_rank_threshold(jacobian, linalg::RankTolerance{options.tolerances.rank});
       sparse_vectors(result, jacobian, options.sparse_vectors);
     } else {
-      result.decision = linalg::sparse_numerical_rank(jacobian, options.tolerance, &result.factor_memory);
+      result.decision = linalg::sparse_numerical_rank(jacobian, linalg::RankTolerance{options.tolerances.rank}, &result.factor_memory);
     }
   } else if (!options.vectors) {
     // Counts only: singular values without singular vectors.
     if (result.m > 0 && result.n > 0) {
       result.singular_values = linalg::singular_values(Eigen::MatrixXd(jacobian));
-      result.decision = linalg::decide_rank(result.singular_values, result.m, result.n, options.tolerance);
+      result.decision = linalg::decide_rank(result.singular_values, result.m, result.n, linalg::RankTolerance{options.tolerances.rank});
     }
   } else {
     const Eigen::MatrixXd dense(jacobian);
-    const linalg::SvdAnalysis svd = linalg::analyse_svd(dense, options.tolerance);
+    const linalg::SvdAnalysis svd = linalg::analyse_svd(dense, linalg::RankTolerance{options.tolerances.rank});
     result.decision = svd.rank;
     result.singular_values = svd.singular_values;
     result.vectors = true;
     const Eigen::Index rank = svd.rank.rank;
 
     // Kinematic modes: V columns of zero singular values and those in excess of the rows.
-    collect_modes(result, deterministic_null_space(svd.null_space(), result.column_scale));
+    collect_modes(result, deterministic_null_space(svd.null_space(), result.column_scale, options.tolerances.free_variable));
     // Stress states: U columns of zero singular values and those in excess of the columns.
     const Eigen::MatrixXd transposed = dense.transpose();
-    collect_stresses(result, deterministic_null_space(svd.left_null_space(), result.row_scale));
+    collect_stresses(result, deterministic_null_space(svd.left_null_space(), result.row_scale, options.tolerances.free_variable));
     const auto fixed_rows = static_cast<Eigen::Index>(result.partition.fixed_deformations.size());
     // One minimal set of releases: the rows a column-pivoted QR of D(c)ᵀ leaves out of a basis
     // of the row space; then, among the kept rows, the columns left out of a column basis are
@@ -223,7 +224,7 @@ FrameworkAnalysis analyse_framework(const FrameworkModel& model, const AnalysisO
   return result;
 }
 
-FrameworkModel apply_proposal(const FrameworkModel& model, const FrameworkAnalysis& analysis) {
+FrameworkModel apply_proposal(const FrameworkModel& model, const FrameworkResult& analysis) {
   FrameworkModel repaired = model;
   for (Eigen::Index row : analysis.releases) {
     const DeformationRef& d = analysis.indexing.deformations[static_cast<std::size_t>(analysis.rows[static_cast<std::size_t>(row)])];

@@ -12,11 +12,14 @@
 #include "kinestat/framework/framework_jacobian.hpp"
 #include "kinestat/framework/framework_model.hpp"
 #include "kinestat/linalg/rank_decision.hpp"
+#include "kinestat/tolerances.hpp"
 
 namespace kinestat::framework {
 
 struct AnalysisOptions {
-  linalg::RankTolerance tolerance;  ///< relative to σ_max of the non-dimensional D(c)
+  /// The rank of D(c) (relative to σ_max of the scaled, non-dimensional D(c)) and the choice of
+  /// free variables of its mode and stress bases.
+  Tolerances tolerances;
   /// Largest max(m, n) analysed with a dense SVD; larger models get counts from a sparse QR
   /// (no singular values, modes or stress states).
   Eigen::Index dense_limit = 1500;
@@ -44,7 +47,7 @@ struct StressState {
   std::vector<Eigen::Index> candidates;  ///< rows of D(c) that are fixed deformations with non-zero resultant
 };
 
-struct FrameworkAnalysis {
+struct FrameworkResult {
   FrameworkIndexing indexing;
   FrameworkPartition partition;
   ConstraintCount count;
@@ -82,19 +85,20 @@ struct FrameworkAnalysis {
   double relative_smallest_singular_value() const;
 };
 
-/// Component magnitudes below this (of a unit-norm mode or stress state) count as zero.
-inline constexpr double kModeZero = 1e-9;
+// Transitional name, removed once the branches in flight use FrameworkResult.
+using FrameworkAnalysis = FrameworkResult;
+
 
 /// The first stage of analyse_framework: fills indexing, partition, counts, rows, the
 /// characteristic length and the length scaling of `result`, and returns the matrix every rank
 /// decision is made on, S_r D̂ S_c (non-dimensional, m × n).
-Eigen::SparseMatrix<double> prepare_analysis(const FrameworkModel& model, FrameworkAnalysis& result);
+Eigen::SparseMatrix<double> prepare_analysis(const FrameworkModel& model, FrameworkResult& result);
 
 /// Runs the analysis of seed 002 on `model`.
-FrameworkAnalysis analyse_framework(const FrameworkModel& model, const AnalysisOptions& options = {});
+FrameworkResult analyse_framework(const FrameworkModel& model, const AnalysisOptions& options = {});
 
 /// The model with the proposal of `analysis` applied: its releases become released
 /// deformations and its constrained columns become independent coordinates.
-FrameworkModel apply_proposal(const FrameworkModel& model, const FrameworkAnalysis& analysis);
+FrameworkModel apply_proposal(const FrameworkModel& model, const FrameworkResult& analysis);
 
 }  // namespace kinestat::framework

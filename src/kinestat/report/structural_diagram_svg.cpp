@@ -14,6 +14,7 @@
 #include "kinestat/report/markup_escape.hpp"
 #include "kinestat/report/structure_report.hpp"
 #include "kinestat/structure/structural_diagram.hpp"
+#include "kinestat/tolerances.hpp"
 
 namespace kinestat::report {
 
@@ -42,7 +43,7 @@ double distance_to_curve(Point p, Point a, Point c, Point b) {
 
 }  // namespace
 
-std::string structure_svg(const structure::StructureModel& model, const structure::Decomposition& d) {
+std::string structure_svg(const structure::StructureModel& model, const structure::StructureResult& d) {
   const auto diagram = structure::structural_diagram(d);
   constexpr double radius = 28, dx = 150, dy = 120, margin = 70;
   // Clearance between an arrow and a circle it passes (beyond the radius), in px.
@@ -134,7 +135,7 @@ std::string structure_svg(const structure::StructureModel& model, const structur
     }
     // Start and end on the circles, toward the control point.
     const auto toward = [&](Point centre, Point target) {
-      const double l = std::max(std::hypot(target.x - centre.x, target.y - centre.y), 1e-9);
+      const double l = std::max(std::hypot(target.x - centre.x, target.y - centre.y), kDrawnZero);
       return Point{centre.x + radius * (target.x - centre.x) / l, centre.y + radius * (target.y - centre.y) / l};
     };
     const Point start = toward(a, control), end = toward(b, control);
