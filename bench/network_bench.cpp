@@ -13,6 +13,8 @@
 #include <random>
 #include <string>
 
+#include "kinestat/design/sparse_network_verdict.hpp"
+#include "kinestat/linalg/sparse_qr.hpp"
 #include "kinestat/network/analyse_network.hpp"
 #include "kinestat/network/sparse_network.hpp"
 
@@ -228,6 +230,33 @@ void BM_SparseRandomGraph(benchmark::State& state) { run_sparse(state, random_gr
 void BM_SparseRssChain(benchmark::State& state) { run_sparse(state, rss_chain(static_cast<int>(state.range(0)))); }
 void BM_SparsePlanarLattice(benchmark::State& state) { run_sparse(state, planar_lattice(static_cast<int>(state.range(0)))); }
 
+// What `kinestat analyze` runs on a large network: the analysis with the verdict's basis
+// vectors, then the verdict (idle spins body by body, where).
+void BM_SparseLadderVerdict(benchmark::State& state) {
+  const Model model = ladder(static_cast<int>(state.range(0)));
+  int extra = 0;
+  for (auto _ : state) {
+    const auto r = kinestat::network::analyse_network_sparse(model, {}, kinestat::design::kSparseVerdictStates);
+    extra = kinestat::design::sparse_network_verdict(model, r).extra_motions;
+    benchmark::DoNotOptimize(extra);
+  }
+  state.counters["couplings"] = static_cast<double>(model.couplings.size());
+  state.counters["extra"] = extra;
+}
+
+// The reference for the two above: SuiteSparseQR alone (METIS, no Q) on the very K and Kᵀ the
+// analysis factors, with its threshold; K is built once, outside the timing.
+void BM_SparseLadderSpqr(benchmark::State& state) {
+  const Model model = ladder(static_cast<int>(state.range(0)));
+  const auto r = kinestat::network::analyse_network_sparse(model);
+  const Eigen::SparseMatrix<double> kt = r.K.transpose();
+  for (auto _ : state) {
+    const kinestat::linalg::SparseQr k_factor(r.K, r.rank.threshold), kt_factor(kt, r.rank.threshold);
+    benchmark::DoNotOptimize(k_factor.rank() + kt_factor.rank());
+  }
+  state.counters["couplings"] = static_cast<double>(model.couplings.size());
+}
+
 }  // namespace
 
 BENCHMARK(BM_DaviesTwoCircuit)->Args({5, 1, 1})->Args({5, 0, 1})->Unit(benchmark::kMicrosecond);
@@ -248,3 +277,6 @@ BENCHMARK(BM_SparseLadder)->RangeMultiplier(10)->Range(1000, 100000)->Unit(bench
 BENCHMARK(BM_SparseRandomGraph)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SparseRssChain)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SparsePlanarLattice)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
+// The whole verdict against SuiteSparseQR alone on the same matrices (bench/README.md).
+BENCHMARK(BM_SparseLadderVerdict)->RangeMultiplier(10)->Range(1000, 100000)->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SparseLadderSpqr)->RangeMultiplier(10)->Range(1000, 100000)->Iterations(1)->Unit(benchmark::kMillisecond);

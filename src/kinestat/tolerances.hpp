@@ -69,6 +69,12 @@ inline constexpr double kScrewZero = 0x1p22 * kEpsilon;
 /// A body's share of a sparse null vector below this fraction of the largest is not listed as
 /// taking part (2^22 ε ≈ 9.3e-10).
 inline constexpr double kSupportZero = 0x1p22 * kEpsilon;
+/// The sparse network verdict skips the exact idle-spin analysis of a body whose own unit actions
+/// (its column block of K, floating point) have σ_min above this fraction of σ_max, and above
+/// kIdleSpinScreenMargin × the rank tolerance: such a body cannot spin. Far above rounding, so
+/// the screen never hides a spin; doubtful bodies get the exact analysis.
+inline constexpr double kIdleSpinScreen = 1e-4;
+inline constexpr double kIdleSpinScreenMargin = 100.0;
 /// Lengths and arrows in a drawing below this fraction of the drawing's extent are not drawn,
 /// and two segments closer than this do not cross (2^22 ε ≈ 9.3e-10).
 inline constexpr double kDrawnZero = 0x1p22 * kEpsilon;

@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <set>
 
+#include "kinestat/design/network_verdict.hpp"
+#include "kinestat/design/sparse_network_verdict.hpp"
 #include "kinestat/io/network_reader.hpp"
 #include "kinestat/io/yaml_support.hpp"
 #include "kinestat/network/analyse_network.hpp"
@@ -56,6 +58,31 @@ TEST(SparseNetwork, SameAnswersAsDaviesOnRandomPlanarNetworks) {
     std::mt19937 rng(static_cast<unsigned>(7000 + seed));
     expect_same_answers(testing::random_network(rng, 3 + seed % 7, 1 + seed % 4, true), "planar seed " + std::to_string(seed));
   }
+}
+
+// The sparse verdict screens each body's own actions in floating point before the exact
+// small-model analysis of its idle spins: the screen must not hide one. Independent count:
+// design::idle_motions on the whole model in exact arithmetic (every body, no screen). Without
+// inputs the extra motions are exactly the idle spins, the redundant constraints CN.
+TEST(SparseNetwork, VerdictFindsTheIdleSpinsTheExactCountFinds) {
+  int spins = 0, bodies_that_spin = 0;
+  for (int seed = 0; seed < 80; ++seed) {
+    std::mt19937 rng(static_cast<unsigned>(9000 + seed));
+    const Model model = testing::random_network(rng, 3 + seed % 8, seed % 4, seed % 3 == 0);
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    int exact = 0;
+    for (const auto& idle : design::idle_motions(model, true, {})) {
+      exact += idle.count;
+      ++bodies_that_spin;
+    }
+    const SparseNetworkResult r = analyse_network_sparse(model, {}, design::kSparseVerdictStates);
+    const design::Verdict v = design::sparse_network_verdict(model, r);
+    EXPECT_EQ(v.extra_motions, exact);
+    EXPECT_EQ(v.redundant_constraints, r.CN);
+    spins += exact;
+  }
+  EXPECT_GT(bodies_that_spin, 10);  // the seeds do exercise the screen's doubtful side
+  EXPECT_GT(spins, 10);
 }
 
 TEST(SparseNetwork, SameAnswersAsDaviesOnEveryExample) {

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <Eigen/Geometry>
+#include <Eigen/SVD>
 
 #include <algorithm>
 #include <cmath>
@@ -25,9 +26,30 @@ using Index = Eigen::Index;
 
 std::string counted(std::size_t n, const char* one, const char* many) { return fmt::format("{} {}", n, n == 1 ? one : many); }
 
-// Idle spins body by body: each body with its own couplings, all ending at one stand-in for the
-// rest of the network (the ground of the small model), so the cost is linear in the couplings.
-std::vector<IdleMotion> idle_spins(const Model& model, int ground, const Tolerances& tolerances) {
+// True unless body b's actions in K (the rows of its own couplings in its column block, the
+// conditioned frame) clearly span all d twists (kIdleSpinScreen): a floating-point screen that
+// keeps the exact small-model analysis below for the bodies that might spin; most bodies of a
+// network cannot, and the screen costs one SVD of at most a few dozen rows.
+bool may_spin(const SparseNetworkResult& r, int b, const Tolerances& tolerances) {
+  if (r.K.cols() == 0) return true;
+  const Index d = r.d, first = (b < r.ground ? b : b - 1) * d;
+  std::map<Index, Index> local;  // row of K -> row of the block
+  for (Index k = 0; k < d; ++k)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(r.K, first + k); it; ++it) local.try_emplace(it.row(), static_cast<Index>(local.size()));
+  if (static_cast<Index>(local.size()) < d) return true;
+  Eigen::MatrixXd block = Eigen::MatrixXd::Zero(static_cast<Index>(local.size()), d);
+  for (Index k = 0; k < d; ++k)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(r.K, first + k); it; ++it) block(local[it.row()], k) = it.value();
+  const Eigen::VectorXd sigma = Eigen::JacobiSVD<Eigen::MatrixXd>(block).singularValues();
+  const double relative = tolerances.rank.value_or(linalg::default_relative_tolerance(block.rows(), d));
+  return !(sigma(d - 1) > std::max(kIdleSpinScreen, kIdleSpinScreenMargin * relative) * sigma(0));
+}
+
+// Idle spins body by body: each body that may spin (may_spin) with its own couplings, all ending
+// at one stand-in for the rest of the network (the ground of the small model), so the cost is
+// linear in the couplings.
+std::vector<IdleMotion> idle_spins(const Model& model, const SparseNetworkResult& r, const Tolerances& tolerances) {
+  const int ground = r.ground;
   std::vector<std::vector<std::size_t>> touching(model.bodies.size());
   for (std::size_t i = 0; i < model.couplings.size(); ++i) {
     touching[static_cast<std::size_t>(model.couplings[i].from)].push_back(i);
@@ -35,7 +57,7 @@ std::vector<IdleMotion> idle_spins(const Model& model, int ground, const Toleran
   }
   std::vector<IdleMotion> spins;
   for (std::size_t b = 0; b < model.bodies.size(); ++b) {
-    if (static_cast<int>(b) == ground || touching[b].size() < 2) continue;
+    if (static_cast<int>(b) == ground || touching[b].size() < 2 || !may_spin(r, static_cast<int>(b), tolerances)) continue;
     Model star;
     star.space = model.space;
     star.bodies = {model.bodies[b], "the rest"};
@@ -188,7 +210,7 @@ void add_unlisted(std::vector<Participant>& listed, const std::string& kind, con
 Verdict sparse_network_verdict(const Model& model, const SparseNetworkResult& r, const Tolerances& tolerances) {
   Verdict v;
   const Conditioning frame{r.frame_origin, r.frame_scale};
-  const std::vector<IdleMotion> idle = idle_spins(model, r.ground, tolerances);
+  const std::vector<IdleMotion> idle = idle_spins(model, r, tolerances);
   int idle_count = 0;
   for (const auto& i : idle) idle_count += i.count;
   const int moving = r.FN - idle_count;  // motions that are not idle spins

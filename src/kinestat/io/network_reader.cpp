@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <set>
+#include <unordered_map>
+#include <unordered_set>
 
 #include "kinestat/io/model_vocabulary.hpp"
 
@@ -55,12 +57,12 @@ class NetworkReader {
     return std::string(node.scalar());
   }
 
+  // Hashed, so reading e couplings costs O(e) rather than O(e · n).
   int body_index(const std::string& name) {
     auto& bodies = loaded_.model.bodies;
-    const auto it = std::find(bodies.begin(), bodies.end(), name);
-    if (it != bodies.end()) return static_cast<int>(it - bodies.begin());
-    bodies.push_back(name);
-    return static_cast<int>(bodies.size() - 1);
+    const auto [it, inserted] = body_indices_.try_emplace(name, static_cast<int>(bodies.size()));
+    if (inserted) bodies.push_back(name);
+    return it->second;
   }
 
   void read_bodies(const TreeNode& bodies) {
@@ -164,8 +166,8 @@ class NetworkReader {
     coupling.type = *type;
     const TreeNode name = file_.required(node, "name", "a coupling");
     coupling.name = file_.string(name, "a coupling name");
-    for (const auto& other : loaded_.model.couplings)
-      if (other.name == coupling.name) file_.fail(name, fmt::format("duplicate coupling name '{}'", coupling.name));
+    if (!coupling_names_.insert(coupling.name).second)
+      file_.fail(name, fmt::format("duplicate coupling name '{}'", coupling.name));
 
     const TreeNode between = file_.required(node, "between", "a coupling");
     file_.expect_sequence(between, "'between'");
@@ -230,8 +232,7 @@ class NetworkReader {
     loaded_.field_locations["inputs"] = file_.where(list);
     for (const auto& item : list.items()) {
       const std::string name = file_.string(item, "an entry of 'inputs'");
-      const auto& couplings = loaded_.model.couplings;
-      if (std::none_of(couplings.begin(), couplings.end(), [&](const network::Coupling& c) { return c.name == name; }))
+      if (coupling_names_.count(name) == 0)
         file_.fail(item, fmt::format("'inputs' names '{}', which is not a coupling of the model", name));
       loaded_.model.inputs.push_back(name);
       loaded_.item_locations["inputs"].push_back(file_.where(item));
@@ -252,6 +253,8 @@ class NetworkReader {
 
   const YamlFile& file_;
   LoadedNetwork loaded_;
+  std::unordered_map<std::string, int> body_indices_;  // body name -> index, while couplings are read
+  std::unordered_set<std::string> coupling_names_;
   int max_digits_ = 0;
 };
 

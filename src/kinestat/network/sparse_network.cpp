@@ -192,7 +192,8 @@ SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances&
     }
   }
   r.FN = static_cast<int>(k.cols() - r.rank.rank);
-  r.CN = static_cast<int>(k.rows() - r.rank.rank);
+  r.K = std::move(k);
+  r.CN = static_cast<int>(r.K.rows() - r.rank.rank);
   r.classification = classify(r.FN, r.CN);
   for (int i = 0; i < r.e; ++i) {
     if (stressed[static_cast<std::size_t>(i)]) r.stressed.push_back(i);

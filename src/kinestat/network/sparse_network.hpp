@@ -11,6 +11,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 
 #include "kinestat/linalg/rank_decision.hpp"
 #include "kinestat/network/model.hpp"
@@ -35,6 +36,9 @@ struct SparseNetworkResult {
   std::vector<int> moving_bodies;
   /// Coupling of each row of K (each unit action, in the order of the coupling's action basis).
   std::vector<int> row_coupling;
+  /// K itself (C × d(n − 1), conditioned analysis frame): column block d·(b − [b > ground]) is
+  /// body b's twist, so that block's nonzero rows are the unit actions of b's own couplings.
+  Eigen::SparseMatrix<double> K;
 
   /// Null-space bases on request (`vectors` > 0), from the rank-revealing QR factors: for dead
   /// column k, x = [−R11⁻¹ R12 e_k; e_k] scaled to unit 2-norm, so the entry of the dead
