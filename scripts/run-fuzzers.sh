@@ -1,10 +1,14 @@
 #!/usr/bin/env bash
 # Runs every libFuzzer harness for SECONDS (default 30) each, seeded with the shipped
 # examples. Crashes are written to build/fuzz/crashes/ and fail the script.
-# Usage: scripts/run-fuzzers.sh [SECONDS]
+# The seed is fixed (FUZZ_SEED, default 1): a run from an empty corpus then explores the same
+# inputs in the same order on every machine, so a longer local run covers what CI's short run
+# will try, and a CI failure repeats locally.
+# Usage: [FUZZ_SEED=N] scripts/run-fuzzers.sh [SECONDS]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-30}
+seed=${FUZZ_SEED:-1}
 out=build/fuzz/crashes
 mkdir -p "$out"
 status=0
@@ -20,7 +24,7 @@ for harness in build/fuzz/fuzz/fuzz_*; do
     *) seeds="examples examples/json fuzz/seeds/model" ;;
   esac
   echo "== $name for ${seconds}s"
-  if ! "$harness" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=4096 -max_len=65536 \
+  if ! "$harness" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=4096 -max_len=65536 -seed="$seed" \
        -artifact_prefix="$out/$name-" -print_final_stats=1 "$corpus" $seeds >/dev/null 2>"build/fuzz/$name.log"; then
     status=1
     tail -40 "build/fuzz/$name.log"

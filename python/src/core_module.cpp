@@ -81,7 +81,7 @@ std::shared_ptr<Analysed> analyse(const std::string& path, const std::optional<s
   const io::ModelFile& file = analysed->file;
   if (file.network) {
     network::AnalysisOptions options;
-    options.tolerance.relative = tolerance;
+    options.tolerances = Tolerances::with_rank(tolerance);
     if (arithmetic == "exact") options.arithmetic = network::Arithmetic::exact;
     else if (arithmetic == "float") options.arithmetic = network::Arithmetic::floating;
     else if (arithmetic != "auto") throw py::value_error("arithmetic is 'auto', 'exact' or 'float'");
@@ -90,7 +90,7 @@ std::shared_ptr<Analysed> analyse(const std::string& path, const std::optional<s
     analysed->verdict = design::network_verdict(file.network->model, *analysed->network, options);
   } else if (file.framework) {
     framework::AnalysisOptions options;
-    options.tolerance.relative = tolerance;
+    options.tolerances = Tolerances::with_rank(tolerance);
     analysed->framework = framework::analyse_framework(*file.framework, options);
     analysed->verdict = design::framework_verdict(*file.framework, *analysed->framework, options);
   } else {

@@ -60,7 +60,7 @@ int run(const ConvertOptions& options) {
     return 0;
   }
   framework::AnalysisOptions analysis_options;
-  analysis_options.tolerance.relative = options.tolerance;
+  analysis_options.tolerances = Tolerances::with_rank(options.tolerance);
   const framework::FrameworkAnalysis analysis = framework::analyse_framework(model, analysis_options);
   io::SpacarWriteOptions write;
   write.source = options.input;

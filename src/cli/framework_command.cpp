@@ -48,7 +48,7 @@ void register_framework_options(CLI::App& analyze) {
 int run_framework_analysis(const CommonOptions& options, const framework::FrameworkModel& model, const std::string& path) {
   reject_options(given_network_options(), "a framework", path);
   framework::AnalysisOptions analysis_options;
-  analysis_options.tolerance.relative = options.tolerance;
+  analysis_options.tolerances = Tolerances::with_rank(options.tolerance);
   analysis_options.dense_limit = static_cast<Eigen::Index>(dense_limit);
   analysis_options.sparse_vectors = static_cast<Eigen::Index>(sparse_vectors);
   const framework::FrameworkAnalysis analysis = framework::analyse_framework(model, analysis_options);

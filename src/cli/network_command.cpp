@@ -90,7 +90,7 @@ int run_network_analysis(const CommonOptions& common, const io::LoadedNetwork& l
   network::AnalysisOptions options;
   options.arithmetic = o.exact ? network::Arithmetic::exact
                                : (o.floating ? network::Arithmetic::floating : network::Arithmetic::automatic);
-  options.tolerance.relative = common.tolerance;
+  options.tolerances = Tolerances::with_rank(common.tolerance);
   if (!o.primary.empty()) options.primary = o.primary;
   options.values = parse_values(o.values);
   options.all_pairs = !o.coupled_pairs_only;
@@ -99,11 +99,11 @@ int run_network_analysis(const CommonOptions& common, const io::LoadedNetwork& l
   if (o.sparse || (!dense_request && static_cast<int>(loaded.model.couplings.size()) > network::kDenseNetworkLimit)) {
     network::SparseNetworkResult sparse;
     try {
-      sparse = network::analyse_network_sparse(loaded.model, options.tolerance, design::kSparseVerdictStates);
+      sparse = network::analyse_network_sparse(loaded.model, options.tolerances, design::kSparseVerdictStates);
     } catch (const network::ModelError& error) {
       throw io::locate(error, loaded, path);
     }
-    const design::Verdict verdict = design::sparse_network_verdict(loaded.model, sparse, options.tolerance);
+    const design::Verdict verdict = design::sparse_network_verdict(loaded.model, sparse, options.tolerances);
     emit(common, common.json ? report::json_text(report::sparse_network_json(loaded.model, sparse, &verdict))
                              : report::sparse_network_text(loaded.model, sparse, &verdict));
     return 0;

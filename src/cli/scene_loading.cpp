@@ -18,7 +18,7 @@ namespace kinestat::cli {
 namespace {
 report::Scene framework_scene(const framework::FrameworkModel& model, std::optional<double> tolerance) {
   framework::AnalysisOptions options;
-  options.tolerance.relative = tolerance;
+  options.tolerances = Tolerances::with_rank(tolerance);
   const framework::FrameworkAnalysis analysis = framework::analyse_framework(model, options);
   report::Scene scene = report::framework_scene(model, analysis);
   scene.verdict = design::framework_verdict(model, analysis, options);
@@ -41,7 +41,7 @@ LoadedScene load_scene(const std::string& path, std::optional<double> tolerance)
   if (loaded.kind == "network") {
     const io::LoadedNetwork network = file ? io::read_network_model(*file) : read_imported_network(path, format);
     network::AnalysisOptions options;
-    options.tolerance.relative = tolerance;
+    options.tolerances = Tolerances::with_rank(tolerance);
     network::NetworkResult result;
     try {
       result = network::analyse_network(network.model, options);

@@ -69,3 +69,4 @@
 #include "kinestat/structure/structural_diagram.hpp"
 #include "kinestat/structure/structure_model.hpp"
 #include "kinestat/structure/transformations.hpp"
+#include "kinestat/tolerances.hpp"

@@ -58,7 +58,7 @@ TEST(FrameworkHardCases, NearlyCollinearBarsAreReportedAsClose) {
   EXPECT_NEAR(a.relative_smallest_singular_value(), std::tan(1e-9), 1e-11);
 
   AnalysisOptions loose;
-  loose.tolerance.relative = 1e-8;  // a user's tolerance above tan(delta) drops it
+  loose.tolerances = Tolerances::with_rank(1e-8);  // a user's tolerance above tan(delta) drops it
   const FrameworkAnalysis b = analyse_framework(two_bars(1e-9, 1.0), loose);
   EXPECT_EQ(b.rank, 1);
   EXPECT_TRUE(b.decision.close());

@@ -232,5 +232,45 @@ elements:
                                "relative translations released, two of the relative rotations in the same role)");
 }
 
+
+TEST(SpacarWriter, WritesAPinBodyBetweenNodesApartAsPinbody) {
+  // A crank a-b (beam) carries c one unit further along through a pin body: c's position is
+  // held in b's frame, c's orientation turns with the link c-d only. By hand: a is fixed, so
+  // b and the crank are fixed; c is fixed by the pin body; the link c-d turns freely about c
+  // (3 rotations) and nothing is doubly held: 3 mechanisms, 0 self-stresses.
+  const FrameworkModel model = read_framework(YamlFile::parse("t.yaml", R"(kinestat: 1
+kind: framework
+dimension: spatial
+nodes: {a: [0, 0, 0], b: [1, 0, 0], c: [2, 0, 0], d: [2, 1, 0]}
+supports: {a: fixed}
+elements:
+  - {name: crank, type: beam, nodes: [a, b]}
+  - {name: pin, type: rigid_body, nodes: [b, c], released: [c.rx, c.ry, c.rz]}
+  - {name: link, type: beam, nodes: [c, d]}
+)"));
+  const std::string text = spacar_text(model, {"t.yaml"});
+  EXPECT_NE(text.find("PINBODY     2     3    4     5  # pin body pin\n"), std::string::npos) << text;
+  const FrameworkModel back = parse_spacar("t.dat", text).model;
+  const auto analysis = framework::analyse_framework(back);
+  EXPECT_EQ(analysis.mechanisms, 3);
+  EXPECT_EQ(analysis.self_stresses, 0);
+  expect_same_counts(model, back, "offset pin body");
+}
+
+TEST(SpacarWriter, RefusesAPinBodyOntoANodeWhoseOrientationNothingUses) {
+  // SPACAR would have no orientation node for b, and its reader refuses such a PINBODY.
+  const FrameworkModel model = read_framework(YamlFile::parse("t.yaml", R"(kinestat: 1
+kind: framework
+dimension: spatial
+nodes: {a: [0, 0, 0], b: [1, 0, 0]}
+supports: {a: fixed}
+elements:
+  - {name: pin, type: rigid_body, nodes: [a, b], released: [b.rx, b.ry, b.rz]}
+)"));
+  EXPECT_EQ(refusal_of(model), "t.yaml: error: pin body 'pin': node 'b' turns freely and no beam, hinge or body uses its "
+                               "orientation, so SPACAR has no orientation node for it; join it to a beam or a body, or "
+                               "make it a translational node");
+}
+
 }  // namespace
 }  // namespace kinestat::io

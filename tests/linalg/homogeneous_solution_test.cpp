@@ -49,6 +49,39 @@ TEST(HomogeneousSolution, ChosenFreeVariables) {
   EXPECT_THROW(with_free_variables(solve_homogeneous(two_spheres_motion_matrix()), {0}), DependentFreeVariable);
 }
 
+TEST(HomogeneousSolution, TheUsersToleranceDecidesWhichVariableCanBeFree) {
+  // A = [1, 1e-8]: x = t (-1e-8, 1). x0 can be free only through a coefficient of 1e8 on x1; its
+  // row of the unit null vector has norm 1e-8. Below the default threshold (2^22 eps = 9.3e-10)
+  // that is still independent, so x0 (the earliest) is free; with a user tolerance of 1e-7
+  // (Tolerances::with_rank, as --tolerance) it is not, and x1 is free with x0 = -1e-8 x1.
+  Eigen::MatrixXd a(1, 2);
+  a << 1, 1e-8;
+  const auto by_default = solve_homogeneous(a, {});
+  EXPECT_EQ(by_default.free_variables, std::vector<Eigen::Index>{0});
+  EXPECT_NEAR(by_default.coefficients(1, 0), -1e8, 1e-8 * 1e8);
+
+  const Tolerances loose = Tolerances::with_rank(1e-7);
+  const auto tolerant = solve_homogeneous(a, {loose.rank}, loose.free_variable);
+  EXPECT_EQ(tolerant.rank.rank, 1);  // sigma = sqrt(1 + 1e-16) is far above 1e-7
+  EXPECT_EQ(tolerant.free_variables, std::vector<Eigen::Index>{1});
+  EXPECT_NEAR(tolerant.coefficients(0, 0), -1e-8, 1e-20);
+  // The same tolerance refuses x0 as a chosen free variable.
+  EXPECT_THROW(with_free_variables(tolerant, {0}, loose.free_variable), DependentFreeVariable);
+  EXPECT_NO_THROW(with_free_variables(by_default, {1}));
+}
+
+TEST(Tolerances, TheUsersToleranceReachesEveryRankDecision) {
+  const Tolerances defaults;
+  EXPECT_FALSE(defaults.rank.has_value());
+  EXPECT_EQ(defaults.pair_rank, 0x1p19 * kEpsilon);
+  EXPECT_EQ(defaults.free_variable, 0x1p22 * kEpsilon);
+  const Tolerances user = Tolerances::with_rank(1e-6);
+  EXPECT_EQ(user.rank, 1e-6);
+  EXPECT_EQ(user.pair_rank, 1e-6);
+  EXPECT_EQ(user.free_variable, 1e-6);
+  EXPECT_EQ(Tolerances::with_rank(std::nullopt).free_variable, defaults.free_variable);
+}
+
 TEST(HomogeneousSolution, RedundantRowsDependOnLaterRows) {
   RationalMatrix a(3, 2);
   a(0, 0) = 2;  // row 0 = 2 * row 2

@@ -106,7 +106,7 @@ TEST(HardCases, NearlySingularParallelogramIsReportedAsClose) {
   // With a tolerance above the perturbation the same model reads as the parallelogram, and the
   // dropped singular value far above rounding marks the decision as close.
   AnalysisOptions loose = floating;
-  loose.tolerance.relative = 1e-7;
+  loose.tolerances = Tolerances::with_rank(1e-7);
   const NetworkResult tolerant = analyse_network(double_parallelogram(Rational(1, 1000000000)), loose);
   EXPECT_EQ(tolerant.FN, 1);
   EXPECT_EQ(tolerant.CN, 1);

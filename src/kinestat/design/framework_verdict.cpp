@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <map>
+#include "kinestat/tolerances.hpp"
 
 namespace kinestat::design {
 
@@ -12,8 +13,6 @@ namespace {
 using framework::FrameworkAnalysis;
 using framework::FrameworkModel;
 
-// Shares below this (of a unit-norm mode or stress state) are rounding, not participation.
-constexpr double kShareZero = 1e-12;
 
 std::string counted(Eigen::Index n, const char* one, const char* many) { return fmt::format("{} {}", n, n == 1 ? one : many); }
 

@@ -16,6 +16,7 @@
 #include "kinestat/network/analysis_frame.hpp"
 #include "kinestat/network/mobility_count.hpp"
 #include "kinestat/screw/coupling_basis.hpp"
+#include "kinestat/tolerances.hpp"
 
 namespace kinestat::design {
 
@@ -28,8 +29,6 @@ using screw::Rational;
 using screw::Vec3;
 using Screw = Eigen::Matrix<double, 6, 1>;
 
-// Shares below this are rounding, not participation.
-constexpr double kShareZero = 1e-12;
 Eigen::Vector3d to_double(const Vec3& v) { return {v[0].get_d(), v[1].get_d(), v[2].get_d()}; }
 
 // Centroid and RMS radius of the coupling points: screws are compared about the centroid in
@@ -143,7 +142,7 @@ class BasisCache {
 // FN, CN and idle spins of a changed copy from cached bases: one rank of M^N and one small rank
 // per body, instead of a full analysis. The search compares hundreds of copies this way; the
 // change set it settles on is verified by a full analysis (network_verdict).
-Standing screen(const Model& model, BasisCache& cache, bool exact, const linalg::RankTolerance& tolerance,
+Standing screen(const Model& model, BasisCache& cache, bool exact, const Tolerances& tolerances,
                 double& work) {
   const int d = model.space.dimension();
   std::vector<graph::Edge> edges;
@@ -152,7 +151,7 @@ Standing screen(const Model& model, BasisCache& cache, bool exact, const linalg:
     edges.push_back({c.from, c.to});
     bases.push_back(&cache.of(c));
   }
-  const auto count = network::count_mobility(static_cast<int>(model.bodies.size()), edges, bases, d, exact, tolerance);
+  const auto count = network::count_mobility(static_cast<int>(model.bodies.size()), edges, bases, d, exact, tolerances);
   const double equations = d * count.l, unknowns = count.F;
   work += equations * unknowns * std::min(equations, unknowns);
   Standing s{count.FN, count.CN, 0};
@@ -179,7 +178,7 @@ Standing screen(const Model& model, BasisCache& cache, bool exact, const linalg:
       Eigen::MatrixXd a(rows, d);
       for (Eigen::Index r = 0; r < rows; ++r)
         for (int k = 0; k < d; ++k) a(r, k) = (*actions[static_cast<std::size_t>(r)])[static_cast<std::size_t>(k)].get_d();
-      s.idle += d - static_cast<int>(linalg::numerical_rank(a, tolerance).rank);
+      s.idle += d - static_cast<int>(linalg::numerical_rank(a, {tolerances.rank}).rank);
     }
   }
   return s;
@@ -378,7 +377,7 @@ Search search_changes(const Model& model, const network::AnalysisOptions& option
   auto evaluate = [&](const ChangeSet& changes) -> std::optional<Tally> {
     ++analyses;
     try {
-      return tally(screen(changed_model(model, changes), cache, exact, options.tolerance, work), intended);
+      return tally(screen(changed_model(model, changes), cache, exact, options.tolerances, work), intended);
     } catch (const graph::TreeError&) {
       return std::nullopt;  // a removal that disconnects a body
     } catch (const screw::GeometryError&) {
@@ -469,7 +468,7 @@ Search search_changes(const Model& model, const network::AnalysisOptions& option
 
 }  // namespace
 
-std::vector<IdleMotion> idle_motions(const Model& model, bool exact, const linalg::RankTolerance& tolerance) {
+std::vector<IdleMotion> idle_motions(const Model& model, bool exact, const Tolerances& tolerances) {
   const int d = model.space.dimension();
   const Frame frame = frame_of(model);
   std::vector<IdleMotion> list;
@@ -510,7 +509,7 @@ std::vector<IdleMotion> idle_motions(const Model& model, bool exact, const linal
         w.head<3>() = (w.head<3>() - frame.centre.cross(Eigen::Vector3d(w.tail<3>()))) / frame.length;
         for (int k = 0; k < d; ++k) a(static_cast<Eigen::Index>(r), k) = w(model.space.components[static_cast<std::size_t>(k)]);
       }
-      const auto solution = linalg::solve_homogeneous(a, tolerance);
+      const auto solution = linalg::solve_homogeneous(a, {tolerances.rank}, tolerances.free_variable);
       idle.count = static_cast<int>(solution.nullity());
       for (Eigen::Index j = 0; j < solution.nullity(); ++j) {
         Screw t = Screw::Zero();
@@ -530,7 +529,7 @@ std::vector<IdleMotion> idle_motions(const Model& model, bool exact, const linal
 Verdict network_verdict(const Model& model, const network::NetworkResult& r, const network::AnalysisOptions& options) {
   Verdict v;
   const Frame frame = frame_of(model);
-  const auto idle = idle_motions(model, r.exact, options.tolerance);
+  const auto idle = idle_motions(model, r.exact, options.tolerances);
   const Standing standing{r.FN, r.CN, idle_count(idle)};
   const int declared = static_cast<int>(model.inputs.size());
   const int intended = model.inputs.empty() ? standing.FN - standing.idle : declared;
@@ -669,7 +668,7 @@ Verdict network_verdict(const Model& model, const network::NetworkResult& r, con
   try {
     const Model changed = changed_model(model, search.changes);
     const network::NetworkResult after = network::analyse_network(changed, full);
-    const Tally t = tally({after.FN, after.CN, idle_count(idle_motions(changed, after.exact, full.tolerance))}, intended);
+    const Tally t = tally({after.FN, after.CN, idle_count(idle_motions(changed, after.exact, full.tolerances))}, intended);
     v.changes_verified = t.score() == 0 && t.lost == 0;
     v.becomes = fmt::format("FN = {}, CN = {}: {}{}", after.FN, after.CN,
                             v.changes_verified ? (intended == 0 ? std::string("exactly constrained, a structure") : "exactly constrained with " + counted(intended, "intended motion", "intended motions"))

@@ -11,6 +11,7 @@
 #include "kinestat/network/analyse_network.hpp"
 #include "kinestat/network/model.hpp"
 #include "kinestat/network/network_result.hpp"
+#include "kinestat/tolerances.hpp"
 
 namespace kinestat::design {
 
@@ -37,8 +38,8 @@ struct IdleMotion {
 
 /// The idle motions of every body other than the ground that has at least two couplings:
 /// the motions common to all its couplings' motion systems (the null space of their stacked
-/// actions), exactly when `exact`, otherwise with `tolerance`.
-std::vector<IdleMotion> idle_motions(const network::Model& model, bool exact, const linalg::RankTolerance& tolerance);
+/// actions), exactly when `exact`, otherwise with `tolerances`.
+std::vector<IdleMotion> idle_motions(const network::Model& model, bool exact, const Tolerances& tolerances);
 
 /// The verdict for `model` analysed as `result` with `options` (used again for every
 /// re-analysis of a changed copy).

@@ -5,14 +5,12 @@
 #include <Eigen/Geometry>
 
 #include <cmath>
+#include "kinestat/tolerances.hpp"
 
 namespace kinestat::design {
 
 namespace {
 
-// A screw whose force (or angular velocity) is this small against its moment (velocity), both
-// in units of the model's length scale, is a pure torque (translation).
-constexpr double kPureCouple = 1e-9;
 
 std::string number(double x) {
   if (std::abs(x) < 5e-10) return "0";
@@ -27,11 +25,11 @@ std::string direction_text(const Eigen::Vector3d& d) { return point_text(d.norma
 // A screw as the line of its vector `a` (force, angular velocity) with moment `m` about the
 // origin: "<line> (a) through (point)" [" with pitch p"], or "<pure> (m)" when a vanishes.
 std::string line_text(const Eigen::Vector3d& a, const Eigen::Vector3d& m, double length, const char* pure, const char* line) {
-  if (a.norm() * length <= kPureCouple * m.norm() || a.norm() == 0.0) return std::string(pure) + " " + direction_text(m);
+  if (a.norm() * length <= kScrewZero * m.norm() || a.norm() == 0.0) return std::string(pure) + " " + direction_text(m);
   const Eigen::Vector3d p = a.cross(m) / a.squaredNorm();
   const double pitch = a.dot(m) / a.squaredNorm();
   std::string text = fmt::format("{} {} through {}", line, direction_text(a), point_text(p));
-  if (std::abs(pitch) > kPureCouple * length) text += fmt::format(" with pitch {}", number(pitch));
+  if (std::abs(pitch) > kScrewZero * length) text += fmt::format(" with pitch {}", number(pitch));
   return text;
 }
 

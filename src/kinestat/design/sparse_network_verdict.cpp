@@ -12,6 +12,7 @@
 #include "kinestat/design/network_verdict.hpp"
 #include "kinestat/design/screw_text.hpp"
 #include "kinestat/network/magnitude_names.hpp"
+#include "kinestat/tolerances.hpp"
 
 namespace kinestat::design {
 
@@ -21,14 +22,12 @@ using network::Model;
 using network::SparseNetworkResult;
 using Index = Eigen::Index;
 
-// Shares below this are rounding, not participation.
-constexpr double kShareZero = 1e-12;
 
 std::string counted(std::size_t n, const char* one, const char* many) { return fmt::format("{} {}", n, n == 1 ? one : many); }
 
 // Idle spins body by body: each body with its own couplings, all ending at one stand-in for the
 // rest of the network (the ground of the small model), so the cost is linear in the couplings.
-std::vector<IdleMotion> idle_spins(const Model& model, int ground, const linalg::RankTolerance& tolerance) {
+std::vector<IdleMotion> idle_spins(const Model& model, int ground, const Tolerances& tolerances) {
   std::vector<std::vector<std::size_t>> touching(model.bodies.size());
   for (std::size_t i = 0; i < model.couplings.size(); ++i) {
     touching[static_cast<std::size_t>(model.couplings[i].from)].push_back(i);
@@ -47,7 +46,7 @@ std::vector<IdleMotion> idle_spins(const Model& model, int ground, const linalg:
       c.to = c.to == static_cast<int>(b) ? 0 : 1;
       star.couplings.push_back(std::move(c));
     }
-    for (IdleMotion& idle : idle_motions(star, false, tolerance)) {
+    for (IdleMotion& idle : idle_motions(star, false, tolerances)) {
       idle.body = static_cast<int>(b);
       spins.push_back(std::move(idle));
     }
@@ -103,7 +102,7 @@ VerdictState self_stress_state(const Model& model, const SparseNetworkResult& r,
                                ActionBases& bases, const Conditioning& frame, Index j) {
   const Index primary = r.stress_primaries[static_cast<std::size_t>(j)];
   const Eigen::VectorXd lambda = r.stress_basis.col(j) / r.stress_basis(primary, j);  // the primary = 1
-  const double zero = network::kSupportZero * lambda.cwiseAbs().maxCoeff();
+  const double zero = kSupportZero * lambda.cwiseAbs().maxCoeff();
   std::map<int, Screw6> wrench;  // by coupling, user frame
   for (Index row = 0; row < lambda.size(); ++row) {
     if (std::abs(lambda(row)) <= zero) continue;
@@ -186,10 +185,10 @@ void add_unlisted(std::vector<Participant>& listed, const std::string& kind, con
 
 }  // namespace
 
-Verdict sparse_network_verdict(const Model& model, const SparseNetworkResult& r, const linalg::RankTolerance& tolerance) {
+Verdict sparse_network_verdict(const Model& model, const SparseNetworkResult& r, const Tolerances& tolerances) {
   Verdict v;
   const Conditioning frame{r.frame_origin, r.frame_scale};
-  const std::vector<IdleMotion> idle = idle_spins(model, r.ground, tolerance);
+  const std::vector<IdleMotion> idle = idle_spins(model, r.ground, tolerances);
   int idle_count = 0;
   for (const auto& i : idle) idle_count += i.count;
   const int moving = r.FN - idle_count;  // motions that are not idle spins

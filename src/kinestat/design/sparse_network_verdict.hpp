@@ -12,6 +12,7 @@
 #include "kinestat/linalg/rank_decision.hpp"
 #include "kinestat/network/model.hpp"
 #include "kinestat/network/sparse_network.hpp"
+#include "kinestat/tolerances.hpp"
 
 namespace kinestat::design {
 
@@ -23,8 +24,8 @@ inline constexpr Eigen::Index kSparseVerdictStates = 8;
 /// The verdict for `model` analysed as `result` by network::analyse_network_sparse (with
 /// `vectors` = kSparseVerdictStates for the states; with none the states hold the idle spins
 /// only and `where` comes from the supports). Idle spins are found body by body with
-/// `tolerance`, as on the dense path. `changes` stays empty; `note` says why and how to get one.
+/// `tolerances`, as on the dense path. `changes` stays empty; `note` says why and how to get one.
 Verdict sparse_network_verdict(const network::Model& model, const network::SparseNetworkResult& result,
-                               const linalg::RankTolerance& tolerance = {});
+                               const Tolerances& tolerances = {});
 
 }  // namespace kinestat::design

@@ -26,10 +26,11 @@ namespace {
 // S_c⁻¹ times one of D̂, so `unscale` (S_c, or S_r for the left null space) brings it back
 // before normalising. The echelon basis maps to the echelon basis of D̂ itself (same free
 // variables), so the result is the one an unscaled analysis would print.
-Eigen::MatrixXd deterministic_null_space(const Eigen::MatrixXd& svd_basis, const Eigen::VectorXd& unscale) {
+Eigen::MatrixXd deterministic_null_space(const Eigen::MatrixXd& svd_basis, const Eigen::VectorXd& unscale,
+                                         double free_variable) {
   if (svd_basis.cols() == 0) return svd_basis;
   std::vector<Eigen::Index> free_variables;
-  const Eigen::MatrixXd echelon = linalg::echelon_null_basis(svd_basis, free_variables);
+  const Eigen::MatrixXd echelon = linalg::echelon_null_basis(svd_basis, free_variables, free_variable);
   Eigen::MatrixXd basis = echelon.cols() == svd_basis.cols() ? echelon : svd_basis;
   basis = unscale.asDiagonal() * basis;
   // The one sign convention (linalg/sign_convention.hpp): every report shows this sign.
@@ -182,30 +183,30 @@ FrameworkAnalysis analyse_framework(const FrameworkModel& model, const AnalysisO
   if (std::max(result.m, result.n) > options.dense_limit) {
     result.method = RankMethod::sparse_qr;
     if (options.sparse_vectors > 0 && result.m > 0 && result.n > 0) {
-      result.decision = linalg::sparse_rank_threshold(jacobian, options.tolerance);
+      result.decision = linalg::sparse_rank_threshold(jacobian, linalg::RankTolerance{options.tolerances.rank});
       sparse_vectors(result, jacobian, options.sparse_vectors);
     } else {
-      result.decision = linalg::sparse_numerical_rank(jacobian, options.tolerance, &result.factor_memory);
+      result.decision = linalg::sparse_numerical_rank(jacobian, linalg::RankTolerance{options.tolerances.rank}, &result.factor_memory);
     }
   } else if (!options.vectors) {
     // Counts only: singular values without singular vectors.
     if (result.m > 0 && result.n > 0) {
       result.singular_values = linalg::singular_values(Eigen::MatrixXd(jacobian));
-      result.decision = linalg::decide_rank(result.singular_values, result.m, result.n, options.tolerance);
+      result.decision = linalg::decide_rank(result.singular_values, result.m, result.n, linalg::RankTolerance{options.tolerances.rank});
     }
   } else {
     const Eigen::MatrixXd dense(jacobian);
-    const linalg::SvdAnalysis svd = linalg::analyse_svd(dense, options.tolerance);
+    const linalg::SvdAnalysis svd = linalg::analyse_svd(dense, linalg::RankTolerance{options.tolerances.rank});
     result.decision = svd.rank;
     result.singular_values = svd.singular_values;
     result.vectors = true;
     const Eigen::Index rank = svd.rank.rank;
 
     // Kinematic modes: V columns of zero singular values and those in excess of the rows.
-    collect_modes(result, deterministic_null_space(svd.null_space(), result.column_scale));
+    collect_modes(result, deterministic_null_space(svd.null_space(), result.column_scale, options.tolerances.free_variable));
     // Stress states: U columns of zero singular values and those in excess of the columns.
     const Eigen::MatrixXd transposed = dense.transpose();
-    collect_stresses(result, deterministic_null_space(svd.left_null_space(), result.row_scale));
+    collect_stresses(result, deterministic_null_space(svd.left_null_space(), result.row_scale, options.tolerances.free_variable));
     const auto fixed_rows = static_cast<Eigen::Index>(result.partition.fixed_deformations.size());
     // One minimal set of releases: the rows a column-pivoted QR of D(c)ᵀ leaves out of a basis
     // of the row space; then, among the kept rows, the columns left out of a column basis are

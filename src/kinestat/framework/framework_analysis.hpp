@@ -13,11 +13,14 @@
 #include "kinestat/framework/framework_model.hpp"
 #include "kinestat/framework/mode_order.hpp"
 #include "kinestat/linalg/rank_decision.hpp"
+#include "kinestat/tolerances.hpp"
 
 namespace kinestat::framework {
 
 struct AnalysisOptions {
-  linalg::RankTolerance tolerance;  ///< relative to σ_max of the non-dimensional D(c)
+  /// The rank of D(c) (relative to σ_max of the scaled, non-dimensional D(c)) and the choice of
+  /// free variables of its mode and stress bases.
+  Tolerances tolerances;
   /// Largest max(m, n) analysed with a dense SVD; larger models get counts from a sparse QR
   /// (no singular values, modes or stress states).
   Eigen::Index dense_limit = 1500;
@@ -92,8 +95,6 @@ struct FrameworkAnalysis {
   double relative_smallest_singular_value() const;
 };
 
-/// Component magnitudes below this (of a unit-norm mode or stress state) count as zero.
-inline constexpr double kModeZero = 1e-9;
 
 /// The first stage of analyse_framework: fills indexing, partition, counts, rows, the
 /// characteristic length and the length scaling of `result`, and returns the matrix every rank

@@ -187,7 +187,7 @@ class FrameworkReader {
       file_.fail(nodes, fmt::format("a {} connects exactly two nodes, found {}", type_text, element.nodes.size()));
     } else {
       const double l = (model_.nodes[element.nodes[1]].position - model_.nodes[element.nodes[0]].position).norm();
-      if (!(l > kZeroLength * length_)) {
+      if (!(l > kCoincident * length_)) {
         file_.fail(nodes, fmt::format("zero-length element '{}': nodes '{}' and '{}' coincide", element.name,
                                       model_.nodes[element.nodes[0]].name, model_.nodes[element.nodes[1]].name));
       }

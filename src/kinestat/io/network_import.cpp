@@ -7,14 +7,11 @@
 
 #include "kinestat/io/printable_text.hpp"
 #include "kinestat/io/yaml_support.hpp"
+#include "kinestat/tolerances.hpp"
 
 namespace kinestat::io {
 
 namespace {
-/// Components smaller than this fraction of a vector's largest are rounding noise of a
-/// rotation (cos 90° = 6e-17) and are taken as zero; the others keep 12 significant digits of
-/// the largest, so noise of the other program's pose arithmetic (1.8000000000000003) goes.
-constexpr double kNoise = 1e-12;
 
 // A name must print in every report and read back from the YAML the network is written as: it
 // is refused when io::printable_text would change it (XML lets `&#1;` and raw control bytes
@@ -52,7 +49,7 @@ screw::Vec3 NetworkBuilder::exact(const Eigen::Vector3d& v) {
   // Digits after the decimal point that keep 12 significant digits of the largest component.
   const int decimals = largest > 0 ? std::clamp(12 - static_cast<int>(std::floor(std::log10(largest))), 0, 340) : 0;
   for (int i = 0; i < 3; ++i) {
-    const double c = std::abs(v(i)) < kNoise * largest ? 0.0 : v(i);
+    const double c = std::abs(v(i)) < kImportNoise * largest ? 0.0 : v(i);
     std::string text = fmt::format("{:.{}f}", c, decimals);
     if (text.find('.') != std::string::npos) {
       while (text.back() == '0') text.pop_back();

@@ -15,6 +15,7 @@
 #include "kinestat/io/input_error.hpp"
 #include "kinestat/io/spacar_format.hpp"
 #include "kinestat/io/text_file.hpp"
+#include "kinestat/tolerances.hpp"
 
 namespace kinestat::io {
 
@@ -29,10 +30,6 @@ namespace {
 
 /// Largest node or element number accepted: keeps every count far from overflow.
 constexpr long kMaxNumber = 100'000'000;
-/// A local y direction closer than this (sine of the angle) to the beam axis is parallel.
-constexpr double kParallel = 1e-9;
-/// An element shorter than this fraction of the model's characteristic length has zero length.
-constexpr double kZeroLength = 1e-12;
 
 struct Token {
   std::string text;
@@ -248,7 +245,7 @@ class SpacarReader {
     if (!(largest > 0)) fail(r.values[3], fmt::format("element {}: the hinge axis is the zero vector", number));
     // Compared with the largest component, so that huge numbers cannot overflow the test.
     const Eigen::Vector3d unit = axis / largest;
-    if (std::sqrt(unit.squaredNorm() - 1.0) > kParallel)
+    if (std::sqrt(unit.squaredNorm() - 1.0) > kParallelAxes)
       fail(r.values[3], fmt::format("element {}: the hinge axis ({}, {}, {}) is not along a global axis x, y or z; kinestat "
                                     "couples two orientations through their relative rotations about the global axes, so "
                                     "a hinge about another axis is not supported", number, axis.x(), axis.y(), axis.z()));
@@ -444,7 +441,7 @@ class SpacarReader {
           const std::size_t q = beam ? orientation_index_.at(e.rq) : position_index_.at(e.q);
           element.nodes = {p, q};
           const Eigen::Vector3d axis = model_.nodes[q].position - model_.nodes[p].position;
-          if (!(axis.norm() > kZeroLength * length))
+          if (!(axis.norm() > kCoincident * length))
             fail(e.node_tokens.back(), fmt::format("zero-length element {}: nodes {} and {} coincide", e.number, e.p, e.q));
           const Eigen::Vector3d x = axis.normalized();
           if (beam) {
@@ -454,7 +451,7 @@ class SpacarReader {
               // SPACAR Light's default local y is the global y axis.
               const Eigen::Vector3d given = e.y.value_or(Eigen::Vector3d::UnitY());
               const Eigen::Vector3d across = given - given.dot(x) * x;
-              if (!(given.norm() > 0) || !(across.norm() > kParallel * given.norm()))
+              if (!(given.norm() > 0) || !(across.norm() > kParallelAxes * given.norm()))
                 fail(e.keyword, fmt::format("element {}: the local y direction ({}, {}, {}) is parallel to the element "
                                             "axis from node {} to node {}", e.number, given.x(), given.y(), given.z(), e.p, e.q));
               const Eigen::Vector3d y = across.normalized();

@@ -9,6 +9,7 @@
 
 #include "kinestat/io/input_error.hpp"
 #include "kinestat/io/printable_text.hpp"
+#include "kinestat/tolerances.hpp"
 
 namespace kinestat::io {
 
@@ -20,8 +21,6 @@ using framework::FrameworkModel;
 
 namespace {
 
-/// Nodes closer than this fraction of the characteristic length coincide (a joint).
-constexpr double kCoincident = 1e-12;
 
 std::string number(double value) { return fmt::format("{}", value == 0.0 ? 0.0 : value); }
 
@@ -44,16 +43,27 @@ class SpacarWriter {
  private:
   [[noreturn]] void refuse(const std::string& problem) const { throw InputError({options_.source, 0, 0}, problem); }
 
-  bool is_joint(const Element& e) const {
+  bool is_joint(const Element& e) const { return holds_translations_only(e) && coincident(e); }
+
+  // A spatial two-node rigid body that holds the second node's position in the first node's
+  // frame and leaves its orientation free is a SPACAR PINBODY also when the nodes are apart
+  // (the reader makes exactly this element of a PINBODY whose position nodes differ).
+  bool is_offset_pin_body(const Element& e) const { return !planar_ && holds_translations_only(e) && !coincident(e); }
+
+  // Relative translations fixed, relative rotations released.
+  bool holds_translations_only(const Element& e) const {
     if (e.type != ElementType::rigid_body || e.nodes.size() != 2) return false;
-    const double length = framework::characteristic_length(model_);
-    if (!((model_.nodes[e.nodes[0]].position - model_.nodes[e.nodes[1]].position).norm() <= kCoincident * length)) return false;
     const std::size_t translations = planar_ ? 2 : 3;
     for (std::size_t k = 0; k < e.roles.size(); ++k) {
       const DeformationRole want = k < translations ? DeformationRole::fixed : DeformationRole::released;
       if (e.roles[k] != want) return false;
     }
     return true;
+  }
+
+  bool coincident(const Element& e) const {
+    const double length = framework::characteristic_length(model_);
+    return (model_.nodes[e.nodes[0]].position - model_.nodes[e.nodes[1]].position).norm() <= kCoincident * length;
   }
 
   // A two-node rigid body whose relative translations are released couples the orientations
@@ -83,6 +93,8 @@ class SpacarWriter {
     std::set<std::size_t> hinged, beamed;
     for (const Element& e : model_.elements) {
       if (hinge_axis(e) >= 0) hinged.insert(e.nodes.begin(), e.nodes.end());
+      else if (is_offset_pin_body(e))
+        beamed.insert(e.nodes[0]);  // the pin body ties only its first node's orientation to a position
       else if (e.type == ElementType::beam || (e.type == ElementType::rigid_body && !is_joint(e)))
         beamed.insert(e.nodes.begin(), e.nodes.end());
     }
@@ -152,10 +164,11 @@ class SpacarWriter {
       if (is_shared_joint(element)) continue;  // expressed by the shared position node
       number_.push_back(next);
       const std::size_t p = element.nodes[0];
-      if (is_joint(element)) {
+      if (is_joint(element) || is_offset_pin_body(element)) {
         used_orientations_.insert(p);
-        out_ += fmt::format("PINBODY  {:4}  {:4} {:4}  {:4}  # joint {}\n", next++, position_[p], orientation(p),
-                            position_[element.nodes[1]], printable_text(element.name));
+        out_ += fmt::format("PINBODY  {:4}  {:4} {:4}  {:4}  # {} {}\n", next++, position_[p], orientation(p),
+                            position_[element.nodes[1]], is_joint(element) ? "joint" : "pin body",
+                            printable_text(element.name));
       } else if (element.type == ElementType::truss) {
         out_ += fmt::format("{}  {:4}  {:4}  {:4}  # element {}\n", planar_ ? "PLTRUSS" : "TRUSS", next, position_[p],
                             position_[element.nodes[1]], printable_text(element.name));
@@ -195,6 +208,13 @@ class SpacarWriter {
         }
       }
     }
+    // SPACAR gives a node an orientation only through an element that uses it; a pin body's
+    // carried node has none of its own, and the reader refuses a PINBODY onto such a node.
+    for (const Element& element : model_.elements)
+      if (is_offset_pin_body(element) && !used_orientations_.count(element.nodes[1]))
+        refuse(fmt::format("pin body '{}': node '{}' turns freely and no beam, hinge or body uses its orientation, so SPACAR "
+                           "has no orientation node for it; join it to a beam or a body, or make it a translational node",
+                           element.name, model_.nodes[element.nodes[1]].name));
     out_ += "\n";
   }
 

@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 
 #include <vector>
+#include "kinestat/tolerances.hpp"
 
 namespace kinestat::linalg {
 
@@ -34,8 +35,6 @@ struct Equilibration {
 /// log2) or after kMaxEquilibrationIterations.
 Equilibration equilibrate(const std::vector<EntryMagnitude>& pattern, Eigen::Index rows, Eigen::Index cols);
 
-/// Convergence tolerance of `equilibrate` on log2 of the row and column maxima.
-inline constexpr double kEquilibrationTolerance = 1e-3;
 /// Iteration cap of `equilibrate` (each iteration roughly halves the spread left in log2).
 inline constexpr int kMaxEquilibrationIterations = 100;
 

@@ -227,11 +227,12 @@ HomogeneousSolution solve_homogeneous(const RationalMatrix& a) {
   return solution;
 }
 
-Eigen::MatrixXd echelon_null_basis(const Eigen::MatrixXd& null_basis, std::vector<Eigen::Index>& free_variables) {
+Eigen::MatrixXd echelon_null_basis(const Eigen::MatrixXd& null_basis, std::vector<Eigen::Index>& free_variables,
+                                   double free_variable) {
   const Eigen::Index cols = null_basis.rows(), nullity = null_basis.cols();
   std::vector<Eigen::Index> top_down(static_cast<std::size_t>(cols));
   std::iota(top_down.begin(), top_down.end(), Eigen::Index{0});
-  free_variables = greedy_independent_rows(null_basis, top_down, kFreeVariableResidual, nullity);
+  free_variables = greedy_independent_rows(null_basis, top_down, free_variable, nullity);
   std::sort(free_variables.begin(), free_variables.end());
   const auto found = static_cast<Eigen::Index>(free_variables.size());
   Eigen::MatrixXd at_free(found, nullity);
@@ -245,7 +246,7 @@ Eigen::MatrixXd echelon_null_basis(const Eigen::MatrixXd& null_basis, std::vecto
   return coefficients;
 }
 
-HomogeneousSolution solve_homogeneous(const Eigen::MatrixXd& a, const RankTolerance& tolerance) {
+HomogeneousSolution solve_homogeneous(const Eigen::MatrixXd& a, const RankTolerance& tolerance, double free_variable) {
   const Eigen::Index rows = a.rows(), cols = a.cols();
   HomogeneousSolution solution;
   Eigen::MatrixXd null_basis;
@@ -257,7 +258,7 @@ HomogeneousSolution solve_homogeneous(const Eigen::MatrixXd& a, const RankTolera
     solution.rank = svd.rank;
     null_basis = svd.null_space();
   }
-  solution.coefficients = echelon_null_basis(null_basis, solution.free_variables);
+  solution.coefficients = echelon_null_basis(null_basis, solution.free_variables, free_variable);
 
   // Rows kept from the bottom up; redundant = the rest. Fall back to column-pivoted QR of A^T
   // if the greedy pass disagrees with the SVD rank (only possible near the tolerance).
@@ -277,7 +278,8 @@ HomogeneousSolution solve_homogeneous(const Eigen::MatrixXd& a, const RankTolera
   return solution;
 }
 
-HomogeneousSolution with_free_variables(const HomogeneousSolution& solution, std::vector<Eigen::Index> chosen) {
+HomogeneousSolution with_free_variables(const HomogeneousSolution& solution, std::vector<Eigen::Index> chosen,
+                                        double free_variable) {
   const Eigen::Index nullity = solution.nullity();
   const Eigen::Index n = solution.coefficients.rows();
   if (static_cast<Eigen::Index>(chosen.size()) != nullity)
@@ -292,7 +294,7 @@ HomogeneousSolution with_free_variables(const HomogeneousSolution& solution, std
     const double scale = std::max(1.0, rows_of_k.size() > 0 ? rows_of_k.cwiseAbs().maxCoeff() : 1.0);
     std::vector<Eigen::Index> order(chosen.size());
     std::iota(order.begin(), order.end(), Eigen::Index{0});
-    const auto independent = greedy_independent_rows(rows_of_k, order, kFreeVariableResidual * scale, nullity);
+    const auto independent = greedy_independent_rows(rows_of_k, order, free_variable * scale, nullity);
     for (std::size_t i = 0; i < chosen.size(); ++i)
       if (std::find(independent.begin(), independent.end(), static_cast<Eigen::Index>(i)) == independent.end())
         return chosen[i];
@@ -326,7 +328,7 @@ HomogeneousSolution with_free_variables(const HomogeneousSolution& solution, std
   }
   Eigen::JacobiSVD<Eigen::MatrixXd> svd(at_chosen);
   const auto& sv = svd.singularValues();
-  if (nullity > 0 && sv(nullity - 1) <= kFreeVariableResidual * std::max(1.0, sv(0)))
+  if (nullity > 0 && sv(nullity - 1) <= free_variable * std::max(1.0, sv(0)))
     throw DependentFreeVariable(first_dependent(in_request_order), "chosen variables are not independent");
   result.coefficients = solution.coefficients * at_chosen.inverse();
   clean_small(result.coefficients);

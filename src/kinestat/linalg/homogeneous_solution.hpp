@@ -12,6 +12,7 @@
 
 #include "kinestat/linalg/rank_decision.hpp"
 #include "kinestat/linalg/rational_matrix.hpp"
+#include "kinestat/tolerances.hpp"
 
 namespace kinestat::linalg {
 
@@ -27,11 +28,6 @@ struct HomogeneousSolution {
   Eigen::Index nullity() const { return static_cast<Eigen::Index>(free_variables.size()); }
 };
 
-/// Relative threshold for a variable to count as able to be free in floating point: its row of
-/// the orthonormal null-space basis must keep this much norm after removing earlier choices.
-inline constexpr double kFreeVariableResidual = 1e-9;
-/// Coefficients below this fraction of the largest coefficient are printed and stored as zero.
-inline constexpr double kCoefficientZero = 1e-12;
 
 /// Solves A x = 0 exactly. Free variables are the earliest variables that can be free
 /// (elimination pivots from the last column backwards), which reproduces Davies' choice of
@@ -40,14 +36,18 @@ inline constexpr double kCoefficientZero = 1e-12;
 HomogeneousSolution solve_homogeneous(const RationalMatrix& a);
 
 /// Solves A x = 0 in floating point: rank from the SVD, null space from V, then the same
-/// rules for free variables and redundant rows as the exact version, with named tolerances.
-HomogeneousSolution solve_homogeneous(const Eigen::MatrixXd& a, const RankTolerance& tolerance);
+/// rules for free variables and redundant rows as the exact version, with named tolerances:
+/// `free_variable` is the residual a variable's row of the null basis must keep to be chosen
+/// free (Tolerances::free_variable).
+HomogeneousSolution solve_homogeneous(const Eigen::MatrixXd& a, const RankTolerance& tolerance,
+                                      double free_variable = kFreeVariableResidual);
 
 /// The null-space basis with the earliest possible free variables (the floating-point rule of
 /// solve_homogeneous) from any orthonormal basis `null_basis` (n × nullity) of it: columns are
 /// identity on `free_variables` (set here, increasing). When fewer than nullity variables pass
-/// kFreeVariableResidual (only right at the tolerance), the result has that many zero columns.
-Eigen::MatrixXd echelon_null_basis(const Eigen::MatrixXd& null_basis, std::vector<Eigen::Index>& free_variables);
+/// `free_variable` (only right at the tolerance), the result has that many zero columns.
+Eigen::MatrixXd echelon_null_basis(const Eigen::MatrixXd& null_basis, std::vector<Eigen::Index>& free_variables,
+                                   double free_variable = kFreeVariableResidual);
 
 /// Thrown when requested free variables cannot all be free together.
 class DependentFreeVariable : public Error {
@@ -61,8 +61,10 @@ class DependentFreeVariable : public Error {
 };
 
 /// Re-expresses `solution` in terms of `chosen` (exactly nullity() distinct indices, any
-/// order; the result lists them in increasing order). Throws DependentFreeVariable.
-HomogeneousSolution with_free_variables(const HomogeneousSolution& solution, std::vector<Eigen::Index> chosen);
+/// order; the result lists them in increasing order). Throws DependentFreeVariable when they
+/// are dependent to within `free_variable` (Tolerances::free_variable).
+HomogeneousSolution with_free_variables(const HomogeneousSolution& solution, std::vector<Eigen::Index> chosen,
+                                        double free_variable = kFreeVariableResidual);
 
 /// Indices of the rows of `a` that depend on later rows (exact).
 std::vector<Eigen::Index> redundant_rows(const RationalMatrix& a);

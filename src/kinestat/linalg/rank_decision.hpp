@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 
 #include <optional>
+#include "kinestat/tolerances.hpp"
 
 namespace kinestat::linalg {
 
@@ -38,10 +39,6 @@ struct RankDecision {
   bool close() const;
 };
 
-/// A rank decision with a gap below this ratio is reported as close.
-inline constexpr double kCloseRankGap = 1e3;
-/// A dropped singular value this many times the rounding level is not rounding noise.
-inline constexpr double kAboveRounding = 1e4;
 
 /// Decides the rank from singular values sorted in decreasing order.
 RankDecision decide_rank(const Eigen::VectorXd& singular_values, Eigen::Index rows, Eigen::Index cols,

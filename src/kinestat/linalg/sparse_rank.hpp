@@ -6,6 +6,7 @@
 
 #include "kinestat/linalg/rank_decision.hpp"
 #include "kinestat/linalg/sparse_qr.hpp"
+#include "kinestat/tolerances.hpp"
 
 namespace kinestat::linalg {
 
@@ -16,11 +17,6 @@ namespace kinestat::linalg {
 RankDecision sparse_numerical_rank(const Eigen::SparseMatrix<double>& a, const RankTolerance& tolerance = {},
                                    std::size_t* peak_memory = nullptr);
 
-/// Heath's rule compares the remaining norm of each column, which carries rounding of order
-/// (m + n)·eps·σ_max from the whole elimination, so the sparse default is SuiteSparseQR's own:
-/// 20·(m + n)·eps·σ_max (a dependent column kept at 1.7 times the dense threshold made a wrong
-/// release proposal on folded-sheet-guide-6). An explicit tolerance is used as given.
-inline constexpr double kSparseToleranceFactor = 20.0;
 
 /// The absolute threshold of the rank rule for `a`, with σ_max estimated: `decision.largest`,
 /// `decision.threshold` and `decision.rounding_level` are set, the rank is left to the caller.

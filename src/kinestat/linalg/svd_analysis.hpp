@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 
 #include "kinestat/linalg/rank_decision.hpp"
+#include "kinestat/tolerances.hpp"
 
 namespace kinestat::linalg {
 
@@ -28,9 +29,6 @@ struct SvdAnalysis {
   Eigen::MatrixXd left_null_space() const { return u.rightCols(u.cols() - rank.rank); }
 };
 
-/// A check of |A - U S V^T| and of orthonormality (on probe vectors) passes below this,
-/// relative to max(1, |A|).
-inline constexpr double kSvdResidualTolerance = 1e-10;
 
 /// Which singular vectors to return, completed to full orthonormal bases.
 enum class SvdVectors { both, right_only };

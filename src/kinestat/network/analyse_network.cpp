@@ -66,8 +66,9 @@ LinearForms stack(const std::vector<LinearForms>& blocks, Index cols, bool exact
   return s;
 }
 
-// Rank of forms: exact, or against an absolute threshold `reference * kPairRankRelative`.
-linalg::RankDecision forms_rank(const LinearForms& forms, double reference) {
+// Rank of forms: exact, or against an absolute threshold `reference * relative` (relative:
+// Tolerances::pair_rank).
+linalg::RankDecision forms_rank(const LinearForms& forms, double reference, double relative) {
   if (forms.values.size() == 0) return linalg::RankDecision{0, forms.exact.has_value(), 0, 0, 0, 0};
   if (forms.exact) {
     linalg::RankDecision d;
@@ -76,14 +77,14 @@ linalg::RankDecision forms_rank(const LinearForms& forms, double reference) {
     return d;
   }
   const double largest = forms.values.norm();
-  if (largest <= kPairRankRelative * reference) {
+  if (largest <= relative * reference) {
     linalg::RankDecision d;
-    d.threshold = d.rounding_level = kPairRankRelative * reference;
+    d.threshold = d.rounding_level = relative * reference;
     d.largest = d.largest_dropped = largest;
     return d;
   }
   linalg::RankTolerance tolerance;
-  tolerance.relative = kPairRankRelative * reference / largest;
+  tolerance.relative = relative * reference / largest;
   return linalg::numerical_rank(forms.values, tolerance);
 }
 
@@ -113,8 +114,9 @@ LinearForms blocks_to_user(const LinearForms& forms, int d, ToUser to_user) {
 
 // ---- the four methods -------------------------------------------------------------------
 
-linalg::HomogeneousSolution solve(const RationalMatrix& a, bool exact, const linalg::RankTolerance& tolerance) {
-  return exact ? linalg::solve_homogeneous(a) : linalg::solve_homogeneous(a.to_double(), tolerance);
+linalg::HomogeneousSolution solve(const RationalMatrix& a, bool exact, const Tolerances& tolerances) {
+  return exact ? linalg::solve_homogeneous(a)
+               : linalg::solve_homogeneous(a.to_double(), {tolerances.rank}, tolerances.free_variable);
 }
 
 LinearForms solution_forms(const linalg::HomogeneousSolution& s) {
@@ -149,7 +151,7 @@ LinearForms contract_graph(const LinearForms& system, const Eigen::MatrixXi& gra
 }
 
 // The column spaces of two sets of forms coincide.
-bool same_span(const LinearForms& a, const LinearForms& b) {
+bool same_span(const LinearForms& a, const LinearForms& b, double relative) {
   if (a.values.cols() != b.values.cols()) return false;
   if (a.values.cols() == 0) return true;
   if (a.exact && b.exact) {
@@ -159,8 +161,8 @@ bool same_span(const LinearForms& a, const LinearForms& b) {
   Eigen::MatrixXd joined(a.values.rows(), a.values.cols() + b.values.cols());
   joined << a.values, b.values;
   const double reference = std::max(a.values.norm(), b.values.norm());
-  const auto ra = forms_rank(a, reference).rank, rb = forms_rank(b, reference).rank;
-  return ra == rb && forms_rank({joined, std::nullopt}, reference).rank == ra;
+  const auto ra = forms_rank(a, reference, relative).rank, rb = forms_rank(b, reference, relative).rank;
+  return ra == rb && forms_rank({joined, std::nullopt}, reference, relative).rank == ra;
 }
 
 // Magnitudes of unit translations and torques scale with length; the rest do not.
@@ -322,7 +324,7 @@ NetworkResult analyse_network(const Model& model, const AnalysisOptions& options
   }
 
   // (i) circulation law, (ii) cutset law, (iii) cutset motions, (iv) circuit actions.
-  const linalg::RankTolerance& tol = options.tolerance;
+  const Tolerances& tol = options.tolerances;
   r.circulation.solution = solve(solved.MN, r.exact, tol);
   r.cutset_law.solution = solve(solved.AN, r.exact, tol);
   r.cutset_motion.solution = solve(solved.AN.transpose(), r.exact, tol);
@@ -369,7 +371,7 @@ NetworkResult analyse_network(const Model& model, const AnalysisOptions& options
     if (names.empty()) return;
     const auto chosen = chosen_primaries(names, magnitudes, request_index, method.solution.nullity(), kind, total);
     try {
-      method.solution = linalg::with_free_variables(method.solution, chosen);
+      method.solution = linalg::with_free_variables(method.solution, chosen, options.tolerances.free_variable);
     } catch (const linalg::DependentFreeVariable& error) {
       const auto it = std::find(chosen.begin(), chosen.end(), error.variable());
       const std::size_t at = it == chosen.end() ? 0 : static_cast<std::size_t>(it - chosen.begin());
@@ -402,8 +404,8 @@ NetworkResult analyse_network(const Model& model, const AnalysisOptions& options
   const LinearForms A_ii = contract_couplings(solved.AD, solved.first_action, K_action, d, r.exact);
   const LinearForms M_iii = contract_graph(solution_forms(r.cutset_motion.solution), r.Q, d, r.exact);
   const LinearForms A_iv = contract_graph(solution_forms(r.circuit_action.solution), r.B, d, r.exact);
-  r.motion_methods_agree = same_span(M_i, M_iii);
-  r.action_methods_agree = same_span(A_ii, A_iv);
+  r.motion_methods_agree = same_span(M_i, M_iii, options.tolerances.pair_rank);
+  r.action_methods_agree = same_span(A_ii, A_iv, options.tolerances.pair_rank);
   r.circulation.contracted = contract_couplings(user.MD, user.first_motion, r.motion_magnitudes, d, r.exact);
   r.cutset_law.contracted = contract_couplings(user.AD, user.first_action, r.action_magnitudes, d, r.exact);
   r.cutset_motion.contracted = blocks_to_user(M_iii, d, motion_to_user);
@@ -427,11 +429,12 @@ NetworkResult analyse_network(const Model& model, const AnalysisOptions& options
   const double motion_scale = M_i.values.norm(), action_scale = A_ii.values.norm();
   // A primary appears when its column is nonzero: exactly, or in floating point above the
   // same absolute threshold that forms_rank uses, so rounding noise does not add primaries.
-  auto appearing = [](const LinearForms& f, double reference) {
+  const double pair_relative = options.tolerances.pair_rank;
+  auto appearing = [pair_relative](const LinearForms& f, double reference) {
     std::vector<int> used;
     for (Index p = 0; p < f.values.cols(); ++p) {
       const bool nonzero = f.exact ? !f.exact->block(0, p, f.exact->rows(), 1).is_zero()
-                                   : f.values.col(p).cwiseAbs().maxCoeff() > kPairRankRelative * reference;
+                                   : f.values.col(p).cwiseAbs().maxCoeff() > pair_relative * reference;
       if (nonzero) used.push_back(static_cast<int>(p));
     }
     return used;
@@ -451,7 +454,7 @@ NetworkResult analyse_network(const Model& model, const AnalysisOptions& options
       pair.body_i = i;
       pair.body_j = j;
       const LinearForms relative = combine(body_motion[static_cast<std::size_t>(j)], body_motion[static_cast<std::size_t>(i)], -1);
-      pair.motion_rank = forms_rank(relative, motion_scale);
+      pair.motion_rank = forms_rank(relative, motion_scale, pair_relative);
       pair.fij = static_cast<int>(pair.motion_rank.rank);
       pair.motion_primaries = appearing(relative, motion_scale);
       pair.motion_system = combine(body_motion_user[static_cast<std::size_t>(j)], body_motion_user[static_cast<std::size_t>(i)], -1);
@@ -467,7 +470,7 @@ NetworkResult analyse_network(const Model& model, const AnalysisOptions& options
         row.f = user.first_motion[static_cast<std::size_t>(e) + 1] - user.first_motion[static_cast<std::size_t>(e)];
         row.c = d - row.f;
         const LinearForms action = block_rows(A_ii, static_cast<Index>(e) * d, d);
-        row.action_rank = forms_rank(action, action_scale);
+        row.action_rank = forms_rank(action, action_scale, pair_relative);
         row.cij = static_cast<int>(row.action_rank.rank);
         row.action_primaries = appearing(action, action_scale);
         row.action_system = block_rows(r.cutset_law.contracted, static_cast<Index>(e) * d, d);
@@ -543,8 +546,8 @@ NetworkResult analyse_network(const Model& model, const AnalysisOptions& options
     std::vector<screw::CouplingBasis> bases;
     for (const auto& c : model.couplings) bases.push_back(screw::coupling_basis(c.type, conditioned.to_frame(c.geometry, model.space), model.space));
     const UnitMatrices u = unit_matrices(bases, d, r.B, r.Q);
-    const int fn = r.F - static_cast<int>(linalg::numerical_rank(u.MN.to_double(), tol).rank);
-    const int cn = r.C - static_cast<int>(linalg::numerical_rank(u.AN.to_double(), tol).rank);
+    const int fn = r.F - static_cast<int>(linalg::numerical_rank(u.MN.to_double(), {tol.rank}).rank);
+    const int cn = r.C - static_cast<int>(linalg::numerical_rank(u.AN.to_double(), {tol.rank}).rank);
     if (fn != r.FN || cn != r.CN) r.floating_point_disagreement = std::make_pair(fn, cn);
   }
   return r;

@@ -13,6 +13,7 @@
 #include "kinestat/linalg/rank_decision.hpp"
 #include "kinestat/network/model.hpp"
 #include "kinestat/network/network_result.hpp"
+#include "kinestat/tolerances.hpp"
 
 namespace kinestat::network {
 
@@ -25,14 +26,10 @@ enum class Arithmetic {
 /// Literals longer than this are taken to be rounded irrationals (e.g. cos 30° printed in
 /// full), for which floating point with a tolerance gives the intended answer.
 inline constexpr int kExactMaxSignificantDigits = 12;
-/// Pair and coupling systems are ranked in floating point against the size of the whole
-/// network's motion (or action) forms, not against their own, so a pair that cannot move
-/// relative to each other (all entries rounding noise) gets rank 0.
-inline constexpr double kPairRankRelative = 1e-10;
 
 struct AnalysisOptions {
   Arithmetic arithmetic = Arithmetic::automatic;
-  linalg::RankTolerance tolerance;                     ///< floating point only
+  Tolerances tolerances;  ///< floating point only: the main rank, pair freedoms, free variables
   std::optional<std::vector<std::string>> primary;     ///< overrides Model::primary
   std::vector<std::pair<std::string, screw::Rational>> values;  ///< added to / overriding Model::values
   bool all_pairs = true;                               ///< every pair of bodies, or only coupled pairs

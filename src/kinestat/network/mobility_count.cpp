@@ -2,12 +2,13 @@
 
 #include "kinestat/linalg/rational_matrix.hpp"
 #include "kinestat/linalg/svd_analysis.hpp"
+#include "kinestat/tolerances.hpp"
 
 namespace kinestat::network {
 
 MobilityCount count_mobility(int bodies, const std::vector<graph::Edge>& edges,
                              const std::vector<const screw::CouplingBasis*>& bases, int d, bool exact,
-                             const linalg::RankTolerance& tolerance) {
+                             const Tolerances& tolerances) {
   const graph::CouplingGraph graph(bodies, edges);
   const graph::SpanningTree tree = graph.breadth_first_tree(0);
   if (static_cast<int>(tree.branches.size()) != bodies - 1)
@@ -40,7 +41,7 @@ MobilityCount count_mobility(int bodies, const std::vector<graph::Edge>& edges,
     }
   count.m = static_cast<int>(rows == 0 || count.F == 0 ? 0
                              : exact ? linalg::exact_rank(exact_mn)
-                                     : linalg::numerical_rank(mn, tolerance).rank);
+                                     : linalg::numerical_rank(mn, {tolerances.rank}).rank);
   count.FN = count.F - count.m;
   count.CN = d * count.l - count.m;
   return count;

@@ -8,6 +8,7 @@
 #include "kinestat/graph/coupling_graph.hpp"
 #include "kinestat/linalg/rank_decision.hpp"
 #include "kinestat/screw/coupling_basis.hpp"
+#include "kinestat/tolerances.hpp"
 
 namespace kinestat::network {
 
@@ -23,11 +24,11 @@ struct MobilityCount {
 /// Counts the network of `bodies` joined by `edges` (coupling e joins edges[e].from to
 /// edges[e].to) whose couplings have the unit motions of `bases[e]` (d coordinates, axis
 /// formation, any one frame for all couplings). The rank of the circuit motion matrix M^N is
-/// exact when `exact` (rational elimination), otherwise numerical with `tolerance` (relative to
+/// exact when `exact` (rational elimination), otherwise numerical with `tolerances.rank` (relative to
 /// the largest singular value; give bases in a conditioned frame, see AnalysisFrame).
 /// Throws graph::TreeError when the bodies are not all connected.
 MobilityCount count_mobility(int bodies, const std::vector<graph::Edge>& edges,
                              const std::vector<const screw::CouplingBasis*>& bases, int d, bool exact,
-                             const linalg::RankTolerance& tolerance);
+                             const Tolerances& tolerances);
 
 }  // namespace kinestat::network

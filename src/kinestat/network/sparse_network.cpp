@@ -13,6 +13,7 @@
 #include "kinestat/linalg/sparse_rank.hpp"
 #include "kinestat/network/analyse_network.hpp"
 #include "kinestat/network/analysis_frame.hpp"
+#include "kinestat/tolerances.hpp"
 
 namespace kinestat::network {
 
@@ -75,7 +76,7 @@ double basis_of(const Eigen::SparseMatrix<double>& a, const linalg::SparseQr& qr
 
 }  // namespace
 
-SparseNetworkResult analyse_network_sparse(const Model& model, const linalg::RankTolerance& tolerance, Index vectors) {
+SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances& tolerances, Index vectors) {
   if (model.couplings.empty()) throw ModelError("couplings", -1, "the model has no couplings");
   SparseNetworkResult r;
   r.d = model.space.dimension();
@@ -135,7 +136,7 @@ SparseNetworkResult analyse_network_sparse(const Model& model, const linalg::Ran
   entries.clear();
   entries.shrink_to_fit();
 
-  r.rank = linalg::sparse_rank_threshold(k, tolerance);
+  r.rank = linalg::sparse_rank_threshold(k, {tolerances.rank});
   std::vector<bool> stressed(static_cast<std::size_t>(r.e), false), moving(static_cast<std::size_t>(r.e), false);
   if (k.rows() > 0 && k.cols() > 0) {
     const Eigen::SparseMatrix<double> kt = k.transpose();

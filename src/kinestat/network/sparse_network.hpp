@@ -15,6 +15,7 @@
 #include "kinestat/linalg/rank_decision.hpp"
 #include "kinestat/network/model.hpp"
 #include "kinestat/network/network_result.hpp"
+#include "kinestat/tolerances.hpp"
 
 namespace kinestat::network {
 
@@ -61,10 +62,8 @@ inline constexpr int kDenseNetworkLimit = 300;
 /// generic combination vanishes only where every null vector does. Throws ModelError.
 /// With `vectors` > 0 also the first `vectors` basis vectors of the motions and of the
 /// self-stresses (motion_basis, stress_basis), at the cost of one triangular solve each.
-SparseNetworkResult analyse_network_sparse(const Model& model, const linalg::RankTolerance& tolerance = {},
+SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances& tolerances = {},
                                            Eigen::Index vectors = 0);
 
-/// Relative size below which a component of a combined null vector counts as zero.
-inline constexpr double kSupportZero = 1e-9;
 
 }  // namespace kinestat::network

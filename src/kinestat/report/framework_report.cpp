@@ -11,6 +11,7 @@
 
 #include "kinestat/io/printable_text.hpp"
 #include "kinestat/report/verdict_report.hpp"
+#include "kinestat/tolerances.hpp"
 
 namespace kinestat::report {
 
@@ -22,7 +23,7 @@ namespace {
 // Ten significant digits: enough to read, and stable against last-bit noise of the SVD.
 double rounded(double value) {
   if (!std::isfinite(value)) return value;
-  if (std::abs(value) < 1e-12) return 0.0;
+  if (std::abs(value) < kPrintedZero) return 0.0;
   const double r = std::stod(fmt::format("{:.10g}", value));
   return r == 0.0 ? 0.0 : r;
 }

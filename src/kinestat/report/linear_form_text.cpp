@@ -1,4 +1,5 @@
 #include "kinestat/report/linear_form_text.hpp"
+#include "kinestat/tolerances.hpp"
 
 #include <fmt/format.h>
 
@@ -27,7 +28,7 @@ std::string linear_form_text(const network::LinearForms& forms, Eigen::Index row
       const double c = forms.values(row, p);
       if (std::abs(c) <= zero_below || c == 0.0) continue;
       negative = c < 0;
-      if (std::abs(std::abs(c) - 1.0) > 1e-12) magnitude = number_text(std::abs(c));
+      if (std::abs(std::abs(c) - 1.0) > kPrintedZero) magnitude = number_text(std::abs(c));
     }
     const std::string term = (magnitude.empty() ? "" : magnitude + "*") + names[static_cast<std::size_t>(p)];
     if (text.empty()) {

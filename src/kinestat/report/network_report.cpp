@@ -8,6 +8,7 @@
 #include "kinestat/io/printable_text.hpp"
 #include "kinestat/report/linear_form_text.hpp"
 #include "kinestat/report/verdict_report.hpp"
+#include "kinestat/tolerances.hpp"
 
 namespace kinestat::report {
 
@@ -36,7 +37,7 @@ std::vector<std::string> names_of(const std::vector<int>& indices, const std::ve
 // Coefficients this small relative to the largest are rounding noise in floating point.
 double noise_level(const LinearForms& forms) {
   if (forms.exact || forms.values.size() == 0) return 0.0;
-  return 1e-12 * forms.values.cwiseAbs().maxCoeff();
+  return kCoefficientZero * forms.values.cwiseAbs().maxCoeff();
 }
 
 std::vector<std::string> coordinate_letters(const NetworkResult& r, bool motion) {

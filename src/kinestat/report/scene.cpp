@@ -10,6 +10,7 @@
 #include "kinestat/report/framework_report.hpp"
 #include "kinestat/report/structure_report.hpp"
 #include "kinestat/screw/coupling_type.hpp"
+#include "kinestat/tolerances.hpp"
 
 namespace kinestat::report {
 
@@ -40,8 +41,6 @@ std::pair<Vector3d, Vector3d> twist_of(const screw::ScrewSpace& space, const Eig
   return {Vector3d(full[0], full[1], full[2]), Vector3d(full[3], full[4], full[5])};
 }
 
-/// Below this share of a screw's size a part counts as zero (pure couple or translation).
-constexpr double kScrewZero = 1e-9;
 
 /// The axis of a screw whose "line" part is `line` (ω of a twist, force of a wrench) and whose
 /// "moment" part is `moment` (velocity of the origin point, moment about the origin); both

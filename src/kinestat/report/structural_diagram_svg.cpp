@@ -14,6 +14,7 @@
 #include "kinestat/report/markup_escape.hpp"
 #include "kinestat/report/structure_report.hpp"
 #include "kinestat/structure/structural_diagram.hpp"
+#include "kinestat/tolerances.hpp"
 
 namespace kinestat::report {
 
@@ -134,7 +135,7 @@ std::string structure_svg(const structure::StructureModel& model, const structur
     }
     // Start and end on the circles, toward the control point.
     const auto toward = [&](Point centre, Point target) {
-      const double l = std::max(std::hypot(target.x - centre.x, target.y - centre.y), 1e-9);
+      const double l = std::max(std::hypot(target.x - centre.x, target.y - centre.y), kDrawnZero);
       return Point{centre.x + radius * (target.x - centre.x) / l, centre.y + radius * (target.y - centre.y) / l};
     };
     const Point start = toward(a, control), end = toward(b, control);

@@ -1,6 +1,7 @@
 #include "kinestat/report/svg_writer.hpp"
 
 #include "kinestat/report/markup_escape.hpp"
+#include "kinestat/tolerances.hpp"
 
 #include <fmt/format.h>
 
@@ -96,7 +97,8 @@ std::string path_of(const Curve& c) { return "M" + pt(c.a) + " Q" + pt(c.c) + " 
 bool segments_cross(P a, P b, P c, P d) {
   const auto side = [](P p, P q, P r) { return (q.x - p.x) * (r.y - p.y) - (q.y - p.y) * (r.x - p.x); };
   const double d1 = side(a, b, c), d2 = side(a, b, d), d3 = side(c, d, a), d4 = side(c, d, b);
-  return ((d1 > 1e-9 && d2 < -1e-9) || (d1 < -1e-9 && d2 > 1e-9)) && ((d3 > 1e-9 && d4 < -1e-9) || (d3 < -1e-9 && d4 > 1e-9));
+  constexpr double z = kDrawnZero;
+  return ((d1 > z && d2 < -z) || (d1 < -z && d2 > z)) && ((d3 > z && d4 < -z) || (d3 < -z && d4 > z));
 }
 
 /// Bodies on a circle, the ground at the bottom. For up to kPermutedBodies bodies every
@@ -450,7 +452,7 @@ void draw_support(std::string& out, const SceneNode& node, P p, const View& view
       out += fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"2.5\" fill=\"white\" stroke=\"#222\" stroke-width=\"1\"/>", f2(p.x + 4), f2(p.y + 15));
       for (const auto& direction : node.free_directions) {
         P d = view.project(direction);
-        if (norm(d) < 1e-9) continue;
+        if (norm(d) < kDrawnZero) continue;
         d = unit(P{d.x, -d.y});
         const P a = p + P{0, 24} - 12.0 * d, b = p + P{0, 24} + 12.0 * d;
         out += fmt::format("<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"#222\" stroke-width=\"1\" marker-start=\"url(#arrow)\" "
@@ -583,7 +585,7 @@ std::string mechanism_svg(const Scene& scene, const MechanismDrawing& drawing) {
     hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
   }
   if (at.empty()) lo = hi = P{0, 0};
-  const double extent = std::max({hi.x - lo.x, hi.y - lo.y, 1e-12});
+  const double extent = std::max({hi.x - lo.x, hi.y - lo.y, kCoincident});
   // Mode arrows: the largest is a fifth of the drawing; the displaced shape ends at the tips.
   std::vector<P> arrow(at.size(), P{0, 0});
   if (mode) {
@@ -593,7 +595,7 @@ std::string mechanism_svg(const Scene& scene, const MechanismDrawing& drawing) {
       largest = std::max(largest, norm(arrow[i]));
     }
     for (std::size_t i = 0; i < at.size(); ++i) {
-      arrow[i] = largest > 0 && norm(arrow[i]) > 1e-9 * largest ? (0.2 * extent / largest) * arrow[i] : P{0, 0};
+      arrow[i] = largest > 0 && norm(arrow[i]) > kDrawnZero * largest ? (0.2 * extent / largest) * arrow[i] : P{0, 0};
       const P tip = at[i] + arrow[i];
       lo = {std::min(lo.x, tip.x), std::min(lo.y, tip.y)};
       hi = {std::max(hi.x, tip.x), std::max(hi.y, tip.y)};
@@ -616,7 +618,7 @@ std::string mechanism_svg(const Scene& scene, const MechanismDrawing& drawing) {
   if (mode) include_screws(mode->twists);
   if (stress) include_screws(stress->wrenches);
   Fit fit;
-  const double span_x = std::max(hi.x - lo.x, 1e-12 * extent), span_y = std::max(hi.y - lo.y, 1e-12 * extent);
+  const double span_x = std::max(hi.x - lo.x, kCoincident * extent), span_y = std::max(hi.y - lo.y, kCoincident * extent);
   fit.scale = std::min((width - 2 * margin) / span_x, (drawing_height - 2 * margin) / span_y);
   if (!std::isfinite(fit.scale) || fit.scale <= 0) fit.scale = 1;
   fit.ox = width / 2 - fit.scale * (lo.x + hi.x) / 2;
@@ -681,7 +683,7 @@ std::string mechanism_svg(const Scene& scene, const MechanismDrawing& drawing) {
     if (stress && largest_stress > 0 && e < stress->value.size()) {
       const double v = stress->value[e];
       const std::string kind = e < stress->kind.size() ? stress->kind[e] : "";
-      if (std::abs(v) > 1e-9 * largest_stress) {
+      if (std::abs(v) > kDrawnZero * largest_stress) {
         colour = stress_colour(kind, v);
         width_text = fixed(1.5 + 3.5 * std::abs(v) / largest_stress, 2);
         extra += " data-kind=\"" + kind + "\" data-value=\"" + fixed(v, 6) + "\"";
@@ -790,7 +792,7 @@ std::string mechanism_svg(const Scene& scene, const MechanismDrawing& drawing) {
                            cls, escape(screw.name), f2(anchor.x), f2(anchor.y), colour, f2(anchor.x), f2(anchor.y), colour);
       }
       label = fmt::format("{}: {} = {}{}", screw.name, twist ? "|\u03c9|" : "|F|", fixed(screw.magnitude, 3),
-                          std::abs(screw.pitch) > 1e-9 * extent ? ", pitch " + fixed(screw.pitch, 3) : "");
+                          std::abs(screw.pitch) > kScrewZero * extent ? ", pitch " + fixed(screw.pitch, 3) : "");
       screw_label(anchor, label, colour);
     }
   };
@@ -821,7 +823,7 @@ std::string mechanism_svg(const Scene& scene, const MechanismDrawing& drawing) {
     for (int k = 0; k < (scene.dimension == 2 ? 2 : 3); ++k) {
       P d = view.project(Eigen::Vector3d::Unit(k));
       d = P{d.x, -d.y};
-      if (norm(d) < 1e-9) continue;
+      if (norm(d) < kDrawnZero) continue;
       const P tip = origin + 24.0 * unit(d);
       out += fmt::format("<line class=\"axis\" x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"#444\" stroke-width=\"1.2\" marker-end=\"url(#arrow-black)\"/>\n",
                          f2(origin.x), f2(origin.y), f2(tip.x), f2(tip.y));

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "kinestat/io/printable_text.hpp"
+#include "kinestat/tolerances.hpp"
 
 namespace kinestat::report {
 
@@ -37,7 +38,7 @@ Json participants_json(const std::vector<design::Participant>& list) {
 std::string vector_text(const std::vector<double>& v) {
   std::vector<std::string> parts;
   for (double x : v) {
-    std::string s = fmt::format("{:.6g}", std::abs(x) < 1e-12 ? 0.0 : x);
+    std::string s = fmt::format("{:.6g}", std::abs(x) < kPrintedZero ? 0.0 : x);
     parts.push_back(s == "-0" ? "0" : s);
   }
   return fmt::format("({})", fmt::join(parts, ", "));

@@ -1,0 +1,106 @@
+#pragma once
+// Every tolerance kinestat uses, in one place (docs/numerics.md explains each).
+//
+// All are relative and dimensionless, so no answer changes with the unit of length. Those that
+// judge rounding are written as 2^k ε, ε the double-precision machine epsilon (2.2e-16): "a
+// quantity this small may be k bits of rounding". The others are ratios that say how clear a
+// decision must be to be called clear. A user's `--tolerance` (Tolerances::rank) reaches every
+// rank decision: the rank of the main matrix, the freedoms of each pair of bodies, and the
+// choice of free (primary) variables.
+
+#include <limits>
+#include <optional>
+
+namespace kinestat {
+
+/// Double-precision machine epsilon, 2^-52 ≈ 2.22e-16.
+inline constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
+
+// --- Rank decisions --------------------------------------------------------------------------
+
+/// A rank decision whose smallest kept singular value is less than this many times the largest
+/// dropped one is reported as close: the design is near one with another answer.
+inline constexpr double kCloseRankGap = 1e3;
+/// A dropped singular value this many times the rounding level max(m, n)·ε·σ_max is not
+/// rounding noise: it was dropped by a loose tolerance, and the decision is reported as close.
+inline constexpr double kAboveRounding = 1e4;
+/// Sparse QR ranks: the threshold is this factor × (rows + cols) · ε · the largest column norm
+/// (SuiteSparseQR's own default rule uses 20 · (rows + cols) · ε · max column norm).
+inline constexpr double kSparseToleranceFactor = 20.0;
+/// Pair and coupling systems of a network are ranked against the size of the whole network's
+/// forms, not their own, so a pair whose entries are all rounding noise gets rank 0 (2^19 ε ≈ 1.2e-10).
+inline constexpr double kPairRankRelative = 0x1p19 * kEpsilon;
+/// A variable can be chosen free in floating point when its row of the orthonormal null-space
+/// basis keeps this much norm after removing earlier choices (2^22 ε ≈ 9.3e-10).
+inline constexpr double kFreeVariableResidual = 0x1p22 * kEpsilon;
+/// The SVD's self-check: ‖A − U Σ Vᵀ‖ and the orthonormality of U and V (on probe vectors)
+/// pass below this, relative to max(1, ‖A‖) (2^19 ε ≈ 1.2e-10).
+inline constexpr double kSvdResidualTolerance = 0x1p19 * kEpsilon;
+/// Row and column equilibration stops when log2 of every row and column maximum is within this
+/// of 0 (not a rounding level: equilibration only improves conditioning and changes no rank).
+inline constexpr double kEquilibrationTolerance = 1e-3;
+
+// --- Values shown as zero --------------------------------------------------------------------
+
+/// Coefficients of a null-space basis below this fraction of the largest are stored and printed
+/// as zero (2^12 ε ≈ 9.1e-13).
+inline constexpr double kCoefficientZero = 0x1p12 * kEpsilon;
+/// A mode or stress entry below this fraction of the largest in its vector is not listed
+/// (2^22 ε ≈ 9.3e-10).
+inline constexpr double kModeZero = 0x1p22 * kEpsilon;
+/// A share of a mode or self-stress (a fraction of its squared norm) below this is not listed
+/// (2^12 ε ≈ 9.1e-13).
+inline constexpr double kShareZero = 0x1p12 * kEpsilon;
+/// A number printed in a report below this in magnitude (values already non-dimensional or
+/// normalised to a largest entry of 1) is printed as 0 (2^12 ε ≈ 9.1e-13).
+inline constexpr double kPrintedZero = 0x1p12 * kEpsilon;
+/// A twist or wrench whose linear part is below this fraction of its angular part is a pure
+/// rotation (or force) through a point; one whose angular part is this small is a pure
+/// translation (or couple) (2^22 ε ≈ 9.3e-10).
+inline constexpr double kScrewZero = 0x1p22 * kEpsilon;
+/// A body's share of a sparse null vector below this fraction of the largest is not listed as
+/// taking part (2^22 ε ≈ 9.3e-10).
+inline constexpr double kSupportZero = 0x1p22 * kEpsilon;
+/// Lengths and arrows in a drawing below this fraction of the drawing's extent are not drawn,
+/// and two segments closer than this do not cross (2^22 ε ≈ 9.3e-10).
+inline constexpr double kDrawnZero = 0x1p22 * kEpsilon;
+
+// --- Geometry of input files -----------------------------------------------------------------
+
+/// Two nodes closer than this fraction of the model's characteristic length coincide, and an
+/// element this short has no direction (2^12 ε ≈ 9.1e-13).
+inline constexpr double kCoincident = 0x1p12 * kEpsilon;
+/// A given local axis and the element's axis are parallel when the sine of their angle is below
+/// this (2^22 ε ≈ 9.3e-10).
+inline constexpr double kParallelAxes = 0x1p22 * kEpsilon;
+/// A user's triad (an element frame) must satisfy |R Rᵀ − I| below this, and a given axis must
+/// align with its element to this, so that 7-digit decimals such as 0.7071068 pass (2^32 ε ≈ 9.5e-7).
+inline constexpr double kOrientationTolerance = 0x1p32 * kEpsilon;
+/// An imported robot's axis or offset keeps 12 significant digits of its largest entry, so the
+/// noise of the exporter's pose arithmetic (1.8000000000000003, cos 90° = 6e-17) goes: entries
+/// below this fraction of the largest are zero (a decimal precision, hence not 2^k ε).
+inline constexpr double kImportNoise = 1e-12;
+
+/// The tolerances of one analysis: what `--tolerance` sets, and the named defaults of every
+/// other rank decision that follows it.
+struct Tolerances {
+  /// Relative rank threshold: singular values (or sparse R diagonal entries) above
+  /// `rank × σ_max` of the scaled, non-dimensional matrix count in the rank. Unset: the
+  /// LAPACK / NumPy / MATLAB rule max(rows, cols) · ε (sparse: kSparseToleranceFactor ·
+  /// (rows + cols) · ε).
+  std::optional<double> rank;
+  /// Pair freedoms of a network: relative to the size of the whole network's forms.
+  double pair_rank = kPairRankRelative;
+  /// Free-variable choice in floating point (see kFreeVariableResidual).
+  double free_variable = kFreeVariableResidual;
+
+  /// The defaults with a user's relative tolerance (when given) applied to every rank decision:
+  /// the main rank, pair freedoms and the free-variable choice.
+  static Tolerances with_rank(std::optional<double> relative) {
+    Tolerances t;
+    if (relative) t.rank = t.pair_rank = t.free_variable = *relative;
+    return t;
+  }
+};
+
+}  // namespace kinestat
