@@ -9,17 +9,9 @@
 #include "kinestat/framework/framework_analysis.hpp"
 #include "kinestat/framework/framework_model.hpp"
 #include "kinestat/framework/mode_order.hpp"
+#include "kinestat/tolerances.hpp"
 
 namespace kinestat::framework {
-
-/// A traced path closes when every point satisfies the constraints to this, relative to the
-/// characteristic length (the 1e-10).
-inline constexpr double kTraceResidual = 1e-10;
-/// The corrector stops improving a point below this (relative to the characteristic length).
-inline constexpr double kCorrectorTarget = 1e-14;
-/// A tangent whose projection on the null space of D(c) keeps less than this fraction of its
-/// length has lost the mode (the path turned a corner the predictor cannot follow).
-inline constexpr double kTangentKept = 1e-3;
 
 struct TraceOptions {
   /// Arc length to follow, as a fraction of the characteristic length (the 0.1).

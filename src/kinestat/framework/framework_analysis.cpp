@@ -224,7 +224,7 @@ FrameworkAnalysis analyse_framework(const FrameworkModel& model, const AnalysisO
   result.self_stresses = result.m - result.rank;
   if (options.second_order && result.vectors && result.method == RankMethod::dense_svd) {
     SecondOrderOptions second_order;
-    second_order.tracing.tolerance = options.tolerance;
+    second_order.tracing.tolerance = linalg::RankTolerance{options.tolerances.rank};
     second_order.tracing.amplitude_fraction = options.trace_amplitude_fraction;
     second_order.tracing.steps = options.trace_steps;
     SecondOrderResult classified = classify_modes(model, result, second_order);

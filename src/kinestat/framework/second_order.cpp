@@ -204,7 +204,7 @@ Eigen::MatrixXd rigid_motions(const FrameworkModel& model, const FrameworkAnalys
   }
   Eigen::MatrixXd dependent(a.n, generators);
   for (Eigen::Index j = 0; j < a.n; ++j) dependent.row(j) = g.row(a.partition.dependent_coordinates[static_cast<std::size_t>(j)]);
-  return orthonormal_columns(dependent * combinations, 1e-10);
+  return orthonormal_columns(dependent * combinations, kRigidMotionZero);
 }
 
 SecondOrderResult classify_modes(const FrameworkModel& model, const FrameworkAnalysis& a, const SecondOrderOptions& options) {
@@ -224,7 +224,7 @@ SecondOrderResult classify_modes(const FrameworkModel& model, const FrameworkAna
 
   const Eigen::MatrixXd rigid = rigid_motions(model, a);
   const Eigen::MatrixXd nonrigid = orthonormal_columns(modes - rigid * (rigid.transpose() * modes), kRigidMotionZero);
-  const Eigen::MatrixXd stress_basis = orthonormal_columns(stresses, 1e-10);
+  const Eigen::MatrixXd stress_basis = orthonormal_columns(stresses, kRigidMotionZero);
   PrestressStability& prestress = result.prestress;
   prestress.rigid_motions = rigid.cols();
   prestress.nonrigid_modes = nonrigid.cols();

@@ -19,13 +19,6 @@
 
 namespace kinestat::framework {
 
-/// A self-stress does no work on a mode when |σᵀε″(u, u)| ≤ this × ‖ε″(u, u)‖.
-inline constexpr double kSecondOrderWorkZero = 1e-8;
-/// A geometric stiffness is positive definite when its smallest eigenvalue exceeds this times
-/// the largest Frobenius norm of the stiffnesses of the orthonormal self-stress basis.
-inline constexpr double kPrestressMargin = 1e-8;
-/// A mode is a rigid motion when its component outside the rigid motions is below this (unit mode).
-inline constexpr double kRigidMotionZero = 1e-8;
 
 /// Largest number of columns or rows of D(c) classified (each traced point costs an SVD).
 inline constexpr Eigen::Index kSecondOrderSizeLimit = 300;

@@ -305,7 +305,7 @@ std::string framework_report_text(const FrameworkModel& model, const FrameworkAn
   auto stress_lines = [&](const std::string& title, const Eigen::VectorXd& resultants) {
     line(title);
     for (Eigen::Index row = 0; row < resultants.size(); ++row)
-      if (std::abs(resultants(row)) > framework::kModeZero)
+      if (std::abs(resultants(row)) > kModeZero)
         line(fmt::format("  {:>24} {:>12}", row_label(row), number(resultants(row))));
   };
   for (std::size_t k = 0; k < a.modes.size(); ++k) {
