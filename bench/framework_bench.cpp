@@ -38,7 +38,7 @@ FrameworkModel square(benchmark::State& state) {
 FrameworkModel spatial(benchmark::State& state) { return spatial_lattice(lattice_side(static_cast<double>(state.range(0)), 4, 3)); }
 
 void run(benchmark::State& state, const FrameworkModel& model, kinestat::framework::AnalysisOptions options) {
-  kinestat::framework::FrameworkAnalysis result;
+  kinestat::framework::FrameworkResult result;
   for (auto _ : state) {
     result = kinestat::framework::analyse_framework(model, options);
     benchmark::DoNotOptimize(result.rank);
@@ -69,7 +69,7 @@ kinestat::framework::AnalysisOptions first_vectors(Eigen::Index k) {
 // + β I, β = 1e-10 σ_max² so that the mechanisms' zero pivots do not stop it early. Times
 // the ordering and the numerical factorisation; counts SuiteSparse's peak memory.
 void cholmod_normal_equations(benchmark::State& state, const FrameworkModel& model) {
-  kinestat::framework::FrameworkAnalysis prepared;
+  kinestat::framework::FrameworkResult prepared;
   const Eigen::SparseMatrix<double> d = kinestat::framework::prepare_analysis(model, prepared);
   const double sigma = kinestat::linalg::estimate_largest_singular_value(d);
   kinestat::linalg::pin_blas_threads();
@@ -130,7 +130,7 @@ void BM_SpatialLatticeCholmod(benchmark::State& state) { cholmod_normal_equation
 FrameworkModel model_from_environment() {
   const char* path = std::getenv("KINESTAT_BENCH_MODEL");
   if (path == nullptr) throw std::runtime_error("set KINESTAT_BENCH_MODEL to a framework model file");
-  return kinestat::io::read_framework(kinestat::io::YamlFile::load(path));
+  return kinestat::io::read_framework_model(kinestat::io::YamlFile::load(path));
 }
 void BM_FileCholmod(benchmark::State& state) { cholmod_normal_equations(state, model_from_environment()); }
 

@@ -37,7 +37,7 @@ void BM_ReadTriangularLattice(benchmark::State& state) {
   std::size_t bars = 0;
   for (auto _ : state) {
     const auto file = kinestat::io::YamlFile::parse("lattice.yaml", text);
-    const auto model = kinestat::io::read_framework(file);
+    const auto model = kinestat::io::read_framework_model(file);
     bars = model.elements.size();
     benchmark::DoNotOptimize(bars);
   }

@@ -13,7 +13,7 @@ using namespace kinestat::structure;
 
 void run(benchmark::State& state, const StructureModel& model, SearchMethod method) {
   for (auto _ : state) {
-    Decomposition d = decompose(model, method);
+    StructureResult d = analyse_structure(model, method);
     benchmark::DoNotOptimize(d.groups.data());
     if (!d.complete()) state.SkipWithError("generated mechanism did not decompose");
   }
@@ -34,7 +34,7 @@ void BM_ChainWithPlacements(benchmark::State& state) {
   const auto g = generate_group_chain(static_cast<int>(state.range(0)), 42, {}, /*shuffle=*/true);
   std::uint64_t placements = 0;
   for (auto _ : state) {
-    Decomposition d = decompose(g.model, SearchMethod::matching);
+    StructureResult d = analyse_structure(g.model, SearchMethod::matching);
     if (!d.complete()) state.SkipWithError("generated mechanism did not decompose");
     placements = structural_transformations(g.model, 1000).placements;
     benchmark::DoNotOptimize(d.groups.data());

@@ -15,7 +15,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     const auto model = kinestat::io::read_adjacency_text(text, "<stdin>");
     if (model.body_count() <= 64) {
-      (void)kinestat::structure::decompose(model);
+      (void)kinestat::structure::analyse_structure(model);
       (void)kinestat::structure::structural_transformations(model, 64);
     }
   } catch (const kinestat::io::InputError&) {

@@ -34,13 +34,13 @@ constexpr int kMaxAnalysedBodies = 64;
 
 void analyse_structure(const kinestat::structure::StructureModel& model) {
   if (model.body_count() > kMaxAnalysedBodies) return;
-  const auto decomposition = kinestat::structure::decompose(model);
+  const auto decomposition = kinestat::structure::analyse_structure(model);
   const auto transformations = kinestat::structure::structural_transformations(model, 64);
   const auto verdict = kinestat::design::structure_verdict(model, decomposition);
   const kinestat::report::StructureReport report{model, decomposition, &transformations,
                                                  kinestat::structure::SearchMethod::matching, &verdict, model.units};
-  (void)kinestat::report::structure_text(report);
-  (void)kinestat::report::structure_json(report);
+  (void)kinestat::report::structure_report_text(report);
+  (void)kinestat::report::structure_report_json(report);
   (void)kinestat::report::structure_dot(model, decomposition);
   (void)kinestat::report::structure_svg(model, decomposition);
   (void)kinestat::report::graph_svg(kinestat::report::structure_scene(model, decomposition));
@@ -62,8 +62,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
           // The verdict's change search screens copies with one rank each (milliseconds).
           const auto verdict = kinestat::design::network_verdict(loaded.model, result);
           const kinestat::report::NetworkReportOptions options{true, &verdict};
-          (void)kinestat::report::network_text(loaded.model, result, options);
-          (void)kinestat::report::network_json(loaded.model, result, options).dump();
+          (void)kinestat::report::network_report_text(loaded.model, result, options);
+          (void)kinestat::report::network_report_json(loaded.model, result, options).dump();
           const auto scene = kinestat::report::network_scene(loaded.model, result);
           (void)kinestat::report::graph_svg(scene);
           (void)kinestat::report::mechanism_svg(scene);
@@ -73,7 +73,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         analyse_structure(kinestat::io::structure_of_network(loaded, file.path()));
       }
     } else if (kind == "framework") {
-      const auto model = kinestat::io::read_framework(file);
+      const auto model = kinestat::io::read_framework_model(file);
       if (model.elements.size() <= kMaxAnalysedElements) {
         const auto analysis = kinestat::framework::analyse_framework(model);
         const auto verdict = kinestat::design::framework_verdict(model, analysis);

@@ -37,7 +37,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::string dat = kinestat::io::spacar_text(model, {"fuzz.dat", &proposed, true});
     (void)kinestat::io::parse_spacar("again.dat", dat);
     const std::string yaml = kinestat::io::framework_yaml(model, {"fuzz"});
-    (void)kinestat::io::read_framework(kinestat::io::YamlFile::parse("again.yaml", yaml));
+    (void)kinestat::io::read_framework_model(kinestat::io::YamlFile::parse("again.yaml", yaml));
   } catch (const kinestat::io::InputError&) {
     std::abort();
   }

@@ -21,4 +21,13 @@ echo "$out"
 [[ "$out" == *"modes = 1, self-stresses = 1"* ]]
 if "$work/consumer/examples_cpp/analyse" /nonexistent.yaml 2>"$work/err"; then exit 1; fi
 grep -q "/nonexistent.yaml" "$work/err"
+# The Python package, when built: importable from the prefix with Debian's interpreter.
+for site in "$work"/prefix/lib/python3*/dist-packages; do
+  [[ -d "$site/kinestat" ]] || continue
+  PYTHONPATH="$PWD/$site" PYTHONDONTWRITEBYTECODE=1 /usr/bin/python3 -c "
+import kinestat
+r = kinestat.analyze('examples/davies-2-circuit.yaml')
+assert (r.FN, r.CN) == (3, 2), (r.FN, r.CN)
+print('installed Python package: FN = 3, CN = 2 from', kinestat.__file__)"
+done
 echo "check-install: the installed package builds and runs a consumer"

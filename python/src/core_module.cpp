@@ -44,9 +44,9 @@ constexpr std::uint64_t kTransformationLimit = 1000;
 struct Analysed {
   io::ModelFile file;
   std::optional<network::NetworkResult> network;
-  std::optional<framework::FrameworkAnalysis> framework;
+  std::optional<framework::FrameworkResult> framework;
   std::optional<structure::StructureModel> structure_model;  ///< networks (from the couplings) and structures
-  std::optional<structure::Decomposition> decomposition;
+  std::optional<structure::StructureResult> decomposition;
   std::optional<structure::TransformationSet> transformations;
   design::Verdict verdict;  ///< what every report leads with (design layer)
 
@@ -95,7 +95,7 @@ std::shared_ptr<Analysed> analyse(const std::string& path, const std::optional<s
     analysed->verdict = design::framework_verdict(*file.framework, *analysed->framework, options);
   } else {
     analysed->structure_model = *file.structure;
-    analysed->decomposition = structure::decompose(*file.structure);
+    analysed->decomposition = structure::analyse_structure(*file.structure);
     analysed->verdict = design::structure_verdict(*analysed->structure_model, *analysed->decomposition);
   }
   return analysed;
@@ -110,7 +110,7 @@ std::shared_ptr<Analysed> decompose(const std::string& path, const std::optional
                                             "not 'framework'");
   }
   analysed->structure_model = file.network ? io::structure_of_network(*file.network, file.path) : *file.structure;
-  analysed->decomposition = structure::decompose(*analysed->structure_model);
+  analysed->decomposition = structure::analyse_structure(*analysed->structure_model);
   analysed->transformations = structure::structural_transformations(*analysed->structure_model, kTransformationLimit);
   analysed->verdict = design::structure_verdict(*analysed->structure_model, *analysed->decomposition);
   return analysed;
@@ -121,14 +121,14 @@ std::string json_report(const Analysed& a) {
   if (a.network) {
     report::NetworkReportOptions options;
     options.verdict = &a.verdict;
-    return report::json_text(report::network_json(a.file.network->model, *a.network, options));
+    return report::json_text(report::network_report_json(a.file.network->model, *a.network, options));
   }
   if (a.framework) return report::json_text(report::framework_report_json(*a.file.framework, *a.framework, &a.verdict));
   if (!a.decomposition) throw py::value_error("the model has not been analysed");
   const report::StructureReport structure_report{*a.structure_model, *a.decomposition,
                                                  a.transformations ? &*a.transformations : nullptr,
                                                  structure::SearchMethod::matching, &a.verdict, a.structure_model->units};
-  return report::structure_json(structure_report);
+  return report::structure_report_json(structure_report);
 }
 
 /// The self-contained HTML report, as `kinestat report` writes it; empty without the viewer.
@@ -146,7 +146,7 @@ std::string html_report(const Analysed& a) {
 std::string svg(const Analysed& a, const std::string& what, int mode, int stress) {
   if (what == "structure") {
     if (!a.structure_model) throw py::value_error("only networks and structures have a structural diagram");
-    return report::structure_svg(*a.structure_model, a.decomposition ? *a.decomposition : structure::decompose(*a.structure_model));
+    return report::structure_svg(*a.structure_model, a.decomposition ? *a.decomposition : structure::analyse_structure(*a.structure_model));
   }
   const report::Scene scene = a.scene();
   if (what == "graph") {
@@ -164,7 +164,7 @@ const network::NetworkResult& network_of(const Analysed& a) {
   if (!a.network) throw py::value_error("not a coupling-network result");
   return *a.network;
 }
-const framework::FrameworkAnalysis& framework_of(const Analysed& a) {
+const framework::FrameworkResult& framework_of(const Analysed& a) {
   if (!a.framework) throw py::value_error("not a framework result");
   return *a.framework;
 }

@@ -28,7 +28,7 @@ void register_analyze(CLI::App& app, Action& action) {
       const io::YamlFile model = io::YamlFile::load(options->model_path);
       const std::string kind = io::model_kind(model);
       if (kind == "network") return run_network_analysis(*options, io::read_network_model(model), model.path());
-      if (kind == "framework") return run_framework_analysis(*options, io::read_framework(model), model.path());
+      if (kind == "framework") return run_framework_analysis(*options, io::read_framework_model(model), model.path());
       throw io::InputError({options->model_path, 0, 0},
                            "a model of kind 'structure' is analysed with 'kinestat structure'");
     };

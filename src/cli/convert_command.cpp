@@ -37,7 +37,7 @@ framework::FrameworkModel read_framework_input(const std::string& path) {
   if (kind != "framework")
     throw io::InputError({path, 1, 1}, "'kinestat convert' converts frameworks (SPACAR files and kind: framework); this model "
                                        "is of kind '" + kind + "' and is already kinestat YAML");
-  return io::read_framework(file);
+  return io::read_framework_model(file);
 }
 
 int run(const ConvertOptions& options) {
@@ -61,7 +61,7 @@ int run(const ConvertOptions& options) {
   }
   framework::AnalysisOptions analysis_options;
   analysis_options.tolerances = Tolerances::with_rank(options.tolerance);
-  const framework::FrameworkAnalysis analysis = framework::analyse_framework(model, analysis_options);
+  const framework::FrameworkResult analysis = framework::analyse_framework(model, analysis_options);
   io::SpacarWriteOptions write;
   write.source = options.input;
   write.apply_proposal = options.apply_proposal;

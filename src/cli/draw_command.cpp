@@ -44,7 +44,7 @@ int run(const DrawOptions& options) {
   } else {
     if (loaded.structure_error) throw *loaded.structure_error;
     if (!loaded.structure_model) refuse("a framework has no structural diagram; draw it with --what mechanism");
-    emit(options.common, report::structure_svg(*loaded.structure_model, structure::decompose(*loaded.structure_model)));
+    emit(options.common, report::structure_svg(*loaded.structure_model, structure::analyse_structure(*loaded.structure_model)));
   }
   return 0;
 }

@@ -51,7 +51,7 @@ int run_framework_analysis(const CommonOptions& options, const framework::Framew
   analysis_options.tolerances = Tolerances::with_rank(options.tolerance);
   analysis_options.dense_limit = static_cast<Eigen::Index>(dense_limit);
   analysis_options.sparse_vectors = static_cast<Eigen::Index>(sparse_vectors);
-  const framework::FrameworkAnalysis analysis = framework::analyse_framework(model, analysis_options);
+  const framework::FrameworkResult analysis = framework::analyse_framework(model, analysis_options);
   const design::Verdict verdict = design::framework_verdict(model, analysis, analysis_options);
   if (options.json) {
     emit(options, report::json_text(report::framework_report_json(model, analysis, &verdict)));

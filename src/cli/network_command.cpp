@@ -104,8 +104,8 @@ int run_network_analysis(const CommonOptions& common, const io::LoadedNetwork& l
       throw io::locate(error, loaded, path);
     }
     const design::Verdict verdict = design::sparse_network_verdict(loaded.model, sparse, options.tolerances);
-    emit(common, common.json ? report::json_text(report::sparse_network_json(loaded.model, sparse, &verdict))
-                             : report::sparse_network_text(loaded.model, sparse, &verdict));
+    emit(common, common.json ? report::json_text(report::sparse_network_report_json(loaded.model, sparse, &verdict))
+                             : report::sparse_network_report_text(loaded.model, sparse, &verdict));
     return 0;
   }
   network::NetworkResult result;
@@ -129,8 +129,8 @@ int run_network_analysis(const CommonOptions& common, const io::LoadedNetwork& l
   report::NetworkReportOptions report_options;
   report_options.matrices = o.matrices;
   report_options.verdict = &verdict;
-  emit(common, common.json ? report::json_text(report::network_json(loaded.model, result, report_options))
-                           : report::network_text(loaded.model, result, report_options));
+  emit(common, common.json ? report::json_text(report::network_report_json(loaded.model, result, report_options))
+                           : report::network_report_text(loaded.model, result, report_options));
   return 0;
 }
 

@@ -34,7 +34,7 @@ void register_report(CLI::App& app, Action& action) {
         figure = report::graph_svg(loaded.scene);
         title = "Coupling, motion and action graphs";
       } else if (loaded.kind == "structure" && loaded.structure_model && !loaded.scene.large) {
-        figure = report::structure_svg(*loaded.structure_model, structure::decompose(*loaded.structure_model));
+        figure = report::structure_svg(*loaded.structure_model, structure::analyse_structure(*loaded.structure_model));
         title = "Structural diagram";
       }
       emit(*options, report::html_report(loaded.scene, figure, title));

@@ -19,7 +19,7 @@ namespace {
 report::Scene framework_scene(const framework::FrameworkModel& model, std::optional<double> tolerance) {
   framework::AnalysisOptions options;
   options.tolerances = Tolerances::with_rank(tolerance);
-  const framework::FrameworkAnalysis analysis = framework::analyse_framework(model, options);
+  const framework::FrameworkResult analysis = framework::analyse_framework(model, options);
   report::Scene scene = report::framework_scene(model, analysis);
   scene.verdict = design::framework_verdict(model, analysis, options);
   scene.units = model.units;
@@ -57,10 +57,10 @@ LoadedScene load_scene(const std::string& path, std::optional<double> tolerance)
       loaded.structure_error = error;
     }
   } else if (loaded.kind == "framework") {
-    loaded.scene = framework_scene(io::read_framework(*file), tolerance);
+    loaded.scene = framework_scene(io::read_framework_model(*file), tolerance);
   } else {
     loaded.structure_model = io::read_structure_model(*file);
-    const structure::Decomposition decomposition = structure::decompose(*loaded.structure_model);
+    const structure::StructureResult decomposition = structure::analyse_structure(*loaded.structure_model);
     loaded.scene = report::structure_scene(*loaded.structure_model, decomposition);
     loaded.scene.verdict = design::structure_verdict(*loaded.structure_model, decomposition);
     loaded.scene.units = loaded.structure_model->units;

@@ -81,7 +81,7 @@ int run(const StructureOptions& options) {
                              " bodies; this model has " + std::to_string(model.body_count()) +
                              " (use the default --method matching)");
   }
-  const structure::Decomposition decomposition = structure::decompose(model, method);
+  const structure::StructureResult decomposition = structure::analyse_structure(model, method);
   if (options.diagram == "dot") {
     emit(options.common, report::structure_dot(model, decomposition));
     return 0;
@@ -97,7 +97,7 @@ int run(const StructureOptions& options) {
   }
   const design::Verdict verdict = design::structure_verdict(model, decomposition);
   const report::StructureReport report{model, decomposition, transformations.get(), method, &verdict, model.units};
-  emit(options.common, options.common.json ? report::structure_json(report) : report::structure_text(report));
+  emit(options.common, options.common.json ? report::structure_report_json(report) : report::structure_report_text(report));
   return 0;
 }
 

@@ -80,7 +80,7 @@ elements: [{type: beam, nodes: [A, B], released: [bending]}]
 )");
   EXPECT_EQ(deformation_names(model, model.elements[0]), (std::vector<std::string>{"elongation", "bending_p", "bending_q"}));
   EXPECT_EQ(node_slots(2, model.nodes[1]), (std::vector<int>{0, 1, 5}));
-  const FrameworkAnalysis a = analyse_framework(model);
+  const FrameworkResult a = analyse_framework(model);
   // A cantilever with both bendings released and elongation rigid: B moves in 2 of its 3 coordinates.
   EXPECT_EQ(a.m, 1);
   EXPECT_EQ(a.n, 3);

@@ -16,11 +16,11 @@ namespace kinestat::framework::testing {
 inline std::string example_path(const std::string& name) { return std::string(KINESTAT_SOURCE_DIR) + "/examples/" + name; }
 
 inline FrameworkModel load_example(const std::string& name) {
-  return io::read_framework(io::YamlFile::load(example_path(name)));
+  return io::read_framework_model(io::YamlFile::load(example_path(name)));
 }
 
 inline FrameworkModel parse_model(const std::string& text) {
-  return io::read_framework(io::YamlFile::parse("test.yaml", text));
+  return io::read_framework_model(io::YamlFile::parse("test.yaml", text));
 }
 
 /// x -> scale * rotation * x + shift, triads and element frames rotated along.
@@ -43,13 +43,13 @@ inline Eigen::Matrix3d generic_rotation() {
 /// A rotation about z (keeps planar models planar).
 inline Eigen::Matrix3d planar_rotation() { return Eigen::AngleAxisd(0.9, Eigen::Vector3d::UnitZ()).toRotationMatrix(); }
 
-inline Eigen::Index column_of(const FrameworkModel& model, const FrameworkAnalysis& a, const std::string& label) {
+inline Eigen::Index column_of(const FrameworkModel& model, const FrameworkResult& a, const std::string& label) {
   for (Eigen::Index j = 0; j < a.n; ++j)
     if (report::framework_column_label(model, a, j) == label) return j;
   return -1;
 }
 
-inline Eigen::Index row_of(const FrameworkModel& model, const FrameworkAnalysis& a, const std::string& label) {
+inline Eigen::Index row_of(const FrameworkModel& model, const FrameworkResult& a, const std::string& label) {
   for (Eigen::Index i = 0; i < a.m; ++i)
     if (report::framework_row_label(model, a, i) == label) return i;
   return -1;

@@ -33,7 +33,7 @@ TEST(FrameworkHardCases, CollinearBarsFromTrigonometricValues) {
   // mechanism (C moves across the line, along (-sin, cos)) and one self-stress (equal tension,
   // u1 e - u2 e = 0). In floating point the second singular value is rounding noise.
   for (double length : {1.0, 1e-3, 1e3}) {
-    const FrameworkAnalysis a = analyse_framework(two_bars(0.0, length));
+    const FrameworkResult a = analyse_framework(two_bars(0.0, length));
     ASSERT_EQ(a.rank, 1) << length;
     EXPECT_EQ(a.mechanisms, 1);
     EXPECT_EQ(a.self_stresses, 1);
@@ -51,7 +51,7 @@ TEST(FrameworkHardCases, CollinearBarsFromTrigonometricValues) {
 TEST(FrameworkHardCases, NearlyCollinearBarsAreReportedAsClose) {
   // C off the line by delta (relative): the unit vectors differ in angle by 2 delta, so the
   // singular values are sqrt(1 +- cos 2 delta) and their ratio is tan(delta).
-  const FrameworkAnalysis a = analyse_framework(two_bars(1e-9, 1.0));
+  const FrameworkResult a = analyse_framework(two_bars(1e-9, 1.0));
   EXPECT_EQ(a.rank, 2);  // the default tolerance (2 eps) keeps it: exactly constrained ...
   EXPECT_TRUE(a.exactly_constrained());
   EXPECT_TRUE(a.decision.close());  // ... but says how close it is
@@ -59,11 +59,11 @@ TEST(FrameworkHardCases, NearlyCollinearBarsAreReportedAsClose) {
 
   AnalysisOptions loose;
   loose.tolerances = Tolerances::with_rank(1e-8);  // a user's tolerance above tan(delta) drops it
-  const FrameworkAnalysis b = analyse_framework(two_bars(1e-9, 1.0), loose);
+  const FrameworkResult b = analyse_framework(two_bars(1e-9, 1.0), loose);
   EXPECT_EQ(b.rank, 1);
   EXPECT_TRUE(b.decision.close());
 
-  const FrameworkAnalysis c = analyse_framework(two_bars(1e-6, 1.0));  // far from the threshold
+  const FrameworkResult c = analyse_framework(two_bars(1e-6, 1.0));  // far from the threshold
   EXPECT_EQ(c.rank, 2);
   EXPECT_FALSE(c.decision.close());
 }
@@ -84,7 +84,7 @@ TEST(FrameworkHardCases, CantileverWithLengthsOf1e3And1eMinus6) {
   // by one characteristic length only, the short beam's rotation column is 1e-9 of the rest
   // and the design looked near-singular; scaled by element lengths it is well conditioned.
   const FrameworkModel model = testing::parse_model(cantilever(1.0));
-  const FrameworkAnalysis a = analyse_framework(model);
+  const FrameworkResult a = analyse_framework(model);
   EXPECT_EQ(a.m, 6);
   EXPECT_EQ(a.n, 6);
   EXPECT_EQ(a.rank, 6);
@@ -92,10 +92,10 @@ TEST(FrameworkHardCases, CantileverWithLengthsOf1e3And1eMinus6) {
   EXPECT_FALSE(a.decision.close());
   EXPECT_GT(a.relative_smallest_singular_value(), 1e-2);
   // In metres instead of millimetres, and turned: the same singular values.
-  const FrameworkAnalysis metres = analyse_framework(testing::parse_model(cantilever(1e-3)));
-  const FrameworkAnalysis turned =
+  const FrameworkResult metres = analyse_framework(testing::parse_model(cantilever(1e-3)));
+  const FrameworkResult turned =
       analyse_framework(testing::transformed(model, testing::planar_rotation(), Eigen::Vector3d(5, -2, 0), 1.0));
-  for (const FrameworkAnalysis* other : {&metres, &turned}) {
+  for (const FrameworkResult* other : {&metres, &turned}) {
     ASSERT_EQ(other->singular_values.size(), a.singular_values.size());
     for (Eigen::Index i = 0; i < a.singular_values.size(); ++i)
       EXPECT_NEAR(other->singular_values(i), a.singular_values(i), 1e-9 * a.singular_values(0));
@@ -114,7 +114,7 @@ TEST(FrameworkHardCases, ScalingByLengthsDoesNotHideASingularTinyPart) {
       "supports: {{A: fixed, B: fixed, F: fixed}}\n"
       "elements: [{{type: truss, nodes: [A, C]}}, {{type: truss, nodes: [C, B]}}, {{type: beam, nodes: [F, G]}}]\n",
       1e-6 * c, 1e-6 * s, 2e-6 * c, 2e-6 * s));
-  const FrameworkAnalysis a = analyse_framework(model);
+  const FrameworkResult a = analyse_framework(model);
   EXPECT_EQ(a.n, 5);
   EXPECT_EQ(a.m, 5);
   EXPECT_EQ(a.rank, 4);

@@ -26,7 +26,7 @@ bool has_axis_bound_roles(const FrameworkModel& model) {
   return false;
 }
 
-void expect_same_answer(const FrameworkAnalysis& a, const FrameworkAnalysis& b, bool same_axes, bool singular_values = true) {
+void expect_same_answer(const FrameworkResult& a, const FrameworkResult& b, bool same_axes, bool singular_values = true) {
   EXPECT_EQ(a.m, b.m);
   EXPECT_EQ(a.n, b.n);
   EXPECT_EQ(a.rank, b.rank);
@@ -49,7 +49,7 @@ void expect_same_answer(const FrameworkAnalysis& a, const FrameworkAnalysis& b, 
 
 TEST_P(Invariance, ScalingLengthsChangesNothing) {
   const FrameworkModel model = load_example(GetParam());
-  const FrameworkAnalysis base = analyse_framework(model);
+  const FrameworkResult base = analyse_framework(model);
   for (double scale : {1000.0, 1e-3}) {
     SCOPED_TRACE(scale);
     expect_same_answer(base, analyse_framework(transformed(model, Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero(), scale)),
@@ -66,7 +66,7 @@ TEST_P(Invariance, RigidMotionChangesNoCount) {
   // With roles bound to x or y (a roller) a rotation about z is still a different support, so
   // singular values are compared only when no such role exists; z-bound roles (C.z) are kept.
   const bool xy_bound = axis_bound && model.dimension == 2;
-  const FrameworkAnalysis base = analyse_framework(model);
+  const FrameworkResult base = analyse_framework(model);
   expect_same_answer(base, analyse_framework(transformed(model, rotation, shift, 1.0)), false, !xy_bound);
   expect_same_answer(base, analyse_framework(transformed(model, rotation, shift, 1000.0)), false, !xy_bound);
 }
@@ -117,7 +117,7 @@ TEST(SparsePath, SparseQrCountsAgreeWithTheSvd) {
     const FrameworkModel model = testing::load_example(name);
     AnalysisOptions sparse;
     sparse.dense_limit = 0;
-    const FrameworkAnalysis a = analyse_framework(model), b = analyse_framework(model, sparse);
+    const FrameworkResult a = analyse_framework(model), b = analyse_framework(model, sparse);
     EXPECT_EQ(b.method, RankMethod::sparse_qr);
     EXPECT_EQ(a.rank, b.rank) << name;
     EXPECT_EQ(a.mechanisms, b.mechanisms) << name;

@@ -24,7 +24,7 @@ class PinJointed : public ::testing::TestWithParam<Case> {};
 TEST_P(PinJointed, CountsFollowMaxwellAndGeometry) {
   const Case c = GetParam();
   const FrameworkModel model = load_example(c.file);
-  const FrameworkAnalysis a = analyse_framework(model);
+  const FrameworkResult a = analyse_framework(model);
   EXPECT_EQ(a.m, c.bars);
   EXPECT_EQ(a.n, c.free_coordinates);
   EXPECT_EQ(a.mechanisms, c.mechanisms);
@@ -36,7 +36,7 @@ TEST_P(PinJointed, CountsFollowMaxwellAndGeometry) {
   for (const auto& mode : a.modes) EXPECT_NEAR(mode.velocities.norm(), 1.0, 1e-12);
   for (const auto& state : a.stresses) EXPECT_NEAR(state.resultants.norm(), 1.0, 1e-12);
   if (c.mechanisms > 0 || c.self_stresses > 0) {
-    const FrameworkAnalysis repaired = analyse_framework(apply_proposal(model, a));
+    const FrameworkResult repaired = analyse_framework(apply_proposal(model, a));
     EXPECT_TRUE(repaired.exactly_constrained());
   }
 }
@@ -52,7 +52,7 @@ INSTANTIATE_TEST_SUITE_P(Examples, PinJointed,
 
 TEST(PinJointed, TwoBarMechanismIsTheMiddleJointMovingAcross) {
   const FrameworkModel model = load_example("pellegrino-calladine-two-bar.yaml");
-  const FrameworkAnalysis a = analyse_framework(model);
+  const FrameworkResult a = analyse_framework(model);
   ASSERT_EQ(a.modes.size(), 1u);
   EXPECT_EQ(a.modes[0].moving, std::vector<Eigen::Index>{testing::column_of(model, a, "C.y")});
   // Equal tension in both bars.
@@ -63,7 +63,7 @@ TEST(PinJointed, TwoBarMechanismIsTheMiddleJointMovingAcross) {
 TEST(PinJointed, BracedSquareSelfStressIsTheClassicPattern) {
   // Sides in compression, diagonals in tension (or the reverse) with |N_diagonal| = sqrt(2)|N_side|:
   // normalised, sides ±1/sqrt(8), diagonals ∓1/2.
-  const FrameworkAnalysis a = analyse_framework(load_example("braced-square.yaml"));
+  const FrameworkResult a = analyse_framework(load_example("braced-square.yaml"));
   ASSERT_EQ(a.stresses.size(), 1u);
   const Eigen::VectorXd& s = a.stresses[0].resultants;
   for (int i = 0; i < 4; ++i) EXPECT_NEAR(s(i), -s(4) / std::sqrt(2.0), 1e-12) << i;
@@ -78,7 +78,7 @@ TEST(PinJointed, SimplexAtAGenericTwistHasNoSelfStress) {
   const Eigen::Matrix3d turn = Eigen::AngleAxisd(-0.35, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   for (Node& node : model.nodes)
     if (node.name[0] == 'T') node.position = turn * node.position;
-  const FrameworkAnalysis a = analyse_framework(model);
+  const FrameworkResult a = analyse_framework(model);
   EXPECT_EQ(a.self_stresses, 0);
   EXPECT_EQ(a.mechanisms, 6);
 }
@@ -87,7 +87,7 @@ TEST(PinJointed, OctahedronMechanismsAreRigidBodyMotions) {
   // Each mode must be a rigid motion: for every bar, (v_q - v_p)·(x_q - x_p) = 0 trivially, so
   // test more: the 6 modes span the same space as the 6 rigid-body velocity fields.
   const FrameworkModel model = load_example("octahedron.yaml");
-  const FrameworkAnalysis a = analyse_framework(model);
+  const FrameworkResult a = analyse_framework(model);
   ASSERT_EQ(a.modes.size(), 6u);
   Eigen::MatrixXd rigid(18, 6);
   for (int k = 0; k < 6; ++k) {

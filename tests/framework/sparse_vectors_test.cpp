@@ -14,13 +14,13 @@
 namespace kinestat::framework {
 namespace {
 
-Eigen::MatrixXd mode_matrix(const FrameworkAnalysis& a) {
+Eigen::MatrixXd mode_matrix(const FrameworkResult& a) {
   Eigen::MatrixXd m(a.n, static_cast<Eigen::Index>(a.modes.size()));
   for (std::size_t k = 0; k < a.modes.size(); ++k) m.col(static_cast<Eigen::Index>(k)) = a.modes[k].velocities;
   return m;
 }
 
-Eigen::MatrixXd stress_matrix(const FrameworkAnalysis& a) {
+Eigen::MatrixXd stress_matrix(const FrameworkResult& a) {
   Eigen::MatrixXd m(a.m, static_cast<Eigen::Index>(a.stresses.size()));
   for (std::size_t k = 0; k < a.stresses.size(); ++k) m.col(static_cast<Eigen::Index>(k)) = a.stresses[k].resultants;
   return m;
@@ -60,8 +60,8 @@ TEST(SparseVectors, SameSpacesAndAnExactProposalOnEveryExample) {
                            "four-bar-linkage.yaml", "octahedron.yaml", "pellegrino-calladine-two-bar.yaml",
                            "simplex-tensegrity.yaml", "truss-12.yaml", "wire-flexure-guide.yaml"}) {
     const FrameworkModel model = testing::load_example(name);
-    const FrameworkAnalysis dense = analyse_framework(model);
-    const FrameworkAnalysis sparse = analyse_framework(model, sparse_with_vectors(1000));
+    const FrameworkResult dense = analyse_framework(model);
+    const FrameworkResult sparse = analyse_framework(model, sparse_with_vectors(1000));
     EXPECT_EQ(sparse.method, RankMethod::sparse_qr) << name;
     EXPECT_TRUE(sparse.vectors) << name;
     ASSERT_EQ(sparse.rank, dense.rank) << name;
@@ -84,7 +84,7 @@ TEST(SparseVectors, SquareLatticeModesAreTheShearsOfItsRows) {
   // the only self-stresses are the n − 1 bars between pinned nodes (zero rows of D(c)).
   const int n = 9;
   const FrameworkModel model = planar_lattice(n, false);
-  const FrameworkAnalysis a = analyse_framework(model, sparse_with_vectors(100));
+  const FrameworkResult a = analyse_framework(model, sparse_with_vectors(100));
   ASSERT_EQ(a.mechanisms, n - 1);
   ASSERT_EQ(a.self_stresses, n - 1);
   Eigen::MatrixXd shears = Eigen::MatrixXd::Zero(a.n, n - 1);
@@ -109,7 +109,7 @@ TEST(SparseVectors, TriangulatedLatticeStressesAreInEquilibrium) {
   // away from the node (checked from the geometry, not from D(c)).
   const int n = 12;
   const FrameworkModel model = planar_lattice(n, true);
-  const FrameworkAnalysis a = analyse_framework(model, sparse_with_vectors(7));
+  const FrameworkResult a = analyse_framework(model, sparse_with_vectors(7));
   EXPECT_EQ(a.mechanisms, 0);
   EXPECT_EQ(a.self_stresses, (n - 1) * (n - 1));
   ASSERT_EQ(a.stresses.size(), 7u);
@@ -133,7 +133,7 @@ TEST(SparseVectors, SpatialLatticeCountsAndModes) {
   // layer moves as a plate over the vertical bars below it); every mode is a null vector.
   const int n = 5;
   const FrameworkModel model = spatial_lattice(n);
-  const FrameworkAnalysis a = analyse_framework(model, sparse_with_vectors(1000));
+  const FrameworkResult a = analyse_framework(model, sparse_with_vectors(1000));
   EXPECT_EQ(a.mechanisms, 3 * (n - 1));
   EXPECT_EQ(static_cast<Eigen::Index>(a.modes.size()), 3 * (n - 1));
   EXPECT_LT(a.null_space_residual, 1e-10);

@@ -15,10 +15,10 @@ using testing::column_of;
 using testing::load_example;
 using testing::row_of;
 
-void expect_proposal_repairs(const FrameworkModel& model, const FrameworkAnalysis& a) {
+void expect_proposal_repairs(const FrameworkModel& model, const FrameworkResult& a) {
   EXPECT_EQ(static_cast<Eigen::Index>(a.releases.size()), a.self_stresses);
   EXPECT_EQ(static_cast<Eigen::Index>(a.constrain.size()), a.mechanisms);
-  const FrameworkAnalysis repaired = analyse_framework(apply_proposal(model, a));
+  const FrameworkResult repaired = analyse_framework(apply_proposal(model, a));
   EXPECT_TRUE(repaired.exactly_constrained());
   EXPECT_EQ(repaired.m, repaired.n);
   EXPECT_EQ(repaired.rank, repaired.m);
@@ -28,7 +28,7 @@ void expect_proposal_repairs(const FrameworkModel& model, const FrameworkAnalysi
 
 TEST(StraightGuide, FiveWireFlexuresAreExactlyConstrained) {
   const FrameworkModel model = load_example("wire-flexure-guide.yaml");
-  const FrameworkAnalysis a = analyse_framework(model);
+  const FrameworkResult a = analyse_framework(model);
   // Rows: 5 wire elongations + 5 x 6 rigid-body constraints; columns: 5 of C + 5 x 6 of P1-P5.
   EXPECT_EQ(a.m, 35);
   EXPECT_EQ(a.n, 35);
@@ -44,7 +44,7 @@ TEST(StraightGuide, WireFlexuresLeaveExactlyTheIntendedTranslation) {
   FrameworkModel model = load_example("wire-flexure-guide.yaml");
   model.nodes[0].roles[2] = CoordinateRole::dependent;  // C.z no longer declared
   ASSERT_EQ(model.nodes[0].name, "C");
-  const FrameworkAnalysis a = analyse_framework(model);
+  const FrameworkResult a = analyse_framework(model);
   EXPECT_EQ(a.mechanisms, 1);
   EXPECT_EQ(a.self_stresses, 0);
   ASSERT_EQ(a.modes.size(), 1u);
@@ -59,7 +59,7 @@ TEST(StraightGuide, WireFlexuresLeaveExactlyTheIntendedTranslation) {
 
 TEST(StraightGuide, SingleFoldedSheetImposesOneConstraintAndHasOneInternalMode) {
   const FrameworkModel model = load_example("folded-sheet-flexure.yaml");
-  const FrameworkAnalysis a = analyse_framework(model);
+  const FrameworkResult a = analyse_framework(model);
   EXPECT_EQ(a.m, 6);   // elongation and in-plane bending of two sheets
   EXPECT_EQ(a.n, 12);  // F and B
   EXPECT_EQ(a.rank, 6);
@@ -84,7 +84,7 @@ TEST(StraightGuide, SingleFoldedSheetImposesOneConstraintAndHasOneInternalMode) 
 
 TEST(StraightGuide, DoubleClampedFoldedSheetHasInternalModeAndInPlaneBendingStress) {
   const FrameworkModel model = load_example("folded-sheet-double-clamped.yaml");
-  const FrameworkAnalysis a = analyse_framework(model);
+  const FrameworkResult a = analyse_framework(model);
   EXPECT_EQ(a.m, 6);
   EXPECT_EQ(a.n, 6);
   EXPECT_EQ(a.rank, 5);
@@ -107,7 +107,7 @@ TEST(StraightGuide, DoubleClampedFoldedSheetHasInternalModeAndInPlaneBendingStre
 
 TEST(StraightGuide, FiveFoldedSheetFlexuresGiveSquareNonSingularJacobian) {
   const FrameworkModel model = load_example("folded-sheet-guide-5.yaml");
-  const FrameworkAnalysis a = analyse_framework(model);
+  const FrameworkResult a = analyse_framework(model);
   // Seed: "In each folded sheet flexure, there are six constrained deformations and one
   // independent deformation, so there are 35 rows in total" and 5 x 6 + 5 = 35 columns.
   EXPECT_EQ(a.m, 35);
@@ -122,7 +122,7 @@ TEST(StraightGuide, FiveFoldedSheetFlexuresGiveSquareNonSingularJacobian) {
 
 TEST(StraightGuide, SymmetricFiveFlexureVariantIsUnderAndOverConstrained) {
   const FrameworkModel model = load_example("folded-sheet-guide-5-symmetric.yaml");
-  const FrameworkAnalysis a = analyse_framework(model);
+  const FrameworkResult a = analyse_framework(model);
   EXPECT_EQ(a.m, 35);
   EXPECT_EQ(a.n, 35);
   EXPECT_EQ(a.rank, 34);
@@ -146,7 +146,7 @@ TEST(StraightGuide, SymmetricFiveFlexureVariantIsUnderAndOverConstrained) {
 
 TEST(StraightGuide, SixFoldedSheetFlexuresAreOverConstrainedWithBendingInAllSheets) {
   const FrameworkModel model = load_example("folded-sheet-guide-6.yaml");
-  const FrameworkAnalysis a = analyse_framework(model);
+  const FrameworkResult a = analyse_framework(model);
   EXPECT_EQ(a.m, 42);
   EXPECT_EQ(a.n, 41);
   EXPECT_EQ(a.rank, 41);
@@ -188,12 +188,12 @@ elements:
   - {name: stage, type: rigid_body, nodes: [S, C, D]}
 )";
   FrameworkModel model = testing::parse_model(text);
-  const FrameworkAnalysis a = analyse_framework(model);
+  const FrameworkResult a = analyse_framework(model);
   EXPECT_EQ(a.m, 8);
   EXPECT_EQ(a.n, 8);
   EXPECT_TRUE(a.exactly_constrained());
   model.nodes[4].roles[0] = CoordinateRole::dependent;
-  const FrameworkAnalysis free = analyse_framework(model);
+  const FrameworkResult free = analyse_framework(model);
   ASSERT_EQ(free.mechanisms, 1);
   for (Eigen::Index j = 0; j < free.n; ++j) {
     const std::string label = report::framework_column_label(model, free, j);

@@ -37,7 +37,7 @@ TEST(Truss12, JacobianIsTheSeedsMatrix) {
 
 TEST(Truss12, OneMechanismAndOneSelfStressAsInTable2) {
   const FrameworkModel model = load_example("truss-12.yaml");
-  const FrameworkAnalysis a = analyse_framework(model);
+  const FrameworkResult a = analyse_framework(model);
   EXPECT_EQ(a.m, 12);
   EXPECT_EQ(a.n, 12);
   EXPECT_EQ(a.rank, 11);
@@ -76,10 +76,10 @@ TEST(Truss12, OneMechanismAndOneSelfStressAsInTable2) {
 
 TEST(Truss12, ProposalGivesAnExactlyConstrainedDesign) {
   const FrameworkModel model = load_example("truss-12.yaml");
-  const FrameworkAnalysis a = analyse_framework(model);
+  const FrameworkResult a = analyse_framework(model);
   ASSERT_EQ(a.releases.size(), 1u);
   ASSERT_EQ(a.constrain.size(), 1u);
-  const FrameworkAnalysis repaired = analyse_framework(apply_proposal(model, a));
+  const FrameworkResult repaired = analyse_framework(apply_proposal(model, a));
   EXPECT_TRUE(repaired.exactly_constrained());
   EXPECT_EQ(repaired.m, 11);
   EXPECT_EQ(repaired.n, 11);
@@ -94,7 +94,7 @@ TEST(Truss12, ReleasingAnyOneTrussRemovesTheSelfStressButNotTheMechanism) {
   for (std::size_t e = 0; e < model.elements.size(); ++e) {
     FrameworkModel released = model;
     released.elements[e].roles[0] = DeformationRole::released;
-    const FrameworkAnalysis a = analyse_framework(released);
+    const FrameworkResult a = analyse_framework(released);
     EXPECT_EQ(a.self_stresses, 0) << e;
     EXPECT_EQ(a.mechanisms, 1) << e;
   }

@@ -144,7 +144,7 @@ TEST(SpacarReader, PlanarFourBarIsExactlyConstrained) {
 }
 
 // D(c) has `rows` x `columns` and rank `rank`: n − rank mechanisms, m − rank self-stresses.
-void expect_counts(const framework::FrameworkAnalysis& a, Eigen::Index rows, Eigen::Index columns, Eigen::Index rank) {
+void expect_counts(const framework::FrameworkResult& a, Eigen::Index rows, Eigen::Index columns, Eigen::Index rank) {
   EXPECT_EQ(a.m, rows);
   EXPECT_EQ(a.n, columns);
   EXPECT_EQ(a.rank, rank);
@@ -153,7 +153,7 @@ void expect_counts(const framework::FrameworkAnalysis& a, Eigen::Index rows, Eig
 }
 
 // The rate of coordinate `slot` of node `name` in mode `mode` (0 when it is not dependent).
-double mode_rate(const framework::FrameworkAnalysis& a, const FrameworkModel& m, std::size_t mode, const std::string& name,
+double mode_rate(const framework::FrameworkResult& a, const FrameworkModel& m, std::size_t mode, const std::string& name,
                  int slot) {
   const auto column = a.indexing.coordinate_of[node(m, name)][static_cast<std::size_t>(slot)];
   for (std::size_t c = 0; c < a.partition.dependent_coordinates.size(); ++c)
@@ -174,7 +174,7 @@ using Names = std::map<std::string, std::string>;
 // Modes (as rates of "node.slot") and stress states (as resultants of "element.deformation") of
 // an analysis, rows in the order of `keys`, with node and element names mapped through `nodes`
 // and `elements` (SPACAR numbers -> YAML names).
-Eigen::MatrixXd mode_basis(const framework::FrameworkAnalysis& a, const FrameworkModel& m, const std::vector<std::string>& keys,
+Eigen::MatrixXd mode_basis(const framework::FrameworkResult& a, const FrameworkModel& m, const std::vector<std::string>& keys,
                            const Names& nodes) {
   Eigen::MatrixXd basis = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(keys.size()), static_cast<Eigen::Index>(a.modes.size()));
   for (std::size_t c = 0; c < a.partition.dependent_coordinates.size(); ++c) {
@@ -188,7 +188,7 @@ Eigen::MatrixXd mode_basis(const framework::FrameworkAnalysis& a, const Framewor
   return basis;
 }
 
-Eigen::MatrixXd stress_basis(const framework::FrameworkAnalysis& a, const FrameworkModel& m, const std::vector<std::string>& keys,
+Eigen::MatrixXd stress_basis(const framework::FrameworkResult& a, const FrameworkModel& m, const std::vector<std::string>& keys,
                              const Names& elements) {
   Eigen::MatrixXd basis = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(keys.size()), static_cast<Eigen::Index>(a.stresses.size()));
   const auto rows = a.partition.jacobian_rows();
@@ -346,7 +346,7 @@ TEST(SpacarReader, ParallelLeafSpringGuideHasOneSelfStress) {
 TEST(SpacarReader, FoldedSheetGuideMatchesTheYamlExampleAndTheSeed) {
   const FrameworkModel dat = read_spacar(spacar_example("folded-sheet-guide-5.dat")).model;
   const FrameworkModel yaml =
-      read_framework(YamlFile::load(std::string(KINESTAT_SOURCE_DIR) + "/examples/folded-sheet-guide-5.yaml"));
+      read_framework_model(YamlFile::load(std::string(KINESTAT_SOURCE_DIR) + "/examples/folded-sheet-guide-5.yaml"));
   const auto a = framework::analyse_framework(dat);
   const auto b = framework::analyse_framework(yaml);
   // Seed 002, Fig. 3(b): D(c) is 35 x 35 and non-singular.
@@ -398,7 +398,7 @@ void expect_same_analysis(const FrameworkModel& dat, const FrameworkModel& yaml,
 }
 
 FrameworkModel yaml_example(const std::string& name) {
-  return read_framework(YamlFile::load(std::string(KINESTAT_SOURCE_DIR) + "/examples/" + name));
+  return read_framework_model(YamlFile::load(std::string(KINESTAT_SOURCE_DIR) + "/examples/" + name));
 }
 
 std::size_t element_index(const FrameworkModel& m, const std::string& name) {

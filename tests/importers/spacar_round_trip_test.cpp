@@ -23,7 +23,7 @@ std::string source(const std::string& relative) { return std::string(KINESTAT_SO
 
 FrameworkModel load(const std::string& relative) {
   if (relative.ends_with(".dat")) return read_spacar(source(relative)).model;
-  return read_framework(YamlFile::load(source(relative)));
+  return read_framework_model(YamlFile::load(source(relative)));
 }
 
 void expect_same_counts(const FrameworkModel& a, const FrameworkModel& b, const std::string& what) {
@@ -45,7 +45,7 @@ TEST_P(RoundTrip, SpacarOutAndBackKeepsTheCounts) {
 
 TEST_P(RoundTrip, YamlOutAndBackKeepsTheModel) {
   const FrameworkModel model = load(GetParam());
-  const FrameworkModel back = read_framework(YamlFile::parse("round-trip.yaml", framework_yaml(model, {"test"})));
+  const FrameworkModel back = read_framework_model(YamlFile::parse("round-trip.yaml", framework_yaml(model, {"test"})));
   ASSERT_EQ(back.nodes.size(), model.nodes.size());
   for (std::size_t i = 0; i < model.nodes.size(); ++i) {
     EXPECT_EQ(back.nodes[i].name, model.nodes[i].name);
@@ -77,7 +77,7 @@ INSTANTIATE_TEST_SUITE_P(Models, RoundTrip,
 
 TEST(SpacarWriter, WritesSpacarLightNumberingAndRoles) {
   // Two nodes, one beam clamped at node a, torsion released, the tip's y translation prescribed.
-  const FrameworkModel model = read_framework(YamlFile::parse("t.yaml", R"(kinestat: 1
+  const FrameworkModel model = read_framework_model(YamlFile::parse("t.yaml", R"(kinestat: 1
 kind: framework
 dimension: spatial
 nodes: {a: [0, 0, 0], b: [10, 0, 0]}
@@ -103,7 +103,7 @@ elements:
 // the written file it would start a new SPACAR line. Here it would fix node b (position node 3),
 // turning the truss's 2 mechanisms (b moves on a sphere about a) into 0 and a self-stress.
 TEST(SpacarWriter, NamesInCommentsCannotStartALine) {
-  const FrameworkModel model = read_framework(YamlFile::parse("t.yaml", R"(kinestat: 1
+  const FrameworkModel model = read_framework_model(YamlFile::parse("t.yaml", R"(kinestat: 1
 kind: framework
 dimension: spatial
 name: "two\nFIX 3"
@@ -158,7 +158,7 @@ TEST(SpacarWriter, TheProposalMakesTheReReadModelExactlyConstrained) {
 TEST(SpacarWriter, WritesRigidBodiesWithFreeTranslationsAsHinges) {
   // h: relative translations released and rotation about y released: HINGE about y, whose
   // deformation 1 (the axis) is released. k: planar, all released: PLHINGE with RLSE 1.
-  const FrameworkModel spatial = read_framework(YamlFile::parse("t.yaml", R"(kinestat: 1
+  const FrameworkModel spatial = read_framework_model(YamlFile::parse("t.yaml", R"(kinestat: 1
 kind: framework
 dimension: spatial
 nodes: {a: [0, 0, 0], b: [1, 0, 0], c: [1, 0, 0], d: [2, 0, 0]}
@@ -177,7 +177,7 @@ elements:
   EXPECT_EQ(back.self_stresses, 0);
   expect_same_counts(spatial, parse_spacar("t.dat", text).model, "hinge");
 
-  const FrameworkModel planar = read_framework(YamlFile::parse("t.yaml", R"(kinestat: 1
+  const FrameworkModel planar = read_framework_model(YamlFile::parse("t.yaml", R"(kinestat: 1
 kind: framework
 dimension: planar
 nodes: {a: [0, 0], b: [1, 0]}
@@ -205,7 +205,7 @@ std::string refusal_of(const FrameworkModel& model) {
 TEST(SpacarWriter, RefusesAPlanarJointToANodeOnlyHingesTurn) {
   // c shares b's position through the joint and turns only through the hinge: SPACAR would need
   // a planar pin body to keep c's own position node on b.
-  const FrameworkModel model = read_framework(YamlFile::parse("t.yaml", R"(kinestat: 1
+  const FrameworkModel model = read_framework_model(YamlFile::parse("t.yaml", R"(kinestat: 1
 kind: framework
 dimension: planar
 nodes: {a: [0, 0], b: [1, 0], c: [1, 0]}
@@ -220,7 +220,7 @@ elements:
 }
 
 TEST(SpacarWriter, RefusesRigidBodiesWithReleasesThatAreNotJoints) {
-  const FrameworkModel model = read_framework(YamlFile::parse("t.yaml", R"(kinestat: 1
+  const FrameworkModel model = read_framework_model(YamlFile::parse("t.yaml", R"(kinestat: 1
 kind: framework
 dimension: planar
 nodes: {a: [0, 0], b: [1, 0]}
@@ -238,7 +238,7 @@ TEST(SpacarWriter, WritesAPinBodyBetweenNodesApartAsPinbody) {
   // held in b's frame, c's orientation turns with the link c-d only. By hand: a is fixed, so
   // b and the crank are fixed; c is fixed by the pin body; the link c-d turns freely about c
   // (3 rotations) and nothing is doubly held: 3 mechanisms, 0 self-stresses.
-  const FrameworkModel model = read_framework(YamlFile::parse("t.yaml", R"(kinestat: 1
+  const FrameworkModel model = read_framework_model(YamlFile::parse("t.yaml", R"(kinestat: 1
 kind: framework
 dimension: spatial
 nodes: {a: [0, 0, 0], b: [1, 0, 0], c: [2, 0, 0], d: [2, 1, 0]}
@@ -259,7 +259,7 @@ elements:
 
 TEST(SpacarWriter, RefusesAPinBodyOntoANodeWhoseOrientationNothingUses) {
   // SPACAR would have no orientation node for b, and its reader refuses such a PINBODY.
-  const FrameworkModel model = read_framework(YamlFile::parse("t.yaml", R"(kinestat: 1
+  const FrameworkModel model = read_framework_model(YamlFile::parse("t.yaml", R"(kinestat: 1
 kind: framework
 dimension: spatial
 nodes: {a: [0, 0, 0], b: [1, 0, 0]}

@@ -72,7 +72,26 @@ TEST(ReadingLimits, FlatListBeyondTheNodeLimit) {
   std::string list = "kinestat: 1\nx: [0";
   for (int i = 0; i < 2000; ++i) list += ",0";
   list += "]\n";
-  EXPECT_TRUE(has(error_of(list, limits), "more than 1000 nodes, the node limit")) << error_of(list, limits);
+  // Refused by the scan of the raw text, before the parser runs: two content lines, then the
+  // 999th comma is entry 1001; "x: [0" is 5 columns and comma k sits at column 4 + 2k.
+  EXPECT_TRUE(has(error_of(list, limits), "in.yaml:2:2002: error: the document has more than 1000 entries (lines and "
+                                          "items of flow lists), past the node limit (1000 nodes)"))
+      << error_of(list, limits);
+  // A block list: line k + 2 holds item k, entry k + 2, so entry 1001 is on line 1001.
+  std::string block = "kinestat: 1\nx:\n";
+  for (int i = 0; i < 2000; ++i) block += "  - 0\n";
+  EXPECT_TRUE(has(error_of(block, limits), "in.yaml:1001:3: error: the document has more than 1000 entries"))
+      << error_of(block, limits);
+  // N = 986 block items and 10 flow items: the scan counts 2 lines, N items, the line of y and 9
+  // commas = N + 12 = 998 entries; the parser meets the root, kinestat and 1, key x, its list and
+  // N items, key y, its list and 10 items = N + 17 = 1003 nodes.
+  std::string mixed = "kinestat: 1\nx:\n";
+  for (int i = 0; i < 986; ++i) mixed += "  - 0\n";
+  mixed += "y: [0, 0, 0, 0, 0, 0, 0, 0, 0, 0]\n";
+  EXPECT_TRUE(has(error_of(mixed, limits), "more than 1000 nodes, the node limit")) << error_of(mixed, limits);
+  // Commas inside quotes and comments separate nothing.
+  std::string quoted = "kinestat: 1\nx: [\"" + std::string(2000, ',') + "\"]  # " + std::string(2000, ',') + "\n";
+  EXPECT_EQ(error_of(quoted, limits), "accepted");
 }
 
 TEST(ReadingLimits, NestingLimitNamesTheLimit) {

@@ -23,7 +23,7 @@ struct Counts {
 };
 
 Counts counts_of(const FrameworkModel& model) {
-  const FrameworkAnalysis a = analyse_framework(model);
+  const FrameworkResult a = analyse_framework(model);
   return {a.m, a.n, a.rank, a.mechanisms, a.self_stresses};
 }
 
@@ -89,7 +89,7 @@ TEST(FrameworkProperties, EveryExampleUnderRenamingAndReordering) {
     const auto file = io::YamlFile::load(entry.path().string());
     if (io::model_kind(file) != "framework") continue;
     SCOPED_TRACE(entry.path().filename().string());
-    const FrameworkModel model = io::read_framework(file);
+    const FrameworkModel model = io::read_framework_model(file);
     EXPECT_EQ(counts_of(renamed_and_reordered(model)), counts_of(model));
     ++checked;
   }

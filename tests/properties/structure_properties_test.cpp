@@ -66,7 +66,7 @@ std::string describe(const Canonical& c) {
 }
 
 Canonical canonical(const StructureModel& model, const std::string& strip = "") {
-  const Decomposition d = decompose(model);
+  const StructureResult d = analyse_structure(model);
   const ConstraintBlocks blocks = find_constraint_blocks(model);
   Canonical c;
   c.complete = d.complete();
@@ -189,7 +189,7 @@ TEST(StructureProperties, RandomAdjacencyMatricesUnderRenamingAndReordering) {
       for (int j = i + 1; j < n; ++j)
         if (rng() % 3 == 0) m[i][j] = m[j][i] = 1 + static_cast<int>(rng() % 5);
     const StructureModel model = model_from_adjacency(m);
-    (decompose(model).complete() ? complete : incomplete)++;
+    (analyse_structure(model).complete() ? complete : incomplete)++;
     check_invariance(model, rng, "random matrix " + std::to_string(trial), 2);
   }
   // Both outcomes must be exercised for the test to mean something.

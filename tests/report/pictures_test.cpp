@@ -30,7 +30,7 @@ using kinestat::testing::example_path;
 
 report::Scene framework_scene_of(const std::string& example) {
   const auto file = kinestat::io::YamlFile::load(example_path(example));
-  const auto model = kinestat::io::read_framework(file);
+  const auto model = kinestat::io::read_framework_model(file);
   return report::framework_scene(model, kinestat::framework::analyse_framework(model));
 }
 
@@ -130,7 +130,7 @@ TEST(Pictures, PlanarFourBarTwistsAreItsInstantCentres) {
 TEST(Pictures, SauraEq2DiagramEdgesAvoidForeignCircles) {
   const auto file = kinestat::io::YamlFile::load(example_path("saura-eq2.yaml"));
   const auto model = kinestat::io::read_structure_model(file);
-  const std::string svg = report::structure_svg(model, kinestat::structure::decompose(model));
+  const std::string svg = report::structure_svg(model, kinestat::structure::analyse_structure(model));
   struct Circle {
     double x, y, r;
   };

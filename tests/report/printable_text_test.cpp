@@ -127,7 +127,7 @@ TEST(PrintableTextInReports, NetworkTextAndVerdictPrintEveryNameEscaped) {
     ASSERT_EQ(result.FN, 0);
     ASSERT_EQ(result.CN, 1);
     const auto verdict = design::network_verdict(model, result);
-    text[hostile ? 0 : 1] = report::network_text(model, result, {true, &verdict});
+    text[hostile ? 0 : 1] = report::network_report_text(model, result, {true, &verdict});
   }
   // The hostile names print exactly as the names that are their escapes, character for character.
   EXPECT_EQ(text[0], text[1]);
@@ -146,7 +146,7 @@ TEST(PrintableTextInReports, SparseNetworkTextPrintsNamesEscaped) {
   result.d = 3;
   result.stressed = {0, 1};
   result.moving = {};
-  const std::string text = report::sparse_network_text(model, result);
+  const std::string text = report::sparse_network_report_text(model, result);
   EXPECT_TRUE(terminal_safe(text)) << text;
   EXPECT_NE(text.find(kModel.shown + "\n"), std::string::npos);
   EXPECT_NE(text.find(kFirst.shown + ", " + kSecond.shown), std::string::npos) << text;
@@ -216,10 +216,10 @@ TEST(PrintableTextInReports, StructureTextAndVerdictPrintEveryNameEscaped) {
   std::string text[2];
   for (bool hostile : {true, false}) {
     const auto model = four_bar(hostile);
-    const auto decomposition = structure::decompose(model);
+    const auto decomposition = structure::analyse_structure(model);
     ASSERT_TRUE(decomposition.complete());
     const auto verdict = design::structure_verdict(model, decomposition);
-    text[hostile ? 0 : 1] = report::structure_text({model, decomposition, nullptr, structure::SearchMethod::matching,
+    text[hostile ? 0 : 1] = report::structure_report_text({model, decomposition, nullptr, structure::SearchMethod::matching,
                                                     &verdict, model.units});
   }
   EXPECT_EQ(text[0], text[1]);
@@ -231,7 +231,7 @@ TEST(PrintableTextInReports, StructureTextAndVerdictPrintEveryNameEscaped) {
 TEST(PrintableTextInReports, DotLabelEscapesControlsThenQuotes) {
   auto model = four_bar(true);
   model.name = "a\"b\\c\x1B\n";
-  const std::string dot = report::structure_dot(model, structure::decompose(model));
+  const std::string dot = report::structure_dot(model, structure::analyse_structure(model));
   // printable_text gives  a"b\c\x1B\x0A ; DOT quoting then doubles each backslash and escapes ".
   EXPECT_NE(dot.find("  label=\"a\\\"b\\\\c\\\\x1B\\\\x0A\";\n"), std::string::npos) << dot;
   EXPECT_TRUE(terminal_safe(dot));

@@ -18,7 +18,7 @@ namespace report = kinestat::report;
 
 report::Scene framework_scene_of(const std::string& example) {
   const auto file = kinestat::io::YamlFile::load(example_path(example));
-  const auto model = kinestat::io::read_framework(file);
+  const auto model = kinestat::io::read_framework_model(file);
   return report::framework_scene(model, kinestat::framework::analyse_framework(model));
 }
 

@@ -247,8 +247,8 @@ std::map<std::string, std::string> text_action_forms(const std::string& text) {
 int compare_network_outputs(const std::string& path) {
   const auto loaded = kinestat::io::read_network_model(kinestat::io::YamlFile::load(path));
   const auto result = kinestat::network::analyse_network(loaded.model);
-  const std::string text = report::network_text(loaded.model, result);
-  const auto json = report::network_json(loaded.model, result);
+  const std::string text = report::network_report_text(loaded.model, result);
+  const auto json = report::network_report_json(loaded.model, result);
   const auto scene = report::network_scene(loaded.model, result);
   const auto html = report::scene_json(scene);
   const auto from_text = text_action_forms(text);
@@ -317,7 +317,7 @@ int compare_network_outputs(const std::string& path) {
 }
 
 framework::FrameworkModel read_model(const std::string& name, const std::string& yaml) {
-  return kinestat::io::read_framework(kinestat::io::YamlFile::parse(name, yaml));
+  return kinestat::io::read_framework_model(kinestat::io::YamlFile::parse(name, yaml));
 }
 
 TEST(SignAgreement, EveryFrameworkExample) {
@@ -326,7 +326,7 @@ TEST(SignAgreement, EveryFrameworkExample) {
     if (entry.path().extension() != ".yaml") continue;
     const auto file = kinestat::io::YamlFile::load(entry.path().string());
     if (kinestat::io::model_kind(file) != "framework") continue;
-    compared += compare_outputs(kinestat::io::read_framework(file), entry.path().filename().string());
+    compared += compare_outputs(kinestat::io::read_framework_model(file), entry.path().filename().string());
     ++examples;
   }
   EXPECT_GE(examples, 10);

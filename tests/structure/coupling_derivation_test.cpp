@@ -24,7 +24,7 @@ TEST(CouplingDerivation, FourBarFromCouplingsMatchesFig2) {
       {"ground", "crank", "coupler", "rocker"},
       {{1, 0, PairKind::lower, 1, {}}, {2, 1, PairKind::lower, 0, {}}, {3, 2, PairKind::lower, 0, {}}, {0, 3, PairKind::lower, 0, {}}});
   EXPECT_EQ(adjacency_of(model), (std::vector<std::vector<int>>{{0, 3, 0, 1}, {3, 0, 1, 0}, {0, 1, 0, 1}, {1, 0, 1, 0}}));
-  const Decomposition d = decompose(model);
+  const StructureResult d = analyse_structure(model);
   ASSERT_EQ(d.groups.size(), 2u);
   EXPECT_EQ(d.groups[0].bodies, std::vector<int>{1});
   EXPECT_EQ(d.groups[1].bodies, (std::vector<int>{2, 3}));
@@ -37,7 +37,7 @@ TEST(CouplingDerivation, SpatialFreedomsAndBadCouplings) {
       6);
   EXPECT_EQ(rsur.mobility(), 1);
   EXPECT_TRUE(adjacency_of(rsur).empty());  // spatial: no Table-1 matrix
-  EXPECT_TRUE(decompose(rsur).complete());
+  EXPECT_TRUE(analyse_structure(rsur).complete());
   EXPECT_THROW(model_from_couplings({"0", "1"}, {{0, 2, PairKind::lower, 0, {}}}), kinestat::Error);
   EXPECT_THROW(model_from_couplings({"0", "1"}, {{1, 1, PairKind::lower, 0, {}}}), kinestat::Error);
   EXPECT_THROW(model_from_couplings({"0", "1"}, {{0, 1, PairKind::lower, 2, {}}}), kinestat::Error);

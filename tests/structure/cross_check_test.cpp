@@ -12,7 +12,7 @@
 namespace kinestat::structure {
 namespace {
 
-void expect_same(const Decomposition& a, const Decomposition& b, const std::string& what) {
+void expect_same(const StructureResult& a, const StructureResult& b, const std::string& what) {
   ASSERT_EQ(a.groups.size(), b.groups.size()) << what;
   for (std::size_t i = 0; i < a.groups.size(); ++i) {
     EXPECT_EQ(a.groups[i].bodies, b.groups[i].bodies) << what << ", group " << i + 1;
@@ -27,8 +27,8 @@ TEST(CrossCheck, GeneratedMechanismsAgreeAndRecoverTheirGroups) {
   for (std::uint32_t seed = 1; seed <= 60; ++seed) {
     const int bodies = 4 + static_cast<int>(seed % 11);
     const GeneratedMechanism g = generate_group_chain(bodies, seed, {}, /*shuffle=*/true);
-    const Decomposition fast = decompose(g.model, SearchMethod::matching);
-    const Decomposition seed_search = decompose(g.model, SearchMethod::seed_search);
+    const StructureResult fast = analyse_structure(g.model, SearchMethod::matching);
+    const StructureResult seed_search = analyse_structure(g.model, SearchMethod::seed_search);
     const std::string what = "seed " + std::to_string(seed);
     ASSERT_TRUE(fast.complete()) << what;
     expect_same(fast, seed_search, what);
@@ -52,17 +52,17 @@ TEST(CrossCheck, RandomMatricesAgreeWhereWellConstrained) {
       for (int j = i + 1; j < n; ++j)
         if (rng() % 3 == 0) m[i][j] = m[j][i] = 1 + static_cast<int>(rng() % 5);
     const StructureModel model = model_from_adjacency(m);
-    const Decomposition fast = decompose(model, SearchMethod::matching);
+    const StructureResult fast = analyse_structure(model, SearchMethod::matching);
     if (!fast.complete()) continue;
     ++compared;
-    expect_same(fast, decompose(model, SearchMethod::seed_search), "trial " + std::to_string(trial));
+    expect_same(fast, analyse_structure(model, SearchMethod::seed_search), "trial " + std::to_string(trial));
   }
   EXPECT_GT(compared, 50);  // enough well-constrained samples to mean something
 }
 
 TEST(CrossCheck, EveryBodyOfAGeneratedChainIsPlacedOnce) {
   const GeneratedMechanism g = generate_group_chain(2000, 7);
-  const Decomposition d = decompose(g.model);
+  const StructureResult d = analyse_structure(g.model);
   ASSERT_TRUE(d.complete());
   int total = 0;
   for (const auto& group : d.groups) total += group.Nm;
@@ -83,14 +83,14 @@ TEST(CrossCheck, LargeSingleGroupsAreOneGroup) {
   // Ring and ladder families: one crank, then one Assur group of all the other bodies.
   for (const auto& g : {generate_ring_group(8), generate_ladder_group(4)}) {
     for (const auto method : {SearchMethod::matching, SearchMethod::seed_search}) {
-      const Decomposition d = decompose(g.model, method);
+      const StructureResult d = analyse_structure(g.model, method);
       ASSERT_TRUE(d.complete()) << g.model.name;
       ASSERT_EQ(d.groups.size(), 2u) << g.model.name;
       EXPECT_EQ(d.groups[0].bodies, g.groups[0]);
       EXPECT_EQ(d.groups[1].bodies, g.groups[1]);
     }
   }
-  const Decomposition big = decompose(generate_ring_group(5000).model);
+  const StructureResult big = analyse_structure(generate_ring_group(5000).model);
   EXPECT_EQ(big.groups.size(), 2u);
   EXPECT_EQ(big.groups[1].Nm, 5000);
 }
@@ -113,12 +113,12 @@ TEST(CrossCheck, Eq1AloneAcceptsAChainThatStillMoves) {
                                                      {0, 0, 1, 0, 2, 0},
                                                      {0, 0, 0, 2, 0, 0},
                                                      {3, 1, 2, 0, 0, 0}});
-  const Decomposition fast = decompose(model);
+  const StructureResult fast = analyse_structure(model);
   ASSERT_EQ(fast.groups.size(), 1u);
   EXPECT_EQ(fast.groups[0].bodies, std::vector<int>{5});
   EXPECT_EQ(fast.undecomposed.over_constrained, std::vector<int>{2});
   EXPECT_EQ(fast.undecomposed.under_constrained, (std::vector<int>{1, 3, 4}));
-  const Decomposition seed = decompose(model, SearchMethod::seed_search);
+  const StructureResult seed = analyse_structure(model, SearchMethod::seed_search);
   ASSERT_GE(seed.groups.size(), 2u);
   EXPECT_EQ(seed.groups[1].bodies, (std::vector<int>{2, 3}));
 }

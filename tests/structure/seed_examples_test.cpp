@@ -9,7 +9,7 @@ namespace {
 
 using Matrix = std::vector<std::vector<int>>;
 
-std::vector<std::vector<int>> group_bodies(const Decomposition& d) {
+std::vector<std::vector<int>> group_bodies(const StructureResult& d) {
   std::vector<std::vector<int>> out;
   for (const auto& g : d.groups) {
     std::vector<int> one;
@@ -32,7 +32,7 @@ const Matrix kEq4 = {{0, 2, 1, 3, 0}, {2, 0, 1, 0, 0}, {1, 1, 0, 2, 0}, {3, 0, 2
 class BothMethods : public ::testing::TestWithParam<SearchMethod> {};
 
 TEST_P(BothMethods, FourBarOfFig2) {
-  const Decomposition d = decompose(model_from_adjacency(kFourBar), GetParam());
+  const StructureResult d = analyse_structure(model_from_adjacency(kFourBar), GetParam());
   ASSERT_TRUE(d.complete());
   EXPECT_EQ(group_bodies(d), (std::vector<std::vector<int>>{{2}, {3, 4}}));
   // Section 2, step 2: SG-I has P = 1, S_c = 1, n_c = 1, N_m = 1.
@@ -50,7 +50,7 @@ TEST_P(BothMethods, FourBarOfFig2) {
 }
 
 TEST_P(BothMethods, Eq2ResultMatrix) {
-  const Decomposition d = decompose(model_from_adjacency(kEq2), GetParam());
+  const StructureResult d = analyse_structure(model_from_adjacency(kEq2), GetParam());
   ASSERT_TRUE(d.complete());
   EXPECT_EQ(group_bodies(d), (std::vector<std::vector<int>>{{2, 3}, {4}, {5}}));
   const Matrix printed = {{0, 1, 1, 2, 3}, {1, 0, 0, 0, 0}, {1, 0, 0, 0, 0}, {1, 0, 2, 0, 0}, {0, 0, 0, 2, 0}};
@@ -58,7 +58,7 @@ TEST_P(BothMethods, Eq2ResultMatrix) {
 }
 
 TEST_P(BothMethods, Eq3ResultMatrix) {
-  const Decomposition d = decompose(model_from_adjacency(kEq3), GetParam());
+  const StructureResult d = analyse_structure(model_from_adjacency(kEq3), GetParam());
   ASSERT_TRUE(d.complete());
   EXPECT_EQ(group_bodies(d), (std::vector<std::vector<int>>{{3}, {4}, {5}, {2}}));
   // As printed, except element (3,3): the paper prints 2 there, but a body never assigns
@@ -69,7 +69,7 @@ TEST_P(BothMethods, Eq3ResultMatrix) {
 }
 
 TEST_P(BothMethods, Eq4ResultMatrix) {
-  const Decomposition d = decompose(model_from_adjacency(kEq4), GetParam());
+  const StructureResult d = analyse_structure(model_from_adjacency(kEq4), GetParam());
   ASSERT_TRUE(d.complete());
   EXPECT_EQ(group_bodies(d), (std::vector<std::vector<int>>{{4}, {5}, {3}, {2}}));
   const Matrix printed = {{0, 4, 3, 1, 2}, {1, 0, 3, 0, 0}, {1, 0, 0, 2, 0}, {1, 0, 0, 0, 0}, {0, 0, 0, 2, 0}};

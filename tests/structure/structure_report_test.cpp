@@ -18,10 +18,10 @@ TEST(StructureReport, GroupNamesAreRomanLikeTheSeed) {
 
 TEST(StructureReport, JsonCarriesGroupsOrderMatrixAndTransformations) {
   const auto model = structure::testing::load_example("saura-eq2.yaml");
-  const auto d = structure::decompose(model);
+  const auto d = structure::analyse_structure(model);
   const auto t = structure::structural_transformations(model);
-  const std::string text = structure_json({model, d, &t});
-  EXPECT_EQ(text, structure_json({model, d, &t}));  // deterministic
+  const std::string text = structure_report_json({model, d, &t});
+  EXPECT_EQ(text, structure_report_json({model, d, &t}));  // deterministic
   const auto j = nlohmann::json::parse(text);
   ASSERT_EQ(j["groups"].size(), 3u);
   EXPECT_EQ(j["groups"][0]["bodies"], nlohmann::json({2, 3}));
@@ -40,7 +40,7 @@ TEST(StructureReport, JsonCarriesGroupsOrderMatrixAndTransformations) {
 TEST(StructureReport, DiagramOfTheFourBar) {
   // Fig. 2.g: 0 -> (1, 1), 0 -> (2, 0), (1, 1) -> (2, 0).
   const auto model = structure::testing::load_example("saura-four-bar.yaml");
-  const auto d = structure::decompose(model);
+  const auto d = structure::analyse_structure(model);
   const auto diagram = structure::structural_diagram(d);
   ASSERT_EQ(diagram.nodes.size(), 3u);
   EXPECT_EQ(diagram.nodes[1].Nm, 1);
@@ -66,8 +66,8 @@ TEST(StructureReport, DiagramOfTheFourBar) {
 
 TEST(StructureReport, TextNamesTheUndecomposedPart) {
   const auto model = structure::testing::load_example("four-bar-over-actuated.yaml");
-  const auto d = structure::decompose(model);
-  const std::string text = structure_text({model, d, nullptr});
+  const auto d = structure::analyse_structure(model);
+  const std::string text = structure_report_text({model, d, nullptr});
   EXPECT_NE(text.find("over-constrained: bodies {3}: 1 constraint(s) or input(s) too many"), std::string::npos) << text;
   EXPECT_NE(text.find("the redundancy can sit on any pair of the over-constrained part, bodies {2, 3, 4}"), std::string::npos)
       << text;
@@ -83,7 +83,7 @@ TEST(StructureReport, DiagramOfFig4) {
   // Fig. 4.b-c: SG-I {2, 3} (2, 1) hangs on the frame; SG-II {4} (1, 0) on the frame (revolute)
   // and on SG-I (cam with arm 3); SG-III {5} (1, 1) on SG-II only.
   const auto model = structure::testing::load_example("saura-eq2.yaml");
-  const auto diagram = structure::structural_diagram(structure::decompose(model));
+  const auto diagram = structure::structural_diagram(structure::analyse_structure(model));
   ASSERT_EQ(diagram.nodes.size(), 4u);
   EXPECT_EQ(std::make_pair(diagram.nodes[1].Nm, diagram.nodes[1].nc), std::make_pair(2, 1));
   EXPECT_EQ(std::make_pair(diagram.nodes[2].Nm, diagram.nodes[2].nc), std::make_pair(1, 0));

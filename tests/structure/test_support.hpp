@@ -16,7 +16,7 @@ inline StructureModel load_example(const std::string& name) {
 }
 
 /// Groups in order of formation, bodies numbered from 1 as in the paper.
-inline std::vector<std::vector<int>> numbered_groups(const Decomposition& d) {
+inline std::vector<std::vector<int>> numbered_groups(const StructureResult& d) {
   std::vector<std::vector<int>> out;
   for (const auto& g : d.groups) {
     std::vector<int> one;

@@ -12,7 +12,7 @@ using testing::numbered_groups;
 using Groups = std::vector<std::vector<int>>;
 
 // Every group must satisfy Eq. 1 with the seed's counting: S_c - n_c = d (P - N_m).
-void expect_eq1(const StructureModel& model, const Decomposition& d) {
+void expect_eq1(const StructureModel& model, const StructureResult& d) {
   for (const auto& g : d.groups) EXPECT_EQ(g.Sc - g.nc, model.dimension * (g.P - g.Nm)) << "group " << g.number;
 }
 
@@ -20,7 +20,7 @@ TEST(TextbookExamples, StephensonSixBarIsCrankAndTwoDyads) {
   // Norton, Design of Machinery, sect. 2.10: a Stephenson six-bar is a four-bar with a dyad
   // added; solved as the driver, the four-bar's RRR dyad, then the added RRR dyad.
   const StructureModel model = load_example("stephenson-six-bar.yaml");
-  const Decomposition d = decompose(model);
+  const StructureResult d = analyse_structure(model);
   ASSERT_TRUE(d.complete());
   EXPECT_EQ(numbered_groups(d), (Groups{{2}, {3, 4}, {5, 6}}));
   EXPECT_EQ(d.groups[2].after, (std::vector<int>{0, 2}));  // the second dyad hangs on the coupler and the frame
@@ -29,7 +29,7 @@ TEST(TextbookExamples, StephensonSixBarIsCrankAndTwoDyads) {
 
 TEST(TextbookExamples, WattSixBarIsCrankAndTwoDyads) {
   const StructureModel model = load_example("watt-six-bar.yaml");
-  const Decomposition d = decompose(model);
+  const StructureResult d = analyse_structure(model);
   ASSERT_TRUE(d.complete());
   EXPECT_EQ(numbered_groups(d), (Groups{{2}, {3, 4}, {5, 6}}));
   for (const auto& g : d.groups) EXPECT_EQ(g.stage, g.number);  // a pure chain: no two groups in parallel
@@ -39,7 +39,7 @@ TEST(TextbookExamples, WattSixBarIsCrankAndTwoDyads) {
 TEST(TextbookExamples, SliderCrankIsCrankAndRRPDyad) {
   // Artobolevsky ch. 2; Uicker, Pennock & Shigley ch. 1: driver + dyad of the second kind.
   const StructureModel model = load_example("slider-crank.yaml");
-  const Decomposition d = decompose(model);
+  const StructureResult d = analyse_structure(model);
   ASSERT_TRUE(d.complete());
   EXPECT_EQ(numbered_groups(d), (Groups{{2}, {3, 4}}));
   EXPECT_EQ(d.groups[1].P, 3);   // crank-rod revolute, rod-slider revolute, slider-frame prismatic
@@ -52,7 +52,7 @@ TEST(TextbookExamples, ClassIIITriadIsOneGroupOfFourBodies) {
   // revolutes, 3 * 4 = 2 * 6, is one class-III group: no dyad can be split off.
   const StructureModel model = load_example("class-iii-triad.yaml");
   for (const auto method : {SearchMethod::matching, SearchMethod::seed_search}) {
-    const Decomposition d = decompose(model, method);
+    const StructureResult d = analyse_structure(model, method);
     ASSERT_TRUE(d.complete());
     EXPECT_EQ(numbered_groups(d), (Groups{{2}, {3, 4, 5, 6}}));
     EXPECT_EQ(d.groups[1].P, 6);
@@ -63,21 +63,21 @@ TEST(TextbookExamples, ClassIIITriadIsOneGroupOfFourBodies) {
 }
 
 TEST(TextbookExamples, SeedFilesGiveThePrintedGroups) {
-  EXPECT_EQ(numbered_groups(decompose(load_example("saura-four-bar.yaml"))), (Groups{{2}, {3, 4}}));
-  EXPECT_EQ(numbered_groups(decompose(load_example("saura-eq2.yaml"))), (Groups{{2, 3}, {4}, {5}}));
-  EXPECT_EQ(numbered_groups(decompose(load_example("saura-eq3.yaml"))), (Groups{{3}, {4}, {5}, {2}}));
-  EXPECT_EQ(numbered_groups(decompose(load_example("saura-eq4.yaml"))), (Groups{{4}, {5}, {3}, {2}}));
+  EXPECT_EQ(numbered_groups(analyse_structure(load_example("saura-four-bar.yaml"))), (Groups{{2}, {3, 4}}));
+  EXPECT_EQ(numbered_groups(analyse_structure(load_example("saura-eq2.yaml"))), (Groups{{2, 3}, {4}, {5}}));
+  EXPECT_EQ(numbered_groups(analyse_structure(load_example("saura-eq3.yaml"))), (Groups{{3}, {4}, {5}, {2}}));
+  EXPECT_EQ(numbered_groups(analyse_structure(load_example("saura-eq4.yaml"))), (Groups{{4}, {5}, {3}, {2}}));
   // Eq. 2: the printed Result(1).Res, through the file reader.
   const std::vector<std::vector<int>> res = {
       {0, 1, 1, 2, 3}, {1, 0, 0, 0, 0}, {1, 0, 0, 0, 0}, {1, 0, 2, 0, 0}, {0, 0, 0, 2, 0}};
-  EXPECT_EQ(decompose(load_example("saura-eq2.yaml")).result_matrix(), res);
+  EXPECT_EQ(analyse_structure(load_example("saura-eq2.yaml")).result_matrix(), res);
 }
 
 TEST(TextbookExamples, SpatialRSURDecomposesWithSixInEq1) {
   const StructureModel model = load_example("spatial-rsur.yaml");
   EXPECT_EQ(model.dimension, 6);
   EXPECT_EQ(model.mobility(), 1);  // 6 * 3 - (5 + 3 + 4 + 5)
-  const Decomposition d = decompose(model);
+  const StructureResult d = analyse_structure(model);
   ASSERT_TRUE(d.complete());
   EXPECT_EQ(numbered_groups(d), (Groups{{2}, {3, 4}}));
   EXPECT_EQ(d.groups[1].Sc, 6);  // spherical 3 + universal 2 + revolute 1
@@ -90,7 +90,7 @@ TEST(TextbookExamples, SpatialRSURDecomposesWithSixInEq1) {
 TEST(TextbookExamples, SpatialRSSRReportsTheIdleSpinAsAMissingInput) {
   const StructureModel model = load_example("spatial-rssr.yaml");
   EXPECT_EQ(model.mobility(), 2);  // 18 - 16: the coupler's spin about its own axis
-  const Decomposition d = decompose(model);
+  const StructureResult d = analyse_structure(model);
   EXPECT_FALSE(d.complete());
   EXPECT_EQ(numbered_groups(d), (Groups{{2}}));
   EXPECT_EQ(testing::numbered(d.undecomposed.under_constrained), (std::vector<int>{3, 4}));
@@ -104,7 +104,7 @@ TEST(TextbookExamples, OverActuatedFourBarIsReported) {
   // freedoms: one too many. Both methods agree.
   const StructureModel model = load_example("four-bar-over-actuated.yaml");
   for (const auto method : {SearchMethod::matching, SearchMethod::seed_search}) {
-    const Decomposition d = decompose(model, method);
+    const StructureResult d = analyse_structure(model, method);
     EXPECT_FALSE(d.complete());
     EXPECT_EQ(numbered_groups(d), (Groups{{4}, {2}}));  // decreasing body number
     EXPECT_EQ(testing::numbered(d.undecomposed.over_constrained), (std::vector<int>{3}));
@@ -125,7 +125,7 @@ TEST(TextbookExamples, GroupsBehindAPlacedOverConstrainedBodyAreFound) {
                                                      {0, 0, 0, 1, 0, 1},
                                                      {1, 0, 0, 0, 1, 0}});
   for (const auto method : {SearchMethod::matching, SearchMethod::seed_search}) {
-    const Decomposition d = decompose(model, method);
+    const StructureResult d = analyse_structure(model, method);
     EXPECT_EQ(numbered_groups(d), (Groups{{4}, {2}, {5, 6}}));
     EXPECT_EQ(testing::numbered(d.undecomposed.over_constrained), (std::vector<int>{3}));
     // The dyad takes all the units of its pairs, so the redundancy cannot sit there.
@@ -141,7 +141,7 @@ TEST(TextbookExamples, FramePairsMayNameTheFrameSecond) {
   StructureModel model;
   model.body_names = {"frame", "crank", "coupler", "rocker"};
   model.pairs = {pair_from_code(1, 0, 3), pair_from_code(1, 2, 1), pair_from_code(2, 3, 1), pair_from_code(3, 0, 1)};
-  const Decomposition d = decompose(model);
+  const StructureResult d = analyse_structure(model);
   EXPECT_TRUE(d.complete());
   EXPECT_EQ(numbered_groups(d), (Groups{{2}, {3, 4}}));
 }
@@ -150,7 +150,7 @@ TEST(TextbookExamples, UnderActuatedFiveBarKeepsItsDrivenCrank) {
   // Five-bar (mobility 2) with one input: the driven crank is a group; the rest lacks one input.
   const StructureModel model = model_from_adjacency(
       {{0, 3, 0, 0, 1}, {3, 0, 1, 0, 0}, {0, 1, 0, 1, 0}, {0, 0, 1, 0, 1}, {1, 0, 0, 1, 0}});
-  const Decomposition d = decompose(model);
+  const StructureResult d = analyse_structure(model);
   EXPECT_EQ(numbered_groups(d), (Groups{{2}}));
   EXPECT_EQ(testing::numbered(d.undecomposed.under_constrained), (std::vector<int>{3, 4, 5}));
   EXPECT_EQ(d.undecomposed.missing, 1);
@@ -165,7 +165,7 @@ TEST(TextbookExamples, BodiesBehindAnOverConstrainedPartAreBlocked) {
                                                {3, 0, 1, 0, 0, 0},
                                                {0, 0, 1, 0, 0, 1},
                                                {1, 0, 0, 0, 1, 0}});
-  const Decomposition d = decompose(model);
+  const StructureResult d = analyse_structure(model);
   EXPECT_EQ(numbered_groups(d), (Groups{{4}, {2}}));
   EXPECT_EQ(testing::numbered(d.undecomposed.over_constrained), (std::vector<int>{3}));
   EXPECT_EQ(testing::numbered(d.undecomposed.blocked), (std::vector<int>{5, 6}));

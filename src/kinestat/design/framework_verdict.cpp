@@ -10,7 +10,7 @@ namespace kinestat::design {
 
 namespace {
 
-using framework::FrameworkAnalysis;
+using framework::FrameworkResult;
 using framework::FrameworkModel;
 
 
@@ -18,19 +18,19 @@ std::string counted(Eigen::Index n, const char* one, const char* many) { return 
 
 }  // namespace
 
-std::string framework_row_name(const FrameworkModel& model, const FrameworkAnalysis& analysis, Eigen::Index row) {
+std::string framework_row_name(const FrameworkModel& model, const FrameworkResult& analysis, Eigen::Index row) {
   const auto& d = analysis.indexing.deformations[static_cast<std::size_t>(analysis.rows[static_cast<std::size_t>(row)])];
   const auto& element = model.elements[d.element];
   return element.name + "." + framework::deformation_names(model, element)[d.deformation];
 }
 
-std::string framework_column_name(const FrameworkModel& model, const FrameworkAnalysis& analysis, Eigen::Index column) {
+std::string framework_column_name(const FrameworkModel& model, const FrameworkResult& analysis, Eigen::Index column) {
   const auto& c = analysis.indexing.coordinates[static_cast<std::size_t>(
       analysis.partition.dependent_coordinates[static_cast<std::size_t>(column)])];
   return model.nodes[c.node].name + "." + framework::kSlotNames[static_cast<std::size_t>(c.slot)];
 }
 
-Verdict framework_verdict(const FrameworkModel& model, const FrameworkAnalysis& a, const framework::AnalysisOptions& options) {
+Verdict framework_verdict(const FrameworkModel& model, const FrameworkResult& a, const framework::AnalysisOptions& options) {
   Verdict v;
   v.extra_motions = static_cast<int>(a.mechanisms);
   v.redundant_constraints = static_cast<int>(a.self_stresses);
@@ -87,7 +87,7 @@ Verdict framework_verdict(const FrameworkModel& model, const FrameworkAnalysis& 
   framework::AnalysisOptions counts_only = options;
   counts_only.vectors = false;
   counts_only.sparse_vectors = 0;
-  const FrameworkAnalysis after = framework::analyse_framework(changed, counts_only);
+  const FrameworkResult after = framework::analyse_framework(changed, counts_only);
   v.changes_verified = after.exactly_constrained();
   v.becomes = fmt::format("{}: D(c) {} x {}, rank {}; {} declared", after.exactly_constrained() ? "exactly constrained" : "still not exactly constrained",
                           after.m, after.n, after.rank,

@@ -12,17 +12,17 @@
 namespace kinestat::design {
 
 /// "<element>.<deformation>" of row `row` of D(c).
-std::string framework_row_name(const framework::FrameworkModel& model, const framework::FrameworkAnalysis& analysis,
+std::string framework_row_name(const framework::FrameworkModel& model, const framework::FrameworkResult& analysis,
                                Eigen::Index row);
 /// "<node>.<coordinate>" of column `column` of D(c).
-std::string framework_column_name(const framework::FrameworkModel& model, const framework::FrameworkAnalysis& analysis,
+std::string framework_column_name(const framework::FrameworkModel& model, const framework::FrameworkResult& analysis,
                                   Eigen::Index column);
 
 /// The verdict for `model` analysed as `analysis` (with `options`, used again for the
 /// re-analysis of the changed model). Participants are named "<element>.<deformation>"
 /// (kind "deformation") and "<node>.<coordinate>" (kind "coordinate"); the participation of
 /// each is its squared component in the unit-norm mode or stress state.
-Verdict framework_verdict(const framework::FrameworkModel& model, const framework::FrameworkAnalysis& analysis,
+Verdict framework_verdict(const framework::FrameworkModel& model, const framework::FrameworkResult& analysis,
                           const framework::AnalysisOptions& options = {});
 
 }  // namespace kinestat::design

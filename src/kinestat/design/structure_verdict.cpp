@@ -10,11 +10,11 @@ namespace kinestat::design {
 
 namespace {
 
-using structure::Decomposition;
+using structure::StructureResult;
 using structure::Pair;
 using structure::StructureModel;
 
-int score(const Decomposition& d) { return d.undecomposed.redundant + d.undecomposed.missing; }
+int score(const StructureResult& d) { return d.undecomposed.redundant + d.undecomposed.missing; }
 
 std::vector<Participant> bodies(const StructureModel& model, const std::vector<int>& list, const std::string& detail) {
   std::vector<Participant> out;
@@ -63,7 +63,7 @@ std::string structure_pair_name(const StructureModel& model, const Pair& pair) {
   return structure::body_label(model, pair.a) + "-" + structure::body_label(model, pair.b);
 }
 
-Verdict structure_verdict(const StructureModel& model, const Decomposition& d) {
+Verdict structure_verdict(const StructureModel& model, const StructureResult& d) {
   Verdict v;
   const auto& u = d.undecomposed;
   v.extra_motions = u.missing;
@@ -115,7 +115,7 @@ Verdict structure_verdict(const StructureModel& model, const Decomposition& d) {
       for (std::size_t c = 0; c < list.size(); ++c) {
         StructureModel trial = current;
         trial.pairs[k] = list[c].changed;
-        const int s = score(structure::decompose(trial));
+        const int s = score(structure::analyse_structure(trial));
         if (s >= now) continue;
         const auto key = std::make_tuple(s, touches(current.pairs[k], problem) ? 0 : 1, k, c);
         if (!best_key || key < *best_key) {
@@ -129,13 +129,31 @@ Verdict structure_verdict(const StructureModel& model, const Decomposition& d) {
     steps.emplace_back(best.pair, best.action, best.becomes);
     now = std::get<0>(*best_key);
   }
+  // Steps on the same pair with the same action are one change to the pair's final state
+  // (release 1 -> 5 freedoms, not four changes 1 -> 2, 1 -> 3, ...), in the order first taken.
+  std::vector<std::tuple<std::size_t, std::string, std::string, int>> merged;  // pair, action, becomes, steps
   for (const auto& [k, action, becomes] : steps) {
+    const auto same = std::find_if(merged.begin(), merged.end(), [&, k = k, &action = action](const auto& m) {
+      return std::get<0>(m) == k && std::get<1>(m) == action;
+    });
+    if (same == merged.end()) {
+      merged.emplace_back(k, action, becomes, 1);
+    } else {
+      std::get<2>(*same) = becomes;
+      ++std::get<3>(*same);
+    }
+  }
+  for (const auto& [k, action, becomes, count] : merged) {
     const Pair& p = model.pairs[k];
-    v.changes.push_back({action, "pair", structure_pair_name(model, p), becomes,
-                         action == "drive" ? "drives a freedom no input drives" : "removes a constraint or input too many",
+    const std::string reason = action == "drive"
+                                   ? (count == 1 ? "drives a freedom no input drives"
+                                                 : fmt::format("drives {} freedoms no input drives", count))
+                                   : (count == 1 ? "removes a constraint or input too many"
+                                                 : fmt::format("removes {} constraints or inputs too many", count));
+    v.changes.push_back({action, "pair", structure_pair_name(model, p), becomes, reason,
                          fmt::format("{} freedom(s), {} input(s)", p.freedoms, p.inputs), {}});
   }
-  const Decomposition after = structure::decompose(current);
+  const StructureResult after = structure::analyse_structure(current);
   v.changes_verified = !v.changes.empty() && after.complete();
   v.becomes = after.complete() ? fmt::format("every body in a structural group; {} input(s), exactly constrained", current.input_count())
                                : fmt::format("still {}", constraint_words(after.undecomposed.missing, after.undecomposed.redundant));

@@ -17,6 +17,6 @@ inline constexpr int kStructureDesignSearchPairs = 400;
 std::string structure_pair_name(const structure::StructureModel& model, const structure::Pair& pair);
 
 /// The verdict for `model` decomposed as `decomposition`. Participants are bodies (kind "body").
-Verdict structure_verdict(const structure::StructureModel& model, const structure::Decomposition& decomposition);
+Verdict structure_verdict(const structure::StructureModel& model, const structure::StructureResult& decomposition);
 
 }  // namespace kinestat::design

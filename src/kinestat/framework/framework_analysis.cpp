@@ -53,7 +53,7 @@ std::pair<std::vector<Eigen::Index>, std::vector<Eigen::Index>> pivot_columns(co
 }
 
 // Modes from a basis of the null space of D(c) (columns, already in D̂'s units and normalised).
-void collect_modes(FrameworkAnalysis& result, const Eigen::MatrixXd& basis) {
+void collect_modes(FrameworkResult& result, const Eigen::MatrixXd& basis) {
   for (Eigen::Index j = 0; j < basis.cols(); ++j) {
     KinematicMode mode{basis.col(j), {}};
     for (Eigen::Index i = 0; i < mode.velocities.size(); ++i)
@@ -63,7 +63,7 @@ void collect_modes(FrameworkAnalysis& result, const Eigen::MatrixXd& basis) {
 }
 
 // Stress states from a basis of the null space of D(c)ᵀ; candidates are the fixed rows.
-void collect_stresses(FrameworkAnalysis& result, const Eigen::MatrixXd& basis) {
+void collect_stresses(FrameworkResult& result, const Eigen::MatrixXd& basis) {
   const auto fixed_rows = static_cast<Eigen::Index>(result.partition.fixed_deformations.size());
   for (Eigen::Index j = 0; j < basis.cols(); ++j) {
     StressState state{basis.col(j), {}};
@@ -97,7 +97,7 @@ double relative_residual(const Eigen::SparseMatrix<double>& a, const Eigen::Matr
 // Sparse path with vectors: the first `limit` modes from the QR of D(c), the first `limit`
 // stress states and the releases from the QR of the row-weighted D(c)ᵀ, and the coordinates
 // to constrain from the QR of the kept rows. Same threshold for all three.
-void sparse_vectors(FrameworkAnalysis& result, const Eigen::SparseMatrix<double>& jacobian, Eigen::Index limit) {
+void sparse_vectors(FrameworkResult& result, const Eigen::SparseMatrix<double>& jacobian, Eigen::Index limit) {
   const double threshold = result.decision.threshold;
   const double largest = result.decision.largest;
   result.vector_limit = limit;
@@ -151,14 +151,14 @@ void sparse_vectors(FrameworkAnalysis& result, const Eigen::SparseMatrix<double>
 
 }  // namespace
 
-double FrameworkAnalysis::relative_smallest_singular_value() const {
+double FrameworkResult::relative_smallest_singular_value() const {
   if (m == 0 || n == 0) return 1.0;
   if (singular_values.size() == 0 || singular_values(0) == 0.0) return 0.0;
   if (rank < std::min(m, n)) return 0.0;
   return singular_values(singular_values.size() - 1) / singular_values(0);
 }
 
-Eigen::SparseMatrix<double> prepare_analysis(const FrameworkModel& model, FrameworkAnalysis& result) {
+Eigen::SparseMatrix<double> prepare_analysis(const FrameworkModel& model, FrameworkResult& result) {
   result.indexing = index_framework(model);
   result.partition = partition_framework(model, result.indexing);
   result.count = count_constraints(result.partition);
@@ -176,8 +176,8 @@ Eigen::SparseMatrix<double> prepare_analysis(const FrameworkModel& model, Framew
   return jacobian;
 }
 
-FrameworkAnalysis analyse_framework(const FrameworkModel& model, const AnalysisOptions& options) {
-  FrameworkAnalysis result;
+FrameworkResult analyse_framework(const FrameworkModel& model, const AnalysisOptions& options) {
+  FrameworkResult result;
   const Eigen::SparseMatrix<double> jacobian = prepare_analysis(model, result);
 
   if (std::max(result.m, result.n) > options.dense_limit) {
@@ -234,7 +234,7 @@ FrameworkAnalysis analyse_framework(const FrameworkModel& model, const AnalysisO
   return result;
 }
 
-FrameworkModel apply_proposal(const FrameworkModel& model, const FrameworkAnalysis& analysis) {
+FrameworkModel apply_proposal(const FrameworkModel& model, const FrameworkResult& analysis) {
   FrameworkModel repaired = model;
   for (Eigen::Index row : analysis.releases) {
     const DeformationRef& d = analysis.indexing.deformations[static_cast<std::size_t>(analysis.rows[static_cast<std::size_t>(row)])];

@@ -53,7 +53,7 @@ struct StressState {
   std::vector<Eigen::Index> candidates;  ///< rows of D(c) that are fixed deformations with non-zero resultant
 };
 
-struct FrameworkAnalysis {
+struct FrameworkResult {
   FrameworkIndexing indexing;
   FrameworkPartition partition;
   ConstraintCount count;
@@ -95,17 +95,20 @@ struct FrameworkAnalysis {
   double relative_smallest_singular_value() const;
 };
 
+// Transitional name, removed once the branches in flight use FrameworkResult.
+using FrameworkAnalysis = FrameworkResult;
+
 
 /// The first stage of analyse_framework: fills indexing, partition, counts, rows, the
 /// characteristic length and the length scaling of `result`, and returns the matrix every rank
 /// decision is made on, S_r D̂ S_c (non-dimensional, m × n).
-Eigen::SparseMatrix<double> prepare_analysis(const FrameworkModel& model, FrameworkAnalysis& result);
+Eigen::SparseMatrix<double> prepare_analysis(const FrameworkModel& model, FrameworkResult& result);
 
 /// Runs the analysis of seed 002 on `model`.
-FrameworkAnalysis analyse_framework(const FrameworkModel& model, const AnalysisOptions& options = {});
+FrameworkResult analyse_framework(const FrameworkModel& model, const AnalysisOptions& options = {});
 
 /// The model with the proposal of `analysis` applied: its releases become released
 /// deformations and its constrained columns become independent coordinates.
-FrameworkModel apply_proposal(const FrameworkModel& model, const FrameworkAnalysis& analysis);
+FrameworkModel apply_proposal(const FrameworkModel& model, const FrameworkResult& analysis);
 
 }  // namespace kinestat::framework

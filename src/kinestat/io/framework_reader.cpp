@@ -342,6 +342,6 @@ class FrameworkReader {
 
 }  // namespace
 
-FrameworkModel read_framework(const YamlFile& file) { return FrameworkReader(file).read(); }
+FrameworkModel read_framework_model(const YamlFile& file) { return FrameworkReader(file).read(); }
 
 }  // namespace kinestat::io

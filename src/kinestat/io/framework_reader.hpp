@@ -10,6 +10,6 @@ namespace kinestat::io {
 
 
 /// Builds the model from `file` (already checked for `kinestat: 1` and `kind: framework`).
-framework::FrameworkModel read_framework(const YamlFile& file);
+framework::FrameworkModel read_framework_model(const YamlFile& file);
 
 }  // namespace kinestat::io

@@ -10,7 +10,7 @@
 namespace kinestat::io {
 
 /// The YAML text of `model`, preceded by `comments` (one `# ` line each). Reading it back with
-/// read_framework gives the same nodes, elements, frames and roles.
+/// read_framework_model gives the same nodes, elements, frames and roles.
 std::string framework_yaml(const framework::FrameworkModel& model, const std::vector<std::string>& comments = {});
 
 }  // namespace kinestat::io

@@ -15,7 +15,7 @@ ModelFile read_parsed(const YamlFile& file) {
   const std::string kind = model_kind(file);
   if (kind == "framework") {
     model.kind = ModelKind::framework;
-    model.framework = read_framework(file);
+    model.framework = read_framework_model(file);
   } else if (kind == "structure") {
     model.kind = ModelKind::structure;
     model.structure = read_structure_model(file);

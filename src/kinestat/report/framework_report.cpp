@@ -15,7 +15,7 @@
 
 namespace kinestat::report {
 
-using framework::FrameworkAnalysis;
+using framework::FrameworkResult;
 using framework::FrameworkModel;
 
 namespace {
@@ -49,11 +49,11 @@ double spread(const Eigen::VectorXd& factors) { return factors.size() == 0 ? 1.0
 // The text report mentions the scaling only when it does something noticeable.
 constexpr double kShownScaleSpread = 1.01;
 
-const framework::CoordinateRef& column_ref(const FrameworkAnalysis& a, Eigen::Index column) {
+const framework::CoordinateRef& column_ref(const FrameworkResult& a, Eigen::Index column) {
   return a.indexing.coordinates[static_cast<std::size_t>(a.partition.dependent_coordinates[static_cast<std::size_t>(column)])];
 }
 
-const framework::DeformationRef& row_ref(const FrameworkAnalysis& a, Eigen::Index row) {
+const framework::DeformationRef& row_ref(const FrameworkResult& a, Eigen::Index row) {
   return a.indexing.deformations[static_cast<std::size_t>(a.rows[static_cast<std::size_t>(row)])];
 }
 
@@ -62,10 +62,10 @@ std::string deformation_name(const FrameworkModel& model, const framework::Defor
 }
 
 // Large models (the sparse path) write vectors compactly: only their non-zero components.
-bool compact(const FrameworkAnalysis& a) { return a.method == framework::RankMethod::sparse_qr; }
+bool compact(const FrameworkResult& a) { return a.method == framework::RankMethod::sparse_qr; }
 
 // Mode velocities grouped by node, in node order, coordinates in slot order.
-nlohmann::ordered_json velocities_by_node(const FrameworkModel& model, const FrameworkAnalysis& a, const Eigen::VectorXd& v) {
+nlohmann::ordered_json velocities_by_node(const FrameworkModel& model, const FrameworkResult& a, const Eigen::VectorXd& v) {
   nlohmann::ordered_json nodes = nlohmann::ordered_json::object();
   for (Eigen::Index j = 0; j < v.size(); ++j) {
     if (compact(a) && v(j) == 0.0) continue;
@@ -129,22 +129,22 @@ nlohmann::ordered_json trace_json(const framework::FiniteTrace& trace) {
 
 }  // namespace
 
-std::string framework_row_label(const FrameworkModel& model, const FrameworkAnalysis& analysis, Eigen::Index row) {
+std::string framework_row_label(const FrameworkModel& model, const FrameworkResult& analysis, Eigen::Index row) {
   const auto& d = row_ref(analysis, row);
   return model.elements[d.element].name + "." + deformation_name(model, d);
 }
 
-std::string framework_column_label(const FrameworkModel& model, const FrameworkAnalysis& analysis, Eigen::Index column) {
+std::string framework_column_label(const FrameworkModel& model, const FrameworkResult& analysis, Eigen::Index column) {
   const auto& c = column_ref(analysis, column);
   return model.nodes[c.node].name + "." + framework::kSlotNames[static_cast<std::size_t>(c.slot)];
 }
 
-std::string framework_classification(const FrameworkAnalysis& a) {
+std::string framework_classification(const FrameworkResult& a) {
   return fmt::format("statically {}, kinematically {}", a.statically_determinate() ? "determinate" : "indeterminate",
                      a.kinematically_determinate() ? "determinate" : "indeterminate");
 }
 
-nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const FrameworkAnalysis& a, const design::Verdict* verdict) {
+nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const FrameworkResult& a, const design::Verdict* verdict) {
   nlohmann::ordered_json j;
   j["kind"] = "framework";
   if (!model.name.empty()) j["name"] = model.name;
@@ -262,7 +262,7 @@ nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const 
   return j;
 }
 
-std::string framework_report_text(const FrameworkModel& model, const FrameworkAnalysis& a, const design::Verdict* verdict) {
+std::string framework_report_text(const FrameworkModel& model, const FrameworkResult& a, const design::Verdict* verdict) {
   using io::printable_text;
   std::string out = verdict ? verdict_text(*verdict) : std::string();
   auto line = [&out](const std::string& text) { out += text + "\n"; };

@@ -14,21 +14,21 @@
 namespace kinestat::report {
 
 /// Label of row `row` of D(c): "<element>.<deformation>".
-std::string framework_row_label(const framework::FrameworkModel& model, const framework::FrameworkAnalysis& analysis,
+std::string framework_row_label(const framework::FrameworkModel& model, const framework::FrameworkResult& analysis,
                                 Eigen::Index row);
 /// Label of column `column` of D(c): "<node>.<coordinate>".
-std::string framework_column_label(const framework::FrameworkModel& model, const framework::FrameworkAnalysis& analysis,
+std::string framework_column_label(const framework::FrameworkModel& model, const framework::FrameworkResult& analysis,
                                    Eigen::Index column);
 /// Table 1 class, e.g. "statically indeterminate, kinematically determinate".
-std::string framework_classification(const framework::FrameworkAnalysis& analysis);
+std::string framework_classification(const framework::FrameworkResult& analysis);
 
 /// The report as JSON (keys documented in docs/framework.md).
 /// With a `verdict`, the report leads with it (design::framework_verdict decides it).
 nlohmann::ordered_json framework_report_json(const framework::FrameworkModel& model,
-                                             const framework::FrameworkAnalysis& analysis,
+                                             const framework::FrameworkResult& analysis,
                                              const design::Verdict* verdict = nullptr);
 /// The report as readable text, the verdict block first when given.
-std::string framework_report_text(const framework::FrameworkModel& model, const framework::FrameworkAnalysis& analysis,
+std::string framework_report_text(const framework::FrameworkModel& model, const framework::FrameworkResult& analysis,
                                   const design::Verdict* verdict = nullptr);
 
 }  // namespace kinestat::report

@@ -190,7 +190,7 @@ std::string joined_or_dash(const std::vector<std::string>& names) { return names
 
 }  // namespace
 
-std::string network_text(const network::Model& model, const NetworkResult& r, const NetworkReportOptions& options) {
+std::string network_report_text(const network::Model& model, const NetworkResult& r, const NetworkReportOptions& options) {
   const auto motion_primaries = printable_names(names_of(r.primary_motion, r.motions));
   const auto action_primaries = printable_names(names_of(r.primary_action, r.actions));
   const auto coupling_name = [&](std::size_t e) { return printable_text(model.couplings[e].name); };
@@ -282,7 +282,7 @@ std::string network_text(const network::Model& model, const NetworkResult& r, co
   return t;
 }
 
-Json network_json(const network::Model& model, const NetworkResult& r, const NetworkReportOptions& options) {
+Json network_report_json(const network::Model& model, const NetworkResult& r, const NetworkReportOptions& options) {
   const auto motion_primaries = names_of(r.primary_motion, r.motions);
   const auto action_primaries = names_of(r.primary_action, r.actions);
   Json j;
@@ -417,7 +417,7 @@ std::vector<std::string> coupling_names(const network::Model& model, const std::
 
 }  // namespace
 
-std::string sparse_network_text(const network::Model& model, const network::SparseNetworkResult& r, const design::Verdict* verdict) {
+std::string sparse_network_report_text(const network::Model& model, const network::SparseNetworkResult& r, const design::Verdict* verdict) {
   std::string t = verdict ? verdict_text(*verdict) : std::string();
   t += fmt::format("{}\n", model.name.empty() ? "Coupling network" : printable_text(model.name));
   t += fmt::format("  coupling network, {} (d = {}); sparse body-twist form, floating point\n", r.d == 6 ? "spatial" : "planar", r.d);
@@ -439,7 +439,7 @@ std::string sparse_network_text(const network::Model& model, const network::Spar
   return t;
 }
 
-nlohmann::ordered_json sparse_network_json(const network::Model& model, const network::SparseNetworkResult& r,
+nlohmann::ordered_json sparse_network_report_json(const network::Model& model, const network::SparseNetworkResult& r,
                                            const design::Verdict* verdict) {
   Json j;
   j["kind"] = "network";

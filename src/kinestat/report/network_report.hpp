@@ -19,21 +19,21 @@ struct NetworkReportOptions {
 
 /// Human-readable report: summary with rank evidence, class, primaries, magnitudes,
 /// contracted matrices, the pair table (seed 000, Table 1) and warnings.
-std::string network_text(const network::Model& model, const network::NetworkResult& result,
+std::string network_report_text(const network::Model& model, const network::NetworkResult& result,
                          const NetworkReportOptions& options = {});
 
 /// Machine-readable report with keys in a fixed order, so the same input gives
 /// byte-identical output.
-nlohmann::ordered_json network_json(const network::Model& model, const network::NetworkResult& result,
+nlohmann::ordered_json network_report_json(const network::Model& model, const network::NetworkResult& result,
                                     const NetworkReportOptions& options = {});
 
 /// Bounded report of the sparse path: the verdict first when given
 /// (design::sparse_network_verdict), counts, class, rank evidence (also of the basis vectors the
 /// verdict used), the couplings that carry a self-stress and those that move, and what was not
 /// computed.
-std::string sparse_network_text(const network::Model& model, const network::SparseNetworkResult& result,
+std::string sparse_network_report_text(const network::Model& model, const network::SparseNetworkResult& result,
                                 const design::Verdict* verdict = nullptr);
-nlohmann::ordered_json sparse_network_json(const network::Model& model, const network::SparseNetworkResult& result,
+nlohmann::ordered_json sparse_network_report_json(const network::Model& model, const network::SparseNetworkResult& result,
                                            const design::Verdict* verdict = nullptr);
 
 }  // namespace kinestat::report

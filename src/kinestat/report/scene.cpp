@@ -277,7 +277,7 @@ Scene network_scene(const network::Model& model, const network::NetworkResult& r
   return scene;
 }
 
-Scene framework_scene(const framework::FrameworkModel& model, const framework::FrameworkAnalysis& a) {
+Scene framework_scene(const framework::FrameworkModel& model, const framework::FrameworkResult& a) {
   Scene scene;
   scene.kind = "framework";
   scene.name = model.name;
@@ -394,7 +394,7 @@ Scene framework_scene(const framework::FrameworkModel& model, const framework::F
   return scene;
 }
 
-Scene structure_scene(const structure::StructureModel& model, const structure::Decomposition& decomposition) {
+Scene structure_scene(const structure::StructureModel& model, const structure::StructureResult& decomposition) {
   Scene scene;
   scene.kind = "structure";
   scene.name = model.name;

@@ -167,8 +167,8 @@ std::string length_unit(const Scene& scene);
 inline constexpr std::size_t kLargeSceneElements = 20000;
 
 Scene network_scene(const network::Model& model, const network::NetworkResult& result);
-Scene framework_scene(const framework::FrameworkModel& model, const framework::FrameworkAnalysis& analysis);
-Scene structure_scene(const structure::StructureModel& model, const structure::Decomposition& decomposition);
+Scene framework_scene(const framework::FrameworkModel& model, const framework::FrameworkResult& analysis);
+Scene structure_scene(const structure::StructureModel& model, const structure::StructureResult& decomposition);
 
 /// Fixed-precision text of a number for drawings and JSON: at most `digits` decimals,
 /// trailing zeros dropped, "-0" written as "0". Deterministic across platforms.

@@ -43,7 +43,7 @@ double distance_to_curve(Point p, Point a, Point c, Point b) {
 
 }  // namespace
 
-std::string structure_svg(const structure::StructureModel& model, const structure::Decomposition& d) {
+std::string structure_svg(const structure::StructureModel& model, const structure::StructureResult& d) {
   const auto diagram = structure::structural_diagram(d);
   constexpr double radius = 28, dx = 150, dy = 120, margin = 70;
   // Clearance between an arrow and a circle it passes (beyond the radius), in px.

@@ -15,7 +15,7 @@
 
 namespace kinestat::report {
 
-using structure::Decomposition;
+using structure::StructureResult;
 using structure::PairKind;
 using structure::StructuralGroup;
 using structure::StructureModel;
@@ -58,7 +58,7 @@ std::string method_name(structure::SearchMethod method) {
   return method == structure::SearchMethod::matching ? "matching" : "seed";
 }
 
-std::vector<std::vector<int>> stages_of(const Decomposition& d) {
+std::vector<std::vector<int>> stages_of(const StructureResult& d) {
   std::vector<std::vector<int>> stages;
   for (const StructuralGroup& g : d.groups) {
     if (static_cast<int>(stages.size()) < g.stage) stages.resize(g.stage);
@@ -84,7 +84,7 @@ void append_matrix(std::string& out, const std::vector<std::vector<int>>& m, con
   }
 }
 
-void append_undecomposed(std::string& out, const StructureModel& model, const Decomposition& d) {
+void append_undecomposed(std::string& out, const StructureModel& model, const StructureResult& d) {
   const auto& u = d.undecomposed;
   if (u.empty()) return;
   const int count =
@@ -119,9 +119,9 @@ std::string placement_text(const StructureModel& model, const std::vector<int>& 
 
 }  // namespace
 
-std::string structure_text(const StructureReport& report) {
+std::string structure_report_text(const StructureReport& report) {
   const StructureModel& model = report.model;
-  const Decomposition& d = report.decomposition;
+  const StructureResult& d = report.decomposition;
   std::string out;
   if (report.verdict) out += verdict_text(*report.verdict);
   out += "Structural analysis" + (model.name.empty() ? std::string() : ": " + io::printable_text(model.name)) + "\n";
@@ -171,10 +171,10 @@ std::string structure_text(const StructureReport& report) {
   return out;
 }
 
-std::string structure_json(const StructureReport& report) {
+std::string structure_report_json(const StructureReport& report) {
   using nlohmann::ordered_json;
   const StructureModel& model = report.model;
-  const Decomposition& d = report.decomposition;
+  const StructureResult& d = report.decomposition;
   auto one_based = [](const std::vector<int>& bodies) {
     ordered_json list = ordered_json::array();
     for (int b : bodies) list.push_back(b + 1);
@@ -277,7 +277,7 @@ std::string structure_json(const StructureReport& report) {
   return json_text(j);
 }
 
-std::string structure_dot(const StructureModel& model, const Decomposition& d) {
+std::string structure_dot(const StructureModel& model, const StructureResult& d) {
   const auto diagram = structure::structural_diagram(d);
   std::string out = "digraph structure {\n";
   // A DOT string: control characters escaped as in every text report, then quoted.

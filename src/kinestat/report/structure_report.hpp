@@ -15,7 +15,7 @@ namespace kinestat::report {
 /// Everything a structure report shows. `transformations` may be null (not requested).
 struct StructureReport {
   const structure::StructureModel& model;
-  const structure::Decomposition& decomposition;
+  const structure::StructureResult& decomposition;
   const structure::TransformationSet* transformations = nullptr;
   structure::SearchMethod method = structure::SearchMethod::matching;
   const design::Verdict* verdict = nullptr;  ///< printed first when given
@@ -30,14 +30,14 @@ inline constexpr int kMaxDenseBodies = 300;
 std::string group_name(int number);
 
 /// The human-readable report.
-std::string structure_text(const StructureReport& report);
+std::string structure_report_text(const StructureReport& report);
 /// The JSON report (keys: kind, name, space, dimension, bodies, pairs, mobility, inputs,
 /// method, complete, groups, order, stages, result_matrix, assignments, undecomposed,
 /// transformations), terminated by a newline.
-std::string structure_json(const StructureReport& report);
+std::string structure_report_json(const StructureReport& report);
 /// The structural diagram in Graphviz DOT.
-std::string structure_dot(const structure::StructureModel& model, const structure::Decomposition& decomposition);
+std::string structure_dot(const structure::StructureModel& model, const structure::StructureResult& decomposition);
 /// The structural diagram as a standalone SVG document, layered by solution stage.
-std::string structure_svg(const structure::StructureModel& model, const structure::Decomposition& decomposition);
+std::string structure_svg(const structure::StructureModel& model, const structure::StructureResult& decomposition);
 
 }  // namespace kinestat::report

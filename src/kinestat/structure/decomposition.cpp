@@ -9,7 +9,7 @@
 
 namespace kinestat::structure {
 
-std::vector<std::vector<int>> Decomposition::result_matrix() const {
+std::vector<std::vector<int>> StructureResult::result_matrix() const {
   std::vector<std::vector<int>> res(body_count, std::vector<int>(body_count, 0));
   if (body_count == 0) return res;
   for (int b = 1; b < body_count; ++b) res[0][b] = group_of[b];
@@ -152,7 +152,7 @@ class SearchState {
     }
   }
 
-  Decomposition take() { return std::move(result_); }
+  StructureResult take() { return std::move(result_); }
 
  private:
   const StructureModel& model_;
@@ -164,7 +164,7 @@ class SearchState {
   std::vector<int> mark_;
   std::vector<char> counted_;
   std::vector<int> stage_;
-  Decomposition result_;
+  StructureResult result_;
 };
 
 // Eq. 1 for a chain of unsolved bodies: its internal pairs and its pairs to solved bodies.
@@ -317,7 +317,7 @@ class MatchingSearch final : public GroupOracle {
 
 }  // namespace
 
-Decomposition decompose(const StructureModel& model, SearchMethod method) {
+StructureResult analyse_structure(const StructureModel& model, SearchMethod method) {
   const ConstraintBlocks blocks = find_constraint_blocks(model);
   SearchState state(model);
   std::unique_ptr<GroupOracle> oracle;
@@ -340,7 +340,7 @@ Decomposition decompose(const StructureModel& model, SearchMethod method) {
     first_level = method == SearchMethod::seed_search ? state.all_candidates() : std::move(receivers);
   }
 
-  Decomposition result = state.take();
+  StructureResult result = state.take();
   UndecomposedPart& rest = result.undecomposed;
   std::vector<char> over(model.body_count(), 0), under(model.body_count(), 0);
   for (int b : blocks.over_constrained) over[b] = 1;

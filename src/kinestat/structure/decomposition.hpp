@@ -47,7 +47,7 @@ struct UndecomposedPart {
 };
 
 /// The result of a decomposition.
-struct Decomposition {
+struct StructureResult {
   int body_count = 0;
   std::vector<StructuralGroup> groups;   ///< in order of formation
   std::vector<int> group_of;             ///< per body: group number, 0 for the frame and undecomposed bodies
@@ -72,6 +72,12 @@ enum class SearchMethod {
 
 /// Decomposes `model` into structural groups. Both methods visit candidates in the same
 /// order, so they give identical results whenever the mechanism is well constrained.
-Decomposition decompose(const StructureModel& model, SearchMethod method = SearchMethod::matching);
+StructureResult analyse_structure(const StructureModel& model, SearchMethod method = SearchMethod::matching);
+
+// Transitional names, removed once the branches in flight use the ones above.
+using Decomposition = StructureResult;
+inline StructureResult decompose(const StructureModel& model, SearchMethod method = SearchMethod::matching) {
+  return analyse_structure(model, method);
+}
 
 }  // namespace kinestat::structure

@@ -4,7 +4,7 @@
 
 namespace kinestat::structure {
 
-StructuralDiagram structural_diagram(const Decomposition& decomposition) {
+StructuralDiagram structural_diagram(const StructureResult& decomposition) {
   StructuralDiagram diagram;
   diagram.nodes.push_back({0, 0, 0, 0, 0});
   std::vector<int> used;  // nodes per layer so far

@@ -31,6 +31,6 @@ struct StructuralDiagram {
 };
 
 /// Builds the diagram of a decomposition.
-StructuralDiagram structural_diagram(const Decomposition& decomposition);
+StructuralDiagram structural_diagram(const StructureResult& decomposition);
 
 }  // namespace kinestat::structure

@@ -70,7 +70,7 @@ TransformationSet structural_transformations(const StructureModel& model, std::u
     Transformation t;
     t.inputs = placement;
     t.original = placement == original;
-    t.decomposition = decompose(with_inputs(model, placement));
+    t.decomposition = analyse_structure(with_inputs(model, placement));
     if (!t.decomposition.complete()) {
       ++set.not_decomposable;
       return;

@@ -15,7 +15,7 @@ namespace kinestat::structure {
 struct Transformation {
   std::vector<int> inputs;        ///< inputs on each pair of the model, same order as model.pairs
   bool original = false;          ///< the placement given by the user
-  Decomposition decomposition;
+  StructureResult decomposition;
   int largest_group = 0;          ///< bodies in the largest group
   int stages = 0;                 ///< solution stages (groups of one stage can be solved in parallel)
 };
