@@ -102,7 +102,7 @@ std::shared_ptr<Analysed> analyse(const std::string& path, const std::optional<s
     // As src/cli/framework_command.cpp: the generic answer may re-choose the basis first.
     analysed->framework_generic = framework::generic_framework(*file.framework, *analysed->framework);
     if (analysed->framework_generic)
-      analysed->framework = framework::with_generic_basis(std::move(*analysed->framework), *analysed->framework_generic);
+      analysed->framework = framework::with_generic_basis(*file.framework, std::move(*analysed->framework), *analysed->framework_generic, options);
     analysed->verdict = design::framework_verdict(*file.framework, *analysed->framework, options);
     if (analysed->framework_generic)
       analysed->verdict.generic = report::framework_generic_sentences(*file.framework, *analysed->framework, *analysed->framework_generic);

@@ -56,7 +56,7 @@ int run_framework_analysis(const CommonOptions& options, const framework::Framew
   // The generic answer first: where only some modes or stress states persist it re-chooses
   // their basis (one cause per vector), and the verdict describes that basis.
   const std::optional<framework::GenericFramework> generic = framework::generic_framework(model, analysis);
-  if (generic) analysis = framework::with_generic_basis(std::move(analysis), *generic);
+  if (generic) analysis = framework::with_generic_basis(model, std::move(analysis), *generic, analysis_options);
   const framework::GenericFramework* shown = generic ? &*generic : nullptr;
   design::Verdict verdict = design::framework_verdict(model, analysis, analysis_options);
   if (generic) verdict.generic = report::framework_generic_sentences(model, analysis, *generic);

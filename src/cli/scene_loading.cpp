@@ -25,7 +25,7 @@ report::Scene framework_scene(const framework::FrameworkModel& model, std::optio
   options.tolerances = Tolerances::with_rank(tolerance);
   framework::FrameworkResult analysis = framework::analyse_framework(model, options);
   const std::optional<framework::GenericFramework> generic = framework::generic_framework(model, analysis);
-  if (generic) analysis = framework::with_generic_basis(std::move(analysis), *generic);  // as `analyze` shows it
+  if (generic) analysis = framework::with_generic_basis(model, std::move(analysis), *generic, options);  // as `analyze` shows it
   report::Scene scene = report::framework_scene(model, analysis);
   scene.verdict = design::framework_verdict(model, analysis, options);
   if (generic) scene.verdict->generic = report::framework_generic_sentences(model, analysis, *generic);

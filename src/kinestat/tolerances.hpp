@@ -95,6 +95,28 @@ inline constexpr double kOrientationTolerance = 0x1p32 * kEpsilon;
 /// below this fraction of the largest are zero (a decimal precision, hence not 2^k ε).
 inline constexpr double kImportNoise = 1e-12;
 
+// --- Second order and finite motion (framework/second_order.hpp, framework/finite_motion.hpp) ---
+
+/// A self-stress does no work on a mode at second order when |σᵀε″(u, u)| is below this
+/// fraction of ‖ε″(u, u)‖ (unit σ): a finite mechanism leaves rounding only (2^26 ε ≈ 1.5e-8).
+inline constexpr double kSecondOrderWorkZero = 0x1p26 * kEpsilon;
+/// A combination of self-stresses makes the geometric stiffness positive definite on the
+/// non-rigid modes when its smallest eigenvalue there exceeds this fraction of the largest
+/// Frobenius norm of the stiffnesses of the orthonormal stress basis (2^26 ε ≈ 1.5e-8).
+inline constexpr double kPrestressMargin = 0x1p26 * kEpsilon;
+/// A unit mode whose component outside the rigid motions of the whole model is below this is a
+/// rigid motion; the same cut keeps directions when orthonormalising bases (2^26 ε ≈ 1.5e-8).
+inline constexpr double kRigidMotionZero = 0x1p26 * kEpsilon;
+/// A traced path closes when every point satisfies the constraints to this fraction of the
+/// characteristic length (the 1e-10 of issue 13; not a rounding level, a promise).
+inline constexpr double kTraceResidual = 1e-10;
+/// The corrector stops improving a point below this fraction of the characteristic length
+/// (2^6 ε ≈ 1.4e-14): rounding of the bar lengths.
+inline constexpr double kCorrectorTarget = 0x1p6 * kEpsilon;
+/// A tangent whose projection on the null space of D(c) keeps less than this fraction of its
+/// length has lost the mode (a corner the predictor cannot follow; a ratio, not rounding).
+inline constexpr double kTangentKept = 1e-3;
+
 /// The tolerances of one analysis: what `--tolerance` sets, and the named defaults of every
 /// other rank decision that follows it.
 struct Tolerances {

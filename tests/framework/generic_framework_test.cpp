@@ -7,6 +7,7 @@
 
 #include "framework_test_support.hpp"
 #include "kinestat/framework/generic_framework.hpp"
+#include "kinestat/framework/mode_order.hpp"
 #include "kinestat/framework/pebble_game.hpp"
 #include "support/lattice_generator.hpp"
 
@@ -62,7 +63,7 @@ TEST(GenericFramework, TensegrityPrismOneModeAndOneStressFromGeometry) {
   // velocities are v = w x p + t at every node (checked by solving for w and t).
   EXPECT_LT(g.split_residual, 1e-3);
   ASSERT_TRUE(g.mode_basis.has_value());
-  const FrameworkResult rebased = with_generic_basis(a, g);
+  const FrameworkResult rebased = with_generic_basis(model, a, g);
   ASSERT_EQ(rebased.modes.size(), 7U);
   for (std::size_t k = 0; k < 7; ++k) {
     // Least-squares fit of a rigid motion (w, t) to the 6 nodes' velocities (in D̂ units).
@@ -82,6 +83,17 @@ TEST(GenericFramework, TensegrityPrismOneModeAndOneStressFromGeometry) {
     const double misfit = (fit * x - v).norm();
     if (g.mode_causes[k] == Cause::topology) EXPECT_LT(misfit, 1e-4) << "mode " << k + 1;
     else EXPECT_GT(misfit, 0.1) << "mode " << k + 1;
+  }
+  // The second-order orders follow the re-chosen modes: the rigid motions are rigid motions, and
+  // the geometric mode is the tensegrity's infinitesimal mechanism, blocked by its prestress
+  // (the simplex is prestress stable: Connelly and Whiteley 1996).
+  ASSERT_EQ(rebased.orders.size(), 7U);
+  for (std::size_t k = 0; k < 7; ++k) {
+    if (g.mode_causes[k] == Cause::topology) {
+      EXPECT_EQ(rebased.orders[k].reason, OrderReason::rigid_motion) << "mode " << k + 1;
+    } else {
+      EXPECT_EQ(rebased.orders[k].order, MotionOrder::infinitesimal) << "mode " << k + 1;
+    }
   }
 }
 

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "kinestat/framework/physical_scaling.hpp"
+#include "kinestat/framework/second_order.hpp"
 #include "kinestat/linalg/homogeneous_solution.hpp"
 #include "kinestat/linalg/sign_convention.hpp"
 #include "kinestat/linalg/sparse_qr.hpp"
@@ -232,7 +233,21 @@ FrameworkResult analyse_framework(const FrameworkModel& model, const AnalysisOpt
   result.rank = result.decision.rank;
   result.mechanisms = result.n - result.rank;
   result.self_stresses = result.m - result.rank;
+  classify_second_order(model, result, options);
   return result;
+}
+
+void classify_second_order(const FrameworkModel& model, FrameworkResult& result, const AnalysisOptions& options) {
+  result.orders.clear();
+  if (options.second_order && result.vectors && result.method == RankMethod::dense_svd) {
+    SecondOrderOptions second_order;
+    second_order.tracing.tolerance = linalg::RankTolerance{options.tolerances.rank};
+    second_order.tracing.amplitude_fraction = options.trace_amplitude_fraction;
+    second_order.tracing.steps = options.trace_steps;
+    SecondOrderResult classified = classify_modes(model, result, second_order);
+    result.orders = std::move(classified.orders);
+    result.prestress = std::move(classified.prestress);
+  }
 }
 
 FrameworkModel apply_proposal(const FrameworkModel& model, const FrameworkResult& analysis) {

@@ -11,6 +11,7 @@
 
 #include "kinestat/framework/framework_jacobian.hpp"
 #include "kinestat/framework/framework_model.hpp"
+#include "kinestat/framework/mode_order.hpp"
 #include "kinestat/linalg/rank_decision.hpp"
 #include "kinestat/tolerances.hpp"
 
@@ -28,6 +29,11 @@ struct AnalysisOptions {
   /// and the first k stress states (null vectors from the sparse R factors) and the release
   /// proposal, at the cost of three sparse QR factorisations (D(c), D(c)ᵀ, kept rows of D(c)).
   Eigen::Index sparse_vectors = 0;
+  /// Dense path with vectors: classify every mode at second order and trace the modes that pass
+  /// (framework/second_order.hpp); bars only, up to kSecondOrderSizeLimit rows and columns.
+  bool second_order = true;
+  double trace_amplitude_fraction = 0.1;  ///< arc length of each trace / characteristic length
+  int trace_steps = 20;                   ///< predictor–corrector steps of each trace
 };
 
 enum class RankMethod { dense_svd, sparse_qr };
@@ -76,6 +82,10 @@ struct FrameworkResult {
   double null_space_residual = 0.0;
   /// Sparse path: peak memory of the largest sparse QR factorisation, bytes (SuiteSparse's count).
   std::size_t factor_memory = 0;
+  /// Second-order classification (AnalysisOptions::second_order): one entry per mode, empty when
+  /// not asked for; and the prestress-stability test of the whole mechanism space.
+  std::vector<ModeOrder> orders;
+  PrestressStability prestress;
 
   bool statically_determinate() const { return self_stresses == 0; }
   bool kinematically_determinate() const { return mechanisms == 0; }
@@ -103,6 +113,11 @@ void collect_stresses(FrameworkAnalysis& result, const Eigen::MatrixXd& basis);
 
 /// Runs the analysis of seed 002 on `model`.
 FrameworkResult analyse_framework(const FrameworkModel& model, const AnalysisOptions& options = {});
+
+/// Classifies the modes of `result` (as they stand: call it again after the basis is re-chosen)
+/// to second order and traces them (AnalysisOptions::second_order); sets `orders` and
+/// `prestress`. analyse_framework calls it.
+void classify_second_order(const FrameworkModel& model, FrameworkResult& result, const AnalysisOptions& options);
 
 /// The model with the proposal of `analysis` applied: its releases become released
 /// deformations and its constrained columns become independent coordinates.

@@ -142,10 +142,12 @@ Eigen::MatrixXd rebase(const Eigen::MatrixXd& given, const Eigen::MatrixXd& pers
 
 }  // namespace
 
-FrameworkResult with_generic_basis(FrameworkResult analysis, const GenericFramework& generic) {
+FrameworkResult with_generic_basis(const FrameworkModel& model, FrameworkResult analysis, const GenericFramework& generic,
+                                   const AnalysisOptions& options) {
   if (generic.mode_basis) {
     analysis.modes.clear();
     collect_modes(analysis, *generic.mode_basis);
+    classify_second_order(model, analysis, options);
   }
   if (generic.stress_basis) {
     analysis.stresses.clear();

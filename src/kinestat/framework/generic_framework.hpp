@@ -57,8 +57,10 @@ inline constexpr double kFrameworkCausePerturbation = 1e-6;
 std::optional<GenericFramework> generic_framework(const FrameworkModel& model, const FrameworkResult& given);
 
 /// `analysis` with its modes and stress states replaced by the re-chosen bases of `generic`
-/// (unchanged where there are none), so that each basis vector has one cause.
-FrameworkResult with_generic_basis(FrameworkResult analysis, const GenericFramework& generic);
+/// (unchanged where there are none), so that each basis vector has one cause. A re-chosen mode
+/// basis is classified to second order again with `options`, so `orders` match the modes.
+FrameworkResult with_generic_basis(const FrameworkModel& model, FrameworkResult analysis, const GenericFramework& generic,
+                                   const AnalysisOptions& options = {});
 
 /// Laman's count of `model` by the pebble game; nothing unless it is planar with trusses only.
 std::optional<LamanCount> laman_count(const FrameworkModel& model, const FrameworkResult& given);

@@ -1,6 +1,7 @@
 #include "kinestat/report/framework_report.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <array>
 #include <cmath>
@@ -160,6 +161,58 @@ nlohmann::ordered_json generic_json(const FrameworkModel& model, const Framework
   return j;
 }
 
+// Short code of an OrderReason in the JSON.
+const char* order_reason_code(framework::OrderReason reason) {
+  using framework::OrderReason;
+  switch (reason) {
+    case OrderReason::prestress_stable: return "prestress_stable";
+    case OrderReason::blocked_by_stress: return "blocked_by_stress";
+    case OrderReason::rigid_motion: return "rigid_motion";
+    case OrderReason::traced: return "traced";
+    case OrderReason::trace_failed: return "trace_failed";
+    case OrderReason::no_second_order_model: return "no_second_order_model";
+    case OrderReason::not_computed: return "not_computed";
+  }
+  return "not_computed";
+}
+
+// The reason of a mode's order in words, for the text report.
+std::string order_reason_text(const framework::ModeOrder& o) {
+  using framework::OrderReason;
+  switch (o.reason) {
+    case OrderReason::prestress_stable:
+      return "blocked at second order: the self-stress below makes the geometric stiffness positive definite on every "
+             "non-rigid mode (prestress stable)";
+    case OrderReason::blocked_by_stress:
+      return fmt::format("this mode does not extend to second order: the self-stress below does work {} on it (relative); "
+                         "the mechanism space is not prestress stable, so other combinations of modes may move",
+                         evidence(o.second_order_work));
+    case OrderReason::rigid_motion: return "a rigid motion of the whole model";
+    case OrderReason::traced:
+      return fmt::format("passes second order (work {}) and was traced over {} with closure residual {} (relative)",
+                         evidence(o.second_order_work), number(o.trace.amplitude), evidence(o.trace.max_residual));
+    case OrderReason::trace_failed:
+      return fmt::format("passes second order (work {}) but the trace lost closure at step {} (residual {}): "
+                         "possibly blocked at a higher order",
+                         evidence(o.second_order_work), o.trace.failed_step, evidence(o.trace.max_residual));
+    case OrderReason::no_second_order_model:
+      return "no second-order test for beams and rigid bodies yet (bar frameworks only)";
+    case OrderReason::not_computed: return "second order not computed (model too large, or tracing off)";
+  }
+  return "";
+}
+
+// The path summary of a traced mode.
+nlohmann::ordered_json trace_json(const framework::FiniteTrace& trace) {
+  nlohmann::ordered_json t;
+  t["amplitude"] = rounded(trace.amplitude);
+  t["max_residual"] = evidence_number(trace.max_residual);
+  t["rank_along_path"] = trace.rank_along_path;
+  t["closed"] = trace.closed;
+  t["rank_drops"] = trace.rank_drops;
+  return t;
+}
+
 }  // namespace
 
 std::vector<std::string> framework_generic_sentences(const FrameworkModel& model, const FrameworkResult& analysis,
@@ -241,29 +294,51 @@ nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const 
     j["null_space_residual"] = evidence_number(a.null_space_residual);
   }
 
-  j["modes"] = nlohmann::ordered_json::array();
-  for (const auto& mode : a.modes) {
-    nlohmann::ordered_json m;
-    m["velocities"] = velocities_by_node(model, a, mode.velocities);
-    m["moving"] = nlohmann::ordered_json::array();
-    for (Eigen::Index col : mode.moving) m["moving"].push_back(framework_column_label(model, a, col));
-    const auto k = j["modes"].size();
-    if (generic && k < generic->mode_causes.size()) m["cause"] = linalg::cause_name(generic->mode_causes[k]);
-    j["modes"].push_back(std::move(m));
-  }
-  j["stresses"] = nlohmann::ordered_json::array();
-  for (const auto& state : a.stresses) {
-    nlohmann::ordered_json s;
-    s["resultants"] = nlohmann::ordered_json::array();
-    for (Eigen::Index i = 0; i < state.resultants.size(); ++i) {
-      if (compact(a) && state.resultants(i) == 0.0) continue;
+  auto resultants_json = [&](const Eigen::VectorXd& resultants) {
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
+    for (Eigen::Index i = 0; i < resultants.size(); ++i) {
+      if (compact(a) && resultants(i) == 0.0) continue;
       const auto& ref = row_ref(a, i);
       nlohmann::ordered_json entry;
       entry["element"] = model.elements[ref.element].name;
       entry["deformation"] = deformation_name(model, ref);
-      entry["value"] = rounded(state.resultants(i));
-      s["resultants"].push_back(std::move(entry));
+      entry["value"] = rounded(resultants(i));
+      list.push_back(std::move(entry));
     }
+    return list;
+  };
+  j["modes"] = nlohmann::ordered_json::array();
+  for (std::size_t k = 0; k < a.modes.size(); ++k) {
+    const auto& mode = a.modes[k];
+    nlohmann::ordered_json m;
+    m["velocities"] = velocities_by_node(model, a, mode.velocities);
+    m["moving"] = nlohmann::ordered_json::array();
+    for (Eigen::Index col : mode.moving) m["moving"].push_back(framework_column_label(model, a, col));
+    if (generic && k < generic->mode_causes.size()) m["cause"] = linalg::cause_name(generic->mode_causes[k]);
+    if (k < a.orders.size()) {
+      const framework::ModeOrder& o = a.orders[k];
+      m["order"] = framework::motion_order_name(o.order);
+      m["order_reason"] = order_reason_code(o.reason);
+      m["second_order_work"] = evidence_number(o.second_order_work);
+      if (o.blocking_stress.size() > 0) m["blocking_stress"] = resultants_json(o.blocking_stress);
+      if (o.traced) m["trace"] = trace_json(o.trace);
+    }
+    j["modes"].push_back(std::move(m));
+  }
+  if (a.prestress.tested) {
+    nlohmann::ordered_json p;
+    p["stable"] = a.prestress.stable;
+    p["nonrigid_modes"] = a.prestress.nonrigid_modes;
+    p["rigid_motions"] = a.prestress.rigid_motions;
+    p["smallest_eigenvalue"] = evidence_number(a.prestress.smallest_eigenvalue);
+    p["exhaustive"] = a.prestress.exhaustive;
+    p["stress"] = resultants_json(a.prestress.stress);
+    j["prestress_stability"] = std::move(p);
+  }
+  j["stresses"] = nlohmann::ordered_json::array();
+  for (const auto& state : a.stresses) {
+    nlohmann::ordered_json s;
+    s["resultants"] = resultants_json(state.resultants);
     s["candidates"] = nlohmann::ordered_json::array();
     for (Eigen::Index row : state.candidates) s["candidates"].push_back(framework_row_label(model, a, row));
     const auto k = j["stresses"].size();
@@ -343,11 +418,36 @@ std::string framework_report_text(const FrameworkModel& model, const FrameworkRe
     line(fmt::format("vectors from the sparse R factors: first {} of {} mode(s), first {} of {} stress state(s); "
                      "largest relative residual {}",
                      a.modes.size(), a.mechanisms, a.stresses.size(), a.self_stresses, evidence(a.null_space_residual)));
+  auto stress_lines = [&](const std::string& title, const Eigen::VectorXd& resultants) {
+    line(title);
+    for (Eigen::Index row = 0; row < resultants.size(); ++row)
+      if (std::abs(resultants(row)) > kModeZero)
+        line(fmt::format("  {:>24} {:>12}", row_label(row), number(resultants(row))));
+  };
   for (std::size_t k = 0; k < a.modes.size(); ++k) {
     const std::string cause = generic && k < generic->mode_causes.size() ? ", from the " + linalg::cause_name(generic->mode_causes[k]) : "";
     line(fmt::format("mode {} (velocities; translations per characteristic length){}:", k + 1, cause));
     for (Eigen::Index col : a.modes[k].moving)
       line(fmt::format("  {:>16} {:>12}", column_label(col), number(a.modes[k].velocities(col))));
+    if (k >= a.orders.size()) continue;
+    const framework::ModeOrder& o = a.orders[k];
+    line(fmt::format("  order: {} -- {}", framework::motion_order_name(o.order), order_reason_text(o)));
+    if (o.reason == framework::OrderReason::blocked_by_stress) stress_lines("  blocking self-stress:", o.blocking_stress);
+    if (o.traced) {
+      line(fmt::format("  rank of D(c) along the path: {}", fmt::join(o.trace.rank_along_path, " ")));
+      if (!o.trace.rank_drops.empty())
+        line(fmt::format("  rank drops at point(s) {} (0 = the start): a singular configuration -- branch point or change of mobility",
+                         fmt::join(o.trace.rank_drops, ", ")));
+    }
+  }
+  if (a.prestress.tested) {
+    line(fmt::format("prestress stability ({} non-rigid mode(s), {} rigid motion(s); search {}): {}, smallest eigenvalue {} "
+                     "(relative)",
+                     a.prestress.nonrigid_modes, a.prestress.rigid_motions,
+                     a.prestress.exhaustive ? "exhaustive over the stress combinations" : "sampled, may miss one",
+                     a.prestress.stable ? "STABLE -- every non-rigid mode is blocked at second order" : "not stable",
+                     evidence(a.prestress.smallest_eigenvalue)));
+    if (a.prestress.stable) stress_lines("  the stabilising self-stress (positive: tension):", a.prestress.stress);
   }
   for (std::size_t k = 0; k < a.stresses.size(); ++k) {
     const std::string cause =

@@ -1,0 +1,36 @@
+#pragma once
+// Finite-motion tracing of a bar framework (issue 13, item 2): a predictor–corrector that follows
+// a direction of the mechanism space on the full nonlinear constraints (the bar lengths and any
+// independent elongation held at their values in the model), reporting the closure residual, the
+// rank of D(c) at every point and the configurations reached.
+
+#include <Eigen/Core>
+
+#include "kinestat/framework/framework_analysis.hpp"
+#include "kinestat/framework/framework_model.hpp"
+#include "kinestat/framework/mode_order.hpp"
+#include "kinestat/tolerances.hpp"
+
+namespace kinestat::framework {
+
+struct TraceOptions {
+  /// Arc length to follow, as a fraction of the characteristic length (the issue's 0.1).
+  double amplitude_fraction = 0.1;
+  int steps = 20;
+  linalg::RankTolerance tolerance;  ///< the rank rule of the analysis
+};
+
+/// True when every element is a truss: the constraints are then bar lengths, whose second
+/// derivatives and nonlinear closure this module evaluates exactly.
+bool bars_only(const FrameworkModel& model);
+
+/// Current length of a truss element of `model` (length units).
+double truss_length(const FrameworkModel& model, const Element& element);
+
+/// Follows `direction` (rates of the columns of D(c) in D̂'s units, the units of a
+/// KinematicMode) from the configuration of `model`, on which `analysis` was made. Bars only
+/// (bars_only); otherwise returns an empty trace (closed = false, no points).
+FiniteTrace trace_motion(const FrameworkModel& model, const FrameworkAnalysis& analysis,
+                         const Eigen::VectorXd& direction, const TraceOptions& options = {});
+
+}  // namespace kinestat::framework
