@@ -20,7 +20,7 @@ using testing::parse_model;
 using testing::row_of;
 
 // Number of modes of each order.
-std::size_t count(const FrameworkAnalysis& a, MotionOrder order) {
+std::size_t count(const FrameworkResult& a, MotionOrder order) {
   std::size_t k = 0;
   for (const ModeOrder& o : a.orders) k += o.order == order ? 1 : 0;
   return k;
@@ -32,7 +32,7 @@ std::size_t count(const FrameworkAnalysis& a, MotionOrder order) {
 // (the stress matrix is ω(|Δu_AC|² + |Δu_CB|²) = 2ω y² with ω = t / 1 > 0).
 TEST(SecondOrder, CollinearTwoBarIsInfinitesimal) {
   const FrameworkModel model = load_example("pellegrino-calladine-two-bar.yaml");
-  const FrameworkAnalysis a = analyse_framework(model);
+  const FrameworkResult a = analyse_framework(model);
   ASSERT_EQ(a.orders.size(), 1u);
   const ModeOrder& o = a.orders[0];
   EXPECT_EQ(o.order, MotionOrder::infinitesimal);
@@ -52,7 +52,7 @@ TEST(SecondOrder, CollinearTwoBarIsInfinitesimal) {
 // (a bar's Hessian has no component along the bar).
 TEST(SecondOrder, StressMatrixOfTheTwoBarByHand) {
   const FrameworkModel model = load_example("pellegrino-calladine-two-bar.yaml");
-  const FrameworkAnalysis a = analyse_framework(model);
+  const FrameworkResult a = analyse_framework(model);
   const Eigen::MatrixXd k = geometric_stiffness(model, a, Eigen::Vector2d(1.0, 1.0));
   const Eigen::Index x = column_of(model, a, "C.x"), y = column_of(model, a, "C.y");
   EXPECT_NEAR(k(y, y), 2.0, 1e-12);
@@ -76,7 +76,7 @@ elements:
   - {type: truss, nodes: [X, B]}
   - {type: truss, nodes: [X, C]}
 )");
-  const FrameworkAnalysis a = analyse_framework(model);
+  const FrameworkResult a = analyse_framework(model);
   ASSERT_EQ(a.mechanisms, 1);
   ASSERT_EQ(a.self_stresses, 1);
   ASSERT_EQ(a.orders.size(), 1u);
@@ -91,7 +91,7 @@ elements:
 // Calladine 1978). The rigid motions are finite (the whole body moves).
 TEST(SecondOrder, TensegrityPrismIsPrestressStable) {
   const FrameworkModel model = load_example("simplex-tensegrity.yaml");
-  const FrameworkAnalysis a = analyse_framework(model);
+  const FrameworkResult a = analyse_framework(model);
   ASSERT_EQ(a.mechanisms, 7);
   EXPECT_EQ(a.prestress.rigid_motions, 6);
   EXPECT_EQ(a.prestress.nonrigid_modes, 1);
@@ -114,7 +114,7 @@ TEST(SecondOrder, RigidMotionsOfFreeAndSupportedModels) {
   const FrameworkModel braced = load_example("braced-square.yaml");
   EXPECT_EQ(rigid_motions(braced, analyse_framework(braced)).cols(), 0);
   // The octahedron is rigid (Cauchy): its six modes are all rigid motions, hence finite.
-  const FrameworkAnalysis a = analyse_framework(octahedron);
+  const FrameworkResult a = analyse_framework(octahedron);
   EXPECT_EQ(count(a, MotionOrder::finite), 6u);
   for (const ModeOrder& o : a.orders) EXPECT_EQ(o.reason, OrderReason::rigid_motion);
 }
@@ -128,7 +128,7 @@ TEST(SecondOrder, RigidMotionsOfFreeAndSupportedModels) {
 // twist of the top square (the top square rotates about z and drops), so the trace closes.
 TEST(SecondOrder, TwelveTrussesMoveFinitely) {
   const FrameworkModel model = load_example("truss-12.yaml");
-  const FrameworkAnalysis a = analyse_framework(model);
+  const FrameworkResult a = analyse_framework(model);
   ASSERT_EQ(a.orders.size(), 1u);
   const ModeOrder& o = a.orders[0];
   EXPECT_LT(o.second_order_work, kSecondOrderWorkZero);
@@ -155,7 +155,7 @@ TEST(SecondOrder, TwelveTrussesMoveFinitely) {
 // finite (Bricard 1897), so it must pass second order and trace with closure.
 TEST(SecondOrder, BricardOctahedronFlexesFinitely) {
   const FrameworkModel model = load_example("bricard-octahedron.yaml");
-  const FrameworkAnalysis a = analyse_framework(model);
+  const FrameworkResult a = analyse_framework(model);
   ASSERT_EQ(a.mechanisms, 7);
   ASSERT_EQ(a.self_stresses, 1);
   EXPECT_EQ(a.prestress.nonrigid_modes, 1);
@@ -175,7 +175,7 @@ TEST(SecondOrder, BricardOctahedronFlexesFinitely) {
 // from its change points moves finitely, with the rank of D(c) constant (3) along the path.
 TEST(SecondOrder, FourBarMovesFinitelyWithConstantRank) {
   const FrameworkModel model = load_example("four-bar-linkage.yaml");
-  const FrameworkAnalysis a = analyse_framework(model);
+  const FrameworkResult a = analyse_framework(model);
   ASSERT_EQ(a.orders.size(), 1u);
   EXPECT_EQ(a.orders[0].order, MotionOrder::finite);
   EXPECT_FALSE(a.prestress.tested);  // no self-stress to test
@@ -203,7 +203,7 @@ elements:
   - {type: truss, nodes: [B, C]}
   - {type: truss, nodes: [C, D]}
 )");
-  const FrameworkAnalysis a = analyse_framework(model);
+  const FrameworkResult a = analyse_framework(model);
   ASSERT_EQ(a.mechanisms, 2);
   ASSERT_EQ(a.self_stresses, 1);
   EXPECT_TRUE(a.prestress.tested);
@@ -239,7 +239,7 @@ elements:
 TEST(SecondOrder, InvariantUnderScalingAndRigidMotion) {
   const FrameworkModel model = load_example("truss-12.yaml");
   const FrameworkModel moved = testing::transformed(model, testing::generic_rotation(), Eigen::Vector3d(3, -2, 7), 1000.0);
-  const FrameworkAnalysis a = analyse_framework(moved);
+  const FrameworkResult a = analyse_framework(moved);
   ASSERT_EQ(a.orders.size(), 1u);
   EXPECT_EQ(a.orders[0].order, MotionOrder::finite);
   EXPECT_LT(a.orders[0].trace.max_residual, 1e-10);
@@ -247,7 +247,7 @@ TEST(SecondOrder, InvariantUnderScalingAndRigidMotion) {
   // which the first-order rank already resolves as rigid.)
   const FrameworkModel two_bar = testing::transformed(load_example("pellegrino-calladine-two-bar.yaml"),
                                                       Eigen::Matrix3d::Identity(), Eigen::Vector3d(5, 1, 0), 0.001);
-  const FrameworkAnalysis b = analyse_framework(two_bar);
+  const FrameworkResult b = analyse_framework(two_bar);
   ASSERT_EQ(b.mechanisms, 1);
   ASSERT_EQ(b.orders.size(), 1u);
   EXPECT_EQ(b.orders[0].order, MotionOrder::infinitesimal);
@@ -256,7 +256,7 @@ TEST(SecondOrder, InvariantUnderScalingAndRigidMotion) {
 // Beams and rigid bodies: no second-order model here, said so.
 TEST(SecondOrder, BeamsAreUndeterminedWithReason) {
   const FrameworkModel model = load_example("folded-sheet-guide-5.yaml");
-  const FrameworkAnalysis a = analyse_framework(model);
+  const FrameworkResult a = analyse_framework(model);
   for (const ModeOrder& o : a.orders) {
     EXPECT_EQ(o.order, MotionOrder::undetermined);
     EXPECT_EQ(o.reason, OrderReason::no_second_order_model);

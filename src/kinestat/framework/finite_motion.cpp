@@ -18,13 +18,13 @@ struct PathPoint {
   Eigen::MatrixXd jacobian;  // D̂ (non-dimensional, unscaled)
 };
 
-Eigen::MatrixXd jacobian_at(const FrameworkModel& model, const FrameworkAnalysis& a) {
+Eigen::MatrixXd jacobian_at(const FrameworkModel& model, const FrameworkResult& a) {
   return Eigen::MatrixXd(dependent_jacobian(model, a.indexing, a.partition, deformation_derivative(model, a.indexing), a.length));
 }
 
 // The constraints of the rows of D(c), non-dimensional: bar length now minus bar length in the
 // analysed model, over the characteristic length.
-Eigen::VectorXd closure(const FrameworkModel& reference, const FrameworkModel& now, const FrameworkAnalysis& a) {
+Eigen::VectorXd closure(const FrameworkModel& reference, const FrameworkModel& now, const FrameworkResult& a) {
   Eigen::VectorXd g(a.m);
   for (Eigen::Index r = 0; r < a.m; ++r) {
     const DeformationRef& d = a.indexing.deformations[static_cast<std::size_t>(a.rows[static_cast<std::size_t>(r)])];
@@ -37,7 +37,7 @@ Eigen::VectorXd closure(const FrameworkModel& reference, const FrameworkModel& n
 
 // Moves the translational dependent coordinates by `step` (D̂'s units: translations per
 // characteristic length). Rotational slots carry no geometry in a bar framework.
-void displace(FrameworkModel& model, const FrameworkAnalysis& a, const Eigen::VectorXd& step) {
+void displace(FrameworkModel& model, const FrameworkResult& a, const Eigen::VectorXd& step) {
   for (Eigen::Index j = 0; j < a.n; ++j) {
     const CoordinateRef& c = a.indexing.coordinates[static_cast<std::size_t>(a.partition.dependent_coordinates[static_cast<std::size_t>(j)])];
     if (is_translation(c.slot)) model.nodes[c.node].position(c.slot) += step(j) * a.length;
@@ -46,7 +46,7 @@ void displace(FrameworkModel& model, const FrameworkAnalysis& a, const Eigen::Ve
 
 // Rank of D(c) by the analysis' rule (on the physically scaled matrix) and an orthonormal basis
 // of the null space of D̂ itself, from its SVD.
-std::pair<Eigen::Index, Eigen::MatrixXd> rank_and_null_space(const Eigen::MatrixXd& jacobian, const FrameworkAnalysis& a,
+std::pair<Eigen::Index, Eigen::MatrixXd> rank_and_null_space(const Eigen::MatrixXd& jacobian, const FrameworkResult& a,
                                                              const linalg::RankTolerance& tolerance) {
   if (a.m == 0) return {0, Eigen::MatrixXd::Identity(a.n, a.n)};
   const Eigen::MatrixXd scaled = a.row_scale.asDiagonal() * jacobian * a.column_scale.asDiagonal();
@@ -58,7 +58,7 @@ std::pair<Eigen::Index, Eigen::MatrixXd> rank_and_null_space(const Eigen::Matrix
 // Newton corrector on the constraints, kept on the hyperplane through the predicted point
 // normal to the tangent (pseudo-arclength): minimum-norm least-squares steps, so a rank-deficient
 // D(c) (self-stresses) is no obstacle as long as the constraints stay consistent.
-double correct(FrameworkModel& model, const FrameworkModel& reference, const FrameworkAnalysis& a, const Eigen::VectorXd& tangent) {
+double correct(FrameworkModel& model, const FrameworkModel& reference, const FrameworkResult& a, const Eigen::VectorXd& tangent) {
   double residual = closure(reference, model, a).cwiseAbs().maxCoeff();
   for (int iteration = 0; iteration < 20 && residual > kCorrectorTarget; ++iteration) {
     Eigen::MatrixXd system(a.m + 1, a.n);
@@ -86,7 +86,7 @@ bool bars_only(const FrameworkModel& model) {
   return std::all_of(model.elements.begin(), model.elements.end(), [](const Element& e) { return e.type == ElementType::truss; });
 }
 
-FiniteTrace trace_motion(const FrameworkModel& model, const FrameworkAnalysis& a, const Eigen::VectorXd& direction,
+FiniteTrace trace_motion(const FrameworkModel& model, const FrameworkResult& a, const Eigen::VectorXd& direction,
                          const TraceOptions& options) {
   FiniteTrace trace;
   if (!bars_only(model) || direction.size() != a.n || a.n == 0 || direction.norm() == 0.0 || options.steps <= 0) return trace;

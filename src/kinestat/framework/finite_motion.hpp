@@ -30,7 +30,7 @@ double truss_length(const FrameworkModel& model, const Element& element);
 /// Follows `direction` (rates of the columns of D(c) in D̂'s units, the units of a
 /// KinematicMode) from the configuration of `model`, on which `analysis` was made. Bars only
 /// (bars_only); otherwise returns an empty trace (closed = false, no points).
-FiniteTrace trace_motion(const FrameworkModel& model, const FrameworkAnalysis& analysis,
+FiniteTrace trace_motion(const FrameworkModel& model, const FrameworkResult& analysis,
                          const Eigen::VectorXd& direction, const TraceOptions& options = {});
 
 }  // namespace kinestat::framework

@@ -95,10 +95,6 @@ struct FrameworkResult {
   double relative_smallest_singular_value() const;
 };
 
-// Transitional name, removed once the branches in flight use FrameworkResult.
-using FrameworkAnalysis = FrameworkResult;
-
-
 /// The first stage of analyse_framework: fills indexing, partition, counts, rows, the
 /// characteristic length and the length scaling of `result`, and returns the matrix every rank
 /// decision is made on, S_r D̂ S_c (non-dimensional, m × n).
@@ -106,10 +102,10 @@ Eigen::SparseMatrix<double> prepare_analysis(const FrameworkModel& model, Framew
 
 /// Appends one mode per column of `basis` (a basis of the null space of D(c), in D̂'s units,
 /// normalised), with its moving coordinates.
-void collect_modes(FrameworkAnalysis& result, const Eigen::MatrixXd& basis);
+void collect_modes(FrameworkResult& result, const Eigen::MatrixXd& basis);
 /// Appends one stress state per column of `basis` (of the null space of D(c)ᵀ, normalised);
 /// candidates are the fixed rows with a non-zero resultant.
-void collect_stresses(FrameworkAnalysis& result, const Eigen::MatrixXd& basis);
+void collect_stresses(FrameworkResult& result, const Eigen::MatrixXd& basis);
 
 /// Runs the analysis of seed 002 on `model`.
 FrameworkResult analyse_framework(const FrameworkModel& model, const AnalysisOptions& options = {});

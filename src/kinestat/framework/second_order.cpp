@@ -16,7 +16,7 @@ namespace kinestat::framework {
 namespace {
 
 // Columns of D(c) of the translational slots of node `node`, −1 where the slot is not a column.
-std::array<Eigen::Index, 3> translation_columns(const FrameworkAnalysis& a, const std::vector<Eigen::Index>& column_of,
+std::array<Eigen::Index, 3> translation_columns(const FrameworkResult& a, const std::vector<Eigen::Index>& column_of,
                                                 std::size_t node) {
   std::array<Eigen::Index, 3> columns{-1, -1, -1};
   for (int slot = 0; slot < 3; ++slot) {
@@ -30,7 +30,7 @@ std::array<Eigen::Index, 3> translation_columns(const FrameworkAnalysis& a, cons
 // B = (I − e eᵀ) / l̂ is the Hessian of the non-dimensional bar length with respect to the
 // non-dimensional relative position of q from p.
 template <typename Visit>
-void for_each_bar_row(const FrameworkModel& model, const FrameworkAnalysis& a, Visit visit) {
+void for_each_bar_row(const FrameworkModel& model, const FrameworkResult& a, Visit visit) {
   std::vector<Eigen::Index> column_of(a.indexing.coordinates.size(), -1);
   for (std::size_t j = 0; j < a.partition.dependent_coordinates.size(); ++j)
     column_of[static_cast<std::size_t>(a.partition.dependent_coordinates[j])] = static_cast<Eigen::Index>(j);
@@ -54,7 +54,7 @@ Eigen::Vector3d relative_motion(const Eigen::VectorXd& u, const std::array<Eigen
 }
 
 // ε̂″_r(u, u) for every row of D(c).
-Eigen::VectorXd second_derivatives(const FrameworkModel& model, const FrameworkAnalysis& a, const Eigen::VectorXd& u) {
+Eigen::VectorXd second_derivatives(const FrameworkModel& model, const FrameworkResult& a, const Eigen::VectorXd& u) {
   Eigen::VectorXd h = Eigen::VectorXd::Zero(a.m);
   for_each_bar_row(model, a, [&](Eigen::Index r, const auto& p, const auto& q, const Eigen::Matrix3d& hessian) {
     const Eigen::Vector3d delta = relative_motion(u, p, q);
@@ -155,7 +155,7 @@ const char* motion_order_name(MotionOrder order) {
   return "undetermined";
 }
 
-Eigen::MatrixXd geometric_stiffness(const FrameworkModel& model, const FrameworkAnalysis& a, const Eigen::VectorXd& stress) {
+Eigen::MatrixXd geometric_stiffness(const FrameworkModel& model, const FrameworkResult& a, const Eigen::VectorXd& stress) {
   Eigen::MatrixXd k = Eigen::MatrixXd::Zero(a.n, a.n);
   for_each_bar_row(model, a, [&](Eigen::Index r, const auto& p, const auto& q, const Eigen::Matrix3d& hessian) {
     // ε̂_r depends on x_q − x_p: the Hessian enters the pp and qq blocks with +, pq and qp with −.
@@ -172,7 +172,7 @@ Eigen::MatrixXd geometric_stiffness(const FrameworkModel& model, const Framework
   return k;
 }
 
-Eigen::MatrixXd rigid_motions(const FrameworkModel& model, const FrameworkAnalysis& a) {
+Eigen::MatrixXd rigid_motions(const FrameworkModel& model, const FrameworkResult& a) {
   const bool planar = model.dimension == 2;
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
   for (const Node& node : model.nodes) centroid += node.position;
@@ -207,7 +207,7 @@ Eigen::MatrixXd rigid_motions(const FrameworkModel& model, const FrameworkAnalys
   return orthonormal_columns(dependent * combinations, kRigidMotionZero);
 }
 
-SecondOrderResult classify_modes(const FrameworkModel& model, const FrameworkAnalysis& a, const SecondOrderOptions& options) {
+SecondOrderResult classify_modes(const FrameworkModel& model, const FrameworkResult& a, const SecondOrderOptions& options) {
   SecondOrderResult result;
   result.orders.resize(a.modes.size());
   if (a.modes.empty()) return result;

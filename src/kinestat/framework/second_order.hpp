@@ -37,17 +37,17 @@ struct SecondOrderResult {
 /// Classifies every mode of `analysis` (made on `model`, dense path with vectors). Bars only:
 /// for beams and rigid bodies every mode is `undetermined` with reason no_second_order_model;
 /// above kSecondOrderSizeLimit, reason not_computed.
-SecondOrderResult classify_modes(const FrameworkModel& model, const FrameworkAnalysis& analysis,
+SecondOrderResult classify_modes(const FrameworkModel& model, const FrameworkResult& analysis,
                                  const SecondOrderOptions& options = {});
 
 /// The geometric stiffness (stress matrix) of the resultants `stress` (dual to the rows of D(c),
 /// in D̂'s units) on the columns of D(c): the n × n matrix of Σ_r σ_r ∂²ε̂_r/∂x̂², non-dimensional.
 /// Bars only.
-Eigen::MatrixXd geometric_stiffness(const FrameworkModel& model, const FrameworkAnalysis& analysis,
+Eigen::MatrixXd geometric_stiffness(const FrameworkModel& model, const FrameworkResult& analysis,
                                     const Eigen::VectorXd& stress);
 
 /// An orthonormal basis (columns of D(c), D̂'s units) of the rigid motions of the whole model
 /// that leave every fixed and independent coordinate at rest.
-Eigen::MatrixXd rigid_motions(const FrameworkModel& model, const FrameworkAnalysis& analysis);
+Eigen::MatrixXd rigid_motions(const FrameworkModel& model, const FrameworkResult& analysis);
 
 }  // namespace kinestat::framework

@@ -74,10 +74,4 @@ enum class SearchMethod {
 /// order, so they give identical results whenever the mechanism is well constrained.
 StructureResult analyse_structure(const StructureModel& model, SearchMethod method = SearchMethod::matching);
 
-// Transitional names, removed once the branches in flight use the ones above.
-using Decomposition = StructureResult;
-inline StructureResult decompose(const StructureModel& model, SearchMethod method = SearchMethod::matching) {
-  return analyse_structure(model, method);
-}
-
 }  // namespace kinestat::structure
