@@ -8,7 +8,7 @@ int main(int argc, char** argv) try {
     const kinestat::network::NetworkResult result = kinestat::io::analyse_network_file(*file.network, file.path);
     std::cout << result.model_name << ": FN = " << result.FN << ", CN = " << result.CN << '\n';
   } else if (file.framework) {
-    const kinestat::framework::FrameworkAnalysis result = kinestat::framework::analyse_framework(*file.framework);
+    const kinestat::framework::FrameworkResult result = kinestat::framework::analyse_framework(*file.framework);
     std::cout << file.framework->name << ": modes = " << result.mechanisms << ", self-stresses = " << result.self_stresses << '\n';
   }
 } catch (const kinestat::Error& error) {  // every error kinestat throws: message, exit code, position
