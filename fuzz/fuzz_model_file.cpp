@@ -32,7 +32,7 @@ constexpr std::size_t kMaxAnalysedCouplings = 16;
 constexpr std::size_t kMaxAnalysedElements = 64;
 constexpr int kMaxAnalysedBodies = 64;
 
-void analyse_structure(const kinestat::structure::StructureModel& model) {
+void check_structure(const kinestat::structure::StructureModel& model) {
   if (model.body_count() > kMaxAnalysedBodies) return;
   const auto decomposition = kinestat::structure::analyse_structure(model);
   const auto transformations = kinestat::structure::structural_transformations(model, 64);
@@ -70,7 +70,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         } catch (const kinestat::network::ModelError& error) {
           (void)kinestat::io::locate(error, loaded, file.path());
         }
-        analyse_structure(kinestat::io::structure_of_network(loaded, file.path()));
+        check_structure(kinestat::io::structure_of_network(loaded, file.path()));
       }
     } else if (kind == "framework") {
       const auto model = kinestat::io::read_framework_model(file);
@@ -82,7 +82,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         (void)kinestat::report::mechanism_svg(kinestat::report::framework_scene(model, analysis));
       }
     } else if (kind == "structure") {
-      analyse_structure(kinestat::io::read_structure_model(file));
+      check_structure(kinestat::io::read_structure_model(file));
     }
   } catch (const kinestat::io::InputError&) {
   }
