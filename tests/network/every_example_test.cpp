@@ -11,19 +11,8 @@
 namespace kinestat::network {
 namespace {
 
-std::vector<std::string> network_examples() {
-  std::vector<std::string> names;
-  for (const auto& entry : std::filesystem::directory_iterator(std::string(KINESTAT_SOURCE_DIR) + "/examples")) {
-    if (entry.path().extension() != ".yaml") continue;
-    const auto file = io::YamlFile::load(entry.path().string());
-    if (io::model_kind(file) == "network") names.push_back(entry.path().filename().string());
-  }
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
 TEST(EveryNetworkExample, MethodsAgreeAndIdentitiesHold) {
-  const auto names = network_examples();
+  const auto names = testing::network_examples();
   ASSERT_FALSE(names.empty());
   for (const auto& name : names) {
     SCOPED_TRACE(name);

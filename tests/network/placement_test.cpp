@@ -10,7 +10,6 @@
 #include <Eigen/Geometry>
 
 #include <cmath>
-#include <filesystem>
 #include <string>
 
 #include "kinestat/network/analyse_network.hpp"
@@ -57,15 +56,8 @@ bool has_custom_screws(const Model& model) {
 
 TEST(Placement, FarFromTheOriginEveryNetworkExampleKeepsItsAnswer) {
   int checked = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(std::string(KINESTAT_SOURCE_DIR) + "/examples")) {
-    if (entry.path().extension() != ".yaml") continue;
-    const std::string name = entry.path().filename().string();
-    io::LoadedNetwork loaded;
-    try {
-      loaded = testing::load_example(name);
-    } catch (const std::exception&) {
-      continue;  // not a network model
-    }
+  for (const std::string& name : testing::network_examples()) {
+    const io::LoadedNetwork loaded = testing::load_example(name);
     const Model& model = loaded.model;
     if (has_custom_screws(model)) continue;
     SCOPED_TRACE(name);
