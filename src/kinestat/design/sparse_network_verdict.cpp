@@ -95,33 +95,13 @@ struct Conditioning {
   }
 };
 
-// The unit actions of each coupling (user frame), computed once and only for the couplings asked for.
-class ActionBases {
- public:
-  explicit ActionBases(const Model& model) : model_(model) {}
-  const std::vector<screw::UnitScrew>& of(int coupling) {
-    auto it = cache_.find(coupling);
-    if (it == cache_.end()) {
-      const auto& c = model_.couplings[static_cast<std::size_t>(coupling)];
-      it = cache_.emplace(coupling, screw::coupling_basis(c.type, c.geometry, model_.space).actions).first;
-    }
-    return it->second;
-  }
-
- private:
-  const Model& model_;
-  std::map<int, std::vector<screw::UnitScrew>> cache_;
-};
-
-Screw6 screw_of(const screw::UnitScrew& s, const screw::ScrewSpace& space) {
-  std::vector<double> coordinates;
-  for (const auto& x : s.coordinates) coordinates.push_back(x.get_d());
-  return embed(coordinates, space);
+Screw6 screw_of(const screw::RoundedUnitScrew& s, const screw::ScrewSpace& space) {
+  return embed(std::vector<double>(s.coordinates.begin(), s.coordinates.begin() + space.dimension()), space);
 }
 
 // Self-stress `j` of the sparse QR's basis: the wrench each coupling transmits, ranked by its size.
 VerdictState self_stress_state(const Model& model, const SparseNetworkResult& r, const std::vector<Index>& first_row,
-                               ActionBases& bases, const Conditioning& frame, Index j) {
+                               const Conditioning& frame, Index j) {
   const Index primary = r.stress_primaries[static_cast<std::size_t>(j)];
   const Eigen::VectorXd lambda = r.stress_basis.col(j) / r.stress_basis(primary, j);  // the primary = 1
   const double zero = kSupportZero * lambda.cwiseAbs().maxCoeff();
@@ -129,17 +109,17 @@ VerdictState self_stress_state(const Model& model, const SparseNetworkResult& r,
   for (Index row = 0; row < lambda.size(); ++row) {
     if (std::abs(lambda(row)) <= zero) continue;
     const int c = r.row_coupling[static_cast<std::size_t>(row)];
-    const auto& actions = bases.of(c);
-    const Screw6 unit = screw_of(actions[static_cast<std::size_t>(row - first_row[static_cast<std::size_t>(c)])], model.space);
+    const Screw6 unit = screw_of(r.row_actions[static_cast<std::size_t>(row)], model.space);
     auto [it, inserted] = wrench.emplace(c, Screw6::Zero());
     it->second += lambda(row) * unit;
   }
   const int c = r.row_coupling[static_cast<std::size_t>(primary)];
   const auto k = static_cast<int>(primary - first_row[static_cast<std::size_t>(c)]);
   const auto& coupling = model.couplings[static_cast<std::size_t>(c)];
+  const screw::RoundedUnitScrew& primary_action = r.row_actions[static_cast<std::size_t>(primary)];
   VerdictState state{"self-stress",
                      fmt::format("self-stress {} (action primary {} = 1; basis vector of the sparse QR of K^T)", j + 1,
-                                 network::magnitude_name(coupling.name, bases.of(c)[static_cast<std::size_t>(k)], k)),
+                                 network::magnitude_name(coupling.name, {{}, primary_action.kind, primary_action.letter}, k)),
                      {}};
   double total = 0.0;
   for (const auto& [e, w] : wrench) total += frame.wrench_size(w);
@@ -248,9 +228,8 @@ Verdict sparse_network_verdict(const Model& model, const SparseNetworkResult& r,
   // Self-stresses: the first kSparseVerdictStates basis vectors, the wrench of every coupling.
   std::vector<Index> first_row(model.couplings.size(), 0);
   for (std::size_t row = r.row_coupling.size(); row-- > 0;) first_row[static_cast<std::size_t>(r.row_coupling[row])] = static_cast<Index>(row);
-  ActionBases bases(model);
   const Index stresses = std::min<Index>(r.stress_basis.cols(), kSparseVerdictStates);
-  for (Index j = 0; j < stresses; ++j) v.states.push_back(self_stress_state(model, r, first_row, bases, frame, j));
+  for (Index j = 0; j < stresses; ++j) v.states.push_back(self_stress_state(model, r, first_row, frame, j));
 
   v.motion_participants = strongest(v.states, "extra motion");
   add_unlisted(v.motion_participants, "body", spinning, 1.0, "spins idle (a state beyond those listed)");

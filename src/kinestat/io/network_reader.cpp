@@ -8,6 +8,7 @@
 #include <unordered_set>
 
 #include "kinestat/io/model_vocabulary.hpp"
+#include "kinestat/screw/rounded_coupling_basis.hpp"
 
 namespace kinestat::io {
 
@@ -202,7 +203,9 @@ class NetworkReader {
     if (planar && *type == CouplingType::prismatic && sgn((*g.axis)[2]) != 0)
       file_.fail(file_.optional(node, "axis"), "in a planar model a prismatic axis must lie in the xy-plane");
     try {
-      (void)screw::coupling_basis(coupling.type, g, loaded_.model.space);
+      // The check costs no GMP arithmetic for short numbers (small_coupling_basis); it throws
+      // exactly when coupling_basis would.
+      (void)screw::rounded_coupling_basis(coupling.type, g, loaded_.model.space);
     } catch (const screw::GeometryError& error) {
       file_.fail(node, fmt::format("coupling '{}': {}", coupling.name, error.what()));
     }

@@ -94,8 +94,9 @@ SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances&
   auto block = [&r, d](int body) -> Index { return body == r.ground ? -1 : (body < r.ground ? body : body - 1) * d; };
 
   // The conditioned frame of the dense path (centroid, extent), applied in floating point: the
-  // bases are built exactly in the user's frame from its short decimals, while the centroid's
-  // large denominators would make exact arithmetic in the frame itself slow.
+  // bases are built in the user's frame from its short decimals (rounded_coupling_basis: exact
+  // 64-bit rationals, then doubles), while the centroid's large denominators would make exact
+  // arithmetic in the frame itself slow.
   const AnalysisFrame frame = AnalysisFrame::of(model);
   const Eigen::Vector3d origin(frame.origin[0].get_d(), frame.origin[1].get_d(), frame.origin[2].get_d());
   const double scale = frame.scale.get_d();
@@ -106,9 +107,9 @@ SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances&
   std::vector<int>& row_coupling = r.row_coupling;
   for (std::size_t i = 0; i < model.couplings.size(); ++i) {
     const Coupling& c = model.couplings[i];
-    screw::CouplingBasis basis;
+    screw::RoundedCouplingBasis basis;
     try {
-      basis = screw::coupling_basis(c.type, c.geometry, model.space);
+      basis = screw::rounded_coupling_basis(c.type, c.geometry, model.space);
     } catch (const screw::GeometryError& error) {
       throw ModelError("couplings", static_cast<int>(i), fmt::format("coupling '{}': {}", c.name, error.what()));
     }
@@ -116,10 +117,11 @@ SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances&
     for (const auto& action : basis.actions) {
       const auto row = static_cast<Index>(row_coupling.size());
       row_coupling.push_back(static_cast<int>(i));
+      r.row_actions.push_back(action);
       // Ray formation (moment at the origin; force): moment about the frame's origin, in
       // lengths of the frame's scale.
       Eigen::Matrix<double, 6, 1> full = Eigen::Matrix<double, 6, 1>::Zero();
-      for (Index k = 0; k < d; ++k) full(components[static_cast<std::size_t>(k)]) = action.coordinates[static_cast<std::size_t>(k)].get_d();
+      for (Index k = 0; k < d; ++k) full(components[static_cast<std::size_t>(k)]) = action.coordinates[static_cast<std::size_t>(k)];
       const Eigen::Vector3d force = full.tail<3>();
       full.head<3>() = (full.head<3>() - origin.cross(force)) / scale;
       for (Index k = 0; k < d; ++k) {

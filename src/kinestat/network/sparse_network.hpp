@@ -16,6 +16,7 @@
 #include "kinestat/linalg/rank_decision.hpp"
 #include "kinestat/network/model.hpp"
 #include "kinestat/network/network_result.hpp"
+#include "kinestat/screw/rounded_coupling_basis.hpp"
 #include "kinestat/tolerances.hpp"
 
 namespace kinestat::network {
@@ -36,6 +37,10 @@ struct SparseNetworkResult {
   std::vector<int> moving_bodies;
   /// Coupling of each row of K (each unit action, in the order of the coupling's action basis).
   std::vector<int> row_coupling;
+  /// The unit action of each row of K in the user's frame and length unit (ray formation, the
+  /// model's d coordinates), from screw::rounded_coupling_basis: each coupling's basis is built
+  /// once, in doubles, and kept for the verdict.
+  std::vector<screw::RoundedUnitScrew> row_actions;
   /// K itself (C × d(n − 1), conditioned analysis frame): column block d·(b − [b > ground]) is
   /// body b's twist, so that block's nonzero rows are the unit actions of b's own couplings.
   Eigen::SparseMatrix<double> K;

@@ -1,0 +1,58 @@
+#pragma once
+// An exact rational with 64-bit numerator and denominator, for building coupling bases without
+// GMP when the geometry's numbers are short (integer or few-digit decimal coordinates). Every
+// operation is exact or throws SmallRational::Overflow, so a caller can fall back to GMP; the
+// value is then the same rational GMP would compute.
+
+#include <cmath>
+#include <cstdint>
+#include <optional>
+
+#include "kinestat/linalg/rational_matrix.hpp"
+
+namespace kinestat::screw {
+
+class SmallRational {
+ public:
+  /// Thrown when a numerator or denominator would leave the 64-bit range.
+  struct Overflow {};
+
+  SmallRational() = default;
+  SmallRational(std::int64_t integer) : num_(integer) {}  // NOLINT(google-explicit-constructor): integers convert
+
+  /// `value` exactly, or empty when its numerator or denominator does not fit in 64 bits.
+  static std::optional<SmallRational> from(const linalg::Rational& value);
+
+  std::int64_t num() const { return num_; }
+  std::int64_t den() const { return den_; }
+  int sign() const { return (num_ > 0) - (num_ < 0); }
+
+  friend SmallRational operator+(const SmallRational& a, const SmallRational& b);
+  friend SmallRational operator-(const SmallRational& a, const SmallRational& b) { return a + (-b); }
+  friend SmallRational operator*(const SmallRational& a, const SmallRational& b);
+  friend SmallRational operator/(const SmallRational& a, const SmallRational& b);
+  SmallRational operator-() const;
+  SmallRational& operator+=(const SmallRational& b) { return *this = *this + b; }
+  SmallRational& operator-=(const SmallRational& b) { return *this = *this - b; }
+  friend bool operator==(const SmallRational& a, const SmallRational& b) { return a.num_ == b.num_ && a.den_ == b.den_; }
+  /// |a| < |b|, exactly.
+  friend bool abs_less(const SmallRational& a, const SmallRational& b);
+
+  /// The double nearest the value in the direction of zero (rounded toward zero), as
+  /// GMP's mpq_get_d rounds, so both paths give the same bits. Throws Overflow when the
+  /// numerator or denominator exceeds 2^53 (not exactly representable as a double).
+  double to_double() const;
+
+  /// The exact square root when the value is the square of a rational, else empty (also for
+  /// negative values).
+  std::optional<SmallRational> exact_sqrt() const;
+
+ private:
+  SmallRational(std::int64_t num, std::int64_t den, bool) : num_(num), den_(den) {}
+  static SmallRational reduced(std::int64_t num, std::int64_t den);
+
+  std::int64_t num_ = 0;
+  std::int64_t den_ = 1;  // > 0, coprime with num_
+};
+
+}  // namespace kinestat::screw
