@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "cli/commands.hpp"
@@ -12,6 +13,7 @@
 #include "kinestat/network/analyse_network.hpp"
 #include "kinestat/network/generic_network.hpp"
 #include "kinestat/network/sparse_network.hpp"
+#include "kinestat/network/sparse_pair_freedoms.hpp"
 #include "kinestat/report/json_text.hpp"
 #include "kinestat/report/network_report.hpp"
 
@@ -28,6 +30,7 @@ struct NetworkOptions {
   bool dense = false;
   std::vector<std::string> primary;
   std::vector<std::string> values;  // name=number
+  std::vector<std::string> pairs;   // BODY1:BODY2
   std::vector<CLI::Option*> given;  // the options above, to tell whether any was used
 };
 
@@ -57,6 +60,26 @@ std::vector<std::pair<std::string, screw::Rational>> parse_values(const std::vec
   return values;
 }
 
+// --pair BODY1:BODY2 as body indices of `model`.
+std::vector<std::pair<int, int>> parse_pairs(const std::vector<std::string>& texts, const network::Model& model) {
+  std::vector<std::pair<int, int>> pairs;
+  auto body = [&model](const std::string& name, const std::string& text) {
+    const auto it = std::find(model.bodies.begin(), model.bodies.end(), name);
+    if (it == model.bodies.end())
+      throw io::InputError({"--pair", 0, 0}, fmt::format("'{}' names no body of the model (in '{}')", name, text));
+    return static_cast<int>(it - model.bodies.begin());
+  };
+  for (const std::string& text : texts) {
+    const auto colon = text.find(':');
+    if (colon == std::string::npos || colon == 0 || colon + 1 == text.size())
+      throw io::InputError({"--pair", 0, 0}, fmt::format("expected BODY1:BODY2 (e.g. u0:v3), found '{}'", text));
+    const int i = body(text.substr(0, colon), text), j = body(text.substr(colon + 1), text);
+    if (i == j) throw io::InputError({"--pair", 0, 0}, fmt::format("a pair needs two different bodies, found '{}'", text));
+    pairs.emplace_back(i, j);
+  }
+  return pairs;
+}
+
 }  // namespace
 
 void register_network_options(CLI::App& analyze) {
@@ -75,7 +98,10 @@ void register_network_options(CLI::App& analyze) {
              analyze.add_flag("--matrices", o.matrices, "Networks: also print B, Q, BM, QA and the unit matrices"),
              analyze.add_flag("--coupled-pairs", o.coupled_pairs_only, "Networks: list only directly coupled pairs of bodies"),
              analyze.add_option("--primary", o.primary, "Networks: primary variables, e.g. --primary sa,ta,vc,Ub,We")->delimiter(','),
-             analyze.add_option("--value", o.values, "Networks: numeric value of a primary variable, NAME=NUMBER (repeatable)")};
+             analyze.add_option("--value", o.values, "Networks: numeric value of a primary variable, NAME=NUMBER (repeatable)"),
+             analyze.add_option("--pair", o.pairs,
+                                "Networks, sparse path: fij and cij of the pair of bodies BODY1:BODY2 (repeatable; "
+                                "--coupled-pairs adds every coupled pair); the dense path lists every pair")};
 }
 
 std::vector<std::string> given_network_options() {
@@ -98,17 +124,25 @@ int run_network_analysis(const CommonOptions& common, const io::LoadedNetwork& l
   // The sparse path for large networks unless something only the dense path gives was asked for.
   const bool dense_request = o.dense || o.exact || o.matrices || !o.primary.empty() || !o.values.empty();
   if (o.sparse || (!dense_request && static_cast<int>(loaded.model.couplings.size()) > network::kDenseNetworkLimit)) {
+    const std::vector<std::pair<int, int>> chosen = parse_pairs(o.pairs, loaded.model);
+    const bool want_pairs = !o.pairs.empty() || o.coupled_pairs_only;
     network::SparseNetworkResult sparse;
+    std::vector<network::SparsePairFreedom> pairs;
     try {
-      sparse = network::analyse_network_sparse(loaded.model, options.tolerances, design::kSparseVerdictStates);
+      sparse = network::analyse_network_sparse(loaded.model, options.tolerances, design::kSparseVerdictStates, want_pairs);
+      if (want_pairs) pairs = network::sparse_pair_freedoms(loaded.model, sparse, chosen, o.coupled_pairs_only, options.tolerances);
     } catch (const network::ModelError& error) {
       throw io::locate(error, loaded, path);
     }
     const design::Verdict verdict = design::sparse_network_verdict(loaded.model, sparse, options.tolerances);
-    emit(common, common.json ? report::json_text(report::sparse_network_report_json(loaded.model, sparse, &verdict))
-                             : report::sparse_network_report_text(loaded.model, sparse, &verdict));
+    const auto* listed = want_pairs ? &pairs : nullptr;
+    emit(common, common.json ? report::json_text(report::sparse_network_report_json(loaded.model, sparse, &verdict, listed))
+                             : report::sparse_network_report_text(loaded.model, sparse, &verdict, listed));
     return 0;
   }
+  if (!o.pairs.empty())
+    throw io::InputError({"--pair", 0, 0}, "--pair chooses pairs on the sparse path; the dense path lists every pair of "
+                                           "bodies (unless --coupled-pairs): drop --pair, or add --sparse");
   network::NetworkResult result;
   try {
     result = network::analyse_network(loaded.model, options);

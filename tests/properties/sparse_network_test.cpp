@@ -1,6 +1,7 @@
 // The sparse body-twist path against Davies' dense exact path (an independent method: circuit
 // and cutset laws over a spanning tree) on seeded random networks and on every example: FN, CN,
-// the couplings that carry a self-stress and the couplings that move.
+// the couplings that carry a self-stress and the couplings that move, and the pair freedoms
+// fij, cij of every pair of bodies (dense: ranks of the pair systems in the primaries).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -12,6 +13,7 @@
 #include "kinestat/io/yaml_support.hpp"
 #include "kinestat/network/analyse_network.hpp"
 #include "kinestat/network/sparse_network.hpp"
+#include "kinestat/network/sparse_pair_freedoms.hpp"
 #include "random_network.hpp"
 
 namespace kinestat::network {
@@ -44,6 +46,71 @@ void expect_same_answers(const Model& model, const std::string& what, Arithmetic
   EXPECT_EQ(sparse.stressed, stressed);
   EXPECT_EQ(sparse.moving, moving);
   EXPECT_LT(sparse.residual, 1e-10);
+}
+
+// Every pair of bodies, row by row in the dense path's order (i < j, one row per direct coupling
+// in coupling order, one row for an uncoupled pair).
+void expect_same_pairs(const Model& model, const std::string& what, Arithmetic arithmetic = Arithmetic::exact) {
+  SCOPED_TRACE(what);
+  AnalysisOptions options;
+  options.arithmetic = arithmetic;
+  options.all_pairs = true;
+  const NetworkResult dense = analyse_network(model, options);
+  const SparseNetworkResult sparse = analyse_network_sparse(model, {}, 0, true);
+  std::vector<std::pair<int, int>> all;
+  const int n = static_cast<int>(model.bodies.size());
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j) all.emplace_back(j, i);  // either order is accepted
+  const std::vector<SparsePairFreedom> pairs = sparse_pair_freedoms(model, sparse, all, false);
+  ASSERT_EQ(pairs.size(), dense.pairs.size());
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    SCOPED_TRACE("row " + std::to_string(k));
+    EXPECT_EQ(pairs[k].body_i, dense.pairs[k].body_i);
+    EXPECT_EQ(pairs[k].body_j, dense.pairs[k].body_j);
+    EXPECT_EQ(pairs[k].coupling, dense.pairs[k].coupling);
+    EXPECT_EQ(pairs[k].f, dense.pairs[k].f);
+    EXPECT_EQ(pairs[k].c, dense.pairs[k].c);
+    EXPECT_EQ(pairs[k].fij, dense.pairs[k].fij);
+    EXPECT_EQ(pairs[k].cij, dense.pairs[k].cij);
+  }
+  // --coupled-pairs: the rows of the direct couplings only, each pair once.
+  const std::vector<SparsePairFreedom> coupled = sparse_pair_freedoms(model, sparse, {}, true);
+  std::size_t with_coupling = 0;
+  for (const auto& p : dense.pairs) with_coupling += p.coupling ? 1U : 0U;
+  EXPECT_EQ(coupled.size(), with_coupling);
+}
+
+TEST(SparseNetwork, SamePairFreedomsAsDaviesOnRandomNetworks) {
+  for (int seed = 0; seed < 40; ++seed) {
+    std::mt19937 rng(static_cast<unsigned>(11000 + seed));
+    expect_same_pairs(testing::random_network(rng, 2 + seed % 7, seed % 4, seed % 2 == 0), "seed " + std::to_string(seed));
+  }
+}
+
+TEST(SparseNetwork, SamePairFreedomsAsDaviesOnEveryExample) {
+  int examples = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(KINESTAT_SOURCE_DIR) + "/examples")) {
+    if (entry.path().extension() != ".yaml") continue;
+    const auto file = io::YamlFile::load(entry.path().string());
+    if (io::model_kind(file) != "network") continue;
+    expect_same_pairs(io::read_network_model(file).model, entry.path().filename().string(), Arithmetic::automatic);
+    ++examples;
+  }
+  EXPECT_GT(examples, 10);
+}
+
+TEST(SparseNetwork, PairFreedomsOfDaviesTwoCircuit) {
+  // Fig. 1 of seed 000: 4 bodies, 5 couplings each joining a different pair (the file), so 5
+  // rows for the coupled pairs; a pair asked twice (both orders) has one row (each pair here has
+  // at most one coupling); refused: a body twice, an analysis without the generic vectors.
+  const auto file = io::YamlFile::load(std::string(KINESTAT_SOURCE_DIR) + "/examples/davies-2-circuit.yaml");
+  const Model model = io::read_network_model(file).model;
+  const SparseNetworkResult r = analyse_network_sparse(model, {}, 0, true);
+  EXPECT_EQ(sparse_pair_freedoms(model, r, {}, true).size(), 5U);
+  EXPECT_EQ(sparse_pair_freedoms(model, r, {{0, 1}, {1, 0}}, false).size(), 1U);  // one pair, asked twice
+  EXPECT_THROW((void)sparse_pair_freedoms(model, r, {{2, 2}}, false), ModelError);
+  const SparseNetworkResult without = analyse_network_sparse(model);
+  EXPECT_THROW((void)sparse_pair_freedoms(model, without, {{0, 1}}, false), ModelError);
 }
 
 TEST(SparseNetwork, SameAnswersAsDaviesOnRandomSpatialNetworks) {

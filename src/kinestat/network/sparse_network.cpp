@@ -58,6 +58,18 @@ int components(int bodies, const std::vector<Coupling>& couplings) {
   return count;
 }
 
+// `count` generic vectors of the null space of aᵀ (qr factors a), each from its own fixed
+// pseudo-random weights.
+Eigen::MatrixXd generic_left_null_vectors(const Eigen::SparseMatrix<double>& a, const linalg::SparseQr& qr, Index count) {
+  Eigen::MatrixXd vectors(a.rows(), count);
+  Eigen::VectorXd g(a.rows());
+  for (Index j = 0; j < count; ++j) {
+    for (Index k = 0; k < g.size(); ++k) g(k) = weight(k * (count + 1) + j + 1);
+    vectors.col(j) = qr.least_squares_residual(a, g);
+  }
+  return vectors;
+}
+
 // Unit-norm null vectors of the matrix `qr` factors, for its first `count` dead columns (the
 // rank-revealing factor's own basis), their dead columns, and the largest relative residual
 // ‖a x‖ / (σ_max ‖x‖) against `a` (the factored matrix).
@@ -76,7 +88,7 @@ double basis_of(const Eigen::SparseMatrix<double>& a, const linalg::SparseQr& qr
 
 }  // namespace
 
-SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances& tolerances, Index vectors) {
+SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances& tolerances, Index vectors, bool pair_vectors) {
   if (model.couplings.empty()) throw ModelError("couplings", -1, "the model has no couplings");
   SparseNetworkResult r;
   r.d = model.space.dimension();
@@ -139,6 +151,10 @@ SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances&
   entries.shrink_to_fit();
 
   r.rank = linalg::sparse_rank_threshold(k, {tolerances.rank});
+  if (pair_vectors) {
+    r.generic_motions = Eigen::MatrixXd::Zero(k.cols(), d);
+    r.generic_stresses = Eigen::MatrixXd::Zero(k.rows(), d);
+  }
   std::vector<bool> stressed(static_cast<std::size_t>(r.e), false), moving(static_cast<std::size_t>(r.e), false);
   if (k.rows() > 0 && k.cols() > 0) {
     const Eigen::SparseMatrix<double> kt = k.transpose();
@@ -150,6 +166,7 @@ SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances&
       if (vectors > 0)
         r.basis_residual = std::max(r.basis_residual, basis_of(kt, qr, vectors, r.rank.largest, r.stress_basis, r.stress_primaries));
       const Eigen::VectorXd twists = generic_left_null_vector(kt, qr);
+      if (pair_vectors && k.cols() > r.rank.rank) r.generic_motions = generic_left_null_vectors(kt, qr, d);
       // Only when there are motions: otherwise the residual is rounding noise.
       if (k.cols() > r.rank.rank && twists.norm() > 0) {
         r.residual = std::max(r.residual, (k * twists).norm() / (r.rank.largest * twists.norm()));
@@ -175,6 +192,7 @@ SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances&
       if (vectors > 0)
         r.basis_residual = std::max(r.basis_residual, basis_of(k, qr, vectors, r.rank.largest, r.motion_basis, r.motion_primaries));
       const Eigen::VectorXd actions = generic_left_null_vector(k, qr);
+      if (pair_vectors && k.rows() > qr.rank()) r.generic_stresses = generic_left_null_vectors(k, qr, d);
       if (k.rows() > qr.rank() && actions.norm() > 0) {
         r.residual = std::max(r.residual, (kt * actions).norm() / (r.rank.largest * actions.norm()));
         const double zero = kSupportZero * actions.cwiseAbs().maxCoeff();
@@ -187,6 +205,9 @@ SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances&
     std::fill(moving.begin(), moving.end(), true);
     for (int body = 0; body < r.bodies; ++body)
       if (body != r.ground) r.moving_bodies.push_back(body);
+    if (pair_vectors)  // every twist is a motion
+      for (Index j = 0; j < d; ++j)
+        for (Index i = 0; i < k.cols(); ++i) r.generic_motions(i, j) = weight(i * (d + 1) + j + 1);
     if (vectors > 0) {
       const Index count = std::min<Index>(vectors, k.cols());
       r.motion_basis = Eigen::MatrixXd::Identity(k.cols(), count);

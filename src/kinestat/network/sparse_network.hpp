@@ -58,6 +58,13 @@ struct SparseNetworkResult {
   linalg::RankDecision motion_factor_rank;
   /// Largest ‖K x‖ / (σ_max ‖x‖) (motions) or ‖Kᵀ y‖ / (σ_max ‖y‖) (stresses) of the basis vectors.
   double basis_residual = 0.0;
+  /// On request (`pair_vectors`), d generic motions and d generic self-stresses for the pair
+  /// freedoms (network::sparse_pair_freedoms): fixed pseudo-random vectors projected onto the
+  /// null space of K (body twists, conditioned frame) and of Kᵀ (action magnitudes, one per row
+  /// of K), one least-squares solve each with the factors already computed; zero when FN
+  /// (CN) is zero.
+  Eigen::MatrixXd generic_motions;   ///< d(n − 1) × d
+  Eigen::MatrixXd generic_stresses;  ///< C × d
   Eigen::Vector3d frame_origin = Eigen::Vector3d::Zero();
   double frame_scale = 1.0;
 };
@@ -70,9 +77,10 @@ inline constexpr int kDenseNetworkLimit = 300;
 /// pseudo-random combination of the null vectors exceed kSupportZero of the largest: a
 /// generic combination vanishes only where every null vector does. Throws ModelError.
 /// With `vectors` > 0 also the first `vectors` basis vectors of the motions and of the
-/// self-stresses (motion_basis, stress_basis), at the cost of one triangular solve each.
+/// self-stresses (motion_basis, stress_basis), at the cost of one triangular solve each. With
+/// `pair_vectors` also generic_motions and generic_stresses (2d least-squares solves).
 SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances& tolerances = {},
-                                           Eigen::Index vectors = 0);
+                                           Eigen::Index vectors = 0, bool pair_vectors = false);
 
 
 }  // namespace kinestat::network

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "kinestat/io/printable_text.hpp"
 #include "kinestat/report/generic_text.hpp"
@@ -487,9 +488,26 @@ Json network_report_json(const network::Model& model, const NetworkResult& r, co
 
 namespace {
 
-// What the sparse path does not compute, said in every sparse report.
-constexpr const char* kSparseLeftOut[] = {"spanning tree, circuits and cutsets", "unit and contracted matrices",
-                                          "primary variables and magnitudes", "pair systems (fij, cij)"};
+// What the sparse path does not compute, said in every sparse report; the last entry depends on
+// whether pairs were chosen.
+std::vector<std::string> sparse_left_out(const network::SparseNetworkResult& r, const std::vector<network::SparsePairFreedom>* pairs) {
+  std::vector<std::string> out{"spanning tree, circuits and cutsets", "unit and contracted matrices", "primary variables and magnitudes"};
+  if (!pairs) {
+    out.emplace_back("pair systems (fij, cij)");
+    return out;
+  }
+  std::set<std::pair<int, int>> listed;
+  for (const auto& p : *pairs) listed.insert({p.body_i, p.body_j});
+  const auto n = static_cast<long long>(r.bodies);
+  out.push_back(fmt::format("pair systems (linear forms in the primaries); fij and cij of the {} pairs of bodies not listed "
+                            "(--pair, --coupled-pairs)",
+                            n * (n - 1) / 2 - static_cast<long long>(listed.size())));
+  return out;
+}
+
+std::string pair_bodies(const network::Model& model, const network::SparsePairFreedom& p) {
+  return printable_text(model.bodies[static_cast<std::size_t>(p.body_i)]) + ", " + printable_text(model.bodies[static_cast<std::size_t>(p.body_j)]);
+}
 
 std::vector<std::string> coupling_names(const network::Model& model, const std::vector<int>& couplings) {
   std::vector<std::string> names;
@@ -500,7 +518,8 @@ std::vector<std::string> coupling_names(const network::Model& model, const std::
 
 }  // namespace
 
-std::string sparse_network_report_text(const network::Model& model, const network::SparseNetworkResult& r, const design::Verdict* verdict) {
+std::string sparse_network_report_text(const network::Model& model, const network::SparseNetworkResult& r, const design::Verdict* verdict,
+                                       const std::vector<network::SparsePairFreedom>* pairs) {
   std::string t = verdict ? verdict_text(*verdict) : std::string();
   t += fmt::format("{}\n", model.name.empty() ? "Coupling network" : printable_text(model.name));
   t += fmt::format("  coupling network, {} (d = {}); sparse body-twist form, floating point\n", r.d == 6 ? "spatial" : "planar", r.d);
@@ -517,13 +536,21 @@ std::string sparse_network_report_text(const network::Model& model, const networ
                      "largest residual |K x| / (sigma_max |x|) = {}\n",
                      r.motion_basis.cols(), rank_text("rank", r.motion_factor_rank), r.stress_basis.cols(), number_text(r.basis_residual));
   }
-  t += fmt::format("Not computed on the sparse path (use the dense path for these): {}\n", fmt::join(kSparseLeftOut, "; "));
+  if (pairs) {
+    t += "Pairs of bodies (seed 000, Table 1; an absent coupling counts as f = d, c = 0; from d generic motions and self-stresses):\n";
+    t += fmt::format("  {:<24} {:<10} {:>3} {:>4} {:>3} {:>4}\n", "bodies", "coupling", "f", "fij", "c", "cij");
+    for (const auto& p : *pairs)
+      t += fmt::format("  {:<24} {:<10} {:>3} {:>4} {:>3} {:>4}\n", pair_bodies(model, p),
+                       p.coupling ? printable_text(model.couplings[static_cast<std::size_t>(*p.coupling)].name) : std::string("absent"),
+                       p.f, p.fij, p.c, p.cij);
+  }
+  t += fmt::format("Not computed on the sparse path (use the dense path for these): {}\n", fmt::join(sparse_left_out(r, pairs), "; "));
   if (r.rank.close()) t += "Warning: the rank of K is a close decision: the geometry is near one with a different FN and CN\n";
   return t;
 }
 
 nlohmann::ordered_json sparse_network_report_json(const network::Model& model, const network::SparseNetworkResult& r,
-                                           const design::Verdict* verdict) {
+                                           const design::Verdict* verdict, const std::vector<network::SparsePairFreedom>* pairs) {
   Json j;
   j["kind"] = "network";
   if (!model.name.empty()) j["name"] = model.name;
@@ -548,7 +575,21 @@ nlohmann::ordered_json sparse_network_report_json(const network::Model& model, c
                           {"motion_factor_rank", rank_json(r.motion_factor_rank)},
                           {"residual", r.basis_residual}};
   }
-  j["not_computed"] = kSparseLeftOut;
+  if (pairs) {
+    Json rows = Json::array();
+    for (const auto& p : *pairs) {
+      Json pair;
+      pair["bodies"] = {body_json(model.bodies[static_cast<std::size_t>(p.body_i)]), body_json(model.bodies[static_cast<std::size_t>(p.body_j)])};
+      pair["coupling"] = p.coupling ? Json(model.couplings[static_cast<std::size_t>(*p.coupling)].name) : Json(nullptr);
+      pair["f"] = p.f;
+      pair["fij"] = p.fij;
+      pair["c"] = p.c;
+      pair["cij"] = p.cij;
+      rows.push_back(pair);
+    }
+    j["pairs"] = rows;
+  }
+  j["not_computed"] = sparse_left_out(r, pairs);
   if (verdict) return lead_with_verdict(*verdict, j, model.units);
   return j;
 }

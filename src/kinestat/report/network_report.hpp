@@ -10,6 +10,7 @@
 #include "kinestat/network/model.hpp"
 #include "kinestat/network/network_result.hpp"
 #include "kinestat/network/sparse_network.hpp"
+#include "kinestat/network/sparse_pair_freedoms.hpp"
 
 namespace kinestat::report {
 
@@ -36,10 +37,13 @@ std::vector<std::string> network_generic_sentences(const network::Model& model, 
 /// Bounded report of the sparse path: the verdict first when given
 /// (design::sparse_network_verdict), counts, class, rank evidence (also of the basis vectors the
 /// verdict used), the couplings that carry a self-stress and those that move, and what was not
-/// computed.
+/// computed. With `pairs` (network::sparse_pair_freedoms) also the pair table (f, fij, c, cij
+/// of the chosen pairs; JSON `pairs`, the dense path's keys without the linear forms).
 std::string sparse_network_report_text(const network::Model& model, const network::SparseNetworkResult& result,
-                                const design::Verdict* verdict = nullptr);
+                                const design::Verdict* verdict = nullptr,
+                                const std::vector<network::SparsePairFreedom>* pairs = nullptr);
 nlohmann::ordered_json sparse_network_report_json(const network::Model& model, const network::SparseNetworkResult& result,
-                                           const design::Verdict* verdict = nullptr);
+                                           const design::Verdict* verdict = nullptr,
+                                           const std::vector<network::SparsePairFreedom>* pairs = nullptr);
 
 }  // namespace kinestat::report
