@@ -213,6 +213,28 @@ TEST(PositionSolver, SliderCrankOverAFullTurnMatchesTheCircleLineIntersection) {
   }
 }
 
+TEST(PositionSolver, SliderCrankDrivenAtTheSliderPlacesTheCrankByTheLawOfCosines) {
+  // Input on the prismatic P (between [slider, ground]): the value is the slide of the ground
+  // relative to the slider, so the slider pin C is at (5 − v, 0). Then {crank, rod} is an RRR
+  // dyad: B on the circles about A (√5) and C (√20), above the x-axis as in the file.
+  const Mechanism m = prepare(example("slider-crank-planar.yaml"), {"P"});
+  ASSERT_EQ(m.plan.groups.size(), 2u);
+  EXPECT_EQ(m.plan.groups[0].type, "driving link P");
+  EXPECT_EQ(m.plan.groups[1].type, "dyad RRR");
+  for (double v : {-1.5, -0.5, 0.0, 0.5, 1.0, 1.5}) {
+    const auto r = kinestat::kinematics::solve_positions(m.model, m.plan, {v});
+    ASSERT_TRUE(r.assembled) << v;
+    EXPECT_LT(r.max_residual, 1e-10);
+    expect_point(joint(m, r, "C"), 5 - v, 0.0, 1e-12, "C");
+    // cross(C − A, B − A) > 0 in the file (B above the line A→C).
+    const Point B = circle_circle({0, 0}, std::sqrt(5.0), {5 - v, 0}, std::sqrt(20.0), +1);
+    expect_point(joint(m, r, "B"), B.first, B.second, 1e-10, "B");
+  }
+  // |AC| > √5 + √20 = 6.708: the rod cannot reach.
+  const auto far = kinestat::kinematics::solve_positions(m.model, m.plan, {-1.8});
+  EXPECT_FALSE(far.assembled);
+}
+
 TEST(PositionSolver, InvertedSliderCrankRockerPointsAtTheCrankPin) {
   // RPR dyad: the rocker's slide axis passes through D and the crank pin B at every input.
   const Mechanism m = prepare(data("inverted-slider-crank.yaml"), {"A"});
