@@ -66,6 +66,7 @@
 #include "kinestat/report/linear_form_text.hpp"
 #include "kinestat/report/markup_escape.hpp"
 #include "kinestat/report/network_report.hpp"
+#include "kinestat/report/rank_status_text.hpp"
 #include "kinestat/report/scene.hpp"
 #include "kinestat/report/structure_report.hpp"
 #include "kinestat/report/svg_writer.hpp"

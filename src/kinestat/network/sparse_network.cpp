@@ -136,7 +136,8 @@ SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances&
   entries.clear();
   entries.shrink_to_fit();
 
-  r.rank = linalg::sparse_rank_threshold(k, {tolerances.rank});
+  // The threshold rises with the rounding of the coordinates as written (the dense rule).
+  r.rank = linalg::sparse_rank_threshold(k, {tolerances.rank, frame.input_rounding(model)});
   std::vector<bool> stressed(static_cast<std::size_t>(r.e), false), moving(static_cast<std::size_t>(r.e), false);
   if (k.rows() > 0 && k.cols() > 0) {
     const Eigen::SparseMatrix<double> kt = k.transpose();
