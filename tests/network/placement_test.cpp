@@ -13,6 +13,7 @@
 #include <string>
 
 #include "kinestat/network/analyse_network.hpp"
+#include "properties/random_network.hpp"
 #include "seed_fixture.hpp"
 
 namespace kinestat::network {
@@ -32,6 +33,13 @@ double model_size(const Model& model) {
   double size = 0;
   for (const auto& c : model.couplings) size = std::max(size, (as_double(c.geometry.point) - centroid).norm());
   return size > 0 ? size : 1.0;
+}
+
+// The rotation used for planar and for spatial models.
+Eigen::Matrix3d placement_rotation(bool planar) {
+  return planar ? Eigen::AngleAxisd(0.9, Eigen::Vector3d::UnitZ()).toRotationMatrix()
+                : (Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()) * Eigen::AngleAxisd(-1.1, Eigen::Vector3d::UnitZ()))
+                      .toRotationMatrix();
 }
 
 // The model rotated by `rotation` and moved by `shift`; every vector rounded to double. Primary
@@ -63,10 +71,7 @@ TEST(Placement, FarFromTheOriginEveryNetworkExampleKeepsItsAnswer) {
     SCOPED_TRACE(name);
     const NetworkResult base = analyse_network(model);
     const bool planar = !model.space.is_spatial();
-    const Eigen::Matrix3d rotation =
-        planar ? Eigen::AngleAxisd(0.9, Eigen::Vector3d::UnitZ()).toRotationMatrix()
-               : (Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()) * Eigen::AngleAxisd(-1.1, Eigen::Vector3d::UnitZ()))
-                     .toRotationMatrix();
+    const Eigen::Matrix3d rotation = placement_rotation(planar);
     const Eigen::Vector3d direction = planar ? Eigen::Vector3d(0.8, -0.6, 0) : Eigen::Vector3d(0.48, -0.6, 0.64);
     AnalysisOptions floating;
     floating.arithmetic = Arithmetic::floating;
@@ -84,6 +89,40 @@ TEST(Placement, FarFromTheOriginEveryNetworkExampleKeepsItsAnswer) {
     ++checked;
   }
   EXPECT_GE(checked, 15);  // the network examples without custom screws
+}
+
+// The same for the random networks of the property tests (short decimals, analysed exactly):
+// rotated and moved by 1000 times their size, at full double precision, in floating point.
+// A random network can be close to another answer by chance; those are left out (and counted,
+// so that the test cannot pass by leaving out everything).
+TEST(Placement, FarFromTheOriginRandomNetworksKeepTheirAnswer) {
+  int checked = 0, close = 0;
+  for (int seed = 0; seed < 80; ++seed) {
+    std::mt19937 rng(static_cast<unsigned>(7000 + seed));
+    const bool planar = seed % 2 == 1;
+    const Model model = testing::random_network(rng, 2 + seed % 5, 1 + seed % 3, planar);
+    SCOPED_TRACE("seed " + std::to_string(seed) + (planar ? " planar" : " spatial"));
+    AnalysisOptions exact, floating;
+    exact.arithmetic = Arithmetic::exact;
+    floating.arithmetic = Arithmetic::floating;
+    const NetworkResult base = analyse_network(model, exact);
+    const NetworkResult here = analyse_network(model, floating);
+    if (here.circulation.solution.rank.close() || here.cutset_law.solution.rank.close()) {
+      ++close;
+      continue;
+    }
+    const Eigen::Vector3d direction = planar ? Eigen::Vector3d(0.8, -0.6, 0) : Eigen::Vector3d(0.48, -0.6, 0.64);
+    const NetworkResult moved = analyse_network(placed(model, placement_rotation(planar), 1000.0 * model_size(model) * direction), floating);
+    EXPECT_EQ(moved.FN, base.FN);
+    EXPECT_EQ(moved.CN, base.CN);
+    ASSERT_EQ(moved.pairs.size(), base.pairs.size());
+    for (std::size_t k = 0; k < base.pairs.size(); ++k) {
+      EXPECT_EQ(moved.pairs[k].fij, base.pairs[k].fij) << "pair " << k;
+      EXPECT_EQ(moved.pairs[k].cij, base.pairs[k].cij) << "pair " << k;
+    }
+    ++checked;
+  }
+  EXPECT_GE(checked, 60) << close << " were close in floating point where they are";
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <filesystem>
 #include <numeric>
 #include <random>
@@ -110,6 +111,12 @@ TEST(FrameworkProperties, RandomTrusses) {
     const Eigen::Matrix3d& rotation = dimension == 2 ? planar_rotation : spatial_rotation;
     const Eigen::Vector3d shift = dimension == 2 ? Eigen::Vector3d(3, -2, 0) : Eigen::Vector3d(3, -2, 5);
     EXPECT_EQ(counts_of(moved(model, rotation, shift, 1.0)), expected) << "rigid motion";
+    // Far from the origin (issue 12): 1000 times its size away, coordinates at full double precision.
+    double size = 0;
+    for (const auto& a : model.nodes)
+      for (const auto& b : model.nodes) size = std::max(size, (a.position - b.position).norm());
+    const Eigen::Vector3d direction = dimension == 2 ? Eigen::Vector3d(0.8, -0.6, 0) : Eigen::Vector3d(0.48, -0.6, 0.64);
+    EXPECT_EQ(counts_of(moved(model, rotation, 1000.0 * size * direction, 1.0)), expected) << "1000 sizes away";
     EXPECT_EQ(counts_of(moved(model, Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero(), 1e3)), expected) << "x1e3";
     EXPECT_EQ(counts_of(moved(model, Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero(), 1e-3)), expected) << "x1e-3";
   }
