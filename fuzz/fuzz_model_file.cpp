@@ -18,6 +18,7 @@
 #include "kinestat/io/structure_reader.hpp"
 #include "kinestat/io/yaml_support.hpp"
 #include "kinestat/network/analyse_network.hpp"
+#include "kinestat/network/second_order.hpp"
 #include "kinestat/report/framework_report.hpp"
 #include "kinestat/report/network_report.hpp"
 #include "kinestat/report/scene.hpp"
@@ -61,7 +62,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
           const auto result = kinestat::network::analyse_network(loaded.model);
           // The verdict's change search screens copies with one rank each (milliseconds).
           const auto verdict = kinestat::design::network_verdict(loaded.model, result);
-          const kinestat::report::NetworkReportOptions options{true, &verdict};
+          const auto second_order = kinestat::network::classify_network_motions(loaded.model, result);
+          kinestat::report::NetworkReportOptions options{true, &verdict};
+          options.second_order = &second_order;
           (void)kinestat::report::network_report_text(loaded.model, result, options);
           (void)kinestat::report::network_report_json(loaded.model, result, options).dump();
           const auto scene = kinestat::report::network_scene(loaded.model, result);

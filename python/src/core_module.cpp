@@ -51,6 +51,7 @@ struct Analysed {
   std::optional<structure::StructureResult> decomposition;
   std::optional<structure::TransformationSet> transformations;
   design::Verdict verdict;  ///< what every report leads with (design layer)
+  std::optional<network::NetworkSecondOrder> network_second_order;  ///< as `kinestat analyze`
   std::optional<network::GenericNetwork> network_generic;        ///< the generic answer, as `kinestat analyze`
   std::optional<framework::GenericFramework> framework_generic;
 
@@ -93,6 +94,7 @@ std::shared_ptr<Analysed> analyse(const std::string& path, const std::optional<s
     analysed->network = io::analyse_network_file(*file.network, file.path, options);
     analysed->verdict = design::network_verdict(file.network->model, *analysed->network, options);
     analysed->network_generic = network::generic_network(file.network->model, *analysed->network);
+    analysed->network_second_order = network::classify_network_motions(file.network->model, *analysed->network);
     if (analysed->network_generic)
       analysed->verdict.generic = report::network_generic_sentences(file.network->model, *analysed->network, *analysed->network_generic);
   } else if (file.framework) {
@@ -135,6 +137,7 @@ std::string json_report(const Analysed& a) {
     report::NetworkReportOptions options;
     options.verdict = &a.verdict;
     if (a.network_generic) options.generic = &*a.network_generic;
+    if (a.network_second_order) options.second_order = &*a.network_second_order;
     return report::json_text(report::network_report_json(a.file.network->model, *a.network, options));
   }
   if (a.framework)

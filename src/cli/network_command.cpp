@@ -135,6 +135,8 @@ int run_network_analysis(const CommonOptions& common, const io::LoadedNetwork& l
     report_options.generic = &*generic;
     verdict.generic = report::network_generic_sentences(loaded.model, result, *generic);
   }
+  const network::NetworkSecondOrder second_order = network::classify_network_motions(loaded.model, result);
+  report_options.second_order = &second_order;
   emit(common, common.json ? report::json_text(report::network_report_json(loaded.model, result, report_options))
                            : report::network_report_text(loaded.model, result, report_options));
   return 0;

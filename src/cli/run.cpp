@@ -42,6 +42,7 @@ int run(int argc, const char* const* argv) {
   register_draw(app, action);
   register_report(app, action);
   register_convert(app, action);
+  register_move(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& success) {

@@ -1,6 +1,6 @@
 #pragma once
 // kinestat: every public header. Layers: screw, graph, linalg -> network, framework, structure,
-// design -> io -> report (docs/architecture.md). The installed-package check
+// kinematics, design -> io -> report (docs/architecture.md). The installed-package check
 // (tests/consumer) fails when a public header is missing here.
 #include "kinestat/error.hpp"
 #include "kinestat/design/framework_verdict.hpp"
@@ -37,8 +37,10 @@
 #include "kinestat/io/spacar_writer.hpp"
 #include "kinestat/io/text_file.hpp"
 #include "kinestat/io/urdf_reader.hpp"
+#include "kinestat/kinematics/position_solver.hpp"
 #include "kinestat/linalg/blas_threads.hpp"
 #include "kinestat/linalg/cause_split.hpp"
+#include "kinestat/linalg/definite_combination.hpp"
 #include "kinestat/linalg/equilibration.hpp"
 #include "kinestat/linalg/gmp_allocation.hpp"
 #include "kinestat/linalg/homogeneous_solution.hpp"
@@ -57,6 +59,7 @@
 #include "kinestat/network/mobility_count.hpp"
 #include "kinestat/network/model.hpp"
 #include "kinestat/network/network_result.hpp"
+#include "kinestat/network/second_order.hpp"
 #include "kinestat/network/sparse_network.hpp"
 #include "kinestat/network/unit_matrices.hpp"
 #include "kinestat/report/framework_report.hpp"
@@ -65,6 +68,7 @@
 #include "kinestat/report/json_text.hpp"
 #include "kinestat/report/linear_form_text.hpp"
 #include "kinestat/report/markup_escape.hpp"
+#include "kinestat/report/move_report.hpp"
 #include "kinestat/report/network_report.hpp"
 #include "kinestat/report/rank_status_text.hpp"
 #include "kinestat/report/scene.hpp"

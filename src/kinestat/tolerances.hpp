@@ -122,6 +122,19 @@ inline constexpr double kCorrectorTarget = 0x1p6 * kEpsilon;
 /// length has lost the mode (a corner the predictor cannot follow; a ratio, not rounding).
 inline constexpr double kTangentKept = 1e-3;
 
+// --- Position analysis (kinematics/position_solver.hpp) --------------------------------------
+
+/// A closed-form discriminant of a group (a squared length over its scale, or 1 − cos²)
+/// within this of zero is a singular position, where two assembly branches meet; below
+/// −this the group cannot be assembled (2^8 ε ≈ 5.7e-14: rounding of squared lengths).
+inline constexpr double kAssemblyDiscriminant = 0x1p8 * kEpsilon;
+/// Newton's method places a group when its closure residual (lengths over the characteristic
+/// length, angles in rad) is at most this (the 1e-10 of issue 13, as for traces).
+inline constexpr double kPositionResidual = 1e-10;
+/// A group placed by Newton whose Jacobian has σ_min below this fraction of σ_max is at a
+/// singular position (2^26 ε ≈ 1.5e-8).
+inline constexpr double kSingularPosition = 0x1p26 * kEpsilon;
+
 /// The tolerances of one analysis: what `--tolerance` sets, and the named defaults of every
 /// other rank decision that follows it.
 struct Tolerances {

@@ -35,6 +35,9 @@ Eigen::VectorXd closure(const FrameworkModel& reference, const FrameworkModel& n
   return g / a.length;
 }
 
+// The largest |constraint| (non-dimensional); 0 without constraints.
+double largest(const Eigen::VectorXd& g) { return g.size() == 0 ? 0.0 : g.cwiseAbs().maxCoeff(); }
+
 // Moves the translational dependent coordinates by `step` (D̂'s units: translations per
 // characteristic length). Rotational slots carry no geometry in a bar framework.
 void displace(FrameworkModel& model, const FrameworkResult& a, const Eigen::VectorXd& step) {
@@ -59,7 +62,7 @@ std::pair<Eigen::Index, Eigen::MatrixXd> rank_and_null_space(const Eigen::Matrix
 // normal to the tangent (pseudo-arclength): minimum-norm least-squares steps, so a rank-deficient
 // D(c) (self-stresses) is no obstacle as long as the constraints stay consistent.
 double correct(FrameworkModel& model, const FrameworkModel& reference, const FrameworkResult& a, const Eigen::VectorXd& tangent) {
-  double residual = closure(reference, model, a).cwiseAbs().maxCoeff();
+  double residual = largest(closure(reference, model, a));
   for (int iteration = 0; iteration < 20 && residual > kCorrectorTarget; ++iteration) {
     Eigen::MatrixXd system(a.m + 1, a.n);
     system << jacobian_at(model, a), tangent.transpose();
@@ -68,7 +71,7 @@ double correct(FrameworkModel& model, const FrameworkModel& reference, const Fra
     const Eigen::VectorXd step = system.completeOrthogonalDecomposition().solve(rhs);
     FrameworkModel trial = model;
     displace(trial, a, step);
-    const double next = closure(reference, trial, a).cwiseAbs().maxCoeff();
+    const double next = largest(closure(reference, trial, a));
     if (!(next < residual)) break;  // stagnated at rounding level (or diverging)
     model = std::move(trial);
     residual = next;
@@ -103,7 +106,10 @@ FiniteTrace trace_motion(const FrameworkModel& model, const FrameworkResult& a, 
     const auto [rank, null_space] = rank_and_null_space(jacobian_at(now, a), a, options.tolerance);
     trace.rank_along_path.push_back(rank);
     trace.positions.push_back(positions(now));
-    trace.max_residual = std::max(trace.max_residual, closure(model, now, a).cwiseAbs().maxCoeff());
+    const double here = largest(closure(model, now, a));
+    trace.residual_along_path.push_back(here);
+    trace.arc_length_along_path.push_back(trace.amplitude);
+    trace.max_residual = std::max(trace.max_residual, here);
     if (step == options.steps) break;
     // The tangent follows the mode: the previous one projected on the null space here.
     const Eigen::VectorXd projected = null_space * (null_space.transpose() * tangent);

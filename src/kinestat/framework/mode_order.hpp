@@ -34,6 +34,10 @@ struct FiniteTrace {
   double amplitude = 0.0;     ///< arc length reached, length units (translations; rotations times the characteristic length)
   double max_residual = 0.0;  ///< largest |constraint| / characteristic length over the points
   std::vector<Eigen::Index> rank_along_path;  ///< rank of D(c) at every point, the start first
+  /// max |constraint| / characteristic length at every point, the start first.
+  std::vector<double> residual_along_path;
+  /// Arc length reached at every point (length units, chords summed as for `amplitude`), 0 first.
+  std::vector<double> arc_length_along_path;
   /// Node positions (3 × nodes, global frame, length units) at every point, the start first.
   std::vector<Eigen::MatrixXd> positions;
   bool closed = false;        ///< every point reached with max_residual ≤ kTraceResidual

@@ -233,6 +233,63 @@ std::string generic_text(const network::Model& model, const NetworkResult& r, co
   return t;
 }
 
+// Second order (issue 13): one line per primary motion, then prestress stability.
+std::string second_order_text(const network::NetworkSecondOrder& s, const std::vector<std::string>& motion_primaries) {
+  std::string t = "Second order (Lie brackets of the coupling twists around each circuit):\n";
+  if (!s.unmodelled_couplings.empty()) {
+    std::vector<std::string> names;
+    for (const auto& n : s.unmodelled_couplings) names.push_back(printable_text(n));
+    t += fmt::format("  not classified: couplings {} are higher pairs or custom screws, whose finite motion needs curvatures the model "
+                     "does not give\n",
+                     fmt::join(names, ", "));
+    return t;
+  }
+  for (std::size_t k = 0; k < s.motions.size() && k < motion_primaries.size(); ++k) {
+    const auto& m = s.motions[k];
+    std::string why;
+    switch (m.reason) {
+      case network::NetworkOrderReason::blocked_by_stress:
+        why = fmt::format("a self-stress does work on it at second order (relative {:.3g}): it cannot move finitely", m.second_order_work);
+        break;
+      case network::NetworkOrderReason::prestress_stable:
+        why = "a combination of the self-stresses blocks every motion at once (prestress stable)";
+        break;
+      case network::NetworkOrderReason::passes_second_order:
+        why = "no self-stress does work on it at second order; a finite motion is possible (not traced)";
+        break;
+      case network::NetworkOrderReason::no_self_stress: why = "CN = 0: nothing blocks it at second order (not traced)"; break;
+      case network::NetworkOrderReason::no_second_order_model: why = "not classified (model too large or space not modelled)"; break;
+    }
+    t += fmt::format("  motion {}: {}: {}\n", printable_text(motion_primaries[k]), network::network_motion_order_name(m.order), why);
+  }
+  return t;
+}
+
+Json second_order_json(const network::NetworkSecondOrder& s, const std::vector<std::string>& motion_primaries) {
+  Json j;
+  Json motions = Json::array();
+  for (std::size_t k = 0; k < s.motions.size() && k < motion_primaries.size(); ++k) {
+    const auto& m = s.motions[k];
+    Json motion;
+    motion["primary"] = motion_primaries[k];
+    motion["order"] = network::network_motion_order_name(m.order);
+    motion["order_reason"] = network::network_order_reason_name(m.reason);
+    motion["second_order_work"] = std::round(m.second_order_work * 1e9) / 1e9;
+    if (m.blocking_stress.size() > 0) {
+      Json stress = Json::array();
+      for (Eigen::Index i = 0; i < m.blocking_stress.size(); ++i) stress.push_back(std::round(m.blocking_stress(i) * 1e9) / 1e9);
+      motion["blocking_stress"] = stress;
+    }
+    motions.push_back(motion);
+  }
+  j["motions"] = motions;
+  j["prestress_stability"] = {{"tested", s.prestress_tested},
+                              {"stable", s.prestress_stable},
+                              {"smallest_eigenvalue", std::round(s.smallest_eigenvalue * 1e9) / 1e9}};
+  j["unmodelled_couplings"] = s.unmodelled_couplings;
+  return j;
+}
+
 Json generic_json(const network::Model& model, const NetworkResult& r, const network::GenericNetwork& g,
                   const std::vector<std::string>& motion_primaries, const std::vector<std::string>& action_primaries) {
   Json j;
@@ -289,6 +346,7 @@ std::string network_report_text(const network::Model& model, const NetworkResult
                    r.identities_hold ? "hold" : "FAIL");
   t += "\n";
   if (options.generic) t += generic_text(model, r, *options.generic, motion_primaries, action_primaries) + "\n";
+  if (options.second_order) t += second_order_text(*options.second_order, motion_primaries) + "\n";
   std::vector<std::string> branch_names, chord_names;
   for (int b : r.branches) branch_names.push_back(coupling_name(static_cast<std::size_t>(b)));
   for (int c : r.chords) chord_names.push_back(coupling_name(static_cast<std::size_t>(c)));
@@ -390,6 +448,7 @@ Json network_report_json(const network::Model& model, const NetworkResult& r, co
   j["classification_description"] = network::class_description(r.classification);
   j["identities_hold"] = r.identities_hold;
   if (options.generic) j["generic"] = generic_json(model, r, *options.generic, motion_primaries, action_primaries);
+  if (options.second_order) j["second_order"] = second_order_json(*options.second_order, motion_primaries);
   j["rank_evidence"] = {{"motion", rank_json(r.circulation.solution.rank)}, {"action", rank_json(r.cutset_law.solution.rank)}};
   if (r.modular_check)
     j["rank_evidence"]["modular"] = {{"rank_motion", r.modular_check->rank},

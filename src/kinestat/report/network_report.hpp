@@ -7,6 +7,7 @@
 
 #include "kinestat/design/verdict.hpp"
 #include "kinestat/network/generic_network.hpp"
+#include "kinestat/network/second_order.hpp"
 #include "kinestat/network/model.hpp"
 #include "kinestat/network/network_result.hpp"
 #include "kinestat/network/sparse_network.hpp"
@@ -17,6 +18,7 @@ struct NetworkReportOptions {
   bool matrices = false;  ///< include B, Q, BM, QA, M^D, A^D, M^N, A^N
   const design::Verdict* verdict = nullptr;  ///< printed first when given (design::network_verdict)
   const network::GenericNetwork* generic = nullptr;  ///< the generic answer (network::generic_network), when computed
+  const network::NetworkSecondOrder* second_order = nullptr;  ///< network::classify_network_motions, when computed
 };
 
 /// Human-readable report: summary with rank evidence, class, primaries, magnitudes,

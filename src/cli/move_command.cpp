@@ -1,0 +1,248 @@
+// `kinestat move FILE`: finite motion (issue 13). A framework: follow kinematic mode N with the
+// predictor–corrector and print the path. A planar network: solve the positions of all bodies
+// group by group at given input values (or over a sweep of one input).
+
+#include <fmt/format.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <memory>
+#include <optional>
+
+#include "cli/commands.hpp"
+#include "cli/option_checks.hpp"
+#include "kinestat/framework/finite_motion.hpp"
+#include "kinestat/framework/framework_analysis.hpp"
+#include "kinestat/framework/generic_framework.hpp"
+#include "kinestat/io/framework_reader.hpp"
+#include "kinestat/io/network_reader.hpp"
+#include "kinestat/io/network_structure.hpp"
+#include "kinestat/kinematics/position_solver.hpp"
+#include "kinestat/report/json_text.hpp"
+#include "kinestat/report/move_report.hpp"
+#include "kinestat/structure/decomposition.hpp"
+
+namespace kinestat::cli {
+
+namespace {
+
+struct MoveOptions {
+  CommonOptions common;
+  long long mode = 0;
+  double amplitude = 0.1;
+  long long steps = 20;
+  std::vector<std::string> inputs;  ///< NAME=VALUE
+  std::string sweep;                ///< NAME=FROM:TO:STEPS
+  CLI::Option* mode_option = nullptr;
+  CLI::Option* amplitude_option = nullptr;
+  CLI::Option* steps_option = nullptr;
+  CLI::Option* input_option = nullptr;
+  CLI::Option* sweep_option = nullptr;
+};
+
+// All of `text` as a finite double, or nothing.
+std::optional<double> finite_number(const std::string& text) {
+  if (text.empty() || std::isspace(static_cast<unsigned char>(text[0]))) return std::nullopt;
+  char* end = nullptr;
+  errno = 0;
+  const double value = std::strtod(text.c_str(), &end);
+  if (end != text.c_str() + text.size() || !std::isfinite(value) || errno == ERANGE) return std::nullopt;
+  return value;
+}
+
+struct NamedValue {
+  std::string name;
+  double value = 0.0;
+};
+struct Sweep {
+  std::string name;
+  double from = 0.0, to = 0.0;
+  long long steps = 0;
+};
+
+std::optional<NamedValue> parse_input(const std::string& text) {
+  const auto eq = text.rfind('=');
+  if (eq == std::string::npos || eq == 0) return std::nullopt;
+  const auto value = finite_number(text.substr(eq + 1));
+  if (!value) return std::nullopt;
+  return NamedValue{text.substr(0, eq), *value};
+}
+
+std::optional<Sweep> parse_sweep(const std::string& text) {
+  const auto eq = text.rfind('=');
+  if (eq == std::string::npos || eq == 0) return std::nullopt;
+  const std::string range = text.substr(eq + 1);
+  const auto c1 = range.find(':');
+  const auto c2 = c1 == std::string::npos ? c1 : range.find(':', c1 + 1);
+  if (c2 == std::string::npos) return std::nullopt;
+  const auto from = finite_number(range.substr(0, c1)), to = finite_number(range.substr(c1 + 1, c2 - c1 - 1));
+  const std::string count = range.substr(c2 + 1);
+  if (!from || !to || count.empty() || count.size() > 7) return std::nullopt;
+  for (char c : count)
+    if (!std::isdigit(static_cast<unsigned char>(c))) return std::nullopt;
+  const long long steps = std::stoll(count);
+  if (steps < 1) return std::nullopt;
+  return Sweep{text.substr(0, eq), *from, *to, steps};
+}
+
+CLI::Validator named_value_format() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        return parse_input(text) ? std::string{} : fmt::format("'{}' is not NAME=VALUE with a finite number VALUE (e.g. A=0.5)", text);
+      },
+      "NAME=VALUE");
+}
+
+CLI::Validator sweep_format() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        return parse_sweep(text) ? std::string{}
+                                 : fmt::format("'{}' is not NAME=FROM:TO:STEPS with finite FROM, TO and 1 <= STEPS <= 9999999 "
+                                               "(e.g. A=0:6.283185307179586:72)",
+                                               text);
+      },
+      "NAME=FROM:TO:STEPS");
+}
+
+std::vector<std::string> given(const std::vector<CLI::Option*>& options) {
+  std::vector<std::string> names;
+  for (const CLI::Option* option : options)
+    if (option != nullptr && option->count() > 0) names.push_back(option->get_name());
+  return names;
+}
+
+int move_framework(const MoveOptions& options, const framework::FrameworkModel& model, const std::string& path) {
+  reject_options(given({options.input_option, options.sweep_option}), "a framework", path);
+  if (options.mode_option->count() == 0)
+    throw io::InputError({path, 1, 1}, "a framework moves along one of its kinematic modes: give --mode N (modes as 'kinestat analyze' numbers them)");
+  for (const auto& element : model.elements) {
+    if (element.type != framework::ElementType::truss)
+      throw io::InputError({path, 1, 1}, fmt::format("element '{}' is not a truss: finite motion of frameworks with beams (or other "
+                                                     "non-bar elements) is not supported yet; 'kinestat move' traces bar frameworks",
+                                                     element.name));
+  }
+  framework::AnalysisOptions analysis_options;
+  analysis_options.tolerances = Tolerances::with_rank(options.common.tolerance);
+  framework::FrameworkResult analysis = framework::analyse_framework(model, analysis_options);
+  // The same basis of modes as `kinestat analyze` reports, so --mode N means the same mode.
+  if (const auto generic = framework::generic_framework(model, analysis))
+    analysis = framework::with_generic_basis(model, std::move(analysis), *generic, analysis_options);
+  if (!analysis.vectors || analysis.method != framework::RankMethod::dense_svd)
+    throw io::InputError({path, 1, 1}, "the framework is too large for the dense analysis that tracing needs");
+  const auto modes = static_cast<long long>(analysis.modes.size());
+  if (modes == 0) throw io::InputError({path, 1, 1}, "the framework has no kinematic mode: it cannot move (--mode has nothing to follow)");
+  if (options.mode < 1 || options.mode > modes)
+    throw io::InputError({path, 1, 1}, fmt::format("--mode {}: the framework has {} kinematic mode{}, numbered 1 to {}", options.mode, modes,
+                                                   modes == 1 ? "" : "s", modes));
+  report::FrameworkMove move;
+  move.mode = static_cast<std::size_t>(options.mode - 1);
+  move.amplitude_fraction = options.amplitude;
+  move.steps = static_cast<int>(options.steps);
+  framework::TraceOptions trace;
+  trace.amplitude_fraction = options.amplitude;
+  trace.steps = move.steps;
+  trace.tolerance = linalg::RankTolerance{analysis_options.tolerances.rank};
+  move.trace = framework::trace_motion(model, analysis, analysis.modes[move.mode].velocities, trace);
+  emit(options.common, options.common.json ? report::json_text(report::framework_move_json(model, analysis, move))
+                                           : report::framework_move_text(model, analysis, move));
+  return 0;
+}
+
+int move_network(const MoveOptions& options, io::LoadedNetwork loaded, const std::string& path) {
+  reject_options(given({options.mode_option, options.amplitude_option, options.steps_option}), "a network", path);
+  std::vector<NamedValue> inputs;
+  for (const std::string& text : options.inputs) inputs.push_back(*parse_input(text));
+  std::optional<Sweep> sweep;
+  if (!options.sweep.empty()) sweep = parse_sweep(options.sweep);
+  if (inputs.empty() && !sweep)
+    throw io::InputError({path, 1, 1}, "a mechanism is moved by its inputs: give --input NAME=VALUE (or --sweep NAME=FROM:TO:STEPS) for "
+                                       "each driving coupling");
+  std::vector<std::string> names;
+  for (const auto& input : inputs) names.push_back(input.name);
+  if (sweep) names.push_back(sweep->name);
+  const auto& couplings = loaded.model.couplings;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (std::none_of(couplings.begin(), couplings.end(), [&](const auto& c) { return c.name == names[i]; }))
+      throw io::InputError({path, 1, 1}, fmt::format("the input '{}' names no coupling of this model", names[i]));
+    for (std::size_t k = 0; k < i; ++k)
+      if (names[k] == names[i]) throw io::InputError({path, 1, 1}, fmt::format("the input '{}' is given twice", names[i]));
+  }
+  // The inputs of the command line are the drivers (they replace the file's `inputs:`).
+  loaded.model.inputs = names;
+  kinematics::PositionPlan plan;
+  try {
+    const structure::StructureModel structure = io::structure_of_network(loaded, path);
+    const structure::StructureResult decomposition = structure::analyse_structure(structure);
+    plan = kinematics::plan_positions(loaded.model, structure, decomposition);
+  } catch (const kinematics::PositionModelError& error) {
+    SourceLocation where{path, 1, 1};
+    const auto it = loaded.item_locations.find("couplings");
+    if (error.coupling() >= 0 && it != loaded.item_locations.end() && static_cast<std::size_t>(error.coupling()) < it->second.size())
+      where = it->second[static_cast<std::size_t>(error.coupling())];
+    throw io::InputError(where, error.what());
+  }
+  report::PositionSweep result;
+  const std::size_t count = sweep ? static_cast<std::size_t>(sweep->steps) + 1 : 1;
+  std::vector<kinematics::Pose> start;
+  for (std::size_t s = 0; s < count; ++s) {
+    std::vector<double> values;
+    for (const auto& input : inputs) values.push_back(input.value);
+    if (sweep) values.push_back(sweep->from + (sweep->to - sweep->from) * static_cast<double>(s) / static_cast<double>(sweep->steps));
+    kinematics::PositionResult r = kinematics::solve_positions(loaded.model, plan, values, start);
+    if (r.assembled) start = r.poses;  // Newton groups continue from the last configuration reached
+    result.values.push_back(std::move(values));
+    result.results.push_back(std::move(r));
+  }
+  result.plan = std::move(plan);
+  emit(options.common, options.common.json ? report::json_text(report::positions_json(loaded.model, result))
+                                           : report::positions_text(loaded.model, result));
+  return 0;
+}
+
+int run_move(const MoveOptions& options) {
+  const std::string& path = options.common.model_path;
+  if (input_format(path) == InputFormat::spacar) return move_framework(options, read_spacar_model(path), path);
+  if (input_format(path) != InputFormat::kinestat)
+    throw io::InputError({path, 1, 1}, "'kinestat move' reads kinestat model files (kind: framework or network)");
+  const io::YamlFile file = io::YamlFile::load(path);
+  const std::string kind = io::model_kind(file);
+  if (kind == "framework") return move_framework(options, io::read_framework_model(file), file.path());
+  if (kind == "network") return move_network(options, io::read_network_model(file), file.path());
+  throw io::InputError({file.path(), 1, 1}, "a model of kind 'structure' has no geometry to move; write the mechanism as a network "
+                                            "model (kind: network) with the points and axes of its couplings");
+}
+
+}  // namespace
+
+void register_move(CLI::App& app, Action& action) {
+  auto options = std::make_shared<MoveOptions>();
+  CLI::App* command = app.add_subcommand(
+      "move", "Finite motion: trace a framework's kinematic mode, or solve a planar mechanism's positions at given inputs");
+  command->add_option("model", options->common.model_path, "Model file (kind: framework or network)")->required();
+  command->add_flag("--json", options->common.json, "Machine-readable JSON instead of text");
+  command->add_option("-o,--output", options->common.output_path, "Write to this file instead of standard output");
+  command->add_option("--tolerance", options->common.tolerance,
+                      "Frameworks: relative rank tolerance (fraction of the largest singular value); default max(rows,cols)*eps")
+      ->check(positive_finite_number());
+  options->mode_option = command->add_option("--mode", options->mode, "Frameworks: the kinematic mode to follow (1-based, as 'analyze' lists them)")
+                             ->check(non_negative_whole_number());
+  options->amplitude_option =
+      command->add_option("--amplitude", options->amplitude,
+                          "Frameworks: arc length to follow, as a fraction of the characteristic length; default 0.1")
+          ->check(positive_finite_number());
+  options->steps_option = command->add_option("--steps", options->steps, "Frameworks: predictor-corrector steps; default 20")
+                              ->check(non_negative_whole_number() & CLI::Range(1LL, 100000LL));
+  options->input_option = command->add_option("--input", options->inputs,
+                                              "Networks: a driving coupling and its value relative to the file (rad or length), "
+                                              "NAME=VALUE; repeat for each input")
+                              ->check(named_value_format())
+                              ->expected(1)
+                              ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  options->sweep_option = command->add_option("--sweep", options->sweep,
+                                              "Networks: one driving coupling swept from FROM to TO in STEPS steps, NAME=FROM:TO:STEPS")
+                              ->check(sweep_format());
+  command->callback([options, &action] { action = [options] { return run_move(*options); }; });
+}
+
+}  // namespace kinestat::cli

@@ -1,0 +1,333 @@
+#include "kinestat/report/move_report.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <string>
+
+#include "kinestat/tolerances.hpp"
+
+namespace kinestat::report {
+
+namespace {
+
+// Ten significant digits (as every report), -0 printed as 0.
+double rounded(double value) {
+  if (!std::isfinite(value)) return value;
+  if (std::abs(value) < kPrintedZero) return 0.0;
+  const double r = std::stod(fmt::format("{:.10g}", value));
+  return r == 0.0 ? 0.0 : r;
+}
+// Residuals keep tiny values: three significant digits.
+double evidence(double value) {
+  if (!std::isfinite(value) || value == 0.0) return value;
+  return std::stod(fmt::format("{:.3g}", value));
+}
+std::string number(double value) { return fmt::format("{:.6g}", rounded(value)); }
+
+// Positions are printed relative to the model's size: entries below kPrintedZero × length are 0.
+double coordinate(double value, double length) { return std::abs(value) < kPrintedZero * length ? 0.0 : rounded(value); }
+
+}  // namespace
+
+// ---- Framework path --------------------------------------------------------------------------
+
+namespace {
+
+// Nodes whose position changes along the path by more than kCoincident × the length.
+std::vector<std::size_t> moving_nodes(const framework::FrameworkModel& model, const framework::FiniteTrace& trace, double length) {
+  std::vector<std::size_t> moving;
+  for (std::size_t k = 0; k < model.nodes.size(); ++k) {
+    double largest = 0.0;
+    for (const auto& p : trace.positions) largest = std::max(largest, (p.col(static_cast<Eigen::Index>(k)) - trace.positions.front().col(static_cast<Eigen::Index>(k))).norm());
+    if (largest > kCoincident * length) moving.push_back(k);
+  }
+  return moving;
+}
+
+const framework::ModeOrder* order_of(const framework::FrameworkResult& analysis, std::size_t mode) {
+  return mode < analysis.orders.size() ? &analysis.orders[mode] : nullptr;
+}
+
+std::string outcome_text(const FrameworkMove& move, double length) {
+  const auto& t = move.trace;
+  if (t.positions.empty()) return "not traced";
+  if (t.closed)
+    return fmt::format("traced to arc length {} ({} of the characteristic length {}) with closure residual at most {} (relative)",
+                       number(t.amplitude), number(t.amplitude / length), number(length), fmt::format("{:.3g}", evidence(t.max_residual)));
+  return fmt::format("the corrector lost closure at step {} of {} (residual {:.3g}, relative): no finite motion along this mode "
+                     "beyond arc length {}",
+                     t.failed_step, move.steps, evidence(t.max_residual), number(t.amplitude));
+}
+
+}  // namespace
+
+nlohmann::ordered_json framework_move_json(const framework::FrameworkModel& model, const framework::FrameworkResult& analysis,
+                                           const FrameworkMove& move) {
+  nlohmann::ordered_json j;
+  j["kind"] = "framework";
+  j["command"] = "move";
+  if (!model.name.empty()) j["name"] = model.name;
+  j["mode"] = move.mode + 1;
+  j["modes"] = analysis.modes.size();
+  if (const auto* o = order_of(analysis, move.mode)) {
+    j["order"] = framework::motion_order_name(o->order);
+  } else {
+    j["order"] = nullptr;
+  }
+  j["characteristic_length"] = rounded(analysis.length);
+  j["amplitude_fraction"] = rounded(move.amplitude_fraction);
+  j["steps"] = move.steps;
+  const auto& t = move.trace;
+  j["closed"] = t.closed;
+  if (t.closed) j["failed_step"] = nullptr;
+  else j["failed_step"] = t.failed_step;
+  j["amplitude"] = rounded(t.amplitude);
+  j["max_residual"] = evidence(t.max_residual);
+  j["rank_drops"] = t.rank_drops;
+  const int dimension = model.dimension == 2 ? 2 : 3;
+  j["path"] = nlohmann::ordered_json::array();
+  for (std::size_t k = 0; k < t.positions.size(); ++k) {
+    nlohmann::ordered_json point;
+    const double arc = k < t.arc_length_along_path.size() ? t.arc_length_along_path[k] : 0.0;
+    point["step"] = k;
+    point["parameter"] = rounded(arc / analysis.length);
+    point["arc_length"] = rounded(arc);
+    point["residual"] = evidence(k < t.residual_along_path.size() ? t.residual_along_path[k] : 0.0);
+    point["rank"] = k < t.rank_along_path.size() ? t.rank_along_path[k] : 0;
+    nlohmann::ordered_json positions;
+    for (std::size_t n = 0; n < model.nodes.size(); ++n) {
+      nlohmann::ordered_json xyz = nlohmann::ordered_json::array();
+      for (int c = 0; c < dimension; ++c) xyz.push_back(coordinate(t.positions[k](c, static_cast<Eigen::Index>(n)), analysis.length));
+      positions[model.nodes[n].name] = std::move(xyz);
+    }
+    point["positions"] = std::move(positions);
+    j["path"].push_back(std::move(point));
+  }
+  return j;
+}
+
+std::string framework_move_text(const framework::FrameworkModel& model, const framework::FrameworkResult& analysis,
+                                const FrameworkMove& move) {
+  std::string out = fmt::format("Finite motion of {}, mode {} of {}\n", model.name.empty() ? "the framework" : model.name, move.mode + 1,
+                                analysis.modes.size());
+  if (const auto* o = order_of(analysis, move.mode)) {
+    out += fmt::format("  order: {}", framework::motion_order_name(o->order));
+    if (o->order == framework::MotionOrder::infinitesimal)
+      out += " (a self-stress blocks it at second order: the mode is a first-order motion only)";
+    out += "\n";
+  }
+  out += "  " + outcome_text(move, analysis.length) + "\n";
+  const auto& t = move.trace;
+  if (!t.rank_drops.empty()) {
+    out += "  the rank of D(c) drops at step";
+    for (std::size_t k : t.rank_drops) out += fmt::format(" {}", k);
+    out += " (a singular configuration: branches may meet there)\n";
+  } else if (!t.positions.empty()) {
+    out += "  the rank of D(c) stays constant along the path\n";
+  }
+  const std::vector<std::size_t> moving = moving_nodes(model, t, analysis.length);
+  const int dimension = model.dimension == 2 ? 2 : 3;
+  out += "\n  step  parameter   residual   rank  positions of the nodes that move\n";
+  for (std::size_t k = 0; k < t.positions.size(); ++k) {
+    const double arc = k < t.arc_length_along_path.size() ? t.arc_length_along_path[k] : 0.0;
+    out += fmt::format("  {:>4}  {:<10}  {:<9}  {:>4} ", k, number(arc / analysis.length),
+                       fmt::format("{:.3g}", evidence(k < t.residual_along_path.size() ? t.residual_along_path[k] : 0.0)),
+                       k < t.rank_along_path.size() ? t.rank_along_path[k] : 0);
+    for (std::size_t n : moving) {
+      out += fmt::format(" {} (", model.nodes[n].name);
+      for (int c = 0; c < dimension; ++c)
+        out += (c ? ", " : "") + number(coordinate(t.positions[k](c, static_cast<Eigen::Index>(n)), analysis.length));
+      out += ")";
+    }
+    out += "\n";
+  }
+  return out;
+}
+
+// ---- Positions of a planar mechanism ---------------------------------------------------------
+
+namespace {
+
+std::vector<std::string> names_of(const network::Model& model, const std::vector<int>& indices, bool bodies) {
+  std::vector<std::string> names;
+  for (int i : indices) names.push_back(bodies ? model.bodies[static_cast<std::size_t>(i)] : model.couplings[static_cast<std::size_t>(i)].name);
+  return names;
+}
+
+// Bodies placed at a step: the frame and the bodies of assembled (or singular) groups.
+std::vector<bool> placed_bodies(const network::Model& model, const PositionSweep& sweep, const kinematics::PositionResult& r) {
+  std::vector<bool> placed(model.bodies.size(), false);
+  placed[static_cast<std::size_t>(sweep.plan.frame)] = true;
+  for (std::size_t g = 0; g < r.groups.size(); ++g) {
+    const auto s = r.groups[g].status;
+    if (s == kinematics::AssemblyStatus::assembled || s == kinematics::AssemblyStatus::singular)
+      for (int b : sweep.plan.groups[g].bodies) placed[static_cast<std::size_t>(b)] = true;
+  }
+  return placed;
+}
+
+std::string group_label(const network::Model& model, const kinematics::GroupPlan& g) {
+  return fmt::format("group {} {{{}}} ({})", g.number, fmt::join(names_of(model, g.bodies, true), ", "), g.type);
+}
+
+std::string inputs_text(const network::Model& model, const PositionSweep& sweep, std::size_t step) {
+  std::vector<std::string> parts;
+  for (std::size_t i = 0; i < sweep.plan.drivers.size(); ++i)
+    parts.push_back(fmt::format("{} = {}", model.couplings[static_cast<std::size_t>(sweep.plan.drivers[i])].name, number(sweep.values[step][i])));
+  return fmt::format("{}", fmt::join(parts, ", "));
+}
+
+}  // namespace
+
+nlohmann::ordered_json positions_json(const network::Model& model, const PositionSweep& sweep) {
+  using kinematics::AssemblyStatus;
+  const double length = sweep.plan.length;
+  nlohmann::ordered_json j;
+  j["kind"] = "network";
+  j["command"] = "move";
+  if (!model.name.empty()) j["name"] = model.name;
+  j["characteristic_length"] = rounded(length);
+  j["inputs"] = names_of(model, sweep.plan.drivers, false);
+  j["groups"] = nlohmann::ordered_json::array();
+  for (const auto& g : sweep.plan.groups) {
+    nlohmann::ordered_json group;
+    group["number"] = g.number;
+    group["bodies"] = names_of(model, g.bodies, true);
+    group["couplings"] = names_of(model, g.couplings, false);
+    group["type"] = g.type;
+    group["method"] = kinematics::group_method_name(g.method);
+    group["branch"] = g.branch;
+    j["groups"].push_back(std::move(group));
+  }
+  j["steps"] = nlohmann::ordered_json::array();
+  j["not_assembled"] = nlohmann::ordered_json::array();
+  for (std::size_t s = 0; s < sweep.results.size(); ++s) {
+    const kinematics::PositionResult& r = sweep.results[s];
+    nlohmann::ordered_json step;
+    nlohmann::ordered_json inputs;
+    for (std::size_t i = 0; i < sweep.plan.drivers.size(); ++i)
+      inputs[model.couplings[static_cast<std::size_t>(sweep.plan.drivers[i])].name] = rounded(sweep.values[s][i]);
+    step["inputs"] = inputs;
+    step["assembled"] = r.assembled;
+    if (r.failed_group) {
+      const auto& g = sweep.plan.groups[*r.failed_group];
+      step["failed_group"] = g.number;
+      step["reason"] = r.groups[*r.failed_group].reason;
+      nlohmann::ordered_json failure;
+      failure["step"] = s;
+      failure["inputs"] = inputs;
+      failure["group"] = g.number;
+      failure["bodies"] = names_of(model, g.bodies, true);
+      failure["reason"] = r.groups[*r.failed_group].reason;
+      j["not_assembled"].push_back(std::move(failure));
+    } else {
+      step["failed_group"] = nullptr;
+    }
+    if (r.assembled) step["max_residual"] = evidence(r.max_residual);
+    else step["max_residual"] = nullptr;
+    step["groups"] = nlohmann::ordered_json::array();
+    for (std::size_t g = 0; g < r.groups.size(); ++g) {
+      nlohmann::ordered_json group;
+      group["number"] = sweep.plan.groups[g].number;
+      group["status"] = kinematics::assembly_status_name(r.groups[g].status);
+      if (sweep.plan.groups[g].method == kinematics::GroupMethod::newton) {
+        group["iterations"] = r.groups[g].iterations;
+        group["residual"] = evidence(r.groups[g].discriminant);
+      } else if (sweep.plan.groups[g].method == kinematics::GroupMethod::closed_form) {
+        group["discriminant"] = evidence(r.groups[g].discriminant);
+      }
+      if (!r.groups[g].reason.empty()) group["reason"] = r.groups[g].reason;
+      step["groups"].push_back(std::move(group));
+    }
+    const std::vector<bool> placed = placed_bodies(model, sweep, r);
+    nlohmann::ordered_json bodies;
+    for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+      if (!placed[b]) {
+        bodies[model.bodies[b]] = nullptr;
+        continue;
+      }
+      const auto& p = r.poses[b];
+      bodies[model.bodies[b]] = {{"x", coordinate(p.x, length)}, {"y", coordinate(p.y, length)}, {"angle", rounded(p.angle)}};
+    }
+    step["bodies"] = std::move(bodies);
+    nlohmann::ordered_json couplings;
+    for (std::size_t c = 0; c < model.couplings.size(); ++c) {
+      const auto& coupling = model.couplings[c];
+      if (!placed[static_cast<std::size_t>(coupling.from)] || !placed[static_cast<std::size_t>(coupling.to)]) {
+        couplings[coupling.name] = nullptr;
+        continue;
+      }
+      const auto point = kinematics::coupling_point(model, r.poses, static_cast<int>(c));
+      const double value = kinematics::coupling_value(model, r.poses, static_cast<int>(c));
+      couplings[coupling.name] = {{"point", {coordinate(point[0], length), coordinate(point[1], length)}},
+                                  {"value", coupling.type == screw::CouplingType::revolute ? rounded(value) : coordinate(value, length)}};
+    }
+    step["couplings"] = std::move(couplings);
+    j["steps"].push_back(std::move(step));
+  }
+  return j;
+}
+
+std::string positions_text(const network::Model& model, const PositionSweep& sweep) {
+  using kinematics::AssemblyStatus;
+  const double length = sweep.plan.length;
+  std::string out = fmt::format("Positions of {}, solved group by group\n", model.name.empty() ? "the mechanism" : model.name);
+  out += fmt::format("  inputs: {} (revolute: rad, counter-clockwise; prismatic: length units; relative to the file's configuration)\n",
+                     fmt::join(names_of(model, sweep.plan.drivers, false), ", "));
+  out += "\nGroups in order of formation:\n";
+  for (const auto& g : sweep.plan.groups) {
+    out += fmt::format("  {}: {}", group_label(model, g),
+                       g.method == kinematics::GroupMethod::newton ? "Newton's method"
+                       : g.method == kinematics::GroupMethod::driving_link ? "closed form (driving link)"
+                                                                           : "closed form");
+    out += fmt::format("; branch: {}\n", g.branch);
+  }
+  std::size_t failures = 0;
+  for (const auto& r : sweep.results) failures += r.failed_group ? 1 : 0;
+  out += "\nPositions (revolute couplings: point x, y; prismatic couplings: slide):\n";
+  for (std::size_t s = 0; s < sweep.results.size(); ++s) {
+    const auto& r = sweep.results[s];
+    out += "  " + inputs_text(model, sweep, s) + ": ";
+    if (r.failed_group) {
+      const auto& g = sweep.plan.groups[*r.failed_group];
+      out += fmt::format("cannot be assembled: {}: {}\n", group_label(model, g), r.groups[*r.failed_group].reason);
+      continue;
+    }
+    std::vector<std::string> singular;
+    for (std::size_t g = 0; g < r.groups.size(); ++g)
+      if (r.groups[g].status == AssemblyStatus::singular)
+        singular.push_back(fmt::format("{} is at a singular position ({})", group_label(model, sweep.plan.groups[g]), r.groups[g].reason));
+    out += fmt::format("residual {:.3g};", evidence(r.max_residual));
+    for (std::size_t c = 0; c < model.couplings.size(); ++c) {
+      const auto& coupling = model.couplings[c];
+      const auto point = kinematics::coupling_point(model, r.poses, static_cast<int>(c));
+      if (coupling.type == screw::CouplingType::revolute)
+        out += fmt::format(" {} ({}, {})", coupling.name, number(coordinate(point[0], length)), number(coordinate(point[1], length)));
+      else
+        out += fmt::format(" {} slide {}", coupling.name, number(coordinate(kinematics::coupling_value(model, r.poses, static_cast<int>(c)), length)));
+    }
+    out += "\n";
+    for (const auto& text : singular) out += "    " + text + "\n";
+  }
+  if (failures > 0) {
+    out += fmt::format("\nNot assembled at {} of {} input set{}; the first group that cannot be placed:\n", failures, sweep.results.size(),
+                       sweep.results.size() == 1 ? "" : "s");
+    // Runs of consecutive failing steps, each with its first and last input values.
+    for (std::size_t s = 0; s < sweep.results.size();) {
+      if (!sweep.results[s].failed_group) {
+        ++s;
+        continue;
+      }
+      std::size_t e = s;
+      while (e + 1 < sweep.results.size() && sweep.results[e + 1].failed_group == sweep.results[s].failed_group) ++e;
+      const auto& g = sweep.plan.groups[*sweep.results[s].failed_group];
+      if (e == s) out += fmt::format("  {}: {}\n", inputs_text(model, sweep, s), group_label(model, g));
+      else out += fmt::format("  from {} to {}: {}\n", inputs_text(model, sweep, s), inputs_text(model, sweep, e), group_label(model, g));
+      s = e + 1;
+    }
+  }
+  return out;
+}
+
+}  // namespace kinestat::report
