@@ -36,6 +36,10 @@
       verdictBox.appendChild(text('p', title + ': ' + list.slice(0, 8).map((p) => p.name + ' (' + Math.round(100 * p.participation) + '%)').join(', ') +
         (list.length > 8 ? ', ...' : ''), 'note'));
     };
+    // Every rank decision with its status (exact, certain, close, unproven) and its distance to
+    // another rank, as the text report prints them.
+    S.summary.filter(([key]) => key.startsWith('rank ')).forEach(([key, value]) =>
+      verdictBox.appendChild(text('p', key + ': ' + value, 'note')));
     // The generic answer: what the topology gives and what only this geometry adds.
     (v.special_geometry || []).forEach((sentence) => verdictBox.appendChild(text('p', 'Generic: ' + sentence, 'note')));
     where('Extra motion in', v.motion_participants);

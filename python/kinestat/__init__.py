@@ -157,7 +157,9 @@ class NetworkResult(_Result):
         return self._analysed.primary_actions()
 
     def rank_evidence(self):
-        """The evidence of the two rank decisions: {"motion": {...}, "action": {...}}."""
+        """The evidence of the two rank decisions: {"motion": {...}, "action": {...}}, each with its
+        ``status`` ("exact", "certain", "close") and ``distance`` (smallest kept / largest singular
+        value, None when the rank is 0)."""
         return {"motion": self._analysed.motion_rank(), "action": self._analysed.action_rank()}
 
     def structural_groups(self):
@@ -203,7 +205,8 @@ class FrameworkResult(_Result):
         return self._analysed.stress_states()
 
     def rank_evidence(self):
-        """The rank decision: rank, threshold, smallest kept and largest dropped singular values."""
+        """The rank decision: rank, threshold, smallest kept and largest dropped singular values,
+        ``status`` ("certain", "close"; "unproven" for a sparse QR) and ``distance``."""
         return self._analysed.rank_evidence()
 
     @property

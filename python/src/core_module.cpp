@@ -198,6 +198,11 @@ py::dict rank_evidence(const linalg::RankDecision& d) {
   evidence["largest_dropped"] = d.largest_dropped;
   evidence["rounding_level"] = d.rounding_level;
   evidence["input_rounding"] = d.input_rounding;
+  // Status and distance to another rank (docs/architecture.md, "Rank decisions").
+  evidence["status"] = linalg::rank_status_name(d.status());
+  const auto distance = d.distance();
+  evidence["distance"] = distance ? py::object(py::float_(*distance)) : py::object(py::none());
+  evidence["error_bound"] = d.error_bound;
   return evidence;
 }
 

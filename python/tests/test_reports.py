@@ -42,6 +42,10 @@ def test_seed_000_davies_two_circuit(examples):
     # Every basis motion satisfies the circulation law, every action the cutset law.
     assert abs(result.unit_motion_matrix() @ flexes).max() < 1e-12
     assert abs(result.unit_action_matrix() @ stresses).max() < 1e-12
+    # Short decimals: exact ranks, with their distance to another rank from a floating-point SVD.
+    evidence = result.rank_evidence()
+    assert evidence["motion"]["status"] == "exact" and evidence["action"]["status"] == "exact"
+    assert 0 < evidence["motion"]["distance"] <= 1
 
 
 def test_seed_002_braced_square_has_one_self_stress(examples):
@@ -60,6 +64,11 @@ def test_seed_002_braced_square_has_one_self_stress(examples):
     assert abs(abs(sides) - abs(sides[0])).max() < 1e-12
     assert abs(abs(diagonals[0]) / abs(sides[0]) - 2 ** 0.5) < 1e-12
     assert len(result.singular_values()) == 5
+    # Floating point, well conditioned: certain, sigma_min / sigma_max = 0.29729 (numpy SVD of the
+    # six bar directions, tests/framework/rank_status_test.cpp).
+    evidence = result.rank_evidence()
+    assert evidence["status"] == "certain"
+    assert abs(evidence["distance"] - 0.29729) < 1e-4
     # The verdict leads the report: Maxwell's count, not exactly constrained.
     assert result.verdict["extra_motions"] == 0 and result.verdict["redundant_constraints"] == 1
 

@@ -70,6 +70,7 @@
 #include "kinestat/report/markup_escape.hpp"
 #include "kinestat/report/move_report.hpp"
 #include "kinestat/report/network_report.hpp"
+#include "kinestat/report/rank_status_text.hpp"
 #include "kinestat/report/scene.hpp"
 #include "kinestat/report/structure_report.hpp"
 #include "kinestat/report/svg_writer.hpp"

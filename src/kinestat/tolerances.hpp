@@ -18,12 +18,17 @@ inline constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
 
 // --- Rank decisions --------------------------------------------------------------------------
 
-/// A rank decision whose smallest kept singular value is less than this many times the largest
-/// dropped one is reported as close: the design is near one with another answer.
-inline constexpr double kCloseRankGap = 1e3;
-/// A dropped singular value this many times the rounding level max(m, n)·ε·σ_max is not
-/// rounding noise: it was dropped by a loose tolerance, and the decision is reported as close.
-inline constexpr double kAboveRounding = 1e4;
+/// A floating-point rank decision is certain when its smallest kept singular value is at least
+/// this many times the proven error bound of the computed singular values
+/// (linalg::singular_value_error_bound) and every dropped value is within that bound; otherwise
+/// it is close. Two decades of margin over a bound whose constant is taken as 1. A sparse QR
+/// decision whose smallest kept |R_ii| is below this many times its threshold is close.
+inline constexpr double kCertainMargin = 100.0;
+/// A rank decision whose smallest kept singular value is below this fraction of the largest is
+/// near a rank change: a relative change of the design this small gives one more motion and one
+/// more self-stress, and the verdict says so ("exactly constrained, but 1e-09 from a mechanism").
+/// A micrometre in a metre: below what manufacture holds.
+inline constexpr double kNearRankChange = 1e-6;
 /// The rank threshold rises with the rounding of the input itself: coordinates written at full
 /// precision carry an error of ε × their magnitude, so a model far from the origin (a 10 mm
 /// flexure 1 m from the machine origin) is special only to within ε × offset / size, and the

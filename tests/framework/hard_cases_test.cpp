@@ -54,7 +54,9 @@ TEST(FrameworkHardCases, NearlyCollinearBarsAreReportedAsClose) {
   const FrameworkResult a = analyse_framework(two_bars(1e-9, 1.0));
   EXPECT_EQ(a.rank, 2);  // the default tolerance (2 eps) keeps it: exactly constrained ...
   EXPECT_TRUE(a.exactly_constrained());
-  EXPECT_TRUE(a.decision.close());  // ... but says how close it is
+  // ... with certainty (tan 1e-9 is far above the error bound, ~10 ε), and says how near it is.
+  EXPECT_EQ(a.decision.status(), linalg::RankStatus::certain);
+  EXPECT_NEAR(*a.decision.distance(), std::tan(1e-9), 1e-11);
   EXPECT_NEAR(a.relative_smallest_singular_value(), std::tan(1e-9), 1e-11);
 
   AnalysisOptions loose;

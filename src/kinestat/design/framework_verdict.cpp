@@ -38,6 +38,7 @@ Verdict framework_verdict(const FrameworkModel& model, const FrameworkResult& a,
   v.intended_motions = static_cast<int>(a.count.declared_dof());
   v.intended_basis = "declared independent coordinates and deformations ('independent:')";
   v.summary = summary_sentence(v.extra_motions, v.redundant_constraints, v.intended_motions);
+  note_near_rank_change(v, a.decision.distance(), a.mechanisms > 0);
 
   for (std::size_t k = 0; k < a.modes.size(); ++k) {
     VerdictState state{"extra motion", fmt::format("kinematically indeterminate mode {}", k + 1), {}};

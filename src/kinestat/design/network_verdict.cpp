@@ -105,7 +105,12 @@ int idle_count(const std::vector<IdleMotion>& idle) {
 class BasisCache {
  public:
   BasisCache(const Model& model, bool exact)
-      : space_(model.space), frame_(exact ? network::AnalysisFrame{} : network::AnalysisFrame::of(model)) {}
+      : space_(model.space), frame_(exact ? network::AnalysisFrame{} : network::AnalysisFrame::of(model)),
+        input_rounding_(exact ? 0.0 : frame_.input_rounding(model)) {}
+
+  /// Rounding level of the original model's coordinates in the cache's frame (0 when exact):
+  /// raises the default rank threshold of the screen as in the full analysis.
+  double input_rounding() const { return input_rounding_; }
 
   const screw::CouplingBasis& of(const Coupling& c) {
     std::string key = key_of(c);
@@ -136,6 +141,7 @@ class BasisCache {
 
   screw::ScrewSpace space_;
   network::AnalysisFrame frame_;
+  double input_rounding_ = 0.0;
   std::map<std::string, screw::CouplingBasis> bases_;
 };
 
@@ -151,7 +157,8 @@ Standing screen(const Model& model, BasisCache& cache, bool exact, const Toleran
     edges.push_back({c.from, c.to});
     bases.push_back(&cache.of(c));
   }
-  const auto count = network::count_mobility(static_cast<int>(model.bodies.size()), edges, bases, d, exact, tolerances);
+  const auto count = network::count_mobility(static_cast<int>(model.bodies.size()), edges, bases, d, exact, tolerances,
+                                             cache.input_rounding());
   const double equations = d * count.l, unknowns = count.F;
   work += equations * unknowns * std::min(equations, unknowns);
   Standing s{count.FN, count.CN, 0};
@@ -178,7 +185,7 @@ Standing screen(const Model& model, BasisCache& cache, bool exact, const Toleran
       Eigen::MatrixXd a(rows, d);
       for (Eigen::Index r = 0; r < rows; ++r)
         for (int k = 0; k < d; ++k) a(r, k) = (*actions[static_cast<std::size_t>(r)])[static_cast<std::size_t>(k)].get_d();
-      s.idle += d - static_cast<int>(linalg::numerical_rank(a, {tolerances.rank}).rank);
+      s.idle += d - static_cast<int>(linalg::numerical_rank(a, {tolerances.rank, cache.input_rounding()}).rank);
     }
   }
   return s;
@@ -471,6 +478,11 @@ Search search_changes(const Model& model, const network::AnalysisOptions& option
 std::vector<IdleMotion> idle_motions(const Model& model, bool exact, const Tolerances& tolerances) {
   const int d = model.space.dimension();
   const Frame frame = frame_of(model);
+  // The rounding of the coordinates as written raises the default threshold (as in analyse_network).
+  double largest_coordinate = 0.0;
+  for (const auto& c : model.couplings)
+    for (const auto& x : c.geometry.point) largest_coordinate = std::max(largest_coordinate, std::abs(x.get_d()));
+  const double input_rounding = linalg::input_rounding_level(largest_coordinate, frame.length);
   std::vector<IdleMotion> list;
   const int ground = model.ground.value_or(0);
   for (int b = 0; b < static_cast<int>(model.bodies.size()); ++b) {
@@ -509,7 +521,7 @@ std::vector<IdleMotion> idle_motions(const Model& model, bool exact, const Toler
         w.head<3>() = (w.head<3>() - frame.centre.cross(Eigen::Vector3d(w.tail<3>()))) / frame.length;
         for (int k = 0; k < d; ++k) a(static_cast<Eigen::Index>(r), k) = w(model.space.components[static_cast<std::size_t>(k)]);
       }
-      const auto solution = linalg::solve_homogeneous(a, {tolerances.rank}, tolerances.free_variable);
+      const auto solution = linalg::solve_homogeneous(a, {tolerances.rank, input_rounding}, tolerances.free_variable);
       idle.count = static_cast<int>(solution.nullity());
       for (Eigen::Index j = 0; j < solution.nullity(); ++j) {
         Screw t = Screw::Zero();
@@ -540,6 +552,7 @@ Verdict network_verdict(const Model& model, const network::NetworkResult& r, con
   v.redundant_constraints = r.CN + start.lost;  // inputs beyond the motions fight each other
   v.exactly_constrained = v.extra_motions == 0 && v.redundant_constraints == 0;
   v.summary = summary_sentence(v.extra_motions, v.redundant_constraints, intended);
+  note_near_rank_change(v, r.circulation.solution.rank.distance(), r.FN > 0);
 
   std::vector<std::string> names;
   for (const auto& c : model.couplings) names.push_back(c.name);

@@ -41,7 +41,7 @@ bool may_spin(const SparseNetworkResult& r, int b, const Tolerances& tolerances)
   for (Index k = 0; k < d; ++k)
     for (Eigen::SparseMatrix<double>::InnerIterator it(r.K, first + k); it; ++it) block(local[it.row()], k) = it.value();
   const Eigen::VectorXd sigma = Eigen::JacobiSVD<Eigen::MatrixXd>(block).singularValues();
-  const double relative = tolerances.rank.value_or(linalg::default_relative_tolerance(block.rows(), d));
+  const double relative = tolerances.rank.value_or(linalg::default_relative_tolerance(block.rows(), d, r.rank.input_rounding));
   return !(sigma(d - 1) > std::max(kIdleSpinScreen, kIdleSpinScreenMargin * relative) * sigma(0));
 }
 

@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "kinestat/tolerances.hpp"
+
 namespace kinestat::design {
 
 namespace {
@@ -27,6 +29,14 @@ std::string summary_sentence(int extra_motions, int redundant_constraints, int i
                                                     : counted(intended_motions, "intended motion", "intended motions");
   if (extra_motions == 0 && redundant_constraints == 0) return fmt::format("Exactly constrained: {}.", motions);
   return fmt::format("Not exactly constrained: {} ({}).", constraint_words(extra_motions, redundant_constraints), motions);
+}
+
+void note_near_rank_change(Verdict& verdict, std::optional<double> distance, bool moves) {
+  if (!distance || !(*distance < kNearRankChange)) return;
+  verdict.near_rank_change = *distance;
+  std::string& s = verdict.summary;
+  if (!s.empty() && s.back() == '.') s.pop_back();
+  s += fmt::format(", but {:.3g} from {}.", *distance, moves ? "one more motion and one more self-stress" : "a mechanism");
 }
 
 void rank_participants(std::vector<Participant>& list) {

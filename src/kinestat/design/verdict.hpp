@@ -56,6 +56,10 @@ struct Verdict {
   /// geometry of couplings A, B, C, D: generic FN = 0" (filled by the caller from
   /// report::network_generic_sentences / framework_generic_sentences; empty when not computed).
   std::vector<std::string> generic;
+  /// The distance of the main rank decision (smallest kept / largest singular value) when it is
+  /// below kNearRankChange: the design is that near one with one more motion and one more
+  /// self-stress, and `summary` says so. Empty otherwise.
+  std::optional<double> near_rank_change;
 };
 
 /// Sorts participants by decreasing participation; equal shares keep their order.
@@ -70,5 +74,11 @@ std::string constraint_words(int extra_motions, int redundant_constraints);
 
 /// The one-sentence summary of a verdict from its counts and the intended motions.
 std::string summary_sentence(int extra_motions, int redundant_constraints, int intended_motions);
+
+/// When `distance` (RankDecision::distance of the main rank decision) is below kNearRankChange:
+/// sets `verdict.near_rank_change` and ends the summary with ", but 1.2e-09 from a mechanism"
+/// (`moves`: false, the design has no motion) or ", but 1.2e-09 from one more motion and one more
+/// self-stress".
+void note_near_rank_change(Verdict& verdict, std::optional<double> distance, bool moves);
 
 }  // namespace kinestat::design

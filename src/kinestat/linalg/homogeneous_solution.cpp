@@ -212,6 +212,8 @@ HomogeneousSolution solve_homogeneous(const RationalMatrix& a) {
   HomogeneousSolution solution;
   solution.rank.exact = true;
   solution.rank.rank = static_cast<Eigen::Index>(rank);
+  solution.rank.rows = rows;
+  solution.rank.cols = cols;
   for (Eigen::Index c = 0; c < cols; ++c)
     if (!is_pivot[static_cast<std::size_t>(c)]) solution.free_variables.push_back(c);
 

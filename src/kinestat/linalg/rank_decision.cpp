@@ -16,26 +16,67 @@ double input_rounding_level(double largest_coordinate, double size) {
   return kEpsilon * std::max(1.0, largest_coordinate / size);
 }
 
+const char* rank_status_name(RankStatus status) {
+  switch (status) {
+    case RankStatus::exact: return "exact";
+    case RankStatus::certain: return "certain";
+    case RankStatus::close: return "close";
+    case RankStatus::unproven: return "unproven";
+  }
+  return "close";
+}
+
+double singular_value_error_bound(Eigen::Index rows, Eigen::Index cols, double input_rounding, double largest) {
+  const double m = static_cast<double>(std::max<Eigen::Index>(rows, 1)), n = static_cast<double>(std::max<Eigen::Index>(cols, 1));
+  return (m * n * kEpsilon + kInputRoundingFactor * std::max(m, n) * input_rounding) * largest;
+}
+
 double RankDecision::gap() const {
   if (exact || largest_dropped == 0.0) return std::numeric_limits<double>::infinity();
   return smallest_kept / largest_dropped;
 }
 
-bool RankDecision::close() const {
-  if (exact || largest <= 0.0) return false;
-  if (gap() < kCloseRankGap) return true;
-  const double nearly_singular = std::sqrt(std::numeric_limits<double>::epsilon()) * largest;
-  return largest_dropped > kAboveRounding * rounding_level || (rank > 0 && smallest_kept < nearly_singular);
+RankStatus RankDecision::status() const {
+  if (exact) return RankStatus::exact;
+  if (sparse) return rank > 0 && smallest_kept < kCertainMargin * threshold ? RankStatus::close : RankStatus::unproven;
+  // A zero matrix has zero computed singular values: nothing to decide.
+  if (largest <= 0.0) return RankStatus::certain;
+  const bool kept_clear = rank == 0 || smallest_kept >= kCertainMargin * error_bound;
+  const bool dropped_noise = largest_dropped <= error_bound;
+  return kept_clear && dropped_noise ? RankStatus::certain : RankStatus::close;
+}
+
+bool RankDecision::close() const { return status() == RankStatus::close; }
+
+std::optional<double> RankDecision::distance() const {
+  if (rank == 0 || !(largest > 0.0)) return std::nullopt;
+  return smallest_kept / largest;
+}
+
+std::optional<double> RankDecision::relative_dropped() const {
+  if (!(largest > 0.0)) return std::nullopt;
+  return largest_dropped / largest;
+}
+
+void add_floating_evidence(RankDecision& decision, const Eigen::VectorXd& singular_values) {
+  const Eigen::Index r = decision.rank;
+  if (singular_values.size() == 0 || r > singular_values.size()) return;
+  decision.largest = singular_values(0);
+  decision.smallest_kept = r > 0 ? singular_values(r - 1) : 0.0;
+  decision.largest_dropped = r < singular_values.size() ? singular_values(r) : 0.0;
 }
 
 RankDecision decide_rank(const Eigen::VectorXd& singular_values, Eigen::Index rows, Eigen::Index cols,
                          const RankTolerance& tolerance) {
   RankDecision decision;
+  decision.rows = rows;
+  decision.cols = cols;
   decision.largest = singular_values.size() > 0 ? singular_values(0) : 0.0;
   decision.input_rounding = tolerance.input_rounding;
   decision.rounding_level = default_relative_tolerance(rows, cols, tolerance.input_rounding) * decision.largest;
   const double relative = tolerance.relative.value_or(default_relative_tolerance(rows, cols, tolerance.input_rounding));
   decision.threshold = relative * decision.largest;
+  decision.error_bound = singular_value_error_bound(rows, cols, tolerance.input_rounding, decision.largest);
   for (Eigen::Index i = 0; i < singular_values.size(); ++i) {
     const double sigma = singular_values(i);
     if (sigma > decision.threshold) {

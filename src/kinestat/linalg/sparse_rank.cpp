@@ -27,6 +27,9 @@ double estimate_largest_singular_value(const Eigen::SparseMatrix<double>& a) {
 
 RankDecision sparse_rank_threshold(const Eigen::SparseMatrix<double>& a, const RankTolerance& tolerance) {
   RankDecision decision;
+  decision.rows = a.rows();
+  decision.cols = a.cols();
+  decision.sparse = true;
   if (a.rows() == 0 || a.cols() == 0) return decision;
   decision.largest = estimate_largest_singular_value(a);
   decision.input_rounding = tolerance.input_rounding;

@@ -19,7 +19,8 @@ RankDecision sparse_numerical_rank(const Eigen::SparseMatrix<double>& a, const R
 
 
 /// The absolute threshold of the rank rule for `a`, with σ_max estimated: `decision.largest`,
-/// `decision.threshold` and `decision.rounding_level` are set, the rank is left to the caller.
+/// `decision.threshold` and `decision.rounding_level` are set (and `sparse`: its status is close
+/// or unproven, never certain), the rank is left to the caller.
 RankDecision sparse_rank_threshold(const Eigen::SparseMatrix<double>& a, const RankTolerance& tolerance);
 
 /// Fills the rank and its evidence (smallest kept |R_ii|) of `decision` from `qr`.

@@ -123,12 +123,7 @@ linalg::HomogeneousSolution solve(const RationalMatrix& a, bool exact, const Tol
 
 // ε × the largest coupling-point coordinate (user frame) over the analysis frame's length: how
 // precisely coordinates written at full precision fix the geometry (linalg::input_rounding_level).
-double input_rounding(const Model& model, const AnalysisFrame& frame) {
-  double largest = 0.0;
-  for (const auto& c : model.couplings)
-    for (const auto& x : c.geometry.point) largest = std::max(largest, std::abs(x.get_d()));
-  return linalg::input_rounding_level(largest, frame.scale.get_d());
-}
+double input_rounding(const Model& model, const AnalysisFrame& frame) { return frame.input_rounding(model); }
 
 LinearForms solution_forms(const linalg::HomogeneousSolution& s) {
   return {s.coefficients, s.exact_coefficients};
@@ -604,17 +599,27 @@ NetworkResult analyse_network(const Model& model, const AnalysisOptions& options
     r.coupling_action_values = coupling_screws(r.cutset_law.contracted, *v);
   }
 
-  // Exact arithmetic on long literals analyses the rounded geometry: say if floating point,
+  // Exact decisions get the evidence of a floating-point SVD of the same matrices, in the
+  // conditioned frame (placement- and unit-free): how near the design is to another rank.
+  // Exact arithmetic on long literals analyses the rounded geometry: say also if floating point,
   // which tolerates the rounding, sees a different mechanism.
-  if (r.exact && model.max_significant_digits > kExactMaxSignificantDigits) {
+  if (r.exact) {
     const AnalysisFrame conditioned = AnalysisFrame::of(model);
     std::vector<screw::CouplingBasis> bases;
     for (const auto& c : model.couplings) bases.push_back(screw::coupling_basis(c.type, conditioned.to_frame(c.geometry, model.space), model.space));
     const UnitMatrices u = unit_matrices(bases, d, r.B, r.Q);
-    const linalg::RankTolerance rounded{tol.rank, input_rounding(model, conditioned)};
-    const int fn = r.F - static_cast<int>(linalg::numerical_rank(u.MN.to_double(), rounded).rank);
-    const int cn = r.C - static_cast<int>(linalg::numerical_rank(u.AN.to_double(), rounded).rank);
-    if (fn != r.FN || cn != r.CN) r.floating_point_disagreement = std::make_pair(fn, cn);
+    const Eigen::MatrixXd mn = u.MN.to_double(), an = u.AN.to_double();
+    const Eigen::VectorXd motion_values = linalg::singular_values(mn), action_values = linalg::singular_values(an);
+    linalg::add_floating_evidence(r.circulation.solution.rank, motion_values);
+    linalg::add_floating_evidence(r.circuit_action.solution.rank, motion_values);
+    linalg::add_floating_evidence(r.cutset_law.solution.rank, action_values);
+    linalg::add_floating_evidence(r.cutset_motion.solution.rank, action_values);
+    if (model.max_significant_digits > kExactMaxSignificantDigits) {
+      const linalg::RankTolerance rounded{tol.rank, input_rounding(model, conditioned)};
+      const int fn = r.F - static_cast<int>(linalg::decide_rank(motion_values, mn.rows(), mn.cols(), rounded).rank);
+      const int cn = r.C - static_cast<int>(linalg::decide_rank(action_values, an.rows(), an.cols(), rounded).rank);
+      if (fn != r.FN || cn != r.CN) r.floating_point_disagreement = std::make_pair(fn, cn);
+    }
   }
   return r;
 }

@@ -1,5 +1,10 @@
 #include "kinestat/network/analysis_frame.hpp"
 
+#include <algorithm>
+#include <cmath>
+
+#include "kinestat/linalg/rank_decision.hpp"
+
 namespace kinestat::network {
 
 namespace {
@@ -26,6 +31,13 @@ Vec3 tail(const Screw6& s) { return {s[3], s[4], s[5]}; }
 Screw6 join(const Vec3& a, const Vec3& b) { return {a[0], a[1], a[2], b[0], b[1], b[2]}; }
 
 }  // namespace
+
+double AnalysisFrame::input_rounding(const Model& model) const {
+  double largest = 0.0;
+  for (const auto& c : model.couplings)
+    for (const auto& x : c.geometry.point) largest = std::max(largest, std::abs(x.get_d()));
+  return linalg::input_rounding_level(largest, scale.get_d());
+}
 
 AnalysisFrame AnalysisFrame::of(const Model& model) {
   AnalysisFrame frame;

@@ -18,6 +18,11 @@ struct AnalysisFrame {
   /// Centroid of the coupling points and their largest coordinate distance from it (1 if all coincide).
   static AnalysisFrame of(const Model& model);
 
+  /// ε × the largest coupling-point coordinate of `model` (user frame) over `scale`: how precisely
+  /// coordinates written at full precision fix the geometry in this frame
+  /// (linalg::input_rounding_level; relative, dimensionless).
+  double input_rounding(const Model& model) const;
+
   /// `geometry` expressed in this frame (points shifted and scaled, pitch scaled, custom screws transformed).
   screw::CouplingGeometry to_frame(const screw::CouplingGeometry& geometry, const screw::ScrewSpace& space) const;
   /// A motion (axis formation, the space's d coordinates) given in this frame, in the user's frame.

@@ -8,7 +8,7 @@ namespace kinestat::network {
 
 MobilityCount count_mobility(int bodies, const std::vector<graph::Edge>& edges,
                              const std::vector<const screw::CouplingBasis*>& bases, int d, bool exact,
-                             const Tolerances& tolerances) {
+                             const Tolerances& tolerances, double input_rounding) {
   const graph::CouplingGraph graph(bodies, edges);
   const graph::SpanningTree tree = graph.breadth_first_tree(0);
   if (static_cast<int>(tree.branches.size()) != bodies - 1)
@@ -41,7 +41,7 @@ MobilityCount count_mobility(int bodies, const std::vector<graph::Edge>& edges,
     }
   count.m = static_cast<int>(rows == 0 || count.F == 0 ? 0
                              : exact ? linalg::exact_rank(exact_mn)
-                                     : linalg::numerical_rank(mn, {tolerances.rank}).rank);
+                                     : linalg::numerical_rank(mn, {tolerances.rank, input_rounding}).rank);
   count.FN = count.F - count.m;
   count.CN = d * count.l - count.m;
   return count;

@@ -25,10 +25,11 @@ struct MobilityCount {
 /// edges[e].to) whose couplings have the unit motions of `bases[e]` (d coordinates, axis
 /// formation, any one frame for all couplings). The rank of the circuit motion matrix M^N is
 /// exact when `exact` (rational elimination), otherwise numerical with `tolerances.rank` (relative to
-/// the largest singular value; give bases in a conditioned frame, see AnalysisFrame).
+/// the largest singular value; give bases in a conditioned frame, see AnalysisFrame), its default
+/// rule raised by `input_rounding` (AnalysisFrame::input_rounding of the model).
 /// Throws graph::TreeError when the bodies are not all connected.
 MobilityCount count_mobility(int bodies, const std::vector<graph::Edge>& edges,
                              const std::vector<const screw::CouplingBasis*>& bases, int d, bool exact,
-                             const Tolerances& tolerances);
+                             const Tolerances& tolerances, double input_rounding = 0.0);
 
 }  // namespace kinestat::network

@@ -150,7 +150,8 @@ SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances&
   entries.clear();
   entries.shrink_to_fit();
 
-  r.rank = linalg::sparse_rank_threshold(k, {tolerances.rank});
+  // The threshold rises with the rounding of the coordinates as written (the dense rule).
+  r.rank = linalg::sparse_rank_threshold(k, {tolerances.rank, frame.input_rounding(model)});
   if (pair_vectors) {
     r.generic_motions = Eigen::MatrixXd::Zero(k.cols(), d);
     r.generic_stresses = Eigen::MatrixXd::Zero(k.rows(), d);

@@ -11,6 +11,7 @@
 
 #include "kinestat/io/printable_text.hpp"
 #include "kinestat/report/generic_text.hpp"
+#include "kinestat/report/rank_status_text.hpp"
 #include "kinestat/report/verdict_report.hpp"
 #include "kinestat/tolerances.hpp"
 
@@ -277,10 +278,11 @@ nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const 
   if (std::isfinite(d.gap())) decision["gap"] = significant(d.gap());
   else decision["gap"] = nullptr;
   decision["close"] = d.close();
+  add_rank_status_json(decision, d);
   j["rank_decision"] = decision;
   // Unknown (null) on the sparse path, which computes no singular values.
   if (a.singular_values.size() == 0 && a.m > 0 && a.n > 0) j["relative_smallest_singular_value"] = nullptr;
-  else j["relative_smallest_singular_value"] = rounded(a.relative_smallest_singular_value());
+  else j["relative_smallest_singular_value"] = significant(a.relative_smallest_singular_value());
   j["singular_values"] = nlohmann::ordered_json::array();
   for (Eigen::Index i = 0; i < a.singular_values.size(); ++i) j["singular_values"].push_back(significant(a.singular_values(i)));
   j["row_labels"] = nlohmann::ordered_json::array();
@@ -389,15 +391,15 @@ std::string framework_report_text(const FrameworkModel& model, const FrameworkRe
     line(fmt::format("scaled by element lengths before the rank decision: row factors {} to {}, column factors {} to {}",
                      evidence(rows[0]), evidence(rows[1]), evidence(cols[0]), evidence(cols[1])));
   }
-  line(fmt::format("rank decision: threshold {}, smallest kept {}, largest dropped {}{}", evidence(a.decision.threshold),
-                   evidence(a.decision.smallest_kept), evidence(a.decision.largest_dropped),
-                   a.decision.close() ? " -- CLOSE: the design is near a different answer" : ""));
+  line(fmt::format("rank decision: threshold {}, smallest kept {}, largest dropped {}", evidence(a.decision.threshold),
+                   evidence(a.decision.smallest_kept), evidence(a.decision.largest_dropped)));
+  line(fmt::format("  {}", rank_status_text(a.decision)));
   if (a.decision.threshold == a.decision.rounding_level && kInputRoundingFactor * a.decision.input_rounding > kEpsilon)
     line(fmt::format("threshold raised to the rounding of the input: the coordinates, far from the origin against the "
                      "model's size, fix its geometry only to {} of that size",
                      evidence(a.decision.input_rounding)));
   if (a.singular_values.size() > 0)
-    line(fmt::format("smallest/largest singular value: {}", number(a.relative_smallest_singular_value())));
+    line(fmt::format("smallest/largest singular value: {}", evidence(a.relative_smallest_singular_value())));
   line(fmt::format("classification: {}", framework_classification(a)));
   line(fmt::format("{} kinematically indeterminate mode(s), {} statically indeterminate stress state(s){}", a.mechanisms,
                    a.self_stresses, a.exactly_constrained() ? ": exactly constrained" : ""));

@@ -2,6 +2,7 @@
 
 #include "kinestat/report/json_text.hpp"
 #include "kinestat/report/markup_escape.hpp"
+#include "kinestat/report/rank_status_text.hpp"
 
 #include <cmath>
 
@@ -56,6 +57,7 @@ nlohmann::ordered_json verdict_json(const design::Verdict& v) {
   j["changes_verified"] = v.changes_verified;
   j["becomes"] = v.becomes;
   if (!v.generic.empty()) j["special_geometry"] = v.generic;
+  if (v.near_rank_change) j["near_rank_change"] = rank_evidence_number(*v.near_rank_change);
   return j;
 }
 

@@ -9,6 +9,7 @@
 #include "kinestat/io/printable_text.hpp"
 #include "kinestat/report/generic_text.hpp"
 #include "kinestat/report/linear_form_text.hpp"
+#include "kinestat/report/rank_status_text.hpp"
 #include "kinestat/report/verdict_report.hpp"
 #include "kinestat/tolerances.hpp"
 
@@ -52,9 +53,9 @@ std::vector<std::string> coordinate_letters(const NetworkResult& r, bool motion)
 
 std::string rank_text(const char* symbol, const linalg::RankDecision& rank) {
   if (rank.exact) return fmt::format("{} = {} (exact)", symbol, rank.rank);
-  return fmt::format("{} = {} (smallest kept singular value {}, largest dropped {}, gap {}{})", symbol, rank.rank,
+  return fmt::format("{} = {} (smallest kept singular value {}, largest dropped {}, gap {})", symbol, rank.rank,
                      number_text(rank.smallest_kept), number_text(rank.largest_dropped),
-                     std::isinf(rank.gap()) ? "infinite" : number_text(rank.gap()), rank.close() ? "; CLOSE DECISION" : "");
+                     std::isinf(rank.gap()) ? "infinite" : number_text(rank.gap()));
 }
 
 std::vector<std::string> warnings(const NetworkResult& r) {
@@ -92,6 +93,7 @@ Json rank_json(const linalg::RankDecision& rank) {
     j["gap"] = std::isinf(rank.gap()) ? Json(nullptr) : Json(rank.gap());
     j["close"] = rank.close();
   }
+  add_rank_status_json(j, rank);
   return j;
 }
 
@@ -331,7 +333,9 @@ std::string network_report_text(const network::Model& model, const NetworkResult
   t += fmt::format("  bodies n = {}, couplings e = {}, circuits l = {}, cutsets k = {}\n", r.bodies, r.e, r.l, r.k);
   t += fmt::format("  gross degree of freedom F = {}, gross degree of constraint C = {}\n", r.F, r.C);
   t += fmt::format("  rank of the network unit motion matrix: {}\n", rank_text("m", r.circulation.solution.rank));
+  t += fmt::format("    {}\n", rank_status_text(r.circulation.solution.rank));
   t += fmt::format("  rank of the network unit action matrix: {}\n", rank_text("a", r.cutset_law.solution.rank));
+  t += fmt::format("    {}\n", rank_status_text(r.cutset_law.solution.rank));
   if (r.modular_check)
     t += fmt::format("  modular check: M^N has rank {} modulo {} large primes ({} agree), a certain lower bound of its exact rank; {}\n",
                      r.modular_check->rank, r.modular_check->primes, r.modular_check->agreeing,
@@ -585,6 +589,7 @@ std::string sparse_network_report_text(const network::Model& model, const networ
   t += fmt::format("  bodies n = {}, couplings e = {}, circuits l = {}\n", r.bodies, r.e, r.l);
   t += fmt::format("  gross degree of freedom F = {}, gross degree of constraint C = {}\n", r.F, r.C);
   t += fmt::format("  rank of the body-twist constraint matrix K (C x d(n-1)): {}\n", rank_text("rank K", r.rank));
+  t += fmt::format("    {}\n", rank_status_text(r.rank));
   t += fmt::format("  nett degree of freedom    FN = d(n-1) - rank K = {}\n", r.FN);
   t += fmt::format("  nett degree of constraint CN = C - rank K = {}\n", r.CN);
   t += fmt::format("  class: {}\n", network::class_description(r.classification));

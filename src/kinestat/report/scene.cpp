@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "kinestat/report/framework_report.hpp"
+#include "kinestat/report/rank_status_text.hpp"
 #include "kinestat/report/structure_report.hpp"
 #include "kinestat/screw/coupling_type.hpp"
 #include "kinestat/tolerances.hpp"
@@ -20,11 +21,8 @@ using Eigen::Vector3d;
 
 Vector3d to_vector(const screw::Vec3& v) { return {v[0].get_d(), v[1].get_d(), v[2].get_d()}; }
 
-std::string rank_evidence(const linalg::RankDecision& rank) {
-  if (rank.exact) return fmt::format("{} (exact rational elimination)", rank.rank);
-  return fmt::format("{} (smallest kept singular value {:.3g}, largest dropped {:.3g}{})", rank.rank, rank.smallest_kept,
-                     rank.largest_dropped, rank.close() ? "; CLOSE DECISION" : "");
-}
+// Status and distance of a rank decision, as the text report prints them (rank_status_text).
+std::string rank_evidence(const linalg::RankDecision& rank) { return rank_status_text(rank); }
 
 std::vector<double> screw_doubles(const std::vector<screw::Rational>& coordinates) {
   std::vector<double> out;
@@ -289,8 +287,7 @@ Scene framework_scene(const framework::FrameworkModel& model, const framework::F
       {"nodes", std::to_string(model.nodes.size())},
       {"elements", std::to_string(model.elements.size())},
       {"D(c)", fmt::format("{} x {}", a.m, a.n)},
-      {"rank D(c)", a.method == framework::RankMethod::dense_svd ? rank_evidence(a.decision)
-                                                                  : fmt::format("{} (sparse QR, counts only)", a.rank)},
+      {"rank D(c)", rank_evidence(a.decision)},
       {"kinematically indeterminate modes", std::to_string(a.mechanisms)},
       {"statically indeterminate stress states", std::to_string(a.self_stresses)},
       {"class", framework_classification(a)},

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "kinestat/io/printable_text.hpp"
+#include "kinestat/report/rank_status_text.hpp"
 #include "kinestat/tolerances.hpp"
 
 namespace kinestat::report {
@@ -95,6 +96,7 @@ Json verdict_json(const design::Verdict& v) {
   j["becomes"] = v.becomes;
   if (!v.note.empty()) j["note"] = v.note;
   if (!v.generic.empty()) j["special_geometry"] = v.generic;
+  if (v.near_rank_change) j["near_rank_change"] = rank_evidence_number(*v.near_rank_change);
   return j;
 }
 

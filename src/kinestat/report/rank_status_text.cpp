@@ -1,0 +1,55 @@
+#include "kinestat/report/rank_status_text.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <optional>
+#include <string>
+
+namespace kinestat::report {
+
+namespace {
+
+std::string three_digits(double value) {
+  if (value == 0.0) return "0";
+  return fmt::format("{:.3g}", value);
+}
+
+}  // namespace
+
+double rank_evidence_number(double value) {
+  if (!std::isfinite(value) || value == 0.0) return value;
+  return std::stod(three_digits(value));
+}
+
+std::string rank_status_text(const linalg::RankDecision& d) {
+  const linalg::RankStatus status = d.status();
+  std::string text = fmt::format("rank {} of {}: {}", d.rank, d.full_rank(),
+                                 status == linalg::RankStatus::close ? "CLOSE" : linalg::rank_status_name(status));
+  const auto distance = d.distance();
+  if (distance) {
+    text += fmt::format("; {} from rank {} ({})", three_digits(*distance), d.rank - 1,
+                        d.sparse  ? "smallest kept |R_ii| / estimated largest singular value: an indicator, not a bound"
+                        : d.exact ? "smallest kept / largest singular value of a floating-point copy"
+                                  : "smallest kept / largest singular value");
+  }
+  if (d.exact || d.sparse || !(d.largest > 0.0)) return text;
+  text += d.rank < d.full_rank() ? fmt::format("; largest dropped {} of the largest", three_digits(*d.relative_dropped()))
+                                  : std::string("; nothing dropped");
+  text += fmt::format(", error bound {}", three_digits(d.error_bound / d.largest));
+  if (status == linalg::RankStatus::close) text += ": rounding or the tolerance could give another rank";
+  return text;
+}
+
+void add_rank_status_json(nlohmann::ordered_json& j, const linalg::RankDecision& d) {
+  j["status"] = linalg::rank_status_name(d.status());
+  const auto distance = d.distance();
+  j["distance"] = distance ? nlohmann::ordered_json(rank_evidence_number(*distance)) : nlohmann::ordered_json(nullptr);
+  if (d.exact) return;
+  // A sparse QR drops columns without a value to report.
+  const auto dropped = d.sparse ? std::nullopt : d.relative_dropped();
+  j["relative_dropped"] = dropped ? nlohmann::ordered_json(rank_evidence_number(*dropped)) : nlohmann::ordered_json(nullptr);
+  if (!d.sparse && d.largest > 0.0) j["error_bound"] = rank_evidence_number(d.error_bound / d.largest);
+}
+
+}  // namespace kinestat::report
