@@ -1,5 +1,5 @@
 #pragma once
-// Every tolerance kinestat uses, in one place (docs/numerics.md explains each).
+// Every tolerance kinestat uses, in one place (docs/architecture.md, sections "Tolerances" and "Rank decisions", explains each).
 //
 // All are relative and dimensionless, so no answer changes with the unit of length. Those that
 // judge rounding are written as 2^k ε, ε the double-precision machine epsilon (2.2e-16): "a
