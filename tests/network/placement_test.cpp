@@ -56,6 +56,17 @@ Model placed(Model model, const Eigen::Matrix3d& rotation, const Eigen::Vector3d
   return model;
 }
 
+// FN, CN and every pair's fij and cij of `moved` equal those of `base`.
+void expect_same_answer(const NetworkResult& moved, const NetworkResult& base) {
+  EXPECT_EQ(moved.FN, base.FN);
+  EXPECT_EQ(moved.CN, base.CN);
+  ASSERT_EQ(moved.pairs.size(), base.pairs.size());
+  for (std::size_t k = 0; k < base.pairs.size(); ++k) {
+    EXPECT_EQ(moved.pairs[k].fij, base.pairs[k].fij) << "pair " << k;
+    EXPECT_EQ(moved.pairs[k].cij, base.pairs[k].cij) << "pair " << k;
+  }
+}
+
 bool has_custom_screws(const Model& model) {
   for (const auto& c : model.couplings)
     if (!c.geometry.custom_motions.empty() || !c.geometry.custom_actions.empty()) return true;
@@ -78,13 +89,7 @@ TEST(Placement, FarFromTheOriginEveryNetworkExampleKeepsItsAnswer) {
     for (double offset : {10.0, 100.0, 1000.0}) {
       SCOPED_TRACE(offset);
       const NetworkResult moved = analyse_network(placed(model, rotation, offset * model_size(model) * direction), floating);
-      EXPECT_EQ(moved.FN, base.FN);
-      EXPECT_EQ(moved.CN, base.CN);
-      ASSERT_EQ(moved.pairs.size(), base.pairs.size());
-      for (std::size_t k = 0; k < base.pairs.size(); ++k) {
-        EXPECT_EQ(moved.pairs[k].fij, base.pairs[k].fij) << "pair " << k;
-        EXPECT_EQ(moved.pairs[k].cij, base.pairs[k].cij) << "pair " << k;
-      }
+      expect_same_answer(moved, base);
     }
     ++checked;
   }
@@ -113,13 +118,7 @@ TEST(Placement, FarFromTheOriginRandomNetworksKeepTheirAnswer) {
     }
     const Eigen::Vector3d direction = planar ? Eigen::Vector3d(0.8, -0.6, 0) : Eigen::Vector3d(0.48, -0.6, 0.64);
     const NetworkResult moved = analyse_network(placed(model, placement_rotation(planar), 1000.0 * model_size(model) * direction), floating);
-    EXPECT_EQ(moved.FN, base.FN);
-    EXPECT_EQ(moved.CN, base.CN);
-    ASSERT_EQ(moved.pairs.size(), base.pairs.size());
-    for (std::size_t k = 0; k < base.pairs.size(); ++k) {
-      EXPECT_EQ(moved.pairs[k].fij, base.pairs[k].fij) << "pair " << k;
-      EXPECT_EQ(moved.pairs[k].cij, base.pairs[k].cij) << "pair " << k;
-    }
+    expect_same_answer(moved, base);
     ++checked;
   }
   EXPECT_GE(checked, 60) << close << " were close in floating point where they are";

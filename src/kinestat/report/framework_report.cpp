@@ -1,4 +1,5 @@
 #include "kinestat/report/framework_report.hpp"
+#include "kinestat/report/json_text.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -22,13 +23,7 @@ using framework::FrameworkModel;
 
 namespace {
 
-// Ten significant digits: enough to read, and stable against last-bit noise of the SVD.
-double rounded(double value) {
-  if (!std::isfinite(value)) return value;
-  if (std::abs(value) < kPrintedZero) return 0.0;
-  const double r = std::stod(fmt::format("{:.10g}", value));
-  return r == 0.0 ? 0.0 : r;
-}
+double rounded(double value) { return rounded_for_report(value); }
 
 std::string number(double value) { return fmt::format("{:.6g}", rounded(value)); }
 

@@ -12,4 +12,8 @@ namespace kinestat::report {
 /// from elsewhere, such as the command line) become U+FFFD instead of an exception.
 std::string json_text(const nlohmann::ordered_json& value, int indent = 2);
 
+/// `value` to ten significant digits, as every report prints numbers: enough to read, and stable
+/// against last-bit noise of the SVD; below kPrintedZero in magnitude, and -0, printed as 0.
+double rounded_for_report(double value);
+
 }  // namespace kinestat::report

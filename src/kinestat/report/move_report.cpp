@@ -1,4 +1,5 @@
 #include "kinestat/report/move_report.hpp"
+#include "kinestat/report/json_text.hpp"
 
 #include <fmt/format.h>
 
@@ -11,13 +12,7 @@ namespace kinestat::report {
 
 namespace {
 
-// Ten significant digits (as every report), -0 printed as 0.
-double rounded(double value) {
-  if (!std::isfinite(value)) return value;
-  if (std::abs(value) < kPrintedZero) return 0.0;
-  const double r = std::stod(fmt::format("{:.10g}", value));
-  return r == 0.0 ? 0.0 : r;
-}
+double rounded(double value) { return rounded_for_report(value); }
 // Residuals keep tiny values: three significant digits.
 double evidence(double value) {
   if (!std::isfinite(value) || value == 0.0) return value;

@@ -80,6 +80,19 @@ Json body_json(const std::string& name) {
   return integer ? Json(std::stoi(name)) : Json(name);
 }
 
+// A pair's bodies, direct coupling and counts, as both the dense and the sparse report write them.
+template <class Pair>
+Json pair_counts_json(const network::Model& model, const Pair& p) {
+  Json pair;
+  pair["bodies"] = {body_json(model.bodies[static_cast<std::size_t>(p.body_i)]), body_json(model.bodies[static_cast<std::size_t>(p.body_j)])};
+  pair["coupling"] = p.coupling ? Json(model.couplings[static_cast<std::size_t>(*p.coupling)].name) : Json(nullptr);
+  pair["f"] = p.f;
+  pair["fij"] = p.fij;
+  pair["c"] = p.c;
+  pair["cij"] = p.cij;
+  return pair;
+}
+
 Json rank_json(const linalg::RankDecision& rank) {
   Json j;
   j["rank"] = rank.rank;
@@ -494,13 +507,7 @@ Json network_report_json(const network::Model& model, const NetworkResult& r, co
   j["methods_agree"] = {{"motion", r.motion_methods_agree}, {"action", r.action_methods_agree}};
   Json pairs = Json::array();
   for (const auto& p : r.pairs) {
-    Json pair;
-    pair["bodies"] = {body_json(model.bodies[static_cast<std::size_t>(p.body_i)]), body_json(model.bodies[static_cast<std::size_t>(p.body_j)])};
-    pair["coupling"] = p.coupling ? Json(model.couplings[static_cast<std::size_t>(*p.coupling)].name) : Json(nullptr);
-    pair["f"] = p.f;
-    pair["fij"] = p.fij;
-    pair["c"] = p.c;
-    pair["cij"] = p.cij;
+    Json pair = pair_counts_json(model, p);
     Json mp = Json::array(), ap = Json::array();
     for (int i : p.motion_primaries) mp.push_back(motion_primaries[static_cast<std::size_t>(i)]);
     for (int i : p.action_primaries) ap.push_back(action_primaries[static_cast<std::size_t>(i)]);
@@ -642,14 +649,7 @@ nlohmann::ordered_json sparse_network_report_json(const network::Model& model, c
   if (pairs) {
     Json rows = Json::array();
     for (const auto& p : *pairs) {
-      Json pair;
-      pair["bodies"] = {body_json(model.bodies[static_cast<std::size_t>(p.body_i)]), body_json(model.bodies[static_cast<std::size_t>(p.body_j)])};
-      pair["coupling"] = p.coupling ? Json(model.couplings[static_cast<std::size_t>(*p.coupling)].name) : Json(nullptr);
-      pair["f"] = p.f;
-      pair["fij"] = p.fij;
-      pair["c"] = p.c;
-      pair["cij"] = p.cij;
-      rows.push_back(pair);
+      rows.push_back(pair_counts_json(model, p));
     }
     j["pairs"] = rows;
   }
