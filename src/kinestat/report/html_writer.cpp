@@ -2,7 +2,7 @@
 
 #include "kinestat/report/json_text.hpp"
 #include "kinestat/report/markup_escape.hpp"
-#include "kinestat/report/rank_status_text.hpp"
+#include "kinestat/report/verdict_report.hpp"
 
 #include <cmath>
 
@@ -38,12 +38,10 @@ nlohmann::ordered_json screw_json(const SceneScrew& s) {
           {"pure", s.pure}};
 }
 
-nlohmann::ordered_json verdict_json(const design::Verdict& v) {
-  nlohmann::ordered_json j;
-  j["exactly_constrained"] = v.exactly_constrained;
-  j["extra_motions"] = v.extra_motions;
-  j["redundant_constraints"] = v.redundant_constraints;
-  j["summary"] = v.summary;
+// The verdict as the JSON report writes it (report::verdict_json), plus the participant lists
+// the viewer's side panel reads, rounded to four digits.
+nlohmann::ordered_json viewer_verdict_json(const design::Verdict& v) {
+  nlohmann::ordered_json j = verdict_json(v);
   const auto participants = [](const std::vector<design::Participant>& list) {
     auto out = nlohmann::ordered_json::array();
     for (const auto& p : list) out.push_back({{"kind", p.kind}, {"name", p.name}, {"participation", rounded(p.participation, 4)}});
@@ -51,13 +49,6 @@ nlohmann::ordered_json verdict_json(const design::Verdict& v) {
   };
   j["motion_participants"] = participants(v.motion_participants);
   j["constraint_participants"] = participants(v.constraint_participants);
-  j["changes"] = nlohmann::ordered_json::array();
-  for (const auto& c : v.changes)
-    j["changes"].push_back({{"action", c.action}, {"target_kind", c.target_kind}, {"target", c.target}, {"becomes", c.becomes}, {"reason", c.reason}});
-  j["changes_verified"] = v.changes_verified;
-  j["becomes"] = v.becomes;
-  if (!v.generic.empty()) j["special_geometry"] = v.generic;
-  if (v.near_rank_change) j["near_rank_change"] = rank_evidence_number(*v.near_rank_change);
   return j;
 }
 
@@ -122,7 +113,7 @@ nlohmann::ordered_json scene_json(const Scene& scene) {
   j["elements"] = {{"count", scene.elements.size()}, {"pairs", pairs}, {"name", element_names}, {"type", element_types},
                    {"label", element_labels}, {"sheets", sheets}, {"sheet_width", kSheetWidth}};
   j["units"] = length_unit(scene);
-  j["verdict"] = scene.verdict ? verdict_json(*scene.verdict) : nlohmann::ordered_json(nullptr);
+  j["verdict"] = scene.verdict ? viewer_verdict_json(*scene.verdict) : nlohmann::ordered_json(nullptr);
   auto supports = nlohmann::ordered_json::array();
   if (!scene.large)
     for (std::size_t i = 0; i < scene.nodes.size(); ++i) {
