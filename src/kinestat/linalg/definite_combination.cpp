@@ -49,14 +49,16 @@ std::vector<Eigen::VectorXd> search_directions(Eigen::Index s) {
   return directions;
 }
 
-}  // namespace
-
+// Smallest eigenvalue of Σ c_k Q_k and a unit eigenvector of it.
 std::pair<double, Eigen::VectorXd> smallest_eigen(const std::vector<Eigen::MatrixXd>& forms, const Eigen::VectorXd& c) {
   Eigen::MatrixXd sum = Eigen::MatrixXd::Zero(forms[0].rows(), forms[0].cols());
   for (std::size_t k = 0; k < forms.size(); ++k) sum += c(static_cast<Eigen::Index>(k)) * forms[k];
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(sum);
   return {eigen.eigenvalues()(0), eigen.eigenvectors().col(0)};
 }
+
+}  // namespace
+
 
 // The supergradient of λ_min(Σ c_k Q_k) at c is (vᵀ Q_k v)_k with v the eigenvector of λ_min.
 std::pair<double, Eigen::VectorXd> most_positive_combination(const std::vector<Eigen::MatrixXd>& forms) {

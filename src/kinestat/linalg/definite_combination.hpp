@@ -16,7 +16,4 @@ namespace kinestat::linalg {
 /// for one to three forms, sampled for more) is refined by projected supergradient ascent.
 std::pair<double, Eigen::VectorXd> most_positive_combination(const std::vector<Eigen::MatrixXd>& forms);
 
-/// Smallest eigenvalue of Σ c_k Q_k and a unit eigenvector of it.
-std::pair<double, Eigen::VectorXd> smallest_eigen(const std::vector<Eigen::MatrixXd>& forms, const Eigen::VectorXd& c);
-
 }  // namespace kinestat::linalg

@@ -228,9 +228,7 @@ NetworkSecondOrder classify_network_motions(const Model& model, const NetworkRes
     for (Eigen::Index k = 0; k < FN; ++k) scale = std::max(scale, bracket_size(basis.col(k)));
     out.prestress_tested = true;
     if (scale > 0.0) {
-      const auto [value, combination] = linalg::most_positive_combination(restricted);
-      (void)combination;
-      out.smallest_eigenvalue = value / scale;
+      out.smallest_eigenvalue = linalg::most_positive_combination(restricted).first / scale;
       out.prestress_stable = out.smallest_eigenvalue > kPrestressMargin;
     }
     if (out.prestress_stable)
