@@ -30,6 +30,7 @@
 namespace {
 // Large fuzzed models only cost time: the analysis is exercised on small ones.
 constexpr std::size_t kMaxAnalysedCouplings = 16;
+constexpr int kFuzzTraceSteps = 3;
 constexpr std::size_t kMaxAnalysedElements = 64;
 constexpr int kMaxAnalysedBodies = 64;
 
@@ -62,7 +63,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
           const auto result = kinestat::network::analyse_network(loaded.model);
           // The verdict's change search screens copies with one rank each (milliseconds).
           const auto verdict = kinestat::design::network_verdict(loaded.model, result);
-          const auto second_order = kinestat::network::classify_network_motions(loaded.model, result);
+          // Traces of the passing motions: a few steps keep each input within milliseconds.
+          kinestat::network::NetworkSecondOrderOptions second_order_options;
+          second_order_options.tracing.steps = kFuzzTraceSteps;
+          const auto second_order = kinestat::network::classify_network_motions(loaded.model, result, second_order_options);
           kinestat::report::NetworkReportOptions options{true, &verdict};
           options.second_order = &second_order;
           (void)kinestat::report::network_report_text(loaded.model, result, options);

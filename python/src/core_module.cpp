@@ -22,6 +22,8 @@
 #include "kinestat/io/model_file.hpp"
 #include "kinestat/io/network_structure.hpp"
 #include "kinestat/network/analyse_network.hpp"
+#include "kinestat/network/analysis_frame.hpp"
+#include "kinestat/network/second_order.hpp"
 #include "kinestat/network/generic_network.hpp"
 #include "kinestat/report/framework_report.hpp"
 #include "kinestat/report/html_writer.hpp"
@@ -94,7 +96,10 @@ std::shared_ptr<Analysed> analyse(const std::string& path, const std::optional<s
     analysed->network = io::analyse_network_file(*file.network, file.path, options);
     analysed->verdict = design::network_verdict(file.network->model, *analysed->network, options);
     analysed->network_generic = network::generic_network(file.network->model, *analysed->network);
-    analysed->network_second_order = network::classify_network_motions(file.network->model, *analysed->network);
+    network::NetworkSecondOrderOptions second_order_options;  // as `kinestat analyze`: traces with the analysis's rank rule
+    second_order_options.tracing.tolerance = linalg::RankTolerance{
+        options.tolerances.rank, network::AnalysisFrame::of(file.network->model).input_rounding(file.network->model)};
+    analysed->network_second_order = network::classify_network_motions(file.network->model, *analysed->network, second_order_options);
     if (analysed->network_generic)
       analysed->verdict.generic = report::network_generic_sentences(file.network->model, *analysed->network, *analysed->network_generic);
   } else if (file.framework) {

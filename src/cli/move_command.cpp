@@ -1,8 +1,10 @@
 // `kinestat move FILE`: finite motion (issue 13). A framework: follow kinematic mode N with the
-// predictor–corrector and print the path. A planar network: solve the positions of all bodies
-// group by group at given input values (or over a sweep of one input).
+// predictor–corrector and print the path. A network: follow primary motion N the same way
+// (--mode), or, planar, solve the positions of all bodies group by group at given input values
+// (or over a sweep of one input).
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <cerrno>
 #include <cmath>
@@ -19,6 +21,12 @@
 #include "kinestat/io/network_reader.hpp"
 #include "kinestat/io/network_structure.hpp"
 #include "kinestat/kinematics/position_solver.hpp"
+#include "kinestat/network/analyse_network.hpp"
+#include "kinestat/network/analysis_frame.hpp"
+#include "kinestat/network/finite_motion.hpp"
+#include "kinestat/network/second_order.hpp"
+#include "kinestat/network/sparse_network.hpp"
+#include "kinestat/io/loaded_network.hpp"
 #include "kinestat/report/json_text.hpp"
 #include "kinestat/report/move_report.hpp"
 #include "kinestat/structure/decomposition.hpp"
@@ -149,15 +157,62 @@ int move_framework(const MoveOptions& options, const framework::FrameworkModel& 
   return 0;
 }
 
+// A network's primary motion N (numbered as `kinestat analyze` lists the primary motions),
+// traced on the loop-closure equations.
+int trace_network(const MoveOptions& options, const io::LoadedNetwork& loaded, const std::string& path) {
+  if (const auto both = given({options.input_option, options.sweep_option}); !both.empty())
+    throw io::InputError({path, 1, 1}, fmt::format("--mode and {} exclude each other: --mode follows a primary motion of the network, "
+                                                   "--input and --sweep solve its positions at given inputs",
+                                                   fmt::join(both, ", ")));
+  if (static_cast<int>(loaded.model.couplings.size()) > network::kDenseNetworkLimit)
+    throw io::InputError({path, 1, 1}, fmt::format("the network has more than {} couplings: too large for the dense analysis that tracing "
+                                                   "needs",
+                                                   network::kDenseNetworkLimit));
+  network::AnalysisOptions analysis_options;
+  analysis_options.tolerances = Tolerances::with_rank(options.common.tolerance);
+  network::NetworkResult result;
+  try {
+    result = network::analyse_network(loaded.model, analysis_options);
+  } catch (const network::ModelError& error) {
+    throw io::locate(error, loaded, path);
+  }
+  const auto modes = static_cast<long long>(result.primary_motion.size());
+  if (modes == 0) throw io::InputError({path, 1, 1}, "the network has no motion (FN = 0): it cannot move (--mode has nothing to follow)");
+  if (options.mode < 1 || options.mode > modes)
+    throw io::InputError({path, 1, 1}, fmt::format("--mode {}: the network has {} primary motion{} (FN), numbered 1 to {}", options.mode,
+                                                   modes, modes == 1 ? "" : "s", modes));
+  report::NetworkMove move;
+  move.mode = static_cast<std::size_t>(options.mode - 1);
+  move.amplitude_fraction = options.amplitude;
+  move.steps = static_cast<int>(options.steps);
+  network::NetworkSecondOrderOptions second_order_options;
+  second_order_options.trace = false;
+  const network::NetworkSecondOrder second_order = network::classify_network_motions(loaded.model, result, second_order_options);
+  if (move.mode < second_order.motions.size()) move.second_order = second_order.motions[move.mode];
+  network::NetworkTraceOptions trace;
+  trace.amplitude_fraction = options.amplitude;
+  trace.steps = move.steps;
+  trace.tolerance = linalg::RankTolerance{analysis_options.tolerances.rank,
+                                          network::AnalysisFrame::of(loaded.model).input_rounding(loaded.model)};
+  move.trace = network::trace_network_motion(loaded.model, result, result.motion_magnitudes.values.col(static_cast<Eigen::Index>(move.mode)),
+                                             trace);
+  emit(options.common, options.common.json ? report::json_text(report::network_move_json(loaded.model, result, move))
+                                           : report::network_move_text(loaded.model, result, move));
+  return 0;
+}
+
 int move_network(const MoveOptions& options, io::LoadedNetwork loaded, const std::string& path) {
-  reject_options(given({options.mode_option, options.amplitude_option, options.steps_option}), "a network", path);
+  if (options.mode_option->count() > 0) return trace_network(options, loaded, path);
+  if (const auto tracing = given({options.amplitude_option, options.steps_option}); !tracing.empty())
+    throw io::InputError({path, 1, 1}, fmt::format("{} set{} the trace of a primary motion: give --mode N too (or remove {})",
+                                                   fmt::join(tracing, ", "), tracing.size() == 1 ? "s" : "", tracing.size() == 1 ? "it" : "them"));
   std::vector<NamedValue> inputs;
   for (const std::string& text : options.inputs) inputs.push_back(*parse_input(text));
   std::optional<Sweep> sweep;
   if (!options.sweep.empty()) sweep = parse_sweep(options.sweep);
   if (inputs.empty() && !sweep)
     throw io::InputError({path, 1, 1}, "a mechanism is moved by its inputs: give --input NAME=VALUE (or --sweep NAME=FROM:TO:STEPS) for "
-                                       "each driving coupling");
+                                       "each driving coupling, or follow one of its primary motions with --mode N");
   std::vector<std::string> names;
   for (const auto& input : inputs) names.push_back(input.name);
   if (sweep) names.push_back(sweep->name);
@@ -218,20 +273,21 @@ int run_move(const MoveOptions& options) {
 void register_move(CLI::App& app, Action& action) {
   auto options = std::make_shared<MoveOptions>();
   CLI::App* command = app.add_subcommand(
-      "move", "Finite motion: trace a framework's kinematic mode, or solve a planar mechanism's positions at given inputs");
+      "move", "Finite motion: trace a framework's kinematic mode or a network's primary motion, or solve a planar mechanism's "
+              "positions at given inputs");
   command->add_option("model", options->common.model_path, "Model file (kind: framework or network)")->required();
   command->add_flag("--json", options->common.json, "Machine-readable JSON instead of text");
   command->add_option("-o,--output", options->common.output_path, "Write to this file instead of standard output");
   command->add_option("--tolerance", options->common.tolerance,
-                      "Frameworks: relative rank tolerance (fraction of the largest singular value); default max(rows,cols)*eps")
+                      "Traces: relative rank tolerance (fraction of the largest singular value); default max(rows,cols)*eps")
       ->check(positive_finite_number());
-  options->mode_option = command->add_option("--mode", options->mode, "Frameworks: the kinematic mode to follow (1-based, as 'analyze' lists them)")
+  options->mode_option = command->add_option("--mode", options->mode, "Frameworks: the kinematic mode to follow; networks: the primary motion (1-based, as 'analyze' lists them)")
                              ->check(non_negative_whole_number());
   options->amplitude_option =
       command->add_option("--amplitude", options->amplitude,
-                          "Frameworks: arc length to follow, as a fraction of the characteristic length; default 0.1")
+                          "With --mode: arc length to follow, as a fraction of the characteristic length; default 0.1")
           ->check(positive_finite_number());
-  options->steps_option = command->add_option("--steps", options->steps, "Frameworks: predictor-corrector steps; default 20")
+  options->steps_option = command->add_option("--steps", options->steps, "With --mode: predictor-corrector steps; default 20")
                               ->check(non_negative_whole_number() & CLI::Range(1LL, 100000LL));
   options->input_option = command->add_option("--input", options->inputs,
                                               "Networks: a driving coupling and its value relative to the file (rad or length), "

@@ -11,6 +11,8 @@
 #include "kinestat/design/sparse_network_verdict.hpp"
 #include "kinestat/io/network_reader.hpp"
 #include "kinestat/network/analyse_network.hpp"
+#include "kinestat/network/analysis_frame.hpp"
+#include "kinestat/network/second_order.hpp"
 #include "kinestat/network/generic_network.hpp"
 #include "kinestat/network/sparse_network.hpp"
 #include "kinestat/network/sparse_pair_freedoms.hpp"
@@ -169,7 +171,11 @@ int run_network_analysis(const CommonOptions& common, const io::LoadedNetwork& l
     report_options.generic = &*generic;
     verdict.generic = report::network_generic_sentences(loaded.model, result, *generic);
   }
-  const network::NetworkSecondOrder second_order = network::classify_network_motions(loaded.model, result);
+  // Motions that pass second order are traced with the analysis's rank rule (`--tolerance`).
+  network::NetworkSecondOrderOptions second_order_options;
+  second_order_options.tracing.tolerance =
+      linalg::RankTolerance{options.tolerances.rank, network::AnalysisFrame::of(loaded.model).input_rounding(loaded.model)};
+  const network::NetworkSecondOrder second_order = network::classify_network_motions(loaded.model, result, second_order_options);
   report_options.second_order = &second_order;
   emit(common, common.json ? report::json_text(report::network_report_json(loaded.model, result, report_options))
                            : report::network_report_text(loaded.model, result, report_options));

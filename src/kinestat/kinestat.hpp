@@ -54,6 +54,8 @@
 #include "kinestat/linalg/svd_analysis.hpp"
 #include "kinestat/network/analyse_network.hpp"
 #include "kinestat/network/analysis_frame.hpp"
+#include "kinestat/network/circuit_walk.hpp"
+#include "kinestat/network/finite_motion.hpp"
 #include "kinestat/network/generic_network.hpp"
 #include "kinestat/network/magnitude_names.hpp"
 #include "kinestat/network/mobility_count.hpp"

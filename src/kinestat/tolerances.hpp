@@ -100,7 +100,7 @@ inline constexpr double kOrientationTolerance = 0x1p32 * kEpsilon;
 /// below this fraction of the largest are zero (a decimal precision, hence not 2^k ε).
 inline constexpr double kImportNoise = 1e-12;
 
-// --- Second order and finite motion (framework/second_order.hpp, framework/finite_motion.hpp) ---
+// --- Second order and finite motion (framework/ and network/ second_order.hpp, finite_motion.hpp) ---
 
 /// A self-stress does no work on a mode at second order when |σᵀε″(u, u)| is below this
 /// fraction of ‖ε″(u, u)‖ (unit σ): a finite mechanism leaves rounding only (2^26 ε ≈ 1.5e-8).
@@ -113,13 +113,14 @@ inline constexpr double kPrestressMargin = 0x1p26 * kEpsilon;
 /// rigid motion; the same cut keeps directions when orthonormalising bases (2^26 ε ≈ 1.5e-8).
 inline constexpr double kRigidMotionZero = 0x1p26 * kEpsilon;
 /// A traced path closes when every point satisfies the constraints to this fraction of the
-/// characteristic length (the 1e-10 of issue 13; not a rounding level, a promise).
+/// characteristic length (the 1e-10 of issue 13; not a rounding level, a promise). Networks:
+/// every circuit's closure error, rotation in rad × L plus translation, over L.
 inline constexpr double kTraceResidual = 1e-10;
 /// The corrector stops improving a point below this fraction of the characteristic length
-/// (2^6 ε ≈ 1.4e-14): rounding of the bar lengths.
+/// (2^6 ε ≈ 1.4e-14): rounding of the bar lengths, or of a circuit's product of exponentials.
 inline constexpr double kCorrectorTarget = 0x1p6 * kEpsilon;
-/// A tangent whose projection on the null space of D(c) keeps less than this fraction of its
-/// length has lost the mode (a corner the predictor cannot follow; a ratio, not rounding).
+/// A tangent whose projection on the null space of D(c) (networks: of the closure Jacobian)
+/// keeps less than this fraction of its length has lost the mode (a corner the predictor cannot follow; a ratio, not rounding).
 inline constexpr double kTangentKept = 1e-3;
 
 // --- Position analysis (kinematics/position_solver.hpp) --------------------------------------

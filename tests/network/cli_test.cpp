@@ -6,6 +6,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <vector>
 
 #include "support/cli_run.hpp"
 
@@ -172,6 +174,29 @@ TEST(NetworkCli, UsageErrorsExitTwo) {
   EXPECT_EQ(run("analyze").exit_code, 2);
   EXPECT_EQ(run("frobnicate x").exit_code, 2);
   EXPECT_EQ(run("--help").exit_code, 0);
+}
+
+// Issue 13: a motion that passes second order and whose trace closes is `finite`, with the trace
+// summary under the keys of a traced framework mode. Bennett's linkage moves finitely (Bennett
+// 1903), so its one motion must be traced closed with a constant rank 3 (a 3-system of screws).
+TEST(NetworkCli, SecondOrderJsonCarriesTheTrace) {
+  const CliRun r = run("analyze --json " + example("bennett.yaml"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::ordered_json::parse(r.out);  // file order of the keys
+  const auto& motion = j["second_order"]["motions"][0];
+  EXPECT_EQ(motion["order"], "finite");
+  EXPECT_EQ(motion["order_reason"], "traced");
+  const auto& trace = motion["trace"];
+  std::vector<std::string> keys;
+  for (const auto& item : trace.items()) keys.push_back(item.key());
+  EXPECT_EQ(keys, (std::vector<std::string>{"amplitude", "max_residual", "rank_along_path", "closed", "rank_drops"}));
+  EXPECT_TRUE(trace["closed"].get<bool>());
+  EXPECT_LT(trace["max_residual"].get<double>(), 1e-10);
+  EXPECT_EQ(trace["rank_along_path"].size(), 21u);
+  for (const auto& rank : trace["rank_along_path"]) EXPECT_EQ(rank, 3);
+  EXPECT_TRUE(trace["rank_drops"].empty());
+  const CliRun text = run("analyze " + example("bennett.yaml"));
+  EXPECT_NE(text.out.find(": finite: passes second order"), std::string::npos) << text.out;
 }
 
 }  // namespace

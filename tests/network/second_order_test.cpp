@@ -85,7 +85,10 @@ TEST(NetworkSecondOrder, MechanismsThatMoveFinitelyPassSecondOrder) {
     const NetworkResult r = analyse_network(loaded.model);
     ASSERT_GT(r.FN, 0);
     ASSERT_GT(r.CN, 0);
-    const NetworkSecondOrder s = classify_network_motions(loaded.model, r);
+    // Second order alone (tracing off): finite_motion_test.cpp checks that the traces close.
+    NetworkSecondOrderOptions untraced;
+    untraced.trace = false;
+    const NetworkSecondOrder s = classify_network_motions(loaded.model, r, untraced);
     ASSERT_EQ(s.motions.size(), static_cast<std::size_t>(r.FN));
     EXPECT_TRUE(s.unmodelled_couplings.empty());
     for (const auto& m : s.motions) {
@@ -101,7 +104,9 @@ TEST(NetworkSecondOrder, WithoutSelfStressNothingBlocks) {
   const io::LoadedNetwork loaded = testing::load_example("four-bar-planar.yaml");
   const NetworkResult r = analyse_network(loaded.model);
   ASSERT_EQ(r.CN, 0);
-  const NetworkSecondOrder s = classify_network_motions(loaded.model, r);
+  NetworkSecondOrderOptions untraced;  // second order alone; traced, the motion is finite (finite_motion_test.cpp)
+  untraced.trace = false;
+  const NetworkSecondOrder s = classify_network_motions(loaded.model, r, untraced);
   ASSERT_EQ(s.motions.size(), 1u);
   EXPECT_EQ(s.motions[0].order, NetworkMotionOrder::undetermined);
   EXPECT_EQ(s.motions[0].reason, NetworkOrderReason::no_self_stress);

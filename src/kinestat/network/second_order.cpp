@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "kinestat/linalg/definite_combination.hpp"
+#include "kinestat/network/circuit_walk.hpp"
 #include "kinestat/tolerances.hpp"
 
 namespace kinestat::network {
@@ -25,62 +26,15 @@ Twist bracket(const Twist& a, const Twist& b) {
   return out;
 }
 
-bool has_second_order_model(screw::CouplingType type) {
-  using screw::CouplingType;
-  // Lower pairs whose motion is the product of the exponentials of their unit twists in the
-  // order the basis lists them (universal: `axis` on the `from` side first); the others are
-  // subgroups, where the order does not matter. Higher pairs need curvatures.
-  return type != CouplingType::point_on_plane && type != CouplingType::point_on_line && type != CouplingType::custom;
-}
-
-// One factor of a circuit's product of exponentials: a magnitude and the sign it enters with.
-struct Factor {
-  int magnitude;
-  double sign;
-};
-
-// The couplings of circuit `row` (a row of B) in the order a walk around it meets them, starting
-// with its chord, each with the sign of its traversal (+1 from `from` to `to`), expanded into
-// their magnitudes (reversed when a coupling is traversed backwards). Empty if the walk fails.
-std::vector<Factor> circuit_factors(const Model& model, const NetworkResult& r, Eigen::Index row,
-                                    const std::vector<std::vector<int>>& magnitudes_of) {
-  std::vector<int> members;
-  for (Eigen::Index e = 0; e < r.B.cols(); ++e)
-    if (r.B(row, e) != 0) members.push_back(static_cast<int>(e));
-  const int chord = r.chords[static_cast<std::size_t>(row)];
-  std::vector<char> used(model.couplings.size(), 0);
-  std::vector<Factor> factors;
-  const auto& first = model.couplings[static_cast<std::size_t>(chord)];
-  const int start = first.from;
-  int body = start, coupling = chord;
-  for (std::size_t step = 0; step < members.size(); ++step) {
-    const auto& c = model.couplings[static_cast<std::size_t>(coupling)];
-    const double sign = c.from == body ? 1.0 : -1.0;
-    used[static_cast<std::size_t>(coupling)] = 1;
-    std::vector<int> order = magnitudes_of[static_cast<std::size_t>(coupling)];
-    if (sign < 0) std::reverse(order.begin(), order.end());
-    for (int i : order) factors.push_back({i, sign});
-    body = sign > 0 ? c.to : c.from;
-    if (step + 1 == members.size()) break;
-    coupling = -1;
-    for (int e : members)
-      if (!used[static_cast<std::size_t>(e)]) {
-        const auto& next = model.couplings[static_cast<std::size_t>(e)];
-        if (next.from == body || next.to == body) {
-          coupling = e;
-          break;
-        }
-      }
-    if (coupling < 0) return {};
-  }
-  if (body != start) return {};
-  return factors;
-}
-
 }  // namespace
 
 const char* network_motion_order_name(NetworkMotionOrder order) {
-  return order == NetworkMotionOrder::infinitesimal ? "infinitesimal" : "undetermined";
+  switch (order) {
+    case NetworkMotionOrder::infinitesimal: return "infinitesimal";
+    case NetworkMotionOrder::finite: return "finite";
+    case NetworkMotionOrder::undetermined: return "undetermined";
+  }
+  return "undetermined";
 }
 
 const char* network_order_reason_name(NetworkOrderReason reason) {
@@ -89,12 +43,35 @@ const char* network_order_reason_name(NetworkOrderReason reason) {
     case NetworkOrderReason::prestress_stable: return "prestress_stable";
     case NetworkOrderReason::passes_second_order: return "passes_second_order";
     case NetworkOrderReason::no_self_stress: return "no_self_stress";
+    case NetworkOrderReason::traced: return "traced";
+    case NetworkOrderReason::trace_failed: return "trace_failed";
     case NetworkOrderReason::no_second_order_model: return "no_second_order_model";
   }
   return "no_second_order_model";
 }
 
-NetworkSecondOrder classify_network_motions(const Model& model, const NetworkResult& r) {
+namespace {
+
+// Traces every motion that passes second order (or that nothing can block): finite when the
+// trace closes, undetermined (trace_failed) when it does not; refused traces change nothing.
+void trace_passing_motions(const Model& model, const NetworkResult& r, const NetworkSecondOrderOptions& options,
+                           NetworkSecondOrder& out) {
+  if (!options.trace) return;
+  for (std::size_t k = 0; k < out.motions.size(); ++k) {
+    auto& m = out.motions[k];
+    if (m.reason != NetworkOrderReason::passes_second_order && m.reason != NetworkOrderReason::no_self_stress) continue;
+    NetworkTrace trace = trace_network_motion(model, r, r.motion_magnitudes.values.col(static_cast<Eigen::Index>(k)), options.tracing);
+    if (!trace.traced()) continue;
+    m.traced = true;
+    m.order = trace.closed ? NetworkMotionOrder::finite : NetworkMotionOrder::undetermined;
+    m.reason = trace.closed ? NetworkOrderReason::traced : NetworkOrderReason::trace_failed;
+    m.trace = std::move(trace);
+  }
+}
+
+}  // namespace
+
+NetworkSecondOrder classify_network_motions(const Model& model, const NetworkResult& r, const NetworkSecondOrderOptions& options) {
   NetworkSecondOrder out;
   const auto FN = static_cast<Eigen::Index>(r.primary_motion.size());
   out.motions.assign(static_cast<std::size_t>(FN), {});
@@ -106,11 +83,9 @@ NetworkSecondOrder classify_network_motions(const Model& model, const NetworkRes
   const std::vector<int>& components = model.space.components;
   const bool spatial = model.space.is_spatial(), planar = model.space.is_planar();
   const bool spherical = components == std::vector<int>{0, 1, 2};
-  std::vector<std::vector<int>> magnitudes_of(model.couplings.size());
-  for (Eigen::Index i = 0; i < F; ++i) magnitudes_of[static_cast<std::size_t>(r.motions[static_cast<std::size_t>(i)].coupling)].push_back(static_cast<int>(i));
   for (Eigen::Index row = 0; row < r.B.rows(); ++row)
     for (Eigen::Index e = 0; e < r.B.cols(); ++e)
-      if (r.B(row, e) != 0 && !has_second_order_model(model.couplings[static_cast<std::size_t>(e)].type)) {
+      if (r.B(row, e) != 0 && !has_product_of_exponentials_model(model.couplings[static_cast<std::size_t>(e)].type)) {
         const std::string& name = model.couplings[static_cast<std::size_t>(e)].name;
         if (std::find(out.unmodelled_couplings.begin(), out.unmodelled_couplings.end(), name) == out.unmodelled_couplings.end())
           out.unmodelled_couplings.push_back(name);
@@ -119,6 +94,7 @@ NetworkSecondOrder classify_network_motions(const Model& model, const NetworkRes
   if (!out.unmodelled_couplings.empty() || !(spatial || planar || spherical) || !sized || phi.cols() != FN) return out;
   if (r.CN == 0 || l == 0) {
     for (auto& m : out.motions) m.reason = NetworkOrderReason::no_self_stress;
+    trace_passing_motions(model, r, options, out);
     return out;
   }
 
@@ -147,12 +123,11 @@ NetworkSecondOrder classify_network_motions(const Model& model, const NetworkRes
   }
 
   // The circuits in walking order, and the closure matrix M′ (6 rows per circuit) they give.
-  std::vector<std::vector<Factor>> circuits;
+  const std::vector<std::vector<CircuitFactor>> circuits = circuit_walks(model, r);
   Eigen::MatrixXd closure = Eigen::MatrixXd::Zero(6 * l, F);
   for (Eigen::Index row = 0; row < l; ++row) {
-    circuits.push_back(circuit_factors(model, r, row, magnitudes_of));
-    if (circuits.back().empty()) return out;  // not a closed walk: leave every motion undetermined
-    for (const Factor& f : circuits.back()) closure.block(6 * row, f.magnitude, 6, 1) += f.sign * unit[static_cast<std::size_t>(f.magnitude)];
+    if (circuits[static_cast<std::size_t>(row)].empty()) return out;  // not a closed walk: leave every motion undetermined
+    for (const CircuitFactor& f : circuits[static_cast<std::size_t>(row)]) closure.block(6 * row, f.magnitude, 6, 1) += f.sign * unit[static_cast<std::size_t>(f.magnitude)];
   }
   // Every motion must close to first order in this frame; otherwise the walk misread B.
   if ((closure * phi).norm() > kModeZero * std::max(1.0, closure.norm() * phi.norm())) return out;
@@ -238,6 +213,7 @@ NetworkSecondOrder classify_network_motions(const Model& model, const NetworkRes
           m.reason = NetworkOrderReason::prestress_stable;
         }
   }
+  trace_passing_motions(model, r, options, out);
   return out;
 }
 

@@ -3,9 +3,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
+#include "kinestat/io/printable_text.hpp"
 #include "kinestat/tolerances.hpp"
 
 namespace kinestat::report {
@@ -135,6 +137,118 @@ std::string framework_move_text(const framework::FrameworkModel& model, const fr
         out += (c ? ", " : "") + number(coordinate(t.positions[k](c, static_cast<Eigen::Index>(n)), analysis.length));
       out += ")";
     }
+    out += "\n";
+  }
+  return out;
+}
+
+// ---- Network path ----------------------------------------------------------------------------
+
+namespace {
+
+std::string network_outcome_text(const NetworkMove& move) {
+  const auto& t = move.trace;
+  if (!t.traced()) return fmt::format("not traced: {}", network::trace_refusal_text(t.refusal));
+  const double length = t.characteristic_length;
+  if (t.closed)
+    return fmt::format("traced to arc length {} ({} of the characteristic length {}) with closure residual at most {} (relative)",
+                       number(t.amplitude), number(t.amplitude / length), number(length), fmt::format("{:.3g}", evidence(t.max_residual)));
+  return fmt::format("the corrector lost closure at step {} of {} (residual {:.3g}, relative): no finite motion along this motion "
+                     "beyond arc length {}",
+                     t.failed_step, move.steps, evidence(t.max_residual), number(t.amplitude));
+}
+
+// The name of primary motion `mode` (its magnitude's name).
+std::string primary_name(const network::NetworkResult& result, std::size_t mode) {
+  if (mode >= result.primary_motion.size()) return {};
+  const auto index = static_cast<std::size_t>(result.primary_motion[mode]);
+  return index < result.motions.size() ? result.motions[index].name : std::string{};
+}
+
+// Joint coordinates: rad or file length; below kPrintedZero (× L for lengths) printed as 0.
+double joint_coordinate(const network::NetworkResult& result, const network::NetworkTrace& t, std::size_t point, std::size_t i) {
+  const double value = t.coordinates[point](static_cast<Eigen::Index>(i));
+  const bool translation = result.motions[i].unit_screw.kind == screw::UnitScrewKind::translation;
+  return coordinate(value, translation ? t.characteristic_length : 1.0);
+}
+
+}  // namespace
+
+network::NetworkMotionOrder network_move_order(const NetworkMove& move) {
+  if (move.second_order.order == network::NetworkMotionOrder::infinitesimal) return network::NetworkMotionOrder::infinitesimal;
+  if (move.second_order.reason == network::NetworkOrderReason::no_second_order_model) return network::NetworkMotionOrder::undetermined;
+  return move.trace.traced() && move.trace.closed ? network::NetworkMotionOrder::finite : network::NetworkMotionOrder::undetermined;
+}
+
+nlohmann::ordered_json network_move_json(const network::Model& model, const network::NetworkResult& result, const NetworkMove& move) {
+  nlohmann::ordered_json j;
+  j["kind"] = "network";
+  j["command"] = "move";
+  if (!model.name.empty()) j["name"] = model.name;
+  j["mode"] = move.mode + 1;
+  j["modes"] = result.primary_motion.size();
+  j["primary"] = primary_name(result, move.mode);
+  j["order"] = network::network_motion_order_name(network_move_order(move));
+  const auto& t = move.trace;
+  j["characteristic_length"] = rounded(t.characteristic_length);
+  j["amplitude_fraction"] = rounded(move.amplitude_fraction);
+  j["steps"] = move.steps;
+  if (t.traced()) j["not_traced"] = nullptr;
+  else j["not_traced"] = network::trace_refusal_text(t.refusal);
+  j["closed"] = t.closed;
+  if (t.closed || !t.traced()) j["failed_step"] = nullptr;
+  else j["failed_step"] = t.failed_step;
+  j["amplitude"] = rounded(t.amplitude);
+  j["max_residual"] = evidence(t.max_residual);
+  j["rank_drops"] = t.rank_drops;
+  j["path"] = nlohmann::ordered_json::array();
+  for (std::size_t k = 0; k < t.coordinates.size(); ++k) {
+    nlohmann::ordered_json point;
+    const double arc = k < t.arc_length_along_path.size() ? t.arc_length_along_path[k] : 0.0;
+    point["step"] = k;
+    point["parameter"] = rounded(arc / t.characteristic_length);
+    point["arc_length"] = rounded(arc);
+    point["residual"] = evidence(k < t.residual_along_path.size() ? t.residual_along_path[k] : 0.0);
+    point["rank"] = k < t.rank_along_path.size() ? t.rank_along_path[k] : 0;
+    nlohmann::ordered_json coordinates;
+    for (std::size_t i = 0; i < result.motions.size(); ++i) coordinates[result.motions[i].name] = joint_coordinate(result, t, k, i);
+    point["coordinates"] = std::move(coordinates);
+    j["path"].push_back(std::move(point));
+  }
+  return j;
+}
+
+std::string network_move_text(const network::Model& model, const network::NetworkResult& result, const NetworkMove& move) {
+  std::string out = fmt::format("Finite motion of {}, primary motion {} of {} ({})\n", model.name.empty() ? "the network" : io::printable_text(model.name),
+                                move.mode + 1, result.primary_motion.size(), io::printable_text(primary_name(result, move.mode)));
+  out += fmt::format("  order: {}", network::network_motion_order_name(network_move_order(move)));
+  if (move.second_order.order == network::NetworkMotionOrder::infinitesimal)
+    out += " (a self-stress blocks it at second order: the motion is a first-order motion only)";
+  out += "\n";
+  out += "  " + network_outcome_text(move) + "\n";
+  const auto& t = move.trace;
+  if (!t.rank_drops.empty()) {
+    out += "  the rank of the closure Jacobian drops at step";
+    for (std::size_t k : t.rank_drops) out += fmt::format(" {}", k);
+    out += " (a singular configuration: branches may meet there)\n";
+  } else if (!t.coordinates.empty()) {
+    out += "  the rank of the closure Jacobian stays constant along the path\n";
+  }
+  if (t.coordinates.empty()) return out;
+  // Joint coordinates that change along the path (rad; lengths in file units).
+  std::vector<std::size_t> moving;
+  for (std::size_t i = 0; i < result.motions.size(); ++i) {
+    double largest = 0.0;
+    for (std::size_t k = 0; k < t.coordinates.size(); ++k) largest = std::max(largest, std::abs(joint_coordinate(result, t, k, i)));
+    if (largest > 0.0) moving.push_back(i);
+  }
+  out += "\n  step  parameter   residual   rank  joint coordinates that change (rad; translations in length units)\n";
+  for (std::size_t k = 0; k < t.coordinates.size(); ++k) {
+    const double arc = k < t.arc_length_along_path.size() ? t.arc_length_along_path[k] : 0.0;
+    out += fmt::format("  {:>4}  {:<10}  {:<9}  {:>4} ", k, number(arc / t.characteristic_length),
+                       fmt::format("{:.3g}", evidence(k < t.residual_along_path.size() ? t.residual_along_path[k] : 0.0)),
+                       k < t.rank_along_path.size() ? t.rank_along_path[k] : 0);
+    for (std::size_t i : moving) out += fmt::format(" {} {}", io::printable_text(result.motions[i].name), number(joint_coordinate(result, t, k, i)));
     out += "\n";
   }
   return out;

@@ -8,6 +8,7 @@
 
 #include "kinestat/io/printable_text.hpp"
 #include "kinestat/report/generic_text.hpp"
+#include "kinestat/report/json_text.hpp"
 #include "kinestat/report/linear_form_text.hpp"
 #include "kinestat/report/rank_status_text.hpp"
 #include "kinestat/report/verdict_report.hpp"
@@ -258,6 +259,7 @@ std::string second_order_text(const network::NetworkSecondOrder& s, const std::v
                      fmt::join(names, ", "));
     return t;
   }
+  const auto residual = [](double value) { return fmt::format("{:.3g}", rank_evidence_number(value)); };
   for (std::size_t k = 0; k < s.motions.size() && k < motion_primaries.size(); ++k) {
     const auto& m = s.motions[k];
     std::string why;
@@ -272,10 +274,34 @@ std::string second_order_text(const network::NetworkSecondOrder& s, const std::v
         why = "no self-stress does work on it at second order; a finite motion is possible (not traced)";
         break;
       case network::NetworkOrderReason::no_self_stress: why = "CN = 0: nothing blocks it at second order (not traced)"; break;
+      case network::NetworkOrderReason::traced:
+        why = fmt::format("passes second order (work {:.3g}) and was traced over {} with closure residual {} (relative)",
+                          m.second_order_work, fmt::format("{:.6g}", rounded_for_report(m.trace.amplitude)), residual(m.trace.max_residual));
+        break;
+      case network::NetworkOrderReason::trace_failed:
+        why = fmt::format("passes second order (work {:.3g}) but the trace lost closure at step {} (residual {}): possibly blocked at a "
+                          "higher order",
+                          m.second_order_work, m.trace.failed_step, residual(m.trace.max_residual));
+        break;
       case network::NetworkOrderReason::no_second_order_model: why = "not classified (model too large or space not modelled)"; break;
     }
     t += fmt::format("  motion {}: {}: {}\n", printable_text(motion_primaries[k]), network::network_motion_order_name(m.order), why);
+    if (m.traced && !m.trace.rank_drops.empty())
+      t += fmt::format("    rank of the closure Jacobian along the path: {}; it drops at point(s) {} (0 = the start): a singular "
+                       "configuration -- branch point or change of mobility\n",
+                       fmt::join(m.trace.rank_along_path, " "), fmt::join(m.trace.rank_drops, ", "));
   }
+  return t;
+}
+
+// The path summary of a traced motion: the keys of a traced framework mode.
+Json trace_json(const network::NetworkTrace& trace) {
+  Json t;
+  t["amplitude"] = rounded_for_report(trace.amplitude);
+  t["max_residual"] = rank_evidence_number(trace.max_residual);
+  t["rank_along_path"] = trace.rank_along_path;
+  t["closed"] = trace.closed;
+  t["rank_drops"] = trace.rank_drops;
   return t;
 }
 
@@ -294,6 +320,7 @@ Json second_order_json(const network::NetworkSecondOrder& s, const std::vector<s
       for (Eigen::Index i = 0; i < m.blocking_stress.size(); ++i) stress.push_back(std::round(m.blocking_stress(i) * 1e9) / 1e9);
       motion["blocking_stress"] = stress;
     }
+    if (m.traced) motion["trace"] = trace_json(m.trace);
     motions.push_back(motion);
   }
   j["motions"] = motions;
