@@ -107,3 +107,12 @@ def test_html_repr_is_a_complete_self_contained_document(examples, tmp_path):
     code, _, err = run_cli("report", examples / "davies-2-circuit.yaml", "-o", out)
     assert code == 0, err
     assert html == out.read_text()
+
+
+def test_bennett_motion_is_traced_finite(examples):
+    # Issue 13: Bennett's linkage moves finitely (Bennett 1903), so its one motion passes second
+    # order and its trace on the loop-closure equations closes (residual below 1e-10 relative).
+    motion = kinestat.analyze(examples / "bennett.yaml").to_dict()["second_order"]["motions"][0]
+    assert (motion["order"], motion["order_reason"]) == ("finite", "traced")
+    assert motion["trace"]["closed"] and motion["trace"]["max_residual"] < 1e-10
+    assert motion["trace"]["rank_drops"] == []

@@ -104,19 +104,31 @@ Evaluation evaluate(const Loops& loops, const Eigen::VectorXd& s) {
 
 // Newton corrector on the hyperplane through the predicted point normal to the tangent:
 // minimum-norm least-squares steps, so self-stresses (redundant closure rows) are no obstacle
-// while the equations stay consistent. Returns the residual reached.
+// while the equations stay consistent. A step that does not lower the residual is halved (up to
+// kCorrectorHalvings times): near a branch point, where the Jacobian is nearly singular, full
+// steps overshoot. Returns the residual reached.
+constexpr int kCorrectorIterations = 40;
+constexpr int kCorrectorHalvings = 12;
+
 double correct(const Loops& loops, Eigen::VectorXd& s, const Eigen::VectorXd& tangent) {
   Evaluation here = evaluate(loops, s);
-  for (int iteration = 0; iteration < 20 && here.residual > kCorrectorTarget; ++iteration) {
+  for (int iteration = 0; iteration < kCorrectorIterations && here.residual > kCorrectorTarget; ++iteration) {
     Eigen::MatrixXd system(here.jacobian.rows() + 1, loops.F);
     system << here.jacobian, tangent.transpose();
     Eigen::VectorXd rhs = Eigen::VectorXd::Zero(system.rows());
     rhs.head(here.defect.size()) = -here.defect;
-    const Eigen::VectorXd trial = s + system.completeOrthogonalDecomposition().solve(rhs);
-    Evaluation next = evaluate(loops, trial);
-    if (!(next.residual < here.residual)) break;  // stagnated at rounding level (or diverging)
-    s = trial;
-    here = std::move(next);
+    const Eigen::VectorXd step = system.completeOrthogonalDecomposition().solve(rhs);
+    bool improved = false;
+    for (int halving = 0; halving <= kCorrectorHalvings && !improved; ++halving) {
+      const Eigen::VectorXd trial = s + std::ldexp(1.0, -halving) * step;
+      Evaluation next = evaluate(loops, trial);
+      if (next.residual < here.residual) {
+        s = trial;
+        here = std::move(next);
+        improved = true;
+      }
+    }
+    if (!improved) break;  // stagnated at rounding level (or no descent)
   }
   return here.residual;
 }

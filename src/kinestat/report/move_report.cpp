@@ -223,7 +223,9 @@ std::string network_move_text(const network::Model& model, const network::Networ
                                 move.mode + 1, result.primary_motion.size(), io::printable_text(primary_name(result, move.mode)));
   out += fmt::format("  order: {}", network::network_motion_order_name(network_move_order(move)));
   if (move.second_order.order == network::NetworkMotionOrder::infinitesimal)
-    out += " (a self-stress blocks it at second order: the motion is a first-order motion only)";
+    out += move.trace.closed ? " (a self-stress blocks this direction at second order; the closed path below leaves the start along "
+                               "another direction: the start is a branch point)"
+                             : " (a self-stress blocks it at second order: the motion is a first-order motion only)";
   out += "\n";
   out += "  " + network_outcome_text(move) + "\n";
   const auto& t = move.trace;
@@ -231,7 +233,7 @@ std::string network_move_text(const network::Model& model, const network::Networ
     out += "  the rank of the closure Jacobian drops at step";
     for (std::size_t k : t.rank_drops) out += fmt::format(" {}", k);
     out += " (a singular configuration: branches may meet there)\n";
-  } else if (!t.coordinates.empty()) {
+  } else if (t.coordinates.size() > 1) {
     out += "  the rank of the closure Jacobian stays constant along the path\n";
   }
   if (t.coordinates.empty()) return out;
