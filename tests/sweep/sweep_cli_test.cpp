@@ -211,6 +211,36 @@ variants: [two-bars.yaml, missing.yaml, broken.yaml, two-bars.yaml]
   fs::remove_all(dir);
 }
 
+TEST(SweepCli, LinesCarryTheKeysOfTheAnalyzeReportUnchanged) {
+  // Networks (exact and floating point, with a verified change) and a bar framework: each line's
+  // report keys are those of `kinestat analyze --json` of the same file, value for value.
+  const std::vector<std::string> files{"davies-2-circuit.yaml", "four-bar-spatial.yaml", "bennett-perturbed.yaml",
+                                       "slider-crank-planar.yaml", "truss-12.yaml"};
+  const fs::path dir = test_folder("keys");
+  std::string list;
+  for (const auto& file : files) list += (list.empty() ? "" : ", ") + example_path(file);
+  const std::string spec = write(dir / "spec.yaml", "kinestat: 1\nkind: sweep\nvariants: [" + list + "]\n");
+  const auto r = run_cli("sweep " + spec);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto lines = lines_of(r.out);
+  ASSERT_EQ(lines.size(), files.size());
+  for (std::size_t k = 0; k < files.size(); ++k) {
+    const auto analyze = run_cli("analyze --json " + example_path(files[k]));
+    ASSERT_EQ(analyze.exit_code, 0) << analyze.err;
+    const auto report = nlohmann::json::parse(analyze.out);
+    EXPECT_EQ(lines[k]["file"], example_path(files[k]));
+    std::size_t carried = 0;
+    for (const auto& [key, value] : lines[k].items()) {
+      if (key == "variant" || key == "of" || key == "file") continue;
+      EXPECT_EQ(value, report[key]) << files[k] << " " << key;
+      ++carried;
+    }
+    EXPECT_GE(carried, 6u) << files[k];  // kind, verdict, counts, classification, rank evidence at least
+    for (const char* key : {"kind", "verdict", "classification"}) EXPECT_TRUE(lines[k].contains(key)) << files[k] << " " << key;
+  }
+  fs::remove_all(dir);
+}
+
 TEST(SweepCli, BadSpecsAreOneLineWithTheirPlaceAndExitTwo) {
   const fs::path dir = test_folder("bad");
   write(dir / "two-bars.yaml", kTwoBars);
