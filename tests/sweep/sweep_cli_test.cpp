@@ -188,6 +188,26 @@ parameters:
   fs::remove_all(dir);
 }
 
+TEST(SweepCli, SubnormalCoordinatesAreAnalysedNotAnInternalError) {
+  // Found by fuzz/fuzz_sweep_spec.cpp: B's y = -1.1e-319 (a subnormal double, nearly on AC)
+  // made the report's rounding of rank evidence throw (std::stod on underflow) and
+  // `analyze` exit 3. Such a B is collinear with A and C to within rounding.
+  const fs::path dir = test_folder("subnormal");
+  write(dir / "two-bars.yaml", kTwoBars);
+  const std::string spec = write(dir / "spec.yaml", R"(kinestat: 1
+kind: sweep
+model: two-bars.yaml
+parameters:
+  - {name: b_y, node: B, coordinate: y, values: [-11e-320, 1e-310]}
+)");
+  const auto r = run_cli("sweep " + spec);
+  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+  const auto lines = lines_of(r.out);
+  ASSERT_EQ(lines.size(), 2u);
+  for (const auto& line : lines) EXPECT_FALSE(line.contains("error")) << line["error"];
+  fs::remove_all(dir);
+}
+
 TEST(SweepCli, AVariantThatFailsGivesAnErrorLineAndTheSweepGoesOn) {
   const fs::path dir = test_folder("failing");
   write(dir / "two-bars.yaml", kTwoBars);
