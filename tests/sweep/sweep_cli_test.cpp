@@ -316,6 +316,9 @@ TEST(SweepCli, MergeRefusesDuplicatesGapsAndForeignLines) {
   const auto mixed = run_cli("sweep --merge " + a + " " + other);
   EXPECT_EQ(mixed.exit_code, 2);
   EXPECT_NE(mixed.err.find("d.jsonl:1:1: error: this line is of a sweep of 4 variants"), std::string::npos) << mixed.err;
+  const auto folder = run_cli("sweep --merge " + dir.string());
+  EXPECT_EQ(folder.exit_code, 2);
+  EXPECT_NE(folder.err.find("is a folder"), std::string::npos) << folder.err;
   fs::remove_all(dir);
 }
 

@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <optional>
 
@@ -24,9 +25,16 @@ struct Line {
 };
 
 std::string read_whole(const std::string& path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) throw InputError({path, 0, 0}, "is a folder, not a sweep output file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError({path, 0, 0}, fmt::format("cannot read the sweep output: {}", std::strerror(errno)));
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string text;
+  try {
+    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  } catch (const std::ios_base::failure& failure) {  // libstdc++ throws from underflow on a read error
+    throw InputError({path, 0, 0}, fmt::format("cannot read the sweep output: {}", failure.what()));
+  }
   if (in.bad()) throw InputError({path, 0, 0}, "cannot read the sweep output");
   return text;
 }
