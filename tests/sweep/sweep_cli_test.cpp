@@ -280,6 +280,10 @@ TEST(SweepCli, BadSpecsAreOneLineWithTheirPlaceAndExitTwo) {
       {"kinestat: 1\nkind: sweep\nmodel: nowhere.yaml\nparameters:\n  - {name: h, node: B, coordinate: y, values: [1]}\n",
        "spec.yaml:3:8: error: the model '"},
       {"kinestat: 1\nkind: framework\n", "spec.yaml:2:7: error: a sweep spec has 'kind: sweep'"},
+      // 10⁷ + 1 values twice: refused before any value is made (10¹⁴ variants).
+      {"kinestat: 1\nkind: sweep\nmodel: two-bars.yaml\nparameters:\n  - {name: a, node: B, coordinate: x, from: 0, to: 1, steps: 10000000}\n"
+       "  - {name: b, node: B, coordinate: y, from: 0, to: 1, steps: 10000000}\n",
+       "spec.yaml:6:62: error: the parameters give more than 1000000000000 variants"},
   };
   for (const auto& c : cases) {
     const std::string spec = write(dir / "spec.yaml", c.spec);

@@ -75,6 +75,9 @@ class SweepSpecReader {
         if (other.name == p.name) file_.fail(item, fmt::format("the parameter '{}' is named twice", p.name));
         if (other.path == p.path) file_.fail(item, fmt::format("the parameters '{}' and '{}' vary the same number ({})", other.name, p.name, p.address));
       }
+      if (p.values.size() > design::kMaxSweepVariants / product_)
+        file_.fail(item, fmt::format("the parameters give more than {} variants", design::kMaxSweepVariants));
+      product_ *= p.values.size();
       sizes.push_back(p.values.size());
       spec_.parameters.push_back(std::move(p));
     }
@@ -146,6 +149,9 @@ class SweepSpecReader {
     const long long n = file_.integer(steps, "'steps'");
     if (n < 1 || n > design::kMaxSweepSteps)
       file_.fail(steps, fmt::format("'steps' must be a whole number from 1 to {} (the parameter takes steps + 1 values)", design::kMaxSweepSteps));
+    // Checked before the values are made, so no spec can ask for more memory than one large range.
+    if (static_cast<std::uint64_t>(n + 1) > design::kMaxSweepVariants / product_)
+      file_.fail(steps, fmt::format("the parameters give more than {} variants", design::kMaxSweepVariants));
     p.values = design::range_values(a, b, n);
   }
 
@@ -159,6 +165,7 @@ class SweepSpecReader {
 
   const YamlFile& file_;
   SweepSpec spec_;
+  std::uint64_t product_ = 1;  ///< variants of the parameters read so far (at most kMaxSweepVariants)
 };
 
 }  // namespace
