@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <string>
 
 #include "kinestat/tolerances.hpp"
@@ -16,7 +17,7 @@ double rounded(double value) { return rounded_for_report(value); }
 // Residuals keep tiny values: three significant digits.
 double evidence(double value) {
   if (!std::isfinite(value) || value == 0.0) return value;
-  return std::stod(fmt::format("{:.3g}", value));
+  return std::strtod(fmt::format("{:.3g}", value).c_str(), nullptr);
 }
 std::string number(double value) { return fmt::format("{:.6g}", rounded(value)); }
 
