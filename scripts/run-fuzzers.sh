@@ -19,6 +19,7 @@ for harness in build/fuzz/fuzz/fuzz_*; do
   case "$name" in
     fuzz_cli_arguments) seeds=fuzz/seeds/cli ;;
     fuzz_adjacency_matrix) seeds=fuzz/seeds/adjacency ;;
+    fuzz_sweep_spec) seeds="fuzz/seeds/sweep examples/sweeps" ;;
     fuzz_spacar_file) seeds="examples/spacar tests/importers/data" ;;
     fuzz_urdf_file | fuzz_sdformat_file | fuzz_mjcf_file) seeds="examples/robots tests/importers/data" ;;
     *) seeds="examples examples/json fuzz/seeds/model" ;;

@@ -26,7 +26,7 @@ from ._core import InputError
 
 __all__ = [
     "InputError", "analyze", "analyse", "structural_groups", "Framework", "Network",
-    "NetworkResult", "FrameworkResult", "StructureResult", "html_built_in",
+    "NetworkResult", "FrameworkResult", "StructureResult", "html_built_in", "sweep",
 ]
 
 
@@ -265,6 +265,15 @@ def structural_groups(model):
     ``kinestat structure``: ``to_dict()`` equals its ``--json``."""
     path, text = _source(model)
     return StructureResult(_core.decompose(path, text))
+
+
+def sweep(spec, *, shard=(0, 1), tolerance=None, full=False):
+    """A design sweep (docs/sweep.md): one dict per variant of the sweep spec file ``spec``, as
+    the lines of ``kinestat sweep SPEC --shard I/N`` (``shard=(I, N)``). A variant that could not
+    be analysed has ``error``; a bad spec or model raises :class:`InputError`."""
+    index, count = shard
+    lines, _failed = _core.sweep_lines(str(spec), index, count, tolerance, full)
+    return [json.loads(line) for line in lines]
 
 
 def _number(value):

@@ -8,9 +8,11 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "kinestat/design/framework_verdict.hpp"
@@ -32,6 +34,7 @@
 #include "kinestat/report/scene.hpp"
 #include "kinestat/report/structure_report.hpp"
 #include "kinestat/report/svg_writer.hpp"
+#include "kinestat/report/sweep_run.hpp"
 #include "kinestat/structure/decomposition.hpp"
 #include "kinestat/structure/transformations.hpp"
 
@@ -231,6 +234,20 @@ std::vector<std::string> all_names(const std::vector<network::Magnitude>& magnit
   return names;
 }
 
+/// The lines of a design sweep (docs/sweep.md), as `kinestat sweep SPEC --shard INDEX/COUNT`
+/// writes them; also how many variants gave an `error` line.
+std::pair<std::vector<std::string>, std::uint64_t> sweep_lines(const std::string& spec, std::uint64_t index, std::uint64_t count,
+                                                               std::optional<double> tolerance, bool full) {
+  if (count < 1 || index >= count) throw py::value_error("shard: 0 <= index < count");
+  report::SweepRunOptions options;
+  options.shard = {index, count};
+  options.tolerance = tolerance;
+  options.full = full;
+  std::vector<std::string> lines;
+  const std::uint64_t failed = report::run_sweep(io::read_sweep_spec(spec), options, [&lines](const std::string& line) { lines.push_back(line); });
+  return {lines, failed};
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_core, m) {
@@ -348,5 +365,7 @@ PYBIND11_MODULE(_core, m) {
         "Reads a model file (or `text` named `path`) and runs the analysis of its kind");
   m.def("decompose", &decompose, py::arg("path"), py::arg("text") = std::nullopt,
         "Structural groups of a network or structure model, as `kinestat structure`");
+  m.def("sweep_lines", &sweep_lines, py::arg("spec"), py::arg("index") = 0, py::arg("count") = 1, py::arg("tolerance") = std::nullopt,
+        py::arg("full") = false, "The JSON lines of a design sweep (one shard of it) and how many variants failed");
   m.def("html_built_in", &report::html_report_built_in);
 }

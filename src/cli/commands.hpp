@@ -42,6 +42,7 @@ void register_draw(CLI::App& app, Action& action);
 void register_report(CLI::App& app, Action& action);
 void register_convert(CLI::App& app, Action& action);
 void register_move(CLI::App& app, Action& action);
+void register_sweep(CLI::App& app, Action& action);
 
 /// The format of a model file, from its extension (docs/formats.md): `.dat` SPACAR, `.urdf`
 /// URDF, `.sdf` / `.world` SDFormat, `.xml` by its root element (<mujoco> MJCF, <robot> URDF,

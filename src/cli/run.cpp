@@ -43,6 +43,7 @@ int run(int argc, const char* const* argv) {
   register_report(app, action);
   register_convert(app, action);
   register_move(app, action);
+  register_sweep(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& success) {

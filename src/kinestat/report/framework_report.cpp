@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <string>
 #include <utility>
@@ -30,16 +31,16 @@ std::string number(double value) { return fmt::format("{:.6g}", rounded(value));
 // Rank evidence keeps tiny values (a dropped singular value of 1e-16 is information).
 double significant(double value) {
   if (!std::isfinite(value) || value == 0.0) return value;
-  return std::stod(fmt::format("{:.10g}", value));
+  return std::strtod(fmt::format("{:.10g}", value).c_str(), nullptr);
 }
 std::string evidence(double value) { return fmt::format("{:.3g}", significant(value)); }
-double evidence_number(double value) { return std::stod(evidence(value)); }
+double evidence_number(double value) { return std::strtod(evidence(value).c_str(), nullptr); }
 
 // The smallest and largest of the length-scaling factors (framework::physical_scaling), to
 // four digits: they come from an iteration, and only their spread is information.
 std::array<double, 2> factor_range(const Eigen::VectorXd& factors) {
   if (factors.size() == 0) return {1.0, 1.0};
-  auto four = [](double v) { return std::stod(fmt::format("{:.4g}", v)); };
+  auto four = [](double v) { return std::strtod(fmt::format("{:.4g}", v).c_str(), nullptr); };
   return {four(factors.minCoeff()), four(factors.maxCoeff())};
 }
 double spread(const Eigen::VectorXd& factors) { return factors.size() == 0 ? 1.0 : factors.maxCoeff() / factors.minCoeff(); }

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <string>
 
 #include "kinestat/io/printable_text.hpp"
@@ -18,7 +19,7 @@ double rounded(double value) { return rounded_for_report(value); }
 // Residuals keep tiny values: three significant digits.
 double evidence(double value) {
   if (!std::isfinite(value) || value == 0.0) return value;
-  return std::stod(fmt::format("{:.3g}", value));
+  return std::strtod(fmt::format("{:.3g}", value).c_str(), nullptr);
 }
 std::string number(double value) { return fmt::format("{:.6g}", rounded(value)); }
 

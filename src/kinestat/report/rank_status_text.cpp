@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <optional>
 #include <string>
 
@@ -19,7 +20,7 @@ std::string three_digits(double value) {
 
 double rank_evidence_number(double value) {
   if (!std::isfinite(value) || value == 0.0) return value;
-  return std::stod(three_digits(value));
+  return std::strtod(three_digits(value).c_str(), nullptr);
 }
 
 std::string rank_status_text(const linalg::RankDecision& d) {
