@@ -121,7 +121,7 @@ std::string framework_move_text(const framework::FrameworkModel& model, const fr
     out += "  the rank of D(c) drops at step";
     for (std::size_t k : t.rank_drops) out += fmt::format(" {}", k);
     out += " (a singular configuration: branches may meet there)\n";
-  } else if (!t.positions.empty()) {
+  } else if (t.positions.size() > 1) {  // one point is no path
     out += "  the rank of D(c) stays constant along the path\n";
   }
   const std::vector<std::size_t> moving = moving_nodes(model, t, analysis.length);
