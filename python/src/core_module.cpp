@@ -451,7 +451,7 @@ PYBIND11_MODULE(_core, m) {
   m.def("analyse", &analyse, py::arg("path"), py::arg("text") = std::nullopt, py::arg("tolerance") = std::nullopt,
         py::arg("arithmetic") = "auto", py::arg("primary") = std::vector<std::string>{},
         "Reads a model file (or `text` named `path`) and runs the analysis of its kind");
-  m.def("read", &read, py::arg("path"), py::arg("text") = std::nullopt, "Reads a model file (or `text` named `path`), no analysis");
+  m.def("read", [](const std::string& path, const std::optional<std::string>& text) { return read(path, text); }, py::arg("path"), py::arg("text") = std::nullopt, "Reads a model file (or `text` named `path`), no analysis");
   m.def("decompose", &decompose, py::arg("path"), py::arg("text") = std::nullopt,
         "Structural groups of a network or structure model, as `kinestat structure`");
   m.def("html_built_in", &report::html_report_built_in);

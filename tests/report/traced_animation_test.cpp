@@ -50,8 +50,9 @@ double worst_length_error(const report::Scene& scene, const std::vector<Eigen::V
 }
 
 // The traced path both ways: 2 × kAnimationSteps + 1 points with the model's configuration in
-// the middle, arc lengths increasing through 0 to about ± the trace amplitude (0.1 of the
-// characteristic length), every bar at its hand-computed length at every point.
+// the middle, arc lengths increasing through 0 to about ± the amplitude asked for
+// (kAnimationAmplitude of the characteristic length), every bar at its hand-computed length at
+// every point.
 void expect_two_way_path(const Traced& t, const std::vector<double>& rest) {
   ASSERT_EQ(t.scene.modes.size(), 1u);
   const auto& mode = t.scene.modes[0];
@@ -64,7 +65,7 @@ void expect_two_way_path(const Traced& t, const std::vector<double>& rest) {
   EXPECT_EQ(trace.start, steps);
   EXPECT_EQ(trace.arc[trace.start], 0.0);
   for (std::size_t k = 1; k < trace.arc.size(); ++k) EXPECT_GT(trace.arc[k], trace.arc[k - 1]) << k;
-  const double amplitude = 0.1 * t.analysis.length;
+  const double amplitude = framework::kAnimationAmplitude * t.analysis.length;
   EXPECT_NEAR(trace.arc.back(), amplitude, 0.02 * amplitude);
   EXPECT_NEAR(trace.arc.front(), -amplitude, 0.02 * amplitude);
   EXPECT_TRUE(trace.note.empty()) << trace.note;
@@ -78,7 +79,7 @@ void expect_two_way_path(const Traced& t, const std::vector<double>& rest) {
   for (std::size_t i = 0; i < t.model.nodes.size(); ++i)
     moved = std::max({moved, (trace.positions.front()[i] - trace.positions[trace.start][i]).norm(),
                       (trace.positions.back()[i] - trace.positions[trace.start][i]).norm()});
-  EXPECT_GT(moved, 0.02 * t.analysis.length);
+  EXPECT_GT(moved, 0.1 * t.analysis.length);
 }
 
 // The traced path as the viewer rebuilds it from the scene JSON: the written positions plus

@@ -21,7 +21,14 @@ namespace kinestat::framework {
 struct TwoWayTrace {
   FiniteTrace forward;
   FiniteTrace backward;
-  /// Largest closure residual (relative to the characteristic length) of the points of both.
+  /// The direction followed is the mode without its rigid motion of the whole model (the part
+  /// the second-order classification traced), not the mode itself.
+  bool rigid_part_removed = false;
+  /// A side lost closure before kAnimationAmplitude and was traced again, shorter
+  /// (animation_traces): its amplitude is the classification's.
+  bool forward_retraced = false, backward_retraced = false;
+  /// Largest closure residual (relative to the characteristic length) of the points reached by
+  /// both (a point where the corrector lost closure is not among them).
   double max_residual() const;
 };
 
@@ -36,12 +43,21 @@ TwoWayTrace trace_both_ways(const FrameworkModel& model, const FrameworkResult& 
 /// 1/kAnimationSteps of the traced arc from one drawn configuration to the next.
 inline constexpr int kAnimationSteps = 48;
 
+/// Arc length of each side of the traces the HTML report animates, as a fraction of the
+/// characteristic length: five times the classification's 0.1, so that the motion is visible
+/// next to the first-order animation (whose largest displacement reaches 25 % of the model's
+/// size); a side that loses closure before it stops where it did.
+inline constexpr double kAnimationAmplitude = 0.5;
+
 /// The modes of `analysis` whose motion the report animates as traced: those of order `finite`
-/// (a closed trace or a rigid motion of the whole model), each traced both ways along the mode
-/// itself (the rates `kinestat move --mode N` follows) over `options.trace_amplitude_fraction`
-/// of the characteristic length with kAnimationSteps steps per side, by the rank rule of
-/// `options`. One entry per mode; empty for the other modes, and for every mode when
-/// `analysis.orders` is empty (second order not computed).
+/// (a closed trace or a rigid motion of the whole model), each traced both ways over
+/// kAnimationAmplitude of the characteristic length with kAnimationSteps steps per side, by the
+/// rank rule of `options` (a side that loses closure before is traced again over
+/// `options.trace_amplitude_fraction` with the same number of steps, and the side that reaches
+/// further is kept): a rigid motion along itself, any other mode along
+/// its part without rigid motions of the whole model (second_order.hpp's rigid_motions), the
+/// direction the classification traced and closed. One entry per mode; empty for the other
+/// modes, and for every mode when `analysis.orders` is empty (second order not computed).
 std::vector<std::optional<TwoWayTrace>> animation_traces(const FrameworkModel& model, const FrameworkResult& analysis,
                                                          const AnalysisOptions& options);
 

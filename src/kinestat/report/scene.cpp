@@ -285,7 +285,10 @@ std::vector<Vector3d> scene_points(const Eigen::MatrixXd& positions) {
 }
 
 // Why one side of a two-way trace stops short, or "".
-std::string short_side(const framework::FiniteTrace& side, const char* which) {
+std::string short_side(const framework::FiniteTrace& side, const char* which, bool retraced) {
+  if (side.closed && retraced)
+    return fmt::format("the {} side is traced to arc length {} only (with larger steps the corrector lost closure)", which,
+                       fixed(side.amplitude, 6));
   if (side.closed) return "";
   return fmt::format("the {} side stops at arc length {}: the corrector lost closure at its step {}", which, fixed(side.amplitude, 6),
                      side.failed_step);
@@ -308,8 +311,13 @@ std::optional<SceneTrace> scene_trace(const framework::TwoWayTrace& both) {
     trace.arc.push_back(f.arc_length_along_path[k]);
   }
   trace.max_residual = both.max_residual();
-  const std::string forward = short_side(f, "forward (+mode)"), backward = short_side(b, "backward (-mode)");
+  const std::string forward = short_side(f, "forward (+mode)", both.forward_retraced),
+                    backward = short_side(b, "backward (-mode)", both.backward_retraced);
   trace.note = forward.empty() ? backward : backward.empty() ? forward : forward + "; " + backward;
+  if (both.rigid_part_removed)
+    trace.note = std::string("traced without the mode's rigid motion of the whole model (the internal motion the second-order "
+                             "analysis traced)") +
+                 (trace.note.empty() ? "" : "; " + trace.note);
   return trace;
 }
 
