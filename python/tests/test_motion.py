@@ -103,7 +103,7 @@ def coupler_pivot(theta):
     return b + along * u + side * h * normal
 
 
-@pytest.mark.parametrize("theta", [0.0, 0.3, -0.4, 1.0, 1.5])
+@pytest.mark.parametrize("theta", [0.0, 0.3, -0.4, 0.8, -1.5, -3.0])
 def test_solve_positions_of_the_four_bar_matches_the_circle_intersection(examples, theta):
     solved = kinestat.solve_positions(examples / "four-bar-planar.yaml", inputs={"A": theta})
     step = solved["steps"][0]
