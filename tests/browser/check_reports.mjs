@@ -157,6 +157,8 @@ const checkTracedMotion = async (page, name, views) => {
               ' visited; largest relative bar-length error ' + worst.toExponential(2) + ', largest displacement ' + moved.toPrecision(3));
   await page.evaluate(() => { const v = window.kinestatViewer; v.freeze(Math.PI / 2); v.render(); });
   await page.screenshot({ path: path.join(out, name + '-traced.png') });
+  await page.evaluate(() => document.getElementById('mode').scrollIntoView());
+  await page.screenshot({ path: path.join(out, name + '-traced-panel.png') });
   // The same mode to first order: the bars stretch (the measurement sees it).
   const first = await page.evaluate(([measure, list]) => {
     const f = new Function('return ' + measure)();
@@ -330,6 +332,8 @@ for (const file of files) {
       v.setView(i);
       return { traced: v.traced(0), text: document.getElementById('motion').textContent };
     }, views.findIndex((v) => v.startsWith('mode 1')));
+    await page.evaluate(() => document.getElementById('mode').scrollIntoView());
+    await page.screenshot({ path: path.join(out, name + '-first-order-panel.png') });
     check(!note.traced && note.text.startsWith('first order only: blocked at second order'),
           name + ': the infinitesimal mode should say "first order only: blocked at second order ...", says ' + JSON.stringify(note));
   }
