@@ -212,7 +212,7 @@ class FrameworkResult(_Result):
     def trace(self, mode=1, amplitude=0.1, steps=20):
         """Finite motion (issue 13): kinematic mode ``mode`` (1-based, as ``inf_flexes()``
         columns) followed by the predictor-corrector over ``amplitude`` times the characteristic
-        length in ``steps`` steps, bars only. The JSON of ``kinestat move --mode N --amplitude A
+        length in ``steps`` steps. The JSON of ``kinestat move --mode N --amplitude A
         --steps S --json`` as a dict (see :func:`trace`)."""
         return json.loads(self._analysed.trace(int(mode), float(amplitude), int(steps)))
 
@@ -275,7 +275,7 @@ def structural_groups(model):
 
 
 def trace(model, mode=1, amplitude=0.1, steps=20, *, tolerance=None):
-    """Finite motion of a framework of bars (issue 13), as ``kinestat move MODEL --mode N
+    """Finite motion of a framework (issue 13), as ``kinestat move MODEL --mode N
     --amplitude A --steps S --json``, key for key: kinematic mode ``mode`` (1-based, numbered as
     ``kinestat analyze`` numbers them) followed from the model's configuration over ``amplitude``
     times the characteristic length in ``steps`` steps, on the full bar-length equations.

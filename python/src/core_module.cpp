@@ -237,12 +237,6 @@ std::string trace_json(const Analysed& a, long long mode, double amplitude, long
   // The checks and messages of src/cli/move_command.cpp.
   if (!(amplitude > 0.0) || !std::isfinite(amplitude)) throw py::value_error("amplitude is a positive finite number");
   if (steps < 1 || steps > 100000) throw py::value_error("steps is a whole number from 1 to 100000");
-  for (const auto& element : model.elements) {
-    if (element.type != framework::ElementType::truss)
-      throw io::InputError({path, 1, 1}, fmt::format("element '{}' is not a truss: finite motion of frameworks with beams (or other "
-                                                     "non-bar elements) is not supported yet; 'kinestat move' traces bar frameworks",
-                                                     element.name));
-  }
   if (!analysis.vectors || analysis.method != framework::RankMethod::dense_svd)
     throw io::InputError({path, 1, 1}, "the framework is too large for the dense analysis that tracing needs");
   const auto modes = static_cast<long long>(analysis.modes.size());

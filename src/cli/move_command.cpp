@@ -116,12 +116,6 @@ int move_framework(const MoveOptions& options, const framework::FrameworkModel& 
   reject_options(given({options.input_option, options.sweep_option}), "a framework", path);
   if (options.mode_option->count() == 0)
     throw io::InputError({path, 1, 1}, "a framework moves along one of its kinematic modes: give --mode N (modes as 'kinestat analyze' numbers them)");
-  for (const auto& element : model.elements) {
-    if (element.type != framework::ElementType::truss)
-      throw io::InputError({path, 1, 1}, fmt::format("element '{}' is not a truss: finite motion of frameworks with beams (or other "
-                                                     "non-bar elements) is not supported yet; 'kinestat move' traces bar frameworks",
-                                                     element.name));
-  }
   framework::AnalysisOptions analysis_options;
   analysis_options.tolerances = Tolerances::with_rank(options.common.tolerance);
   framework::FrameworkResult analysis = framework::analyse_framework(model, analysis_options);

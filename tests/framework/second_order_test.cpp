@@ -253,15 +253,5 @@ TEST(SecondOrder, InvariantUnderScalingAndRigidMotion) {
   EXPECT_EQ(b.orders[0].order, MotionOrder::infinitesimal);
 }
 
-// Beams and rigid bodies: no second-order model here, said so.
-TEST(SecondOrder, BeamsAreUndeterminedWithReason) {
-  const FrameworkModel model = load_example("folded-sheet-guide-5.yaml");
-  const FrameworkResult a = analyse_framework(model);
-  for (const ModeOrder& o : a.orders) {
-    EXPECT_EQ(o.order, MotionOrder::undetermined);
-    EXPECT_EQ(o.reason, OrderReason::no_second_order_model);
-  }
-}
-
 }  // namespace
 }  // namespace kinestat::framework

@@ -34,18 +34,21 @@ Vector6 beam_basic_deformations(const BeamConfiguration& b) {
   return eps;
 }
 
+Vector6 beam_second_order_terms(const Vector6& b, double l0, double torsion_coupling) {
+  Vector6 q;
+  q(0) = (2 * b(2) * b(2) + b(2) * b(3) + 2 * b(3) * b(3) + 2 * b(4) * b(4) + b(4) * b(5) + 2 * b(5) * b(5)) / (30 * l0) +
+         torsion_coupling * b(1) * b(1) / (2 * l0 * l0 * l0);
+  q(1) = (-b(2) * b(5) + b(3) * b(4)) / l0;
+  q(2) = b(1) * (b(4) + b(5)) / (6 * l0);
+  q(3) = -b(1) * (b(4) + b(5)) / (6 * l0);
+  q(4) = -b(1) * (b(2) + b(3)) / (6 * l0);
+  q(5) = b(1) * (b(2) + b(3)) / (6 * l0);
+  return q;
+}
+
 Vector6 beam_deformations(const BeamConfiguration& beam) {
   const Vector6 b = beam_basic_deformations(beam);
-  const double l0 = beam.l0;
-  Vector6 eps;
-  eps(0) = b(0) + (2 * b(2) * b(2) + b(2) * b(3) + 2 * b(3) * b(3) + 2 * b(4) * b(4) + b(4) * b(5) + 2 * b(5) * b(5)) / (30 * l0) +
-           beam.torsion_coupling * b(1) * b(1) / (2 * l0 * l0 * l0);
-  eps(1) = b(1) + (-b(2) * b(5) + b(3) * b(4)) / l0;
-  eps(2) = b(2) + b(1) * (b(4) + b(5)) / (6 * l0);
-  eps(3) = b(3) - b(1) * (b(4) + b(5)) / (6 * l0);
-  eps(4) = b(4) - b(1) * (b(2) + b(3)) / (6 * l0);
-  eps(5) = b(5) + b(1) * (b(2) + b(3)) / (6 * l0);
-  return eps;
+  return b + beam_second_order_terms(b, beam.l0, beam.torsion_coupling);
 }
 
 Derivative6x12 beam_basic_derivative(const BeamConfiguration& b) {
@@ -106,6 +109,60 @@ Eigen::Matrix<double, 6, 6> beam_second_order_jacobian(const Vector6& b, double 
 Derivative6x12 beam_deformation_derivative(const BeamConfiguration& beam) {
   return beam_second_order_jacobian(beam_basic_deformations(beam), beam.l0, beam.torsion_coupling) *
          beam_basic_derivative(beam);
+}
+
+double truss_elongation_second_derivative(const Eigen::Vector3d& xp, const Eigen::Vector3d& xq, const Eigen::Vector3d& rate_p,
+                                          const Eigen::Vector3d& rate_q) {
+  const Eigen::Vector3d d = xq - xp, rate = rate_q - rate_p;
+  const double l = d.norm(), along = d.dot(rate) / l;
+  return (rate.squaredNorm() - along * along) / l;
+}
+
+Vector6 beam_basic_second_derivative(const BeamConfiguration& b, const NodeRates12& rates) {
+  const Eigen::Vector3d d = b.xq - b.xp, rate = rates.segment<3>(6) - rates.segment<3>(0);
+  const Eigen::Vector3d omega_p = rates.segment<3>(3), omega_q = rates.segment<3>(9);
+  const double l = d.norm();
+  const Eigen::Vector3d e = d / l;
+  // l̇ = e·ḋ, ė = (ḋ − e l̇)/l, l̈ = ė·ḋ, ë = −(2 ė l̇ + e l̈)/l (d̈ = 0).
+  const double l_rate = e.dot(rate);
+  const Eigen::Vector3d e_rate = (rate - e * l_rate) / l;
+  const double l_acceleration = e_rate.dot(rate);
+  const Eigen::Vector3d e_acceleration = -(2 * e_rate * l_rate + e * l_acceleration) / l;
+  // A triad vector a turns as ȧ = ω × a, ä = ω × (ω × a).
+  struct Turning {
+    Eigen::Vector3d value, rate, acceleration;
+  };
+  auto turning = [](const Eigen::Vector3d& a, const Eigen::Vector3d& omega) {
+    const Eigen::Vector3d turning_rate = omega.cross(a);
+    return Turning{a, turning_rate, omega.cross(turning_rate)};
+  };
+  const Turning yp = turning(b.triad_p.col(1), omega_p), zp = turning(b.triad_p.col(2), omega_p);
+  const Turning yq = turning(b.triad_q.col(1), omega_q), zq = turning(b.triad_q.col(2), omega_q);
+  // (u·v)″ = u″·v + 2 u′·v′ + u·v″.
+  auto product = [](const Turning& u, const Turning& v) {
+    return u.acceleration.dot(v.value) + 2 * u.rate.dot(v.rate) + u.value.dot(v.acceleration);
+  };
+  const Turning along{e, e_rate, e_acceleration};
+  Vector6 second;
+  second << l_acceleration, b.l0 * (product(zp, yq) - product(yp, zq)) / 2, -b.l0 * product(along, zp), b.l0 * product(along, zq),
+      b.l0 * product(along, yp), -b.l0 * product(along, yq);
+  return second;
+}
+
+Vector6 beam_deformation_second_derivative(const BeamConfiguration& beam, const NodeRates12& rates) {
+  const Vector6 basic = beam_basic_deformations(beam);
+  const Vector6 basic_rate = beam_basic_derivative(beam) * rates;
+  // q is a homogeneous quadratic: (q(ε̄))″ = ∇q · ε̄″ + ε̄′ᵀ ∇²q ε̄′ = ∇q · ε̄″ + 2 q(ε̄′).
+  return beam_second_order_jacobian(basic, beam.l0, beam.torsion_coupling) * beam_basic_second_derivative(beam, rates) +
+         2 * beam_second_order_terms(basic_rate, beam.l0, beam.torsion_coupling);
+}
+
+Vector6 rigid_link_second_derivative(const Eigen::Vector3d& x_reference, const Eigen::Vector3d& x_node, const NodeRates12& rates) {
+  const Eigen::Vector3d r = x_node - x_reference, r_rate = rates.segment<3>(6) - rates.segment<3>(0);
+  const Eigen::Vector3d omega_r = rates.segment<3>(3), omega_j = rates.segment<3>(9);
+  Vector6 second;
+  second << omega_r.cross(omega_r.cross(r)) - 2 * omega_r.cross(r_rate), -omega_r.cross(omega_j);
+  return second;
 }
 
 Derivative6x12 rigid_link_derivative(const Eigen::Vector3d& x_reference, const Eigen::Vector3d& x_node) {

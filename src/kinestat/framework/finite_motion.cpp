@@ -1,49 +1,117 @@
 #include "kinestat/framework/finite_motion.hpp"
 
+#include <Eigen/Geometry>
 #include <Eigen/QR>
 #include <Eigen/SVD>
 
 #include <algorithm>
 #include <cmath>
 
+#include "kinestat/framework/deformation_functions.hpp"
 #include "kinestat/linalg/svd_analysis.hpp"
 
 namespace kinestat::framework {
 
 namespace {
 
-// One point of the path: the model at that configuration and D̂ there.
-struct PathPoint {
-  FrameworkModel model;
-  Eigen::MatrixXd jacobian;  // D̂ (non-dimensional, unscaled)
-};
-
-Eigen::MatrixXd jacobian_at(const FrameworkModel& model, const FrameworkResult& a) {
-  return Eigen::MatrixXd(dependent_jacobian(model, a.indexing, a.partition, deformation_derivative(model, a.indexing), a.length));
+Eigen::MatrixXd jacobian_at(const FrameworkModel& model, const FrameworkResult& a, const DisplacedConfiguration& now) {
+  return Eigen::MatrixXd(
+      dependent_jacobian(model, a.indexing, a.partition, deformation_derivative_at(model, a.indexing, now), a.length));
 }
 
-// The constraints of the rows of D(c), non-dimensional: bar length now minus bar length in the
-// analysed model, over the characteristic length.
-Eigen::VectorXd closure(const FrameworkModel& reference, const FrameworkModel& now, const FrameworkResult& a) {
-  Eigen::VectorXd g(a.m);
-  for (Eigen::Index r = 0; r < a.m; ++r) {
-    const DeformationRef& d = a.indexing.deformations[static_cast<std::size_t>(a.rows[static_cast<std::size_t>(r)])];
-    const Element& e = reference.elements[d.element];
-    const double l0 = (reference.nodes[e.nodes[1]].position - reference.nodes[e.nodes[0]].position).norm();
-    g(r) = truss_length(now, e) - l0;
+// Rotation vector (rad) of a rotation matrix.
+Eigen::Vector3d rotation_vector(const Eigen::Matrix3d& rotation) {
+  const Eigen::AngleAxisd turn(rotation);
+  return turn.angle() * turn.axis();
+}
+
+// Every deformation of `element` at `now` minus its value in the analysed `model`, in the
+// element's deformation order, model units (lengths; rigid bodies' relative rotations in rad).
+Eigen::VectorXd element_closure(const FrameworkModel& model, const Element& element, const DisplacedConfiguration& now) {
+  const bool planar = model.dimension == 2;
+  const auto& x = now.positions;
+  Eigen::VectorXd values(static_cast<Eigen::Index>(deformation_count(model.dimension, element)));
+  switch (element.type) {
+    case ElementType::truss:
+      values(0) = (x[element.nodes[1]] - x[element.nodes[0]]).norm() - truss_length(model, element);
+      break;
+    case ElementType::beam: {
+      // Eq (3) between the turned triads, with the analysed length as l0: zero as analysed.
+      BeamConfiguration beam;
+      beam.xp = x[element.nodes[0]];
+      beam.xq = x[element.nodes[1]];
+      beam.triad_p = now.turns[element.nodes[0]] * element.frame;
+      beam.triad_q = now.turns[element.nodes[1]] * element.frame;
+      beam.l0 = truss_length(model, element);
+      beam.torsion_coupling = element.torsion_coupling;
+      const Vector6 eps = beam_deformations(beam);
+      if (planar)
+        values << eps(0), eps(4), eps(5);
+      else
+        values = eps;
+      break;
+    }
+    case ElementType::rigid_body: {
+      // The nonlinear coordinates whose rates rigid_link_derivative gives: the relative
+      // translation and rotation in the reference node's analysed axes.
+      const std::size_t reference = element.nodes[0];
+      const Eigen::Matrix3d back = now.turns[reference].transpose();
+      const std::vector<Eigen::Index> kept = planar ? std::vector<Eigen::Index>{0, 1, 5} : std::vector<Eigen::Index>{0, 1, 2, 3, 4, 5};
+      Eigen::Index row = 0;
+      for (std::size_t k = 1; k < element.nodes.size(); ++k) {
+        const std::size_t node = element.nodes[k];
+        Vector6 relative;
+        relative << back * (x[node] - x[reference]) - (model.nodes[node].position - model.nodes[reference].position),
+            rotation_vector(back * now.turns[node]);
+        for (Eigen::Index slot : kept) values(row++) = relative(slot);
+      }
+      break;
+    }
   }
-  return g / a.length;
+  return values;
+}
+
+// The constraints of the rows of D(c), non-dimensional like D̂: every held deformation at `now`
+// minus its value as analysed (lengths over the characteristic length).
+Eigen::VectorXd closure(const FrameworkModel& model, const DisplacedConfiguration& now, const FrameworkResult& a) {
+  std::vector<Eigen::Index> row_of(a.indexing.deformations.size(), -1);
+  for (Eigen::Index r = 0; r < a.m; ++r) row_of[static_cast<std::size_t>(a.rows[static_cast<std::size_t>(r)])] = r;
+  Eigen::VectorXd g = Eigen::VectorXd::Zero(a.m);
+  for (std::size_t e = 0; e < model.elements.size(); ++e) {
+    const Element& element = model.elements[e];
+    const auto first = static_cast<std::size_t>(a.indexing.first_deformation[e]);
+    const std::size_t count = deformation_count(model.dimension, element);
+    bool held = false;
+    for (std::size_t k = 0; k < count; ++k) held = held || row_of[first + k] >= 0;
+    if (!held) continue;
+    const Eigen::VectorXd values = element_closure(model, element, now);
+    for (std::size_t k = 0; k < count; ++k) {
+      const Eigen::Index r = row_of[first + k];
+      if (r < 0) continue;
+      g(r) = deformation_is_length(model.dimension, element, k) ? values(static_cast<Eigen::Index>(k)) / a.length
+                                                                : values(static_cast<Eigen::Index>(k));
+    }
+  }
+  return g;
 }
 
 // The largest |constraint| (non-dimensional); 0 without constraints.
 double largest(const Eigen::VectorXd& g) { return g.size() == 0 ? 0.0 : g.cwiseAbs().maxCoeff(); }
 
-// Moves the translational dependent coordinates by `step` (D̂'s units: translations per
-// characteristic length). Rotational slots carry no geometry in a bar framework.
-void displace(FrameworkModel& model, const FrameworkResult& a, const Eigen::VectorXd& step) {
+// Moves the dependent coordinates by `step` (D̂'s units: translations per characteristic
+// length, rotations in rad): positions add, triads turn by the rotation vector of their node.
+void displace(DisplacedConfiguration& now, const FrameworkResult& a, const Eigen::VectorXd& step) {
+  std::vector<Eigen::Vector3d> turn(now.turns.size(), Eigen::Vector3d::Zero());
   for (Eigen::Index j = 0; j < a.n; ++j) {
     const CoordinateRef& c = a.indexing.coordinates[static_cast<std::size_t>(a.partition.dependent_coordinates[static_cast<std::size_t>(j)])];
-    if (is_translation(c.slot)) model.nodes[c.node].position(c.slot) += step(j) * a.length;
+    if (is_translation(c.slot))
+      now.positions[c.node](c.slot) += step(j) * a.length;
+    else
+      turn[c.node](c.slot - 3) += step(j);
+  }
+  for (std::size_t node = 0; node < turn.size(); ++node) {
+    const double angle = turn[node].norm();
+    if (angle > 0.0) now.turns[node] = Eigen::AngleAxisd(angle, turn[node] / angle).toRotationMatrix() * now.turns[node];
   }
 }
 
@@ -60,20 +128,23 @@ std::pair<Eigen::Index, Eigen::MatrixXd> rank_and_null_space(const Eigen::Matrix
 
 // Newton corrector on the constraints, kept on the hyperplane through the predicted point
 // normal to the tangent (pseudo-arclength): minimum-norm least-squares steps, so a rank-deficient
-// D(c) (self-stresses) is no obstacle as long as the constraints stay consistent.
-double correct(FrameworkModel& model, const FrameworkModel& reference, const FrameworkResult& a, const Eigen::VectorXd& tangent) {
-  double residual = largest(closure(reference, model, a));
+// D(c) (self-stresses) is no obstacle as long as the constraints stay consistent. Adds the
+// steps taken to `moved` (D̂'s units).
+double correct(DisplacedConfiguration& now, const FrameworkModel& model, const FrameworkResult& a, const Eigen::VectorXd& tangent,
+               Eigen::VectorXd& moved) {
+  double residual = largest(closure(model, now, a));
   for (int iteration = 0; iteration < 20 && residual > kCorrectorTarget; ++iteration) {
     Eigen::MatrixXd system(a.m + 1, a.n);
-    system << jacobian_at(model, a), tangent.transpose();
+    system << jacobian_at(model, a, now), tangent.transpose();
     Eigen::VectorXd rhs = Eigen::VectorXd::Zero(a.m + 1);
-    rhs.head(a.m) = -closure(reference, model, a);
+    rhs.head(a.m) = -closure(model, now, a);
     const Eigen::VectorXd step = system.completeOrthogonalDecomposition().solve(rhs);
-    FrameworkModel trial = model;
+    DisplacedConfiguration trial = now;
     displace(trial, a, step);
-    const double next = largest(closure(reference, trial, a));
+    const double next = largest(closure(model, trial, a));
     if (!(next < residual)) break;  // stagnated at rounding level (or diverging)
-    model = std::move(trial);
+    now = std::move(trial);
+    moved += step;
     residual = next;
   }
   return residual;
@@ -85,25 +156,21 @@ double truss_length(const FrameworkModel& model, const Element& element) {
   return (model.nodes[element.nodes[1]].position - model.nodes[element.nodes[0]].position).norm();
 }
 
-bool bars_only(const FrameworkModel& model) {
-  return std::all_of(model.elements.begin(), model.elements.end(), [](const Element& e) { return e.type == ElementType::truss; });
-}
-
 FiniteTrace trace_motion(const FrameworkModel& model, const FrameworkResult& a, const Eigen::VectorXd& direction,
                          const TraceOptions& options) {
   FiniteTrace trace;
-  if (!bars_only(model) || direction.size() != a.n || a.n == 0 || direction.norm() == 0.0 || options.steps <= 0) return trace;
+  if (direction.size() != a.n || a.n == 0 || direction.norm() == 0.0 || options.steps <= 0) return trace;
   const double step_length = options.amplitude_fraction / options.steps;  // non-dimensional arc length
-  auto positions = [](const FrameworkModel& m) {
-    Eigen::MatrixXd p(3, static_cast<Eigen::Index>(m.nodes.size()));
-    for (std::size_t k = 0; k < m.nodes.size(); ++k) p.col(static_cast<Eigen::Index>(k)) = m.nodes[k].position;
+  auto positions = [](const DisplacedConfiguration& c) {
+    Eigen::MatrixXd p(3, static_cast<Eigen::Index>(c.positions.size()));
+    for (std::size_t k = 0; k < c.positions.size(); ++k) p.col(static_cast<Eigen::Index>(k)) = c.positions[k];
     return p;
   };
-  FrameworkModel now = model;
+  DisplacedConfiguration now = analysed_configuration(model);
   Eigen::VectorXd tangent = direction.normalized();
   trace.closed = true;
   for (int step = 0;; ++step) {
-    const auto [rank, null_space] = rank_and_null_space(jacobian_at(now, a), a, options.tolerance);
+    const auto [rank, null_space] = rank_and_null_space(jacobian_at(model, a, now), a, options.tolerance);
     trace.rank_along_path.push_back(rank);
     trace.positions.push_back(positions(now));
     const double here = largest(closure(model, now, a));
@@ -119,21 +186,17 @@ FiniteTrace trace_motion(const FrameworkModel& model, const FrameworkResult& a, 
       break;
     }
     tangent = projected.normalized();
-    const FrameworkModel before = now;
-    displace(now, a, step_length * tangent);
-    const double residual = correct(now, model, a, tangent);
+    Eigen::VectorXd moved = step_length * tangent;  // this step's chord, D̂'s units
+    displace(now, a, moved);
+    const double residual = correct(now, model, a, tangent, moved);
     if (residual > kTraceResidual) {
       trace.closed = false;
       trace.failed_step = static_cast<std::size_t>(step) + 1;
       trace.max_residual = std::max(trace.max_residual, residual);
       break;
     }
-    // Arc length by chords, in the norm of the modes (translations over the characteristic length).
-    Eigen::VectorXd moved(a.n);
-    for (Eigen::Index j = 0; j < a.n; ++j) {
-      const CoordinateRef& c = a.indexing.coordinates[static_cast<std::size_t>(a.partition.dependent_coordinates[static_cast<std::size_t>(j)])];
-      moved(j) = is_translation(c.slot) ? (now.nodes[c.node].position(c.slot) - before.nodes[c.node].position(c.slot)) / a.length : 0.0;
-    }
+    // Arc length by chords, in the norm of the modes (translations over the characteristic
+    // length, rotations in rad), back in length units.
     trace.amplitude += moved.norm() * a.length;
   }
   const Eigen::Index top = *std::max_element(trace.rank_along_path.begin(), trace.rank_along_path.end());

@@ -1,7 +1,7 @@
 #pragma once
-// Finite-motion tracing of a bar framework (issue 13, item 2): a predictor–corrector that follows
-// a direction of the mechanism space on the full nonlinear constraints (the bar lengths and any
-// independent elongation held at their values in the model), reporting the closure residual, the
+// Finite-motion tracing of a framework (issue 13, item 2): a predictor–corrector that follows
+// a direction of the mechanism space on the full nonlinear constraints (every fixed and
+// independent deformation held at its value in the model), reporting the closure residual, the
 // rank of D(c) at every point and the configurations reached.
 
 #include <Eigen/Core>
@@ -20,16 +20,14 @@ struct TraceOptions {
   linalg::RankTolerance tolerance;  ///< the rank rule of the analysis
 };
 
-/// True when every element is a truss: the constraints are then bar lengths, whose second
-/// derivatives and nonlinear closure this module evaluates exactly.
-bool bars_only(const FrameworkModel& model);
-
 /// Current length of a truss element of `model` (length units).
 double truss_length(const FrameworkModel& model, const Element& element);
 
 /// Follows `direction` (rates of the columns of D(c) in D̂'s units, the units of a
-/// KinematicMode) from the configuration of `model`, on which `analysis` was made. Bars only
-/// (bars_only); otherwise returns an empty trace (closed = false, no points).
+/// KinematicMode) from the configuration of `model`, on which `analysis` was made. The
+/// constraints are the held deformations at their analysed values: bar lengths, beams' eq (3)
+/// with its second-order terms between the turned node triads, rigid bodies' relative
+/// coordinates. Node triads turn by the rotation vectors of the steps (rotations compose).
 FiniteTrace trace_motion(const FrameworkModel& model, const FrameworkResult& analysis,
                          const Eigen::VectorXd& direction, const TraceOptions& options = {});
 

@@ -44,25 +44,37 @@ FrameworkIndexing index_framework(const FrameworkModel& model) {
   return indexing;
 }
 
+DisplacedConfiguration analysed_configuration(const FrameworkModel& model) {
+  DisplacedConfiguration configuration;
+  for (const Node& node : model.nodes) configuration.positions.push_back(node.position);
+  configuration.turns.assign(model.nodes.size(), Eigen::Matrix3d::Identity());
+  return configuration;
+}
+
 Eigen::SparseMatrix<double> deformation_derivative(const FrameworkModel& model, const FrameworkIndexing& indexing) {
+  return deformation_derivative_at(model, indexing, analysed_configuration(model));
+}
+
+Eigen::SparseMatrix<double> deformation_derivative_at(const FrameworkModel& model, const FrameworkIndexing& indexing,
+                                                      const DisplacedConfiguration& configuration) {
   Triplets triplets;
   const bool planar = model.dimension == 2;
+  const auto& x = configuration.positions;
   for (std::size_t e = 0; e < model.elements.size(); ++e) {
     const Element& element = model.elements[e];
     const Eigen::Index row = indexing.first_deformation[e];
     switch (element.type) {
       case ElementType::truss: {
-        const auto& p = model.nodes[element.nodes[0]].position;
-        const auto& q = model.nodes[element.nodes[1]].position;
-        scatter(triplets, indexing, row, truss_elongation_derivative(p, q), {0}, element.nodes, 3);
+        scatter(triplets, indexing, row, truss_elongation_derivative(x[element.nodes[0]], x[element.nodes[1]]), {0}, element.nodes, 3);
         break;
       }
       case ElementType::beam: {
         BeamConfiguration beam;
-        beam.xp = model.nodes[element.nodes[0]].position;
-        beam.xq = model.nodes[element.nodes[1]].position;
-        beam.triad_p = beam.triad_q = element.frame;
-        beam.l0 = (beam.xq - beam.xp).norm();
+        beam.xp = x[element.nodes[0]];
+        beam.xq = x[element.nodes[1]];
+        beam.triad_p = configuration.turns[element.nodes[0]] * element.frame;
+        beam.triad_q = configuration.turns[element.nodes[1]] * element.frame;
+        beam.l0 = (model.nodes[element.nodes[1]].position - model.nodes[element.nodes[0]].position).norm();
         beam.torsion_coupling = element.torsion_coupling;
         // A planar beam keeps the in-plane deformations of the spatial one: elongation and
         // bending in the local xy-plane (local z is the global z axis).
@@ -73,9 +85,11 @@ Eigen::SparseMatrix<double> deformation_derivative(const FrameworkModel& model, 
       case ElementType::rigid_body: {
         const std::size_t reference = element.nodes[0];
         const std::vector<int> rows = planar ? std::vector<int>{0, 1, 5} : std::vector<int>{0, 1, 2, 3, 4, 5};
+        // Relative coordinates in the reference node's axes as analysed: turned back by its turn.
+        Eigen::Matrix<double, 6, 6> back = Eigen::Matrix<double, 6, 6>::Zero();
+        back.topLeftCorner<3, 3>() = back.bottomRightCorner<3, 3>() = configuration.turns[reference].transpose();
         for (std::size_t k = 1; k < element.nodes.size(); ++k) {
-          const Derivative6x12 link =
-              rigid_link_derivative(model.nodes[reference].position, model.nodes[element.nodes[k]].position);
+          const Derivative6x12 link = back * rigid_link_derivative(x[reference], x[element.nodes[k]]);
           scatter(triplets, indexing, row + static_cast<Eigen::Index>((k - 1) * rows.size()), link, rows,
                   {reference, element.nodes[k]}, 6);
         }

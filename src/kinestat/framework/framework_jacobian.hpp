@@ -41,6 +41,25 @@ FrameworkIndexing index_framework(const FrameworkModel& model);
 /// coordinate rate: dimensionless, length per radian or per length).
 Eigen::SparseMatrix<double> deformation_derivative(const FrameworkModel& model, const FrameworkIndexing& indexing);
 
+/// A configuration reached from the analysed one (finite motion, issue 13): node positions
+/// (global frame, length units) and, per node, the rotation its triad has turned through since
+/// the analysed configuration (global axes; identity for nodes without rotations).
+struct DisplacedConfiguration {
+  std::vector<Eigen::Vector3d> positions;
+  std::vector<Eigen::Matrix3d> turns;
+};
+
+/// The analysed configuration of `model` itself: its positions, no turns.
+DisplacedConfiguration analysed_configuration(const FrameworkModel& model);
+
+/// 𝒟,x at `configuration`, displaced from the analysed `model` (whose element frames, beam
+/// lengths and rigid-body offsets are the references): beams between their turned triads with
+/// their analysed length as l0; rigid bodies' relative coordinates in the reference node's
+/// turned axes (the relative rotation to first order). At analysed_configuration(model) this is
+/// deformation_derivative(model, indexing).
+Eigen::SparseMatrix<double> deformation_derivative_at(const FrameworkModel& model, const FrameworkIndexing& indexing,
+                                                      const DisplacedConfiguration& configuration);
+
 /// The partition of eq (7)/(10): indices into indexing.coordinates / indexing.deformations,
 /// each in increasing order.
 struct FrameworkPartition {

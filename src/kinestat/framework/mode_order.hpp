@@ -25,7 +25,7 @@ enum class OrderReason {
   rigid_motion,          ///< the mode is a rigid motion of the whole model
   traced,                ///< passes second order and was followed with closure at rounding level
   trace_failed,          ///< passes second order, but the corrector lost closure on the way
-  no_second_order_model, ///< beams or rigid bodies: no second-order test or tracing here
+  no_second_order_model, ///< no second-order model of some element (not used by frameworks since beams have one)
   not_computed,          ///< modes too many or the model too large (see SecondOrderOptions)
 };
 

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "kinestat/framework/deformation_functions.hpp"
 #include "kinestat/linalg/definite_combination.hpp"
 #include "kinestat/linalg/svd_analysis.hpp"
 
@@ -16,50 +17,114 @@ namespace kinestat::framework {
 
 namespace {
 
-// Columns of D(c) of the translational slots of node `node`, −1 where the slot is not a column.
-std::array<Eigen::Index, 3> translation_columns(const FrameworkResult& a, const std::vector<Eigen::Index>& column_of,
-                                                std::size_t node) {
-  std::array<Eigen::Index, 3> columns{-1, -1, -1};
-  for (int slot = 0; slot < 3; ++slot) {
-    const Eigen::Index coordinate = a.indexing.coordinate_of[node][static_cast<std::size_t>(slot)];
-    if (coordinate >= 0) columns[static_cast<std::size_t>(slot)] = column_of[static_cast<std::size_t>(coordinate)];
-  }
-  return columns;
-}
+// The columns of D̂ of the six slots of each node (−1 where a slot is not a column) and the row
+// of D̂ of each deformation (−1 where released).
+struct Placement {
+  std::vector<std::array<Eigen::Index, 6>> columns;
+  std::vector<Eigen::Index> row_of;
+};
 
-// Calls visit(row, columns of p, columns of q, B) for every bar row of D(c), where
-// B = (I − e eᵀ) / l̂ is the Hessian of the non-dimensional bar length with respect to the
-// non-dimensional relative position of q from p.
-template <typename Visit>
-void for_each_bar_row(const FrameworkModel& model, const FrameworkResult& a, Visit visit) {
+Placement place(const FrameworkResult& a) {
+  Placement placement;
   std::vector<Eigen::Index> column_of(a.indexing.coordinates.size(), -1);
   for (std::size_t j = 0; j < a.partition.dependent_coordinates.size(); ++j)
     column_of[static_cast<std::size_t>(a.partition.dependent_coordinates[j])] = static_cast<Eigen::Index>(j);
-  for (Eigen::Index r = 0; r < a.m; ++r) {
-    const DeformationRef& d = a.indexing.deformations[static_cast<std::size_t>(a.rows[static_cast<std::size_t>(r)])];
-    const Element& element = model.elements[d.element];
-    if (element.type != ElementType::truss) continue;
-    const Eigen::Vector3d span = (model.nodes[element.nodes[1]].position - model.nodes[element.nodes[0]].position) / a.length;
-    const double l = span.norm();
-    const Eigen::Vector3d e = span / l;
-    const Eigen::Matrix3d hessian = (Eigen::Matrix3d::Identity() - e * e.transpose()) / l;
-    visit(r, translation_columns(a, column_of, element.nodes[0]), translation_columns(a, column_of, element.nodes[1]), hessian);
-  }
+  placement.columns.resize(a.indexing.coordinate_of.size());
+  for (std::size_t node = 0; node < a.indexing.coordinate_of.size(); ++node)
+    for (std::size_t slot = 0; slot < 6; ++slot) {
+      const Eigen::Index coordinate = a.indexing.coordinate_of[node][slot];
+      placement.columns[node][slot] = coordinate >= 0 ? column_of[static_cast<std::size_t>(coordinate)] : -1;
+    }
+  placement.row_of.assign(a.indexing.deformations.size(), -1);
+  for (Eigen::Index r = 0; r < a.m; ++r) placement.row_of[static_cast<std::size_t>(a.rows[static_cast<std::size_t>(r)])] = r;
+  return placement;
 }
 
-// Relative translation of a bar's ends in the rates `u` (columns of D(c)); absent columns are at rest.
-Eigen::Vector3d relative_motion(const Eigen::VectorXd& u, const std::array<Eigen::Index, 3>& p, const std::array<Eigen::Index, 3>& q) {
-  Eigen::Vector3d delta = Eigen::Vector3d::Zero();
-  for (std::size_t s = 0; s < 3; ++s) delta(static_cast<Eigen::Index>(s)) = (q[s] >= 0 ? u(q[s]) : 0.0) - (p[s] >= 0 ? u(p[s]) : 0.0);
-  return delta;
+// The rates of the six slots of `node` in `u` (columns of D̂, D̂'s units); absent columns at rest.
+Vector6 node_rates(const Placement& placement, std::size_t node, const Eigen::VectorXd& u) {
+  Vector6 rates = Vector6::Zero();
+  for (std::size_t slot = 0; slot < 6; ++slot) {
+    const Eigen::Index column = placement.columns[node][slot];
+    if (column >= 0) rates(static_cast<Eigen::Index>(slot)) = u(column);
+  }
+  return rates;
+}
+
+// ε̂″ of every deformation of `element` along the rates of its nodes (D̂'s units: translations
+// per characteristic length, rotations in rad), non-dimensional like the rows of D̂.
+Eigen::VectorXd element_second_derivatives(const FrameworkModel& model, const Element& element, double length,
+                                           const std::vector<Vector6>& rates) {
+  const bool planar = model.dimension == 2;
+  auto physical = [&](const Vector6& r) {
+    Vector6 p = r;
+    p.head<3>() *= length;
+    return p;
+  };
+  auto pair = [&](std::size_t p, std::size_t q) {
+    NodeRates12 both;
+    both << physical(rates[p]), physical(rates[q]);
+    return both;
+  };
+  Eigen::VectorXd values(static_cast<Eigen::Index>(deformation_count(model.dimension, element)));
+  switch (element.type) {
+    case ElementType::truss: {
+      const Eigen::Vector3d& xp = model.nodes[element.nodes[0]].position;
+      const Eigen::Vector3d& xq = model.nodes[element.nodes[1]].position;
+      values(0) = truss_elongation_second_derivative(xp, xq, length * rates[0].head<3>(), length * rates[1].head<3>()) / length;
+      break;
+    }
+    case ElementType::beam: {
+      BeamConfiguration beam;  // the analysed configuration, as in deformation_derivative
+      beam.xp = model.nodes[element.nodes[0]].position;
+      beam.xq = model.nodes[element.nodes[1]].position;
+      beam.triad_p = beam.triad_q = element.frame;
+      beam.l0 = (beam.xq - beam.xp).norm();
+      beam.torsion_coupling = element.torsion_coupling;
+      const Vector6 second = beam_deformation_second_derivative(beam, pair(0, 1)) / length;
+      if (planar)
+        values << second(0), second(4), second(5);
+      else
+        values = second;
+      break;
+    }
+    case ElementType::rigid_body: {
+      const std::vector<Eigen::Index> kept = planar ? std::vector<Eigen::Index>{0, 1, 5} : std::vector<Eigen::Index>{0, 1, 2, 3, 4, 5};
+      const Eigen::Vector3d& reference = model.nodes[element.nodes[0]].position;
+      Eigen::Index row = 0;
+      for (std::size_t k = 1; k < element.nodes.size(); ++k) {
+        const Vector6 second = rigid_link_second_derivative(reference, model.nodes[element.nodes[k]].position, pair(0, k));
+        for (Eigen::Index slot : kept) values(row++) = is_translation(static_cast<int>(slot)) ? second(slot) / length : second(slot);
+      }
+      break;
+    }
+  }
+  return values;
+}
+
+// Calls visit(element index, first deformation index, rates of its nodes) for every element
+// with at least one row in D̂, the rates taken from `u`.
+template <typename Visit>
+void for_each_held_element(const FrameworkModel& model, const FrameworkResult& a, const Placement& placement, Visit visit) {
+  for (std::size_t e = 0; e < model.elements.size(); ++e) {
+    const Element& element = model.elements[e];
+    const auto first = static_cast<std::size_t>(a.indexing.first_deformation[e]);
+    const std::size_t count = deformation_count(model.dimension, element);
+    bool held = false;
+    for (std::size_t k = 0; k < count; ++k) held = held || placement.row_of[first + k] >= 0;
+    if (held) visit(element, first, count);
+  }
 }
 
 // ε̂″_r(u, u) for every row of D(c).
 Eigen::VectorXd second_derivatives(const FrameworkModel& model, const FrameworkResult& a, const Eigen::VectorXd& u) {
+  const Placement placement = place(a);
   Eigen::VectorXd h = Eigen::VectorXd::Zero(a.m);
-  for_each_bar_row(model, a, [&](Eigen::Index r, const auto& p, const auto& q, const Eigen::Matrix3d& hessian) {
-    const Eigen::Vector3d delta = relative_motion(u, p, q);
-    h(r) = delta.dot(hessian * delta);
+  for_each_held_element(model, a, placement, [&](const Element& element, std::size_t first, std::size_t count) {
+    std::vector<Vector6> rates;
+    for (std::size_t node : element.nodes) rates.push_back(node_rates(placement, node, u));
+    const Eigen::VectorXd values = element_second_derivatives(model, element, a.length, rates);
+    for (std::size_t k = 0; k < count; ++k)
+      if (const Eigen::Index r = placement.row_of[first + k]; r >= 0) h(r) = values(static_cast<Eigen::Index>(k));
   });
   return h;
 }
@@ -86,18 +151,40 @@ const char* motion_order_name(MotionOrder order) {
 }
 
 Eigen::MatrixXd geometric_stiffness(const FrameworkModel& model, const FrameworkResult& a, const Eigen::VectorXd& stress) {
+  const Placement placement = place(a);
   Eigen::MatrixXd k = Eigen::MatrixXd::Zero(a.n, a.n);
-  for_each_bar_row(model, a, [&](Eigen::Index r, const auto& p, const auto& q, const Eigen::Matrix3d& hessian) {
-    // ε̂_r depends on x_q − x_p: the Hessian enters the pp and qq blocks with +, pq and qp with −.
-    const std::array<const std::array<Eigen::Index, 3>*, 2> ends{&p, &q};
-    for (std::size_t i = 0; i < 2; ++i)
-      for (std::size_t j = 0; j < 2; ++j)
-        for (std::size_t s = 0; s < 3; ++s)
-          for (std::size_t t = 0; t < 3; ++t) {
-            const Eigen::Index row = (*ends[i])[s], column = (*ends[j])[t];
-            if (row < 0 || column < 0) continue;
-            k(row, column) += (i == j ? 1.0 : -1.0) * stress(r) * hessian(static_cast<Eigen::Index>(s), static_cast<Eigen::Index>(t));
-          }
+  for_each_held_element(model, a, placement, [&](const Element& element, std::size_t first, std::size_t count) {
+    // The element's columns of D̂, as (element node, slot, column).
+    struct Slot {
+      std::size_t node;
+      Eigen::Index slot, column;
+    };
+    std::vector<Slot> slots;
+    for (std::size_t n = 0; n < element.nodes.size(); ++n)
+      for (Eigen::Index s = 0; s < 6; ++s)
+        if (const Eigen::Index c = placement.columns[element.nodes[n]][static_cast<std::size_t>(s)]; c >= 0) slots.push_back({n, s, c});
+    // Σ_r σ_r ε̂″_r(v, v) for v a combination of unit rates of the element's columns: a quadratic
+    // form, whose matrix follows exactly by polarisation.
+    auto form = [&](const Slot* i, const Slot* j) {
+      std::vector<Vector6> rates(element.nodes.size(), Vector6::Zero());
+      rates[i->node](i->slot) += 1.0;
+      if (j != nullptr) rates[j->node](j->slot) += 1.0;
+      const Eigen::VectorXd values = element_second_derivatives(model, element, a.length, rates);
+      double sum = 0.0;
+      for (std::size_t d = 0; d < count; ++d)
+        if (const Eigen::Index r = placement.row_of[first + d]; r >= 0) sum += stress(r) * values(static_cast<Eigen::Index>(d));
+      return sum;
+    };
+    std::vector<double> diagonal(slots.size());
+    for (std::size_t i = 0; i < slots.size(); ++i) diagonal[i] = form(&slots[i], nullptr);
+    for (std::size_t i = 0; i < slots.size(); ++i) {
+      k(slots[i].column, slots[i].column) += diagonal[i];
+      for (std::size_t j = i + 1; j < slots.size(); ++j) {
+        const double off = (form(&slots[i], &slots[j]) - diagonal[i] - diagonal[j]) / 2;
+        k(slots[i].column, slots[j].column) += off;
+        k(slots[j].column, slots[i].column) += off;
+      }
+    }
   });
   return k;
 }
@@ -143,10 +230,6 @@ SecondOrderResult classify_modes(const FrameworkModel& model, const FrameworkRes
   if (a.modes.empty()) return result;
   if (!a.vectors || a.method != RankMethod::dense_svd || a.n > kSecondOrderSizeLimit || a.m > kSecondOrderSizeLimit)
     return result;  // not_computed
-  if (!bars_only(model)) {
-    for (ModeOrder& order : result.orders) order.reason = OrderReason::no_second_order_model;
-    return result;
-  }
   Eigen::MatrixXd modes(a.n, static_cast<Eigen::Index>(a.modes.size()));
   for (std::size_t k = 0; k < a.modes.size(); ++k) modes.col(static_cast<Eigen::Index>(k)) = a.modes[k].velocities;
   Eigen::MatrixXd stresses(a.m, static_cast<Eigen::Index>(a.stresses.size()));

@@ -1,5 +1,5 @@
 #pragma once
-// Second-order classification of the kinematic modes of a bar framework (issue 13, item 1).
+// Second-order classification of the kinematic modes of a framework (issue 13, item 1).
 //
 // A first-order mode u (D u = 0) extends to a second-order flex (u, u″) with D u″ + ε″(u, u) = 0
 // exactly when every self-stress σ (σᵀD = 0) does no work on it: σᵀ ε″(u, u) = 0 (Connelly &
@@ -8,6 +8,8 @@
 // matrix of Connelly, the product forces of Pellegrino & Calladine (1986). If some combination
 // of the self-stresses makes that form positive definite on all modes modulo rigid motions, the
 // framework is prestress stable (Connelly & Whiteley 1996) and every mode is infinitesimal.
+// Beams use seed 002's eq (3) with its second-order terms and rigid bodies their relative
+// coordinates (deformation_functions.hpp gives ε″ of each along a motion of its nodes).
 // Modes that pass are traced (finite_motion.hpp); a closed trace makes them finite.
 
 #include <Eigen/Core>
@@ -34,15 +36,14 @@ struct SecondOrderResult {
   std::vector<ModeOrder> orders;  ///< one per analysis.modes
 };
 
-/// Classifies every mode of `analysis` (made on `model`, dense path with vectors). Bars only:
-/// for beams and rigid bodies every mode is `undetermined` with reason no_second_order_model;
-/// above kSecondOrderSizeLimit, reason not_computed.
+/// Classifies every mode of `analysis` (made on `model`, dense path with vectors): bars, beams
+/// and rigid bodies. Above kSecondOrderSizeLimit, reason not_computed.
 SecondOrderResult classify_modes(const FrameworkModel& model, const FrameworkResult& analysis,
                                  const SecondOrderOptions& options = {});
 
 /// The geometric stiffness (stress matrix) of the resultants `stress` (dual to the rows of D(c),
-/// in D̂'s units) on the columns of D(c): the n × n matrix of Σ_r σ_r ∂²ε̂_r/∂x̂², non-dimensional.
-/// Bars only.
+/// in D̂'s units) on the columns of D(c): the n × n matrix of Σ_r σ_r ε̂_r″, non-dimensional, with
+/// ε̂_r″ the second derivative along motions at constant rates (deformation_functions.hpp).
 Eigen::MatrixXd geometric_stiffness(const FrameworkModel& model, const FrameworkResult& analysis,
                                     const Eigen::VectorXd& stress);
 

@@ -25,7 +25,7 @@ TwoWayTrace trace_both_ways(const FrameworkModel& model, const FrameworkResult& 
 std::vector<std::optional<TwoWayTrace>> animation_traces(const FrameworkModel& model, const FrameworkResult& analysis,
                                                          const AnalysisOptions& options) {
   std::vector<std::optional<TwoWayTrace>> traces(analysis.modes.size());
-  if (analysis.orders.size() != analysis.modes.size() || !bars_only(model)) return traces;
+  if (analysis.orders.size() != analysis.modes.size()) return traces;
   TraceOptions tracing;
   tracing.amplitude_fraction = kAnimationAmplitude;
   tracing.steps = kAnimationSteps;

@@ -34,7 +34,7 @@ struct TwoWayTrace {
 
 /// Follows `direction` (a mode's rates, D̂'s units) from the configuration of `model` both
 /// ways, `options.amplitude_fraction` of the characteristic length and `options.steps` steps
-/// each. Bars only (as trace_motion): otherwise both traces are empty.
+/// each.
 TwoWayTrace trace_both_ways(const FrameworkModel& model, const FrameworkResult& analysis, const Eigen::VectorXd& direction,
                             const TraceOptions& options = {});
 

@@ -18,7 +18,9 @@
 
 #include <cstdio>
 #include <iostream>
+#include <string_view>
 
+#include "kinestat/io/printable_text.hpp"
 #include "kinestat/io/text_file.hpp"
 #if KINESTAT_HAVE_TINYXML2
 #include <tinyxml2.h>
@@ -207,13 +209,47 @@ class SdformatReader {
 
 bool sdformat_reader_built_in() { return true; }
 
+#if KINESTAT_HAVE_TINYXML2
+namespace {
+
+// What libsdformat's version parser takes without throwing: whole numbers joined by dots, each
+// short enough for std::stoi.
+bool plain_version(std::string_view version) {
+  std::size_t digits = 0, parts = 0;
+  for (const char c : version) {
+    if (c == '.') {
+      if (digits == 0) return false;
+      digits = 0;
+    } else if (c >= '0' && c <= '9') {
+      if (digits++ == 0) ++parts;
+      if (digits > 6) return false;
+    } else {
+      return false;
+    }
+  }
+  return digits > 0 && parts <= 3;
+}
+
+}  // namespace
+#endif
+
 // libsdformat reports malformed XML only as "Unable to read file" (the line goes to its
 // console), and tries a URDF conversion on other roots: check both first, with positions.
+// Its version parser (ignition::math::SemanticVersion) throws std::invalid_argument on a
+// version such as "1.M" from a place the exception cannot leave (std::terminate, found by
+// fuzz_sdformat_file): the version is checked here first.
 void check_xml(const std::string& path, const std::string& text) {
 #if KINESTAT_HAVE_TINYXML2
   tinyxml2::XMLDocument document;
   if (document.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS)
     throw InputError({path, document.ErrorLineNum(), 1}, fmt::format("malformed XML: {}", document.ErrorStr()));
+  if (const tinyxml2::XMLElement* root = document.RootElement(); root != nullptr && std::string_view(root->Name()) == "sdf") {
+    const char* version = root->Attribute("version");
+    if (version != nullptr && !plain_version(version))
+      throw InputError({path, root->GetLineNum(), 1},
+                       fmt::format("<sdf version=\"{}\">: a version is whole numbers joined by dots, such as 1.9",
+                                   printable_text(std::string_view(version).substr(0, 40))));
+  }
 #endif
   if (xml_root_name(text) != "sdf") throw InputError({path, 1, 1}, "an SDFormat file has an <sdf> root element");
 }

@@ -192,7 +192,7 @@ std::string order_reason_text(const framework::ModeOrder& o) {
                          "possibly blocked at a higher order",
                          evidence(o.second_order_work), o.trace.failed_step, evidence(o.trace.max_residual));
     case OrderReason::no_second_order_model:
-      return "no second-order test for beams and rigid bodies yet (bar frameworks only)";
+      return "no second-order model for some element";
     case OrderReason::not_computed: return "second order not computed (model too large, or tracing off)";
   }
   return "";

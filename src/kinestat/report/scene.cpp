@@ -331,7 +331,7 @@ std::string first_order_reason(const framework::FrameworkResult& a, std::size_t 
     case OrderReason::blocked_by_stress:
       return "blocked at second order by a self-stress: an infinitesimal mechanism, it does not move finitely";
     case OrderReason::trace_failed: return fmt::format("the trace lost closure at step {} (no finite motion found)", o.trace.failed_step);
-    case OrderReason::no_second_order_model: return "beams and rigid bodies are not traced (bar frameworks only)";
+    case OrderReason::no_second_order_model: return "no second-order model of some element (not traced)";
     case OrderReason::not_computed: return "second order not computed (model too large, or tracing off)";
     case OrderReason::traced:
     case OrderReason::rigid_motion: return "the finite motion was not traced for this picture";
