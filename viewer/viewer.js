@@ -449,7 +449,9 @@
       } else if (mode.first_order) {
         $('motion').appendChild(text('p', 'first order only: ' + mode.first_order, 'note first-order'));
       }
-      if (t) {
+      if (t && t.nodes.length === 0) {
+        legend.textContent = mode.label + ': finite motion, traced, that moves no drawn point (only rotations of node triads)';
+      } else if (t) {
         const a = t.arc;
         legend.textContent = mode.label + ': finite motion through ' + a.length + ' traced configurations; amplitude ' + state.amplitude.toFixed(2) +
           ' of the traced arc length (' + a[a.length - 1].toPrecision(3) + ' forward, ' + (-a[0]).toPrecision(3) + ' backward, ' + S.units + ')';
@@ -567,7 +569,9 @@
   api.setView = (i) => { viewSelect.value = String(i); viewSelect.dispatchEvent(new Event('change')); };
   api.setAmplitude = (a) => { slider.value = String(a); slider.dispatchEvent(new Event('input')); };
   api.freeze = (phase) => { state.frozen = phase; };
-  api.modeMoves = (i) => velocityScale(S.modes[i]) > 0 || !!S.modes[i].trace;
+  // A traced mode moves a drawn point when some node moves along its trace (a mode that only
+  // turns beam ends moves none).
+  api.modeMoves = (i) => (S.modes[i].trace ? S.modes[i].trace.nodes.length > 0 : velocityScale(S.modes[i]) > 0);
   const firstOrderBox = $('firstorder');
   firstOrderBox.addEventListener('change', () => { state.firstOrder = firstOrderBox.checked; applyColours(); });
   // Traced modes: show the first-order animation instead (true) or the traced one (false).
