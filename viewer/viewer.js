@@ -1,6 +1,14 @@
 // kinestat report viewer: draws the scene embedded as window.KINESTAT_SCENE with three.js
 // (global THREE). Rotate by dragging, zoom with the wheel. window.kinestatViewer gives tests
-// and users a small API: setView, setAmplitude, freeze, elementColours, ready.
+// and users a small API: setView, setAmplitude, freeze, elementColours, ready, and for traced
+// modes setFirstOrder, traced, nodePositions, barLengths.
+//
+// A framework mode whose finite motion was traced (mode.trace) is animated through the traced
+// configurations themselves: the animation's arc length picks the nearest traced point and
+// nothing is interpolated between points (a straight line between two configurations shortens
+// every turning bar by about (its ends' relative displacement)^2 / (8 length)), so every drawn
+// configuration keeps the bar lengths to the trace's closure residual plus the rounding of the
+// scene (a quantum of 1e-8 of the shortest moving bar).
 (function () {
   'use strict';
   const S = window.KINESTAT_SCENE;
@@ -57,7 +65,7 @@
   verdictBox.appendChild(text('p', 'Lengths in ' + S.units + '. Signs as in the text report: modes and self-stresses as the analysis decided them (tension positive).', 'note'));
   const viewSelect = $('mode');
   const views = [{ kind: 'configuration', label: 'configuration' }];
-  S.modes.forEach((m, i) => views.push({ kind: 'mode', index: i, label: m.label + ' (kinematic)' }));
+  S.modes.forEach((m, i) => views.push({ kind: 'mode', index: i, label: m.label + (m.trace ? ' (finite motion, traced)' : ' (kinematic)') }));
   S.stresses.forEach((s, i) => views.push({ kind: 'stress', index: i, label: s.label }));
   views.forEach((v, i) => {
     const o = text('option', v.label);
@@ -102,7 +110,8 @@
   const radius = size * 0.008;
 
   const grey = new THREE.Color(0x444444);
-  const current = new Float32Array(3 * n);
+  // Float64: traced positions keep bar lengths to 1e-8, beyond single precision.
+  const current = new Float64Array(3 * n);
   current.set(P);
   // Rigid bodies as thick light bars, flexures (beams) as thin dark rods, trusses in between.
   const types = S.elements.type || [];
@@ -331,7 +340,23 @@
   };
 
   // ---- view state
-  const state = { view: 0, amplitude: 0.5, frozen: null, start: performance.now(), largest: 0 };
+  const state = { view: 0, amplitude: 0.5, frozen: null, start: performance.now(), largest: 0, firstOrder: false, point: -1 };
+  // The traced path of a mode shown as traced, or null (first order).
+  const tracedPath = (v) => (v.kind === 'mode' && !state.firstOrder && S.modes[v.index].trace) || null;
+  // The traced point at animation phase `phase`: the arc length amplitude × sin(phase) of the
+  // traced arc of the side it falls on (a side traced short is as far as it goes; a side with
+  // no point beyond the start mirrors the other), then the nearest traced point.
+  const tracedPoint = (t, phase) => {
+    const a = t.arc, last = a.length - 1;
+    let s = state.amplitude * Math.sin(phase);
+    const forward = a[last], backward = -a[0];
+    if (s < 0 && backward <= 0) s = -s;
+    if (s > 0 && forward <= 0) s = -s;
+    const target = s >= 0 ? s * forward : s * backward;
+    let best = t.start;
+    for (let k = 0; k <= last; k++) if (Math.abs(a[k] - target) < Math.abs(a[best] - target)) best = k;
+    return best;
+  };
   const velocityScale = (mode) => {
     let largest = 0;
     for (let i = 0; i < n; i++)
@@ -369,6 +394,8 @@
     twistGroup.clear();
     ghost.visible = v.kind === 'mode';
     $('moving').textContent = '';
+    $('motion').textContent = '';
+    $('firstOrderBox').style.display = 'none';
     $('resultants').textContent = '';
     if (v.kind === 'stress') {
       const st = S.stresses[v.index];
@@ -413,10 +440,27 @@
       const mode = S.modes[v.index];
       (mode.twists || []).forEach((t) => twistGroup.add(screwAxis(t, 0xe66101)));
       if (mode.moving && mode.moving.length) $('moving').appendChild(text('p', 'Moving coordinates: ' + mode.moving.join(', '), 'note'));
-      legend.textContent = velocityScale(S.modes[v.index]) === 0
-        ? S.modes[v.index].label + ': moves no drawn point (only rotations, or rotation about an axis through every point of the moving bodies)'
-        : S.modes[v.index].label + ': amplitude ' + state.amplitude.toFixed(2) + ' (largest displacement ' +
-          (state.amplitude * 25).toFixed(0) + '% of the model size)';
+      $('firstOrderBox').style.display = mode.trace ? '' : 'none';
+      const t = tracedPath(v);
+      if (mode.trace) {
+        $('motion').appendChild(text('p', 'finite motion, traced (max residual ' + mode.trace.max_residual.toPrecision(3) + ' of the characteristic length)' +
+          (state.firstOrder ? ': shown to first order instead' : ''), 'note traced'));
+        if (mode.trace.note) $('motion').appendChild(text('p', mode.trace.note, 'note'));
+      } else if (mode.first_order) {
+        $('motion').appendChild(text('p', 'first order only: ' + mode.first_order, 'note first-order'));
+      }
+      if (t && t.nodes.length === 0) {
+        legend.textContent = mode.label + ': finite motion, traced, that moves no drawn point (only rotations of node triads)';
+      } else if (t) {
+        const a = t.arc;
+        legend.textContent = mode.label + ': finite motion through ' + a.length + ' traced configurations; amplitude ' + state.amplitude.toFixed(2) +
+          ' of the traced arc length (' + a[a.length - 1].toPrecision(3) + ' forward, ' + (-a[0]).toPrecision(3) + ' backward, ' + S.units + ')';
+      } else {
+        legend.textContent = velocityScale(S.modes[v.index]) === 0
+          ? S.modes[v.index].label + ': moves no drawn point (only rotations, or rotation about an axis through every point of the moving bodies)'
+          : S.modes[v.index].label + ': first order, amplitude ' + state.amplitude.toFixed(2) + ' (largest displacement ' +
+            (state.amplitude * 25).toFixed(0) + '% of the model size)';
+      }
     } else {
       legend.textContent = 'drag to rotate, wheel to zoom';
       const lines = S.modes.filter((md) => md.moving && md.moving.length).map((md) => md.label + ' moves ' + md.moving.join(', '));
@@ -433,7 +477,14 @@
   const place = (phase) => {
     const v = views[state.view];
     current.set(P);
-    if (v.kind === 'mode') {
+    const t = tracedPath(v);
+    state.point = -1;
+    if (t) {
+      const point = tracedPoint(t, phase);
+      state.point = point;
+      const offsets = t.offsets[point], q = t.quantum;
+      t.nodes.forEach((i, j) => { for (let k = 0; k < 3; k++) current[3 * i + k] = P[3 * i + k] + q * offsets[3 * j + k]; });
+    } else if (v.kind === 'mode') {
       const mode = S.modes[v.index];
       const k = velocityScale(mode) * state.amplitude * Math.sin(phase);
       for (let i = 0; i < 3 * n; i++) current[i] += k * mode.velocity[i];
@@ -518,7 +569,21 @@
   api.setView = (i) => { viewSelect.value = String(i); viewSelect.dispatchEvent(new Event('change')); };
   api.setAmplitude = (a) => { slider.value = String(a); slider.dispatchEvent(new Event('input')); };
   api.freeze = (phase) => { state.frozen = phase; };
-  api.modeMoves = (i) => velocityScale(S.modes[i]) > 0;
+  // A traced mode moves a drawn point when some node moves along its trace (a mode that only
+  // turns beam ends moves none).
+  api.modeMoves = (i) => (S.modes[i].trace ? S.modes[i].trace.nodes.length > 0 : velocityScale(S.modes[i]) > 0);
+  const firstOrderBox = $('firstorder');
+  firstOrderBox.addEventListener('change', () => { state.firstOrder = firstOrderBox.checked; applyColours(); });
+  // Traced modes: show the first-order animation instead (true) or the traced one (false).
+  api.setFirstOrder = (on) => { firstOrderBox.checked = on; firstOrderBox.dispatchEvent(new Event('change')); };
+  api.traced = (i) => !!S.modes[i].trace;
+  // The traced point last drawn (index into the mode's trace), or -1 for a first-order picture.
+  api.tracedPoint = () => state.point;
+  // Node positions as drawn (the spheres of the 3D scene; the position buffer for line sets).
+  api.nodePositions = () => spheres.length ? spheres.map((s) => [s.position.x, s.position.y, s.position.z])
+    : Array.from({ length: n }, (_, i) => [current[3 * i], current[3 * i + 1], current[3 * i + 2]]);
+  // The drawn length of every element (the cylinders' lengths), or null for line sets.
+  api.barLengths = () => bars.length ? bars.map((b) => b.scale.y) : null;
   api.elementColours = () => colours.map((c) => '#' + c.getHexString());
   api.setLabels = (on) => { $('labels').checked = on; $('labels').dispatchEvent(new Event('change')); placeLabels(); };
   api.labelsShown = () => labelLayer.style.display !== 'none' ? labels.length : 0;

@@ -25,7 +25,7 @@ from . import _core
 from ._core import InputError
 
 __all__ = [
-    "InputError", "analyze", "analyse", "structural_groups", "Framework", "Network",
+    "InputError", "analyze", "analyse", "structural_groups", "trace", "solve_positions", "Framework", "Network",
     "NetworkResult", "FrameworkResult", "StructureResult", "html_built_in", "sweep",
 ]
 
@@ -209,6 +209,13 @@ class FrameworkResult(_Result):
         ``status`` ("certain", "close"; "unproven" for a sparse QR) and ``distance``."""
         return self._analysed.rank_evidence()
 
+    def trace(self, mode=1, amplitude=0.1, steps=20):
+        """Finite motion (issue 13): kinematic mode ``mode`` (1-based, as ``inf_flexes()``
+        columns) followed by the predictor-corrector over ``amplitude`` times the characteristic
+        length in ``steps`` steps. The JSON of ``kinestat move --mode N --amplitude A
+        --steps S --json`` as a dict (see :func:`trace`)."""
+        return json.loads(self._analysed.trace(int(mode), float(amplitude), int(steps)))
+
     @property
     def row_labels(self):
         return self._analysed.row_labels()
@@ -274,6 +281,44 @@ def sweep(spec, *, shard=(0, 1), tolerance=None, full=False):
     index, count = shard
     lines, _failed = _core.sweep_lines(str(spec), index, count, tolerance, full)
     return [json.loads(line) for line in lines]
+
+
+def trace(model, mode=1, amplitude=0.1, steps=20, *, tolerance=None):
+    """Finite motion of a framework (issue 13), as ``kinestat move MODEL --mode N
+    --amplitude A --steps S --json``, key for key: kinematic mode ``mode`` (1-based, numbered as
+    ``kinestat analyze`` numbers them) followed from the model's configuration over ``amplitude``
+    times the characteristic length in ``steps`` steps, on the full bar-length equations.
+
+    Returns a dict with ``order``, ``closed`` (every point reached with closure), ``failed_step``,
+    ``amplitude`` (arc length reached, length units), ``max_residual`` (largest closure residual
+    over the characteristic length), ``rank_drops`` and ``path``: one dict per point with
+    ``step``, ``parameter`` (arc length over the characteristic length), ``arc_length``,
+    ``residual``, ``rank`` (of D(c) there) and ``positions`` (node name -> coordinates, length
+    units, ten significant digits)."""
+    path, text = _source(model)
+    analysed = _core.analyse(path, text, tolerance, "auto", [])
+    if analysed.kind != "framework":
+        raise ValueError("trace follows a kinematic mode of a framework (kind: framework); "
+                         "a network's positions are solved by solve_positions")
+    return json.loads(analysed.trace(int(mode), float(amplitude), int(steps)))
+
+
+def solve_positions(model, inputs=None, *, sweep=None):
+    """Positions of a planar mechanism (network model), solved group by group in the order of
+    formation of its structural groups, as ``kinestat move MODEL --input NAME=VALUE ...
+    [--sweep NAME=FROM:TO:STEPS] --json``, key for key.
+
+    ``inputs``: driving coupling name -> value relative to the file's configuration (rad for a
+    revolute, length units for a prismatic), in the order given; ``sweep``: one more driving
+    coupling swept as ``(name, from, to, steps)``. Returns a dict with ``groups`` (order of
+    formation, type, method, branch), ``steps`` (per input set: ``inputs``, ``assembled``,
+    ``max_residual``, per-body poses and per-coupling points) and ``not_assembled``."""
+    path, text = _source(model)
+    pairs = [(str(name), float(value)) for name, value in (inputs or {}).items()]
+    if sweep is not None:
+        name, start, stop, steps = sweep
+        sweep = (str(name), float(start), float(stop), int(steps))
+    return json.loads(_core.read(path, text).positions(pairs, sweep))
 
 
 def _number(value):

@@ -8,10 +8,15 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -20,7 +25,10 @@
 #include "kinestat/design/structure_verdict.hpp"
 #include "kinestat/framework/framework_analysis.hpp"
 #include "kinestat/framework/framework_jacobian.hpp"
+#include "kinestat/framework/finite_motion.hpp"
 #include "kinestat/framework/generic_framework.hpp"
+#include "kinestat/framework/two_way_trace.hpp"
+#include "kinestat/kinematics/position_solver.hpp"
 #include "kinestat/io/model_file.hpp"
 #include "kinestat/io/network_structure.hpp"
 #include "kinestat/network/analyse_network.hpp"
@@ -30,6 +38,7 @@
 #include "kinestat/report/framework_report.hpp"
 #include "kinestat/report/html_writer.hpp"
 #include "kinestat/report/json_text.hpp"
+#include "kinestat/report/move_report.hpp"
 #include "kinestat/report/network_report.hpp"
 #include "kinestat/report/scene.hpp"
 #include "kinestat/report/structure_report.hpp"
@@ -59,15 +68,19 @@ struct Analysed {
   std::optional<network::NetworkSecondOrder> network_second_order;  ///< as `kinestat analyze`
   std::optional<network::GenericNetwork> network_generic;        ///< the generic answer, as `kinestat analyze`
   std::optional<framework::GenericFramework> framework_generic;
+  framework::AnalysisOptions framework_options;  ///< frameworks: the options of the analysis
 
-  /// The scene of `kinestat draw` and `kinestat report` (src/cli/scene_loading.cpp).
-  report::Scene scene() const {
+  /// The scene of `kinestat draw` and `kinestat report` (src/cli/scene_loading.cpp); with
+  /// `traced_motion`, frameworks carry their finite modes traced both ways, as the report does.
+  report::Scene scene(bool traced_motion = false) const {
     report::Scene scene;
     if (network) {
       scene = report::network_scene(file.network->model, *network);
       scene.units = file.network->model.units;
     } else if (framework) {
-      scene = report::framework_scene(*file.framework, *framework);
+      std::vector<std::optional<framework::TwoWayTrace>> traces;
+      if (traced_motion) traces = framework::animation_traces(*file.framework, *framework, framework_options);
+      scene = report::framework_scene(*file.framework, *framework, traces);
       scene.units = file.framework->units;
     } else {
       scene = report::structure_scene(*structure_model, *decomposition);
@@ -109,6 +122,7 @@ std::shared_ptr<Analysed> analyse(const std::string& path, const std::optional<s
     framework::AnalysisOptions options;
     options.tolerances = Tolerances::with_rank(tolerance);
     analysed->framework = framework::analyse_framework(*file.framework, options);
+    analysed->framework_options = options;
     // As src/cli/framework_command.cpp: the generic answer may re-choose the basis first.
     analysed->framework_generic = framework::generic_framework(*file.framework, *analysed->framework);
     if (analysed->framework_generic)
@@ -161,7 +175,7 @@ std::string json_report(const Analysed& a) {
 /// The self-contained HTML report, as `kinestat report` writes it; empty without the viewer.
 std::string html_report(const Analysed& a) {
   if (!report::html_report_built_in()) return {};
-  const report::Scene scene = a.scene();
+  const report::Scene scene = a.scene(/*traced_motion=*/true);
   if (a.network && !scene.large) return report::html_report(scene, report::graph_svg(scene), "Coupling, motion and action graphs");
   if (!a.network && a.decomposition && !scene.large)
     return report::html_report(scene, report::structure_svg(*a.structure_model, *a.decomposition), "Structural diagram");
@@ -220,6 +234,92 @@ Eigen::MatrixXd columns(const Items& items, Eigen::Index rows, Get get) {
   Eigen::MatrixXd matrix(rows, static_cast<Eigen::Index>(items.size()));
   for (std::size_t i = 0; i < items.size(); ++i) matrix.col(static_cast<Eigen::Index>(i)) = get(items[i]);
   return matrix;
+}
+
+/// `kinestat move FILE --mode N --amplitude A --steps S --json` of a framework: the JSON text.
+std::string trace_json(const Analysed& a, long long mode, double amplitude, long long steps) {
+  const framework::FrameworkResult& analysis = framework_of(a);
+  const framework::FrameworkModel& model = *a.file.framework;
+  const std::string& path = a.file.path;
+  // The checks and messages of src/cli/move_command.cpp.
+  if (!(amplitude > 0.0) || !std::isfinite(amplitude)) throw py::value_error("amplitude is a positive finite number");
+  if (steps < 1 || steps > 100000) throw py::value_error("steps is a whole number from 1 to 100000");
+  if (!analysis.vectors || analysis.method != framework::RankMethod::dense_svd)
+    throw io::InputError({path, 1, 1}, "the framework is too large for the dense analysis that tracing needs");
+  const auto modes = static_cast<long long>(analysis.modes.size());
+  if (modes == 0) throw io::InputError({path, 1, 1}, "the framework has no kinematic mode: it cannot move (--mode has nothing to follow)");
+  if (mode < 1 || mode > modes)
+    throw io::InputError({path, 1, 1}, fmt::format("--mode {}: the framework has {} kinematic mode{}, numbered 1 to {}", mode, modes,
+                                                   modes == 1 ? "" : "s", modes));
+  report::FrameworkMove move;
+  move.mode = static_cast<std::size_t>(mode - 1);
+  move.amplitude_fraction = amplitude;
+  move.steps = static_cast<int>(steps);
+  framework::TraceOptions trace;
+  trace.amplitude_fraction = amplitude;
+  trace.steps = move.steps;
+  trace.tolerance = linalg::RankTolerance{a.framework_options.tolerances.rank};
+  move.trace = framework::trace_motion(model, analysis, analysis.modes[move.mode].velocities, trace);
+  return report::json_text(report::framework_move_json(model, analysis, move));
+}
+
+/// `kinestat move FILE --input NAME=VALUE ... [--sweep NAME=FROM:TO:STEPS] --json` of a planar
+/// network: the JSON text. `inputs` in the order given; `sweep` (name, from, to, steps) or none.
+std::string positions_json(const Analysed& a, const std::vector<std::pair<std::string, double>>& inputs,
+                           const std::optional<std::tuple<std::string, double, double, long long>>& sweep) {
+  if (!a.file.network) throw py::value_error("positions are solved for network models (kind: network)");
+  io::LoadedNetwork loaded = *a.file.network;
+  const std::string& path = a.file.path;
+  std::vector<std::string> names;
+  for (const auto& [name, value] : inputs) {
+    if (!std::isfinite(value)) throw py::value_error(fmt::format("the input '{}' is not a finite number", name));
+    names.push_back(name);
+  }
+  if (sweep) {
+    const auto& [name, from, to, steps] = *sweep;
+    if (!std::isfinite(from) || !std::isfinite(to) || steps < 1 || steps > 9999999)
+      throw py::value_error("sweep is (name, from, to, steps) with finite from and to and 1 <= steps <= 9999999");
+    names.push_back(name);
+  }
+  if (names.empty())
+    throw io::InputError({path, 1, 1}, "a mechanism is moved by its inputs: give --input NAME=VALUE (or --sweep NAME=FROM:TO:STEPS) for "
+                                       "each driving coupling");
+  const auto& couplings = loaded.model.couplings;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (std::none_of(couplings.begin(), couplings.end(), [&](const auto& c) { return c.name == names[i]; }))
+      throw io::InputError({path, 1, 1}, fmt::format("the input '{}' names no coupling of this model", names[i]));
+    for (std::size_t k = 0; k < i; ++k)
+      if (names[k] == names[i]) throw io::InputError({path, 1, 1}, fmt::format("the input '{}' is given twice", names[i]));
+  }
+  loaded.model.inputs = names;  // the inputs given are the drivers, as on the command line
+  kinematics::PositionPlan plan;
+  try {
+    const structure::StructureModel structure = io::structure_of_network(loaded, path);
+    plan = kinematics::plan_positions(loaded.model, structure, structure::analyse_structure(structure));
+  } catch (const kinematics::PositionModelError& error) {
+    SourceLocation where{path, 1, 1};
+    const auto it = loaded.item_locations.find("couplings");
+    if (error.coupling() >= 0 && it != loaded.item_locations.end() && static_cast<std::size_t>(error.coupling()) < it->second.size())
+      where = it->second[static_cast<std::size_t>(error.coupling())];
+    throw io::InputError(where, error.what());
+  }
+  report::PositionSweep result;
+  const std::size_t count = sweep ? static_cast<std::size_t>(std::get<3>(*sweep)) + 1 : 1;
+  std::vector<kinematics::Pose> start;
+  for (std::size_t s = 0; s < count; ++s) {
+    std::vector<double> values;
+    for (const auto& input : inputs) values.push_back(input.second);
+    if (sweep) {
+      const auto& [name, from, to, steps] = *sweep;
+      values.push_back(from + (to - from) * static_cast<double>(s) / static_cast<double>(steps));
+    }
+    kinematics::PositionResult r = kinematics::solve_positions(loaded.model, plan, values, start);
+    if (r.assembled) start = r.poses;  // Newton groups continue from the last configuration reached
+    result.values.push_back(std::move(values));
+    result.results.push_back(std::move(r));
+  }
+  result.plan = std::move(plan);
+  return report::json_text(report::positions_json(loaded.model, result));
 }
 
 std::vector<std::string> magnitude_names(const std::vector<network::Magnitude>& magnitudes, const std::vector<int>& pick) {
@@ -358,11 +458,15 @@ PYBIND11_MODULE(_core, m) {
         }
         return groups;
       })
-      .def("complete", [](const Analysed& a) { return a.decomposition && a.decomposition->complete(); });
+      .def("complete", [](const Analysed& a) { return a.decomposition && a.decomposition->complete(); })
+      // Finite motion (issue 13): `kinestat move --json`.
+      .def("trace", &trace_json, py::arg("mode"), py::arg("amplitude"), py::arg("steps"))
+      .def("positions", &positions_json, py::arg("inputs"), py::arg("sweep") = std::nullopt);
 
   m.def("analyse", &analyse, py::arg("path"), py::arg("text") = std::nullopt, py::arg("tolerance") = std::nullopt,
         py::arg("arithmetic") = "auto", py::arg("primary") = std::vector<std::string>{},
         "Reads a model file (or `text` named `path`) and runs the analysis of its kind");
+  m.def("read", [](const std::string& path, const std::optional<std::string>& text) { return read(path, text); }, py::arg("path"), py::arg("text") = std::nullopt, "Reads a model file (or `text` named `path`), no analysis");
   m.def("decompose", &decompose, py::arg("path"), py::arg("text") = std::nullopt,
         "Structural groups of a network or structure model, as `kinestat structure`");
   m.def("sweep_lines", &sweep_lines, py::arg("spec"), py::arg("index") = 0, py::arg("count") = 1, py::arg("tolerance") = std::nullopt,

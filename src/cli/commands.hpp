@@ -63,7 +63,9 @@ struct LoadedScene {
   /// the structural diagram is asked for, so the other pictures of the network still draw.
   std::optional<io::InputError> structure_error;
 };
-LoadedScene load_scene(const std::string& path, std::optional<double> tolerance);
+/// `traced_motion`: frameworks also get the finite motion of their finite modes traced both ways
+/// (framework::animation_traces), which the HTML report animates; SVG drawings do not need it.
+LoadedScene load_scene(const std::string& path, std::optional<double> tolerance, bool traced_motion = false);
 
 // `analyze` dispatches on the model's kind to one of these; each kind adds its own options.
 void register_network_options(CLI::App& analyze);

@@ -23,7 +23,7 @@ void register_report(CLI::App& app, Action& action) {
   command->callback([options, &action] {
     action = [options] {
       // The model first: a bad model is reported as such whether or not the viewer is built in.
-      const LoadedScene loaded = load_scene(options->model_path, options->tolerance);
+      const LoadedScene loaded = load_scene(options->model_path, options->tolerance, /*traced_motion=*/true);
       if (!report::html_report_built_in()) {
         std::cerr << "kinestat: error: HTML output is not built in: this kinestat was built without npm, so three.js "
                      "could not be embedded (rebuild with npm available; 'kinestat draw' writes SVG)\n";

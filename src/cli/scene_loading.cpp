@@ -7,6 +7,7 @@
 #include "kinestat/design/structure_verdict.hpp"
 #include "kinestat/framework/framework_analysis.hpp"
 #include "kinestat/framework/generic_framework.hpp"
+#include "kinestat/framework/two_way_trace.hpp"
 #include "kinestat/io/framework_reader.hpp"
 #include "kinestat/io/network_reader.hpp"
 #include "kinestat/io/network_structure.hpp"
@@ -20,13 +21,15 @@
 namespace kinestat::cli {
 
 namespace {
-report::Scene framework_scene(const framework::FrameworkModel& model, std::optional<double> tolerance) {
+report::Scene framework_scene(const framework::FrameworkModel& model, std::optional<double> tolerance, bool traced_motion) {
   framework::AnalysisOptions options;
   options.tolerances = Tolerances::with_rank(tolerance);
   framework::FrameworkResult analysis = framework::analyse_framework(model, options);
   const std::optional<framework::GenericFramework> generic = framework::generic_framework(model, analysis);
   if (generic) analysis = framework::with_generic_basis(model, std::move(analysis), *generic, options);  // as `analyze` shows it
-  report::Scene scene = report::framework_scene(model, analysis);
+  std::vector<std::optional<framework::TwoWayTrace>> traces;
+  if (traced_motion) traces = framework::animation_traces(model, analysis, options);
+  report::Scene scene = report::framework_scene(model, analysis, traces);
   scene.verdict = design::framework_verdict(model, analysis, options);
   if (generic) scene.verdict->generic = report::framework_generic_sentences(model, analysis, *generic);
   scene.units = model.units;
@@ -34,9 +37,9 @@ report::Scene framework_scene(const framework::FrameworkModel& model, std::optio
 }
 }  // namespace
 
-LoadedScene load_scene(const std::string& path, std::optional<double> tolerance) {
+LoadedScene load_scene(const std::string& path, std::optional<double> tolerance, bool traced_motion) {
   const InputFormat format = input_format(path);
-  if (format == InputFormat::spacar) return {"framework", framework_scene(read_spacar_model(path), tolerance), {}, {}};
+  if (format == InputFormat::spacar) return {"framework", framework_scene(read_spacar_model(path), tolerance, traced_motion), {}, {}};
   std::optional<io::YamlFile> file;
   LoadedScene loaded;
   if (format == InputFormat::kinestat) {
@@ -66,7 +69,7 @@ LoadedScene load_scene(const std::string& path, std::optional<double> tolerance)
       loaded.structure_error = error;
     }
   } else if (loaded.kind == "framework") {
-    loaded.scene = framework_scene(io::read_framework_model(*file), tolerance);
+    loaded.scene = framework_scene(io::read_framework_model(*file), tolerance, traced_motion);
   } else {
     loaded.structure_model = io::read_structure_model(*file);
     const structure::StructureResult decomposition = structure::analyse_structure(*loaded.structure_model);

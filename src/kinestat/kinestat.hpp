@@ -20,6 +20,7 @@
 #include "kinestat/framework/pebble_game.hpp"
 #include "kinestat/framework/physical_scaling.hpp"
 #include "kinestat/framework/second_order.hpp"
+#include "kinestat/framework/two_way_trace.hpp"
 #include "kinestat/graph/coupling_graph.hpp"
 #include "kinestat/io/framework_yaml_writer.hpp"
 #include "kinestat/io/input_error.hpp"

@@ -5,6 +5,10 @@
 // pictures with the undeformed shape in grey under it; the 12-truss self-stress colours its
 // twelve bars with two colours; Davies' network shows its self-stresses as coupling wrenches
 // and its modes as body twists; the folded-sheet guide's self-stress has a non-zero range.
+// Traced finite motion (issue 13): the 12-truss and the four-bar of bars animate their mode
+// through traced configurations whose bar lengths, measured on the drawn 3D scene at many
+// animation times (frozen and playing), stay within 1e-6 of the rest lengths, while the same
+// mode drawn to first order stretches its bars; an infinitesimal mode says "first order only".
 // Screenshots go to --out. Exit 0 all passed, 1 failures, 77 skipped (no playwright-core).
 //
 // node tests/browser/check_reports.mjs --cli build/release/kinestat \
@@ -89,6 +93,87 @@ const openReport = async (html, timeout) => {
   } catch (e) {
     return { page, errors, started: false };
   }
+};
+
+// Largest relative bar-length error over the drawn 3D scene: node positions read from the
+// spheres and lengths read from the bar cylinders, each against the rest length computed from
+// the scene's configuration (window.KINESTAT_SCENE.nodes.position).
+const barErrors = () => {
+  const v = window.kinestatViewer;
+  const S = window.KINESTAT_SCENE;
+  const P = S.nodes.position, E = S.elements.pairs;
+  const pos = v.nodePositions(), drawn = v.barLengths();
+  let nodes = 0, bars = 0, moved = 0;
+  for (let e = 0; e < E.length / 2; e++) {
+    const a = E[2 * e], b = E[2 * e + 1];
+    const rest = Math.hypot(P[3 * b] - P[3 * a], P[3 * b + 1] - P[3 * a + 1], P[3 * b + 2] - P[3 * a + 2]);
+    const now = Math.hypot(pos[b][0] - pos[a][0], pos[b][1] - pos[a][1], pos[b][2] - pos[a][2]);
+    nodes = Math.max(nodes, Math.abs(now - rest) / rest);
+    bars = Math.max(bars, Math.abs(drawn[e] - rest) / rest);
+  }
+  for (let i = 0; i < pos.length; i++)
+    moved = Math.max(moved, Math.hypot(pos[i][0] - P[3 * i], pos[i][1] - P[3 * i + 1], pos[i][2] - P[3 * i + 2]));
+  return { nodes, bars, moved, point: v.tracedPoint() };
+};
+
+// Plays the traced animation of mode 1 and measures bar lengths on the drawn scene.
+const checkTracedMotion = async (page, name, views) => {
+  const view = views.findIndex((v) => v.startsWith('mode 1'));
+  const setup = await page.evaluate((i) => {
+    const v = window.kinestatViewer;
+    v.setFirstOrder(false);
+    v.setView(i);
+    v.setAmplitude(1);
+    const t = window.KINESTAT_SCENE.modes[0].trace;
+    return { traced: v.traced(0), label: v.views[i], panel: document.getElementById('motion').textContent,
+             points: t ? t.arc.length : 0, start: t ? t.start : -1 };
+  }, view);
+  check(setup.traced && setup.panel.startsWith('finite motion, traced (max residual '),
+        name + ': mode 1 is not shown as a traced finite motion (' + JSON.stringify(setup) + ')');
+  if (!setup.traced) return;
+  // Frozen animation times over a whole period, then the live animation at a few frames.
+  const phases = [];
+  for (let k = 0; k < 24; k++) phases.push(k * Math.PI / 12 + 0.05);
+  const frozen = await page.evaluate(([measure, list]) => {
+    const f = new Function('return ' + measure)();
+    const v = window.kinestatViewer;
+    return list.map((phase) => { v.freeze(phase); v.render(); return f(); });
+  }, [barErrors.toString(), phases]);
+  await page.evaluate(() => window.kinestatViewer.freeze(null));
+  const live = [];
+  for (let k = 0; k < 8; k++) {
+    await page.waitForTimeout(130);
+    live.push(await page.evaluate((measure) => new Function('return ' + measure)()(), barErrors.toString()));
+  }
+  const all = frozen.concat(live);
+  const worst = Math.max(...all.map((r) => Math.max(r.nodes, r.bars)));
+  const points = all.map((r) => r.point);
+  const moved = Math.max(...all.map((r) => r.moved));
+  check(worst <= 1e-6, name + ': the traced animation changes a bar length by ' + worst.toExponential(2) + ' of its rest length (> 1e-6)');
+  check(Math.min(...points) >= 0 && Math.min(...points) < setup.start && Math.max(...points) > setup.start,
+        name + ': the traced animation does not visit both sides of the configuration (points ' + [...new Set(points)].join(', ') + ', start ' + setup.start + ')');
+  check(moved > 1e-3, name + ': the traced animation moves no node (largest displacement ' + moved + ')');
+  console.log('     ' + name + ': traced animation through ' + setup.points + ' points, ' + new Set(points).size +
+              ' visited; largest relative bar-length error ' + worst.toExponential(2) + ', largest displacement ' + moved.toPrecision(3));
+  await page.evaluate(() => { const v = window.kinestatViewer; v.freeze(Math.PI / 2); v.render(); });
+  await page.screenshot({ path: path.join(out, name + '-traced.png') });
+  await page.evaluate(() => document.getElementById('mode').scrollIntoView());
+  await page.screenshot({ path: path.join(out, name + '-traced-panel.png') });
+  // The same mode to first order: the bars stretch (the measurement sees it).
+  const first = await page.evaluate(([measure, list]) => {
+    const f = new Function('return ' + measure)();
+    const v = window.kinestatViewer;
+    v.setFirstOrder(true);
+    const out = list.map((phase) => { v.freeze(phase); v.render(); return f(); });
+    v.freeze(Math.PI / 2);
+    v.render();
+    return { out, panel: document.getElementById('motion').textContent };
+  }, [barErrors.toString(), phases]);
+  const stretch = Math.max(...first.out.map((r) => r.nodes));
+  check(stretch > 1e-3, name + ': the first-order animation should stretch bars, largest relative change ' + stretch.toExponential(2));
+  console.log('     ' + name + ': first-order animation of the same mode: largest relative bar-length change ' + stretch.toExponential(2));
+  await page.screenshot({ path: path.join(out, name + '-first-order.png') });
+  await page.evaluate(() => { const v = window.kinestatViewer; v.setFirstOrder(false); v.freeze(null); });
 };
 
 const files = fs.readdirSync(examples).filter((f) => f.endsWith('.yaml') && (!only || f.includes(only))).sort();
@@ -238,6 +323,19 @@ for (const file of files) {
       check(seen.red > 100 && seen.blue > 100, name + ': tension (red) and compression (blue) not both visible (' + seen.red + ' red, ' + seen.blue + ' blue pixels)');
     }
     await page.screenshot({ path: path.join(out, name + '-stress.png') });
+  }
+  if (['truss-12', 'four-bar-linkage'].includes(name)) await checkTracedMotion(page, name, views);
+  if (name === 'pellegrino-calladine-two-bar') {
+    // The collinear two-bar's mode is blocked at second order: first-order animation, said so.
+    const note = await page.evaluate((i) => {
+      const v = window.kinestatViewer;
+      v.setView(i);
+      return { traced: v.traced(0), text: document.getElementById('motion').textContent };
+    }, views.findIndex((v) => v.startsWith('mode 1')));
+    await page.evaluate(() => document.getElementById('mode').scrollIntoView());
+    await page.screenshot({ path: path.join(out, name + '-first-order-panel.png') });
+    check(!note.traced && note.text.startsWith('first order only: blocked at second order'),
+          name + ': the infinitesimal mode should say "first order only: blocked at second order ...", says ' + JSON.stringify(note));
   }
   check(errors.length === 0, name + ': console errors: ' + errors.join('; '));
   console.log((errors.length ? 'FAIL ' : 'ok   ') + name + ' (' + views.length + ' views)');

@@ -4,6 +4,9 @@
 #include "kinestat/report/markup_escape.hpp"
 #include "kinestat/report/verdict_report.hpp"
 
+#include <fmt/format.h>
+
+#include <array>
 #include <cmath>
 
 #include "kinestat/report/viewer_assets.hpp"
@@ -67,6 +70,61 @@ std::string script_safe(std::string text) {
 }
 
 std::string html_escape(const std::string& text) { return markup_escape(text); }
+
+// `value` to `digits` significant digits (deterministic: through fixed text).
+double significant(double value, int digits) {
+  if (!std::isfinite(value) || value == 0.0) return 0.0;
+  return std::stod(fmt::format("{:.{}g}", value, digits));
+}
+
+// Output precision of traced positions (not a tolerance: how many digits the scene keeps).
+// Node offsets are whole multiples of a quantum of at most this fraction of the shortest bar at
+// a moving node, so rounding changes a bar's length by at most √3 times it (two ends, half a
+// quantum per coordinate), far inside the 1e-6 of issue 13.
+constexpr double kTraceQuantum = 1e-8;
+
+// A traced path, compactly: only the nodes that move, as integer offsets (in `quantum` length
+// units) from their positions in the model's configuration, per point of the path.
+nlohmann::ordered_json trace_json(const Scene& scene, const SceneTrace& trace) {
+  const std::size_t n = scene.nodes.size();
+  std::vector<bool> moves(n, false);
+  for (const auto& points : trace.positions)
+    for (std::size_t i = 0; i < n && i < points.size(); ++i) moves[i] = moves[i] || points[i] != scene.nodes[i].position;
+  double shortest = 0.0;
+  for (const auto& e : scene.elements) {
+    const auto a = static_cast<std::size_t>(e.a), b = static_cast<std::size_t>(e.b);
+    if (a >= n || b >= n || !(moves[a] || moves[b])) continue;
+    const double l = (scene.nodes[a].position - scene.nodes[b].position).norm();
+    if (l > 0.0 && (shortest == 0.0 || l < shortest)) shortest = l;
+  }
+  if (shortest == 0.0) shortest = 1.0;
+  const double quantum = std::pow(10.0, std::floor(std::log10(shortest * kTraceQuantum)));
+  // Offsets of every point; a node moves when some offset is not zero after rounding.
+  std::vector<std::vector<std::array<long long, 3>>> offsets(trace.positions.size(), std::vector<std::array<long long, 3>>(n));
+  std::vector<bool> kept(n, false);
+  for (std::size_t p = 0; p < trace.positions.size(); ++p)
+    for (std::size_t i = 0; i < n && i < trace.positions[p].size(); ++i)
+      for (int c = 0; c < 3; ++c) {
+        const long long q = std::llround((trace.positions[p][i](c) - scene.nodes[i].position(c)) / quantum);
+        offsets[p][i][static_cast<std::size_t>(c)] = q;
+        kept[i] = kept[i] || q != 0;
+      }
+  auto nodes = nlohmann::ordered_json::array();
+  for (std::size_t i = 0; i < n; ++i)
+    if (kept[i]) nodes.push_back(i);
+  auto points = nlohmann::ordered_json::array();
+  for (const auto& point : offsets) {
+    auto row = nlohmann::ordered_json::array();
+    for (std::size_t i = 0; i < n; ++i)
+      if (kept[i])
+        for (long long q : point[i]) row.push_back(q);
+    points.push_back(std::move(row));
+  }
+  auto arc = nlohmann::ordered_json::array();
+  for (double s : trace.arc) arc.push_back(significant(s, 6));
+  return {{"max_residual", significant(trace.max_residual, 3)}, {"note", trace.note}, {"start", trace.start}, {"arc", arc},
+          {"nodes", nodes}, {"quantum", quantum}, {"offsets", points}};
+}
 
 }  // namespace
 
@@ -151,7 +209,10 @@ nlohmann::ordered_json scene_json(const Scene& scene) {
       for (int k = 0; k < 3; ++k) velocity.push_back(rounded(v(k)));
     auto twists = nlohmann::ordered_json::array();
     for (const auto& t : mode.twists) twists.push_back(screw_json(t));
-    j["modes"].push_back({{"label", mode.label}, {"velocity", velocity}, {"moving", mode.moving}, {"twists", twists}});
+    nlohmann::ordered_json entry = {{"label", mode.label}, {"velocity", velocity}, {"moving", mode.moving}, {"twists", twists}};
+    if (mode.trace) entry["trace"] = trace_json(scene, *mode.trace);
+    if (!mode.first_order_reason.empty()) entry["first_order"] = mode.first_order_reason;
+    j["modes"].push_back(std::move(entry));
   }
   for (const auto& stress : scene.stresses) {
     auto value = nlohmann::ordered_json::array();
@@ -180,6 +241,8 @@ std::string html_report(const Scene& scene, const std::string& figure, const std
 <select id="mode" aria-label="view"></select>
 <label for="amplitude">Amplitude</label>
 <input id="amplitude" type="range" min="0" max="1" step="0.01" value="0.5">
+<div id="motion" class="note"></div>
+<label id="firstOrderBox" style="display:none"><input id="firstorder" type="checkbox"> first order instead: nodes along their velocities (bars stretch)</label>
 <label><input id="labels" type="checkbox"> labels: nodes, elements, couplings</label>
 <div id="moving"></div>
 <div id="resultants"></div>

@@ -275,7 +275,74 @@ Scene network_scene(const network::Model& model, const network::NetworkResult& r
   return scene;
 }
 
-Scene framework_scene(const framework::FrameworkModel& model, const framework::FrameworkResult& a) {
+namespace {
+
+// Node positions (3 × nodes) as scene points.
+std::vector<Vector3d> scene_points(const Eigen::MatrixXd& positions) {
+  std::vector<Vector3d> points;
+  for (Eigen::Index k = 0; k < positions.cols(); ++k) points.emplace_back(positions.col(k));
+  return points;
+}
+
+// Why one side of a two-way trace stops short, or "".
+std::string short_side(const framework::FiniteTrace& side, const char* which, bool retraced) {
+  if (side.closed && retraced)
+    return fmt::format("the {} side is traced to arc length {} only (with larger steps the corrector lost closure)", which,
+                       fixed(side.amplitude, 6));
+  if (side.closed) return "";
+  return fmt::format("the {} side stops at arc length {}: the corrector lost closure at its step {}", which, fixed(side.amplitude, 6),
+                     side.failed_step);
+}
+
+// The path of a two-way trace from the far end of the backward side to the far end of the
+// forward side; nothing when neither side got past the start.
+std::optional<SceneTrace> scene_trace(const framework::TwoWayTrace& both) {
+  const auto& f = both.forward;
+  const auto& b = both.backward;
+  if (f.positions.empty() || b.positions.empty() || f.positions.size() + b.positions.size() < 3) return std::nullopt;
+  SceneTrace trace;
+  for (std::size_t k = b.positions.size() - 1; k >= 1; --k) {
+    trace.positions.push_back(scene_points(b.positions[k]));
+    trace.arc.push_back(-b.arc_length_along_path[k]);
+  }
+  trace.start = trace.positions.size();
+  for (std::size_t k = 0; k < f.positions.size(); ++k) {
+    trace.positions.push_back(scene_points(f.positions[k]));
+    trace.arc.push_back(f.arc_length_along_path[k]);
+  }
+  trace.max_residual = both.max_residual();
+  const std::string forward = short_side(f, "forward (+mode)", both.forward_retraced),
+                    backward = short_side(b, "backward (-mode)", both.backward_retraced);
+  trace.note = forward.empty() ? backward : backward.empty() ? forward : forward + "; " + backward;
+  if (both.rigid_part_removed)
+    trace.note = std::string("traced without the mode's rigid motion of the whole model (the internal motion the second-order "
+                             "analysis traced)") +
+                 (trace.note.empty() ? "" : "; " + trace.note);
+  return trace;
+}
+
+// Why a framework mode is drawn to first order only.
+std::string first_order_reason(const framework::FrameworkResult& a, std::size_t k) {
+  using framework::OrderReason;
+  if (k >= a.orders.size()) return "second order not computed for this model (not traced)";
+  const framework::ModeOrder& o = a.orders[k];
+  switch (o.reason) {
+    case OrderReason::prestress_stable:
+    case OrderReason::blocked_by_stress:
+      return "blocked at second order by a self-stress: an infinitesimal mechanism, it does not move finitely";
+    case OrderReason::trace_failed: return fmt::format("the trace lost closure at step {} (no finite motion found)", o.trace.failed_step);
+    case OrderReason::no_second_order_model: return "no second-order model of some element (not traced)";
+    case OrderReason::not_computed: return "second order not computed (model too large, or tracing off)";
+    case OrderReason::traced:
+    case OrderReason::rigid_motion: return "the finite motion was not traced for this picture";
+  }
+  return "not traced";
+}
+
+}  // namespace
+
+Scene framework_scene(const framework::FrameworkModel& model, const framework::FrameworkResult& a,
+                      const std::vector<std::optional<framework::TwoWayTrace>>& traces) {
   Scene scene;
   scene.kind = "framework";
   scene.name = model.name;
@@ -333,6 +400,9 @@ Scene framework_scene(const framework::FrameworkModel& model, const framework::F
       if (framework::is_translation(ref.slot)) mode.velocity[ref.node](ref.slot) = v(col) * a.length;
     }
     for (Eigen::Index col : a.modes[k].moving) mode.moving.push_back(framework_column_label(model, a, col));
+    if (k < traces.size() && traces[k]) mode.trace = scene_trace(*traces[k]);
+    if (!mode.trace)
+      mode.first_order_reason = k < traces.size() && traces[k] ? "tracing lost closure at the first step both ways" : first_order_reason(a, k);
     scene.modes.push_back(std::move(mode));
   }
   // Stress: per scene line, the dominant resultant of its element (largest magnitude, in the

@@ -13,6 +13,7 @@
 #include "kinestat/design/verdict.hpp"
 #include "kinestat/framework/framework_analysis.hpp"
 #include "kinestat/framework/framework_model.hpp"
+#include "kinestat/framework/two_way_trace.hpp"
 #include "kinestat/network/model.hpp"
 #include "kinestat/network/network_result.hpp"
 #include "kinestat/structure/decomposition.hpp"
@@ -84,6 +85,21 @@ struct SceneGlyph {
   std::vector<std::vector<double>> actions;  ///< unit actions, d coordinates each (ray formation)
 };
 
+/// A mode's finite motion as traced (frameworks of bars, issue 13): node positions at points of
+/// the path, from the far end of the backward side (−mode) through the model's configuration
+/// to the far end of the forward side (+mode).
+struct SceneTrace {
+  /// Per point: the position of every node (same order as Scene::nodes), global frame, length units.
+  std::vector<std::vector<Eigen::Vector3d>> positions;
+  /// Per point: the signed arc length from the model's configuration (length units; negative
+  /// on the backward side), increasing.
+  std::vector<double> arc;
+  std::size_t start = 0;      ///< the point that is the model's configuration
+  double max_residual = 0.0;  ///< largest closure residual of the points, relative to the characteristic length
+  /// Why a side stops short of the amplitude asked for (the corrector lost closure), or empty.
+  std::string note;
+};
+
 /// A kinematic mode: the velocity of every node (same order as Scene::nodes), in the model's
 /// length unit per unit rate of the mode.
 struct SceneMode {
@@ -91,6 +107,11 @@ struct SceneMode {
   std::vector<Eigen::Vector3d> velocity;
   std::vector<std::string> moving;  ///< coordinates (frameworks) or motion magnitudes (networks) that move
   std::vector<SceneScrew> twists;   ///< networks: the twist of every moving body relative to the ground
+  /// Frameworks: the traced finite motion the report animates instead of the velocities.
+  std::optional<SceneTrace> trace;
+  /// Frameworks without `trace`: why the animation is first order only, e.g. "blocked at second
+  /// order by a self-stress". Empty for networks.
+  std::string first_order_reason;
 };
 
 /// One generalised stress resultant of a self-stress (the element x deformation table).
@@ -167,7 +188,11 @@ std::string length_unit(const Scene& scene);
 inline constexpr std::size_t kLargeSceneElements = 20000;
 
 Scene network_scene(const network::Model& model, const network::NetworkResult& result);
-Scene framework_scene(const framework::FrameworkModel& model, const framework::FrameworkResult& analysis);
+/// The scene of a framework. `traces` (framework::animation_traces, one entry per mode, or
+/// empty) gives the modes whose finite motion was traced both ways; every other mode gets the
+/// reason it is drawn to first order only.
+Scene framework_scene(const framework::FrameworkModel& model, const framework::FrameworkResult& analysis,
+                      const std::vector<std::optional<framework::TwoWayTrace>>& traces = {});
 Scene structure_scene(const structure::StructureModel& model, const structure::StructureResult& decomposition);
 
 /// Fixed-precision text of a number for drawings and JSON: at most `digits` decimals,
