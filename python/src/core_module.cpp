@@ -39,6 +39,7 @@
 #include "kinestat/report/html_writer.hpp"
 #include "kinestat/report/json_text.hpp"
 #include "kinestat/report/move_report.hpp"
+#include "kinestat/report/position_solving.hpp"
 #include "kinestat/report/network_report.hpp"
 #include "kinestat/report/scene.hpp"
 #include "kinestat/report/structure_report.hpp"
@@ -113,20 +114,16 @@ std::shared_ptr<Analysed> analyse(const std::string& path, const std::optional<s
     analysed->verdict = design::network_verdict(file.network->model, *analysed->network, options);
     analysed->network_generic = network::generic_network(file.network->model, *analysed->network);
     network::NetworkSecondOrderOptions second_order_options;  // as `kinestat analyze`: traces with the analysis's rank rule
-    second_order_options.tracing.tolerance = linalg::RankTolerance{
-        options.tolerances.rank, network::AnalysisFrame::of(file.network->model).input_rounding(file.network->model)};
+    second_order_options.tracing.tolerance = network::rank_rule_of(file.network->model, options.tolerances.rank);
     analysed->network_second_order = network::classify_network_motions(file.network->model, *analysed->network, second_order_options);
     if (analysed->network_generic)
       analysed->verdict.generic = report::network_generic_sentences(file.network->model, *analysed->network, *analysed->network_generic);
   } else if (file.framework) {
     framework::AnalysisOptions options;
     options.tolerances = Tolerances::with_rank(tolerance);
-    analysed->framework = framework::analyse_framework(*file.framework, options);
     analysed->framework_options = options;
     // As src/cli/framework_command.cpp: the generic answer may re-choose the basis first.
-    analysed->framework_generic = framework::generic_framework(*file.framework, *analysed->framework);
-    if (analysed->framework_generic)
-      analysed->framework = framework::with_generic_basis(*file.framework, std::move(*analysed->framework), *analysed->framework_generic, options);
+    analysed->framework = framework::analyse_framework_as_reported(*file.framework, options, &analysed->framework_generic);
     analysed->verdict = design::framework_verdict(*file.framework, *analysed->framework, options);
     if (analysed->framework_generic)
       analysed->verdict.generic = report::framework_generic_sentences(*file.framework, *analysed->framework, *analysed->framework_generic);
@@ -270,55 +267,16 @@ std::string positions_json(const Analysed& a, const std::vector<std::pair<std::s
   if (!a.file.network) throw py::value_error("positions are solved for network models (kind: network)");
   io::LoadedNetwork loaded = *a.file.network;
   const std::string& path = a.file.path;
-  std::vector<std::string> names;
-  for (const auto& [name, value] : inputs) {
+  for (const auto& [name, value] : inputs)
     if (!std::isfinite(value)) throw py::value_error(fmt::format("the input '{}' is not a finite number", name));
-    names.push_back(name);
-  }
+  std::optional<report::SweptInput> swept;
   if (sweep) {
     const auto& [name, from, to, steps] = *sweep;
     if (!std::isfinite(from) || !std::isfinite(to) || steps < 1 || steps > 9999999)
       throw py::value_error("sweep is (name, from, to, steps) with finite from and to and 1 <= steps <= 9999999");
-    names.push_back(name);
+    swept = report::SweptInput{name, from, to, steps};
   }
-  if (names.empty())
-    throw io::InputError({path, 1, 1}, "a mechanism is moved by its inputs: give --input NAME=VALUE (or --sweep NAME=FROM:TO:STEPS) for "
-                                       "each driving coupling");
-  const auto& couplings = loaded.model.couplings;
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    if (std::none_of(couplings.begin(), couplings.end(), [&](const auto& c) { return c.name == names[i]; }))
-      throw io::InputError({path, 1, 1}, fmt::format("the input '{}' names no coupling of this model", names[i]));
-    for (std::size_t k = 0; k < i; ++k)
-      if (names[k] == names[i]) throw io::InputError({path, 1, 1}, fmt::format("the input '{}' is given twice", names[i]));
-  }
-  loaded.model.inputs = names;  // the inputs given are the drivers, as on the command line
-  kinematics::PositionPlan plan;
-  try {
-    const structure::StructureModel structure = io::structure_of_network(loaded, path);
-    plan = kinematics::plan_positions(loaded.model, structure, structure::analyse_structure(structure));
-  } catch (const kinematics::PositionModelError& error) {
-    SourceLocation where{path, 1, 1};
-    const auto it = loaded.item_locations.find("couplings");
-    if (error.coupling() >= 0 && it != loaded.item_locations.end() && static_cast<std::size_t>(error.coupling()) < it->second.size())
-      where = it->second[static_cast<std::size_t>(error.coupling())];
-    throw io::InputError(where, error.what());
-  }
-  report::PositionSweep result;
-  const std::size_t count = sweep ? static_cast<std::size_t>(std::get<3>(*sweep)) + 1 : 1;
-  std::vector<kinematics::Pose> start;
-  for (std::size_t s = 0; s < count; ++s) {
-    std::vector<double> values;
-    for (const auto& input : inputs) values.push_back(input.second);
-    if (sweep) {
-      const auto& [name, from, to, steps] = *sweep;
-      values.push_back(from + (to - from) * static_cast<double>(s) / static_cast<double>(steps));
-    }
-    kinematics::PositionResult r = kinematics::solve_positions(loaded.model, plan, values, start);
-    if (r.assembled) start = r.poses;  // Newton groups continue from the last configuration reached
-    result.values.push_back(std::move(values));
-    result.results.push_back(std::move(r));
-  }
-  result.plan = std::move(plan);
+  const report::PositionSweep result = report::solve_position_sweep(loaded, path, inputs, swept, "");
   return report::json_text(report::positions_json(loaded.model, result));
 }
 

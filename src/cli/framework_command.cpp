@@ -52,11 +52,10 @@ int run_framework_analysis(const CommonOptions& options, const framework::Framew
   analysis_options.tolerances = Tolerances::with_rank(options.tolerance);
   analysis_options.dense_limit = static_cast<Eigen::Index>(dense_limit);
   analysis_options.sparse_vectors = static_cast<Eigen::Index>(sparse_vectors);
-  framework::FrameworkResult analysis = framework::analyse_framework(model, analysis_options);
   // The generic answer first: where only some modes or stress states persist it re-chooses
   // their basis (one cause per vector), and the verdict describes that basis.
-  const std::optional<framework::GenericFramework> generic = framework::generic_framework(model, analysis);
-  if (generic) analysis = framework::with_generic_basis(model, std::move(analysis), *generic, analysis_options);
+  std::optional<framework::GenericFramework> generic;
+  const framework::FrameworkResult analysis = framework::analyse_framework_as_reported(model, analysis_options, &generic);
   const framework::GenericFramework* shown = generic ? &*generic : nullptr;
   design::Verdict verdict = design::framework_verdict(model, analysis, analysis_options);
   if (generic) verdict.generic = report::framework_generic_sentences(model, analysis, *generic);

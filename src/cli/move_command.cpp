@@ -29,6 +29,7 @@
 #include "kinestat/io/loaded_network.hpp"
 #include "kinestat/report/json_text.hpp"
 #include "kinestat/report/move_report.hpp"
+#include "kinestat/report/position_solving.hpp"
 #include "kinestat/structure/decomposition.hpp"
 
 namespace kinestat::cli {
@@ -63,11 +64,7 @@ struct NamedValue {
   std::string name;
   double value = 0.0;
 };
-struct Sweep {
-  std::string name;
-  double from = 0.0, to = 0.0;
-  long long steps = 0;
-};
+using Sweep = report::SweptInput;
 
 std::optional<NamedValue> parse_input(const std::string& text) {
   const auto eq = text.rfind('=');
@@ -126,10 +123,8 @@ int move_framework(const MoveOptions& options, const framework::FrameworkModel& 
     throw io::InputError({path, 1, 1}, "a framework moves along one of its kinematic modes: give --mode N (modes as 'kinestat analyze' numbers them)");
   framework::AnalysisOptions analysis_options;
   analysis_options.tolerances = Tolerances::with_rank(options.common.tolerance);
-  framework::FrameworkResult analysis = framework::analyse_framework(model, analysis_options);
   // The same basis of modes as `kinestat analyze` reports, so --mode N means the same mode.
-  if (const auto generic = framework::generic_framework(model, analysis))
-    analysis = framework::with_generic_basis(model, std::move(analysis), *generic, analysis_options);
+  const framework::FrameworkResult analysis = framework::analyse_framework_as_reported(model, analysis_options);
   if (!analysis.vectors || analysis.method != framework::RankMethod::dense_svd)
     throw io::InputError({path, 1, 1}, "the framework is too large for the dense analysis that tracing needs");
   const auto modes = static_cast<long long>(analysis.modes.size());
@@ -186,8 +181,7 @@ int trace_network(const MoveOptions& options, const io::LoadedNetwork& loaded, c
   network::NetworkTraceOptions trace;
   trace.amplitude_fraction = options.amplitude;
   trace.steps = move.steps;
-  trace.tolerance = linalg::RankTolerance{analysis_options.tolerances.rank,
-                                          network::AnalysisFrame::of(loaded.model).input_rounding(loaded.model)};
+  trace.tolerance = network::rank_rule_of(loaded.model, analysis_options.tolerances.rank);
   move.trace = network::trace_network_motion(loaded.model, result, result.motion_magnitudes.values.col(static_cast<Eigen::Index>(move.mode)),
                                              trace);
   emit(options.common, options.common.json ? report::json_text(report::network_move_json(loaded.model, result, move))
@@ -200,50 +194,15 @@ int move_network(const MoveOptions& options, io::LoadedNetwork loaded, const std
   if (const auto tracing = given({options.amplitude_option, options.steps_option}); !tracing.empty())
     throw io::InputError({path, 1, 1}, fmt::format("{} set{} the trace of a primary motion: give --mode N too (or remove {})",
                                                    fmt::join(tracing, ", "), tracing.size() == 1 ? "s" : "", tracing.size() == 1 ? "it" : "them"));
-  std::vector<NamedValue> inputs;
-  for (const std::string& text : options.inputs) inputs.push_back(*parse_input(text));
-  std::optional<Sweep> sweep;
+  std::vector<std::pair<std::string, double>> inputs;
+  for (const std::string& text : options.inputs) {
+    const NamedValue input = *parse_input(text);
+    inputs.emplace_back(input.name, input.value);
+  }
+  std::optional<report::SweptInput> sweep;
   if (!options.sweep.empty()) sweep = parse_sweep(options.sweep);
-  if (inputs.empty() && !sweep)
-    throw io::InputError({path, 1, 1}, "a mechanism is moved by its inputs: give --input NAME=VALUE (or --sweep NAME=FROM:TO:STEPS) for "
-                                       "each driving coupling, or follow one of its primary motions with --mode N");
-  std::vector<std::string> names;
-  for (const auto& input : inputs) names.push_back(input.name);
-  if (sweep) names.push_back(sweep->name);
-  const auto& couplings = loaded.model.couplings;
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    if (std::none_of(couplings.begin(), couplings.end(), [&](const auto& c) { return c.name == names[i]; }))
-      throw io::InputError({path, 1, 1}, fmt::format("the input '{}' names no coupling of this model", names[i]));
-    for (std::size_t k = 0; k < i; ++k)
-      if (names[k] == names[i]) throw io::InputError({path, 1, 1}, fmt::format("the input '{}' is given twice", names[i]));
-  }
-  // The inputs of the command line are the drivers (they replace the file's `inputs:`).
-  loaded.model.inputs = names;
-  kinematics::PositionPlan plan;
-  try {
-    const structure::StructureModel structure = io::structure_of_network(loaded, path);
-    const structure::StructureResult decomposition = structure::analyse_structure(structure);
-    plan = kinematics::plan_positions(loaded.model, structure, decomposition);
-  } catch (const kinematics::PositionModelError& error) {
-    SourceLocation where{path, 1, 1};
-    const auto it = loaded.item_locations.find("couplings");
-    if (error.coupling() >= 0 && it != loaded.item_locations.end() && static_cast<std::size_t>(error.coupling()) < it->second.size())
-      where = it->second[static_cast<std::size_t>(error.coupling())];
-    throw io::InputError(where, error.what());
-  }
-  report::PositionSweep result;
-  const std::size_t count = sweep ? static_cast<std::size_t>(sweep->steps) + 1 : 1;
-  std::vector<kinematics::Pose> start;
-  for (std::size_t s = 0; s < count; ++s) {
-    std::vector<double> values;
-    for (const auto& input : inputs) values.push_back(input.value);
-    if (sweep) values.push_back(sweep->from + (sweep->to - sweep->from) * static_cast<double>(s) / static_cast<double>(sweep->steps));
-    kinematics::PositionResult r = kinematics::solve_positions(loaded.model, plan, values, start);
-    if (r.assembled) start = r.poses;  // Newton groups continue from the last configuration reached
-    result.values.push_back(std::move(values));
-    result.results.push_back(std::move(r));
-  }
-  result.plan = std::move(plan);
+  const report::PositionSweep result = report::solve_position_sweep(loaded, path, inputs, sweep,
+                                                                    ", or follow one of its primary motions with --mode N");
   emit(options.common, options.common.json ? report::json_text(report::positions_json(loaded.model, result))
                                            : report::positions_text(loaded.model, result));
   return 0;

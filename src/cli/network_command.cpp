@@ -174,7 +174,7 @@ int run_network_analysis(const CommonOptions& common, const io::LoadedNetwork& l
   // Motions that pass second order are traced with the analysis's rank rule (`--tolerance`).
   network::NetworkSecondOrderOptions second_order_options;
   second_order_options.tracing.tolerance =
-      linalg::RankTolerance{options.tolerances.rank, network::AnalysisFrame::of(loaded.model).input_rounding(loaded.model)};
+      network::rank_rule_of(loaded.model, options.tolerances.rank);
   const network::NetworkSecondOrder second_order = network::classify_network_motions(loaded.model, result, second_order_options);
   report_options.second_order = &second_order;
   emit(common, common.json ? report::json_text(report::network_report_json(loaded.model, result, report_options))

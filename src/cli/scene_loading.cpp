@@ -24,9 +24,8 @@ namespace {
 report::Scene framework_scene(const framework::FrameworkModel& model, std::optional<double> tolerance, bool traced_motion) {
   framework::AnalysisOptions options;
   options.tolerances = Tolerances::with_rank(tolerance);
-  framework::FrameworkResult analysis = framework::analyse_framework(model, options);
-  const std::optional<framework::GenericFramework> generic = framework::generic_framework(model, analysis);
-  if (generic) analysis = framework::with_generic_basis(model, std::move(analysis), *generic, options);  // as `analyze` shows it
+  std::optional<framework::GenericFramework> generic;
+  const framework::FrameworkResult analysis = framework::analyse_framework_as_reported(model, options, &generic);
   std::vector<std::optional<framework::TwoWayTrace>> traces;
   if (traced_motion) traces = framework::animation_traces(model, analysis, options);
   report::Scene scene = report::framework_scene(model, analysis, traces);

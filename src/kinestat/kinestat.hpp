@@ -78,6 +78,7 @@
 #include "kinestat/report/linear_form_text.hpp"
 #include "kinestat/report/markup_escape.hpp"
 #include "kinestat/report/move_report.hpp"
+#include "kinestat/report/position_solving.hpp"
 #include "kinestat/report/network_report.hpp"
 #include "kinestat/report/rank_status_text.hpp"
 #include "kinestat/report/scene.hpp"

@@ -239,4 +239,13 @@ std::optional<GenericFramework> generic_framework(const FrameworkModel& model, c
   return g;
 }
 
+FrameworkResult analyse_framework_as_reported(const FrameworkModel& model, const AnalysisOptions& options,
+                                              std::optional<GenericFramework>* generic) {
+  FrameworkResult analysis = analyse_framework(model, options);
+  std::optional<GenericFramework> answer = generic_framework(model, analysis);
+  if (answer) analysis = with_generic_basis(model, std::move(analysis), *answer, options);
+  if (generic != nullptr) *generic = std::move(answer);
+  return analysis;
+}
+
 }  // namespace kinestat::framework

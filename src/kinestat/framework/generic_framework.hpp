@@ -62,6 +62,12 @@ std::optional<GenericFramework> generic_framework(const FrameworkModel& model, c
 FrameworkResult with_generic_basis(const FrameworkModel& model, FrameworkResult analysis, const GenericFramework& generic,
                                    const AnalysisOptions& options = {});
 
+/// `model` analysed as every report and command shows it: analyse_framework, then, when the
+/// generic answer re-chooses the bases, with_generic_basis, so that mode N means the same mode
+/// everywhere. `generic` (when not null) receives the generic answer.
+FrameworkResult analyse_framework_as_reported(const FrameworkModel& model, const AnalysisOptions& options,
+                                              std::optional<GenericFramework>* generic = nullptr);
+
 /// Laman's count of `model` by the pebble game; nothing unless it is planar with trusses only.
 std::optional<LamanCount> laman_count(const FrameworkModel& model, const FrameworkResult& given);
 

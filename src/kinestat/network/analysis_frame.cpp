@@ -90,4 +90,8 @@ std::vector<Rational> AnalysisFrame::action_to_user(const std::vector<Rational>&
   return project(join(moment, f), space);
 }
 
+linalg::RankTolerance rank_rule_of(const Model& model, std::optional<double> relative) {
+  return {relative, AnalysisFrame::of(model).input_rounding(model)};
+}
+
 }  // namespace kinestat::network

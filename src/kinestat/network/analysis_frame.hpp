@@ -5,8 +5,10 @@
 // coefficient are unchanged by this (it multiplies each d-row block by an invertible matrix),
 // so results do not change when lengths are given in metres instead of millimetres.
 
+#include <optional>
 #include <vector>
 
+#include "kinestat/linalg/rank_decision.hpp"
 #include "kinestat/network/model.hpp"
 
 namespace kinestat::network {
@@ -30,5 +32,9 @@ struct AnalysisFrame {
   /// An action (ray formation) given in this frame, in the user's frame.
   std::vector<screw::Rational> action_to_user(const std::vector<screw::Rational>& action, const screw::ScrewSpace& space) const;
 };
+
+/// The rank rule of every floating-point decision on `model` (analysis, traces): the user's
+/// `relative` tolerance (or the default rule) with the rounding level of the model's input.
+linalg::RankTolerance rank_rule_of(const Model& model, std::optional<double> relative);
 
 }  // namespace kinestat::network

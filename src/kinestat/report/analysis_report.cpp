@@ -21,9 +21,8 @@ namespace {
 nlohmann::ordered_json framework_json(const framework::FrameworkModel& model, std::optional<double> tolerance) {
   framework::AnalysisOptions options;
   options.tolerances = Tolerances::with_rank(tolerance);
-  framework::FrameworkResult analysis = framework::analyse_framework(model, options);
-  const std::optional<framework::GenericFramework> generic = framework::generic_framework(model, analysis);
-  if (generic) analysis = framework::with_generic_basis(model, std::move(analysis), *generic, options);
+  std::optional<framework::GenericFramework> generic;
+  const framework::FrameworkResult analysis = framework::analyse_framework_as_reported(model, options, &generic);
   design::Verdict verdict = design::framework_verdict(model, analysis, options);
   if (generic) verdict.generic = framework_generic_sentences(model, analysis, *generic);
   return framework_report_json(model, analysis, &verdict, generic ? &*generic : nullptr);
@@ -55,7 +54,7 @@ nlohmann::ordered_json network_json(const io::LoadedNetwork& loaded, const std::
   // As `kinestat analyze`: passing motions traced with the analysis's rank rule.
   network::NetworkSecondOrderOptions second_order_options;
   second_order_options.tracing.tolerance =
-      linalg::RankTolerance{options.tolerances.rank, network::AnalysisFrame::of(loaded.model).input_rounding(loaded.model)};
+      network::rank_rule_of(loaded.model, options.tolerances.rank);
   const network::NetworkSecondOrder second_order = network::classify_network_motions(loaded.model, result, second_order_options);
   report_options.second_order = &second_order;
   return network_report_json(loaded.model, result, report_options);

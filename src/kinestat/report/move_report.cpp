@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <optional>
 #include <string>
 
 #include "kinestat/io/printable_text.hpp"
@@ -58,6 +59,40 @@ std::string outcome_text(const FrameworkMove& move, double length) {
                      t.failed_step, move.steps, evidence(t.max_residual), number(t.amplitude));
 }
 
+// The keys every traced path carries, framework or network: the outcome, then one point per
+// configuration with its step, arc length, residual and rank (`failed` null when closed or not
+// traced). Each point is returned for the caller to add where it moved.
+struct PathSummary {
+  bool closed = false;
+  std::optional<std::size_t> failed_step;
+  double amplitude = 0.0, max_residual = 0.0, length = 1.0;
+  const std::vector<std::size_t>* rank_drops = nullptr;
+  const std::vector<double>* arcs = nullptr;
+  const std::vector<double>* residuals = nullptr;
+  const std::vector<Eigen::Index>* ranks = nullptr;
+};
+
+void add_path_summary(nlohmann::ordered_json& j, const PathSummary& s) {
+  j["closed"] = s.closed;
+  if (s.failed_step) j["failed_step"] = *s.failed_step;
+  else j["failed_step"] = nullptr;
+  j["amplitude"] = rounded(s.amplitude);
+  j["max_residual"] = evidence(s.max_residual);
+  j["rank_drops"] = *s.rank_drops;
+  j["path"] = nlohmann::ordered_json::array();
+}
+
+nlohmann::ordered_json path_point(const PathSummary& s, std::size_t k) {
+  nlohmann::ordered_json point;
+  const double arc = k < s.arcs->size() ? (*s.arcs)[k] : 0.0;
+  point["step"] = k;
+  point["parameter"] = rounded(arc / s.length);
+  point["arc_length"] = rounded(arc);
+  point["residual"] = evidence(k < s.residuals->size() ? (*s.residuals)[k] : 0.0);
+  point["rank"] = k < s.ranks->size() ? (*s.ranks)[k] : 0;
+  return point;
+}
+
 }  // namespace
 
 nlohmann::ordered_json framework_move_json(const framework::FrameworkModel& model, const framework::FrameworkResult& analysis,
@@ -77,22 +112,13 @@ nlohmann::ordered_json framework_move_json(const framework::FrameworkModel& mode
   j["amplitude_fraction"] = rounded(move.amplitude_fraction);
   j["steps"] = move.steps;
   const auto& t = move.trace;
-  j["closed"] = t.closed;
-  if (t.closed) j["failed_step"] = nullptr;
-  else j["failed_step"] = t.failed_step;
-  j["amplitude"] = rounded(t.amplitude);
-  j["max_residual"] = evidence(t.max_residual);
-  j["rank_drops"] = t.rank_drops;
+  const PathSummary summary{t.closed, t.closed ? std::nullopt : std::optional<std::size_t>(t.failed_step), t.amplitude,
+                            t.max_residual, analysis.length, &t.rank_drops, &t.arc_length_along_path,
+                            &t.residual_along_path, &t.rank_along_path};
+  add_path_summary(j, summary);
   const int dimension = model.dimension == 2 ? 2 : 3;
-  j["path"] = nlohmann::ordered_json::array();
   for (std::size_t k = 0; k < t.positions.size(); ++k) {
-    nlohmann::ordered_json point;
-    const double arc = k < t.arc_length_along_path.size() ? t.arc_length_along_path[k] : 0.0;
-    point["step"] = k;
-    point["parameter"] = rounded(arc / analysis.length);
-    point["arc_length"] = rounded(arc);
-    point["residual"] = evidence(k < t.residual_along_path.size() ? t.residual_along_path[k] : 0.0);
-    point["rank"] = k < t.rank_along_path.size() ? t.rank_along_path[k] : 0;
+    nlohmann::ordered_json point = path_point(summary, k);
     nlohmann::ordered_json positions;
     for (std::size_t n = 0; n < model.nodes.size(); ++n) {
       nlohmann::ordered_json xyz = nlohmann::ordered_json::array();
@@ -196,21 +222,13 @@ nlohmann::ordered_json network_move_json(const network::Model& model, const netw
   j["steps"] = move.steps;
   if (t.traced()) j["not_traced"] = nullptr;
   else j["not_traced"] = network::trace_refusal_text(t.refusal);
-  j["closed"] = t.closed;
-  if (t.closed || !t.traced()) j["failed_step"] = nullptr;
-  else j["failed_step"] = t.failed_step;
-  j["amplitude"] = rounded(t.amplitude);
-  j["max_residual"] = evidence(t.max_residual);
-  j["rank_drops"] = t.rank_drops;
-  j["path"] = nlohmann::ordered_json::array();
+  const PathSummary summary{t.closed,
+                            t.closed || !t.traced() ? std::nullopt : std::optional<std::size_t>(t.failed_step),
+                            t.amplitude, t.max_residual, t.characteristic_length, &t.rank_drops,
+                            &t.arc_length_along_path, &t.residual_along_path, &t.rank_along_path};
+  add_path_summary(j, summary);
   for (std::size_t k = 0; k < t.coordinates.size(); ++k) {
-    nlohmann::ordered_json point;
-    const double arc = k < t.arc_length_along_path.size() ? t.arc_length_along_path[k] : 0.0;
-    point["step"] = k;
-    point["parameter"] = rounded(arc / t.characteristic_length);
-    point["arc_length"] = rounded(arc);
-    point["residual"] = evidence(k < t.residual_along_path.size() ? t.residual_along_path[k] : 0.0);
-    point["rank"] = k < t.rank_along_path.size() ? t.rank_along_path[k] : 0;
+    nlohmann::ordered_json point = path_point(summary, k);
     nlohmann::ordered_json coordinates;
     for (std::size_t i = 0; i < result.motions.size(); ++i) coordinates[result.motions[i].name] = joint_coordinate(result, t, k, i);
     point["coordinates"] = std::move(coordinates);
