@@ -14,6 +14,8 @@
 #include "kinestat/framework/framework_analysis.hpp"
 #include "kinestat/framework/two_way_trace.hpp"
 #include "kinestat/io/framework_reader.hpp"
+#include "kinestat/io/model_file.hpp"
+#include "kinestat/io/network_reader.hpp"
 #include "kinestat/report/html_writer.hpp"
 #include "kinestat/report/scene.hpp"
 #include "support/cli_run.hpp"
@@ -167,3 +169,21 @@ TEST(TracedAnimation, ReportOfTheFourBarIsDeterministicAndCarriesTheTrace) {
 }
 
 }  // namespace
+
+namespace kinestat {
+namespace {
+
+// Network motions are traced by `kinestat move`, but the HTML draws them by their twists: every
+// network mode says so in the panel (the issue: "first-order only where tracing fails, and said
+// so"), naming the command that traces it.
+TEST(TracedAnimation, NetworkModesSayTheyAreDrawnToFirstOrder) {
+  const io::LoadedNetwork loaded = io::read_network_model(io::YamlFile::load(testing::example_path("bennett.yaml")));
+  const network::NetworkResult result = io::analyse_network_file(loaded, "bennett.yaml", {});
+  const report::Scene scene = report::network_scene(loaded.model, result);
+  ASSERT_EQ(scene.modes.size(), 1u);  // Bennett: FN = 1
+  EXPECT_NE(scene.modes[0].first_order_reason.find("kinestat move FILE --mode 1"), std::string::npos)
+      << scene.modes[0].first_order_reason;
+}
+
+}  // namespace
+}  // namespace kinestat

@@ -206,6 +206,9 @@ Scene network_scene(const network::Model& model, const network::NetworkResult& r
   for (std::size_t k = 0; k < r.primary_motion.size(); ++k) {
     SceneMode mode;
     mode.label = "mode " + std::to_string(k + 1) + ": " + r.motions[static_cast<std::size_t>(r.primary_motion[k])].name + " = 1";
+    // Network motions are traced (network/finite_motion) but drawn here by their twists only.
+    mode.first_order_reason = "network motions are drawn by their twists here; 'kinestat move FILE --mode " + std::to_string(k + 1) +
+                              "' traces the finite motion";
     // Sign: primary k = +1, as every report states it; nothing is flipped here.
     for (Eigen::Index row = 0; row < r.motion_magnitudes.values.rows(); ++row)
       if (static_cast<Eigen::Index>(k) < r.motion_magnitudes.values.cols() && r.motion_magnitudes.values(row, static_cast<Eigen::Index>(k)) != 0.0)
