@@ -37,14 +37,7 @@ Eigen::VectorXd element_closure(const FrameworkModel& model, const Element& elem
       break;
     case ElementType::beam: {
       // Eq (3) between the turned triads, with the analysed length as l0: zero as analysed.
-      BeamConfiguration beam;
-      beam.xp = x[element.nodes[0]];
-      beam.xq = x[element.nodes[1]];
-      beam.triad_p = now.turns[element.nodes[0]] * element.frame;
-      beam.triad_q = now.turns[element.nodes[1]] * element.frame;
-      beam.l0 = truss_length(model, element);
-      beam.torsion_coupling = element.torsion_coupling;
-      const Vector6 eps = beam_deformations(beam);
+      const Vector6 eps = beam_deformations(beam_at(model, element, now));
       if (planar)
         values << eps(0), eps(4), eps(5);
       else

@@ -51,6 +51,17 @@ DisplacedConfiguration analysed_configuration(const FrameworkModel& model) {
   return configuration;
 }
 
+BeamConfiguration beam_at(const FrameworkModel& model, const Element& element, const DisplacedConfiguration& configuration) {
+  BeamConfiguration beam;
+  beam.xp = configuration.positions[element.nodes[0]];
+  beam.xq = configuration.positions[element.nodes[1]];
+  beam.triad_p = configuration.turns[element.nodes[0]] * element.frame;
+  beam.triad_q = configuration.turns[element.nodes[1]] * element.frame;
+  beam.l0 = (model.nodes[element.nodes[1]].position - model.nodes[element.nodes[0]].position).norm();
+  beam.torsion_coupling = element.torsion_coupling;
+  return beam;
+}
+
 Eigen::SparseMatrix<double> deformation_derivative(const FrameworkModel& model, const FrameworkIndexing& indexing) {
   return deformation_derivative_at(model, indexing, analysed_configuration(model));
 }
@@ -69,13 +80,7 @@ Eigen::SparseMatrix<double> deformation_derivative_at(const FrameworkModel& mode
         break;
       }
       case ElementType::beam: {
-        BeamConfiguration beam;
-        beam.xp = x[element.nodes[0]];
-        beam.xq = x[element.nodes[1]];
-        beam.triad_p = configuration.turns[element.nodes[0]] * element.frame;
-        beam.triad_q = configuration.turns[element.nodes[1]] * element.frame;
-        beam.l0 = (model.nodes[element.nodes[1]].position - model.nodes[element.nodes[0]].position).norm();
-        beam.torsion_coupling = element.torsion_coupling;
+        const BeamConfiguration beam = beam_at(model, element, configuration);
         // A planar beam keeps the in-plane deformations of the spatial one: elongation and
         // bending in the local xy-plane (local z is the global z axis).
         const std::vector<int> rows = planar ? std::vector<int>{0, 4, 5} : std::vector<int>{0, 1, 2, 3, 4, 5};

@@ -9,6 +9,7 @@
 #include <array>
 #include <vector>
 
+#include "kinestat/framework/deformation_functions.hpp"
 #include "kinestat/framework/framework_model.hpp"
 
 namespace kinestat::framework {
@@ -51,6 +52,10 @@ struct DisplacedConfiguration {
 
 /// The analysed configuration of `model` itself: its positions, no turns.
 DisplacedConfiguration analysed_configuration(const FrameworkModel& model);
+
+/// The beam `element` of `model` at `configuration`: its ends where they are, its triads turned
+/// with its nodes, l0 and c_r as analysed (so every deformation is zero as analysed).
+BeamConfiguration beam_at(const FrameworkModel& model, const Element& element, const DisplacedConfiguration& configuration);
 
 /// 𝒟,x at `configuration`, displaced from the analysed `model` (whose element frames, beam
 /// lengths and rigid-body offsets are the references): beams between their turned triads with

@@ -50,10 +50,11 @@ Vector6 node_rates(const Placement& placement, std::size_t node, const Eigen::Ve
   return rates;
 }
 
-// ε̂″ of every deformation of `element` along the rates of its nodes (D̂'s units: translations
-// per characteristic length, rotations in rad), non-dimensional like the rows of D̂.
-Eigen::VectorXd element_second_derivatives(const FrameworkModel& model, const Element& element, double length,
-                                           const std::vector<Vector6>& rates) {
+// ε̂″ of every deformation of `element` at `analysed` (the model's own configuration) along the
+// rates of its nodes (D̂'s units: translations per characteristic length, rotations in rad),
+// non-dimensional like the rows of D̂.
+Eigen::VectorXd element_second_derivatives(const FrameworkModel& model, const DisplacedConfiguration& analysed, const Element& element,
+                                           double length, const std::vector<Vector6>& rates) {
   const bool planar = model.dimension == 2;
   auto physical = [&](const Vector6& r) {
     Vector6 p = r;
@@ -74,13 +75,7 @@ Eigen::VectorXd element_second_derivatives(const FrameworkModel& model, const El
       break;
     }
     case ElementType::beam: {
-      BeamConfiguration beam;  // the analysed configuration, as in deformation_derivative
-      beam.xp = model.nodes[element.nodes[0]].position;
-      beam.xq = model.nodes[element.nodes[1]].position;
-      beam.triad_p = beam.triad_q = element.frame;
-      beam.l0 = (beam.xq - beam.xp).norm();
-      beam.torsion_coupling = element.torsion_coupling;
-      const Vector6 second = beam_deformation_second_derivative(beam, pair(0, 1)) / length;
+      const Vector6 second = beam_deformation_second_derivative(beam_at(model, element, analysed), pair(0, 1)) / length;
       if (planar)
         values << second(0), second(4), second(5);
       else
@@ -118,11 +113,12 @@ void for_each_held_element(const FrameworkModel& model, const FrameworkResult& a
 // ε̂″_r(u, u) for every row of D(c).
 Eigen::VectorXd second_derivatives(const FrameworkModel& model, const FrameworkResult& a, const Eigen::VectorXd& u) {
   const Placement placement = place(a);
+  const DisplacedConfiguration analysed = analysed_configuration(model);
   Eigen::VectorXd h = Eigen::VectorXd::Zero(a.m);
   for_each_held_element(model, a, placement, [&](const Element& element, std::size_t first, std::size_t count) {
     std::vector<Vector6> rates;
     for (std::size_t node : element.nodes) rates.push_back(node_rates(placement, node, u));
-    const Eigen::VectorXd values = element_second_derivatives(model, element, a.length, rates);
+    const Eigen::VectorXd values = element_second_derivatives(model, analysed, element, a.length, rates);
     for (std::size_t k = 0; k < count; ++k)
       if (const Eigen::Index r = placement.row_of[first + k]; r >= 0) h(r) = values(static_cast<Eigen::Index>(k));
   });
@@ -152,6 +148,7 @@ const char* motion_order_name(MotionOrder order) {
 
 Eigen::MatrixXd geometric_stiffness(const FrameworkModel& model, const FrameworkResult& a, const Eigen::VectorXd& stress) {
   const Placement placement = place(a);
+  const DisplacedConfiguration analysed = analysed_configuration(model);
   Eigen::MatrixXd k = Eigen::MatrixXd::Zero(a.n, a.n);
   for_each_held_element(model, a, placement, [&](const Element& element, std::size_t first, std::size_t count) {
     // The element's columns of D̂, as (element node, slot, column).
@@ -169,7 +166,7 @@ Eigen::MatrixXd geometric_stiffness(const FrameworkModel& model, const Framework
       std::vector<Vector6> rates(element.nodes.size(), Vector6::Zero());
       rates[i->node](i->slot) += 1.0;
       if (j != nullptr) rates[j->node](j->slot) += 1.0;
-      const Eigen::VectorXd values = element_second_derivatives(model, element, a.length, rates);
+      const Eigen::VectorXd values = element_second_derivatives(model, analysed, element, a.length, rates);
       double sum = 0.0;
       for (std::size_t d = 0; d < count; ++d)
         if (const Eigen::Index r = placement.row_of[first + d]; r >= 0) sum += stress(r) * values(static_cast<Eigen::Index>(d));

@@ -48,15 +48,21 @@ const framework::ModeOrder* order_of(const framework::FrameworkResult& analysis,
   return mode < analysis.orders.size() ? &analysis.orders[mode] : nullptr;
 }
 
+// The outcome line of a traced path, framework or network; `followed` names what was followed.
+std::string path_outcome_text(bool closed, double amplitude, double length, double max_residual, std::size_t failed_step, int steps,
+                              const char* followed) {
+  if (closed)
+    return fmt::format("traced to arc length {} ({} of the characteristic length {}) with closure residual at most {} (relative)",
+                       number(amplitude), number(amplitude / length), number(length), fmt::format("{:.3g}", evidence(max_residual)));
+  return fmt::format("the corrector lost closure at step {} of {} (residual {:.3g}, relative): no finite motion along this {} "
+                     "beyond arc length {}",
+                     failed_step, steps, evidence(max_residual), followed, number(amplitude));
+}
+
 std::string outcome_text(const FrameworkMove& move, double length) {
   const auto& t = move.trace;
   if (t.positions.empty()) return "not traced";
-  if (t.closed)
-    return fmt::format("traced to arc length {} ({} of the characteristic length {}) with closure residual at most {} (relative)",
-                       number(t.amplitude), number(t.amplitude / length), number(length), fmt::format("{:.3g}", evidence(t.max_residual)));
-  return fmt::format("the corrector lost closure at step {} of {} (residual {:.3g}, relative): no finite motion along this mode "
-                     "beyond arc length {}",
-                     t.failed_step, move.steps, evidence(t.max_residual), number(t.amplitude));
+  return path_outcome_text(t.closed, t.amplitude, length, t.max_residual, t.failed_step, move.steps, "mode");
 }
 
 // The keys every traced path carries, framework or network: the outcome, then one point per
@@ -176,13 +182,7 @@ namespace {
 std::string network_outcome_text(const NetworkMove& move) {
   const auto& t = move.trace;
   if (!t.traced()) return fmt::format("not traced: {}", network::trace_refusal_text(t.refusal));
-  const double length = t.characteristic_length;
-  if (t.closed)
-    return fmt::format("traced to arc length {} ({} of the characteristic length {}) with closure residual at most {} (relative)",
-                       number(t.amplitude), number(t.amplitude / length), number(length), fmt::format("{:.3g}", evidence(t.max_residual)));
-  return fmt::format("the corrector lost closure at step {} of {} (residual {:.3g}, relative): no finite motion along this motion "
-                     "beyond arc length {}",
-                     t.failed_step, move.steps, evidence(t.max_residual), number(t.amplitude));
+  return path_outcome_text(t.closed, t.amplitude, t.characteristic_length, t.max_residual, t.failed_step, move.steps, "motion");
 }
 
 // The name of primary motion `mode` (its magnitude's name).
