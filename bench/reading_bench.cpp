@@ -16,7 +16,7 @@ namespace {
 
 // The text of a k x k triangular lattice (3 (k-1)² + 2 (k-1) bars).
 std::string lattice_text(int k) {
-  std::string text = fmt::format("kinestat: 1\nkind: framework\nname: lattice\ndimension: 2\nnodes:\n");
+  std::string text = fmt::format("kinestat: 1\nkind: framework\nname: lattice\ndimension: planar\nnodes:\n");
   for (int j = 0; j < k; ++j)
     for (int i = 0; i < k; ++i) text += fmt::format("  n{}: [{:.6f}, {:.6f}]\n", j * k + i, i + 0.5 * j, j * std::sqrt(3.0) / 2);
   text += "supports: {n0: fixed, n1: [y]}\nelements:\n";

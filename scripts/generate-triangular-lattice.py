@@ -18,7 +18,7 @@ def main():
         k += 1
     out = open(sys.argv[2], "w") if len(sys.argv) > 2 else sys.stdout
     w = out.write
-    w("kinestat: 1\nkind: framework\nname: triangular lattice %dx%d\ndimension: 2\nnodes:\n" % (k, k))
+    w("kinestat: 1\nkind: framework\nname: triangular lattice %dx%d\ndimension: planar\nnodes:\n" % (k, k))
     for j in range(k):
         for i in range(k):
             w("  n%d: [%.6f, %.6f]\n" % (j * k + i, i + 0.5 * j, j * math.sqrt(3) / 2))
