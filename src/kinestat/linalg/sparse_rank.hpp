@@ -11,7 +11,7 @@
 namespace kinestat::linalg {
 
 /// Rank of `a` from a sparse QR factorisation. The threshold is `tolerance` (default
-/// kSparseToleranceFactor·(rows + cols)·eps) times an estimate of σ_max from power iteration. The evidence reported is the R diagonal: `smallest_kept` is the smallest kept
+/// kSparseToleranceFactor·(rows + cols)·eps) times an estimate of σ_max (Lanczos). The evidence reported is the R diagonal: `smallest_kept` is the smallest kept
 /// |R_ii|; `largest_dropped` is 0 because SPQR drops columns without reporting them.
 /// `peak_memory`, when given, receives the factorisation's peak memory in bytes.
 RankDecision sparse_numerical_rank(const Eigen::SparseMatrix<double>& a, const RankTolerance& tolerance = {},
@@ -26,7 +26,8 @@ RankDecision sparse_rank_threshold(const Eigen::SparseMatrix<double>& a, const R
 /// Fills the rank and its evidence (smallest kept |R_ii|) of `decision` from `qr`.
 void record_rank(RankDecision& decision, const SparseQr& qr);
 
-/// Estimate of the largest singular value of `a` (power iteration on aᵀa, 60 steps).
+/// Estimate of the largest singular value of `a`, from below: Lanczos on aᵀa (at most 60
+/// steps, each one product with a and one with aᵀ; stops when the estimate settles to ~10⁻¹⁰).
 double estimate_largest_singular_value(const Eigen::SparseMatrix<double>& a);
 
 }  // namespace kinestat::linalg
