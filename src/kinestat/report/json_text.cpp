@@ -15,6 +15,12 @@ std::string json_text(const nlohmann::ordered_json& value, int indent) {
   return text;
 }
 
+nlohmann::ordered_json json_object(std::size_t keys) {
+  nlohmann::ordered_json object = nlohmann::ordered_json::object();
+  object.get_ref<nlohmann::ordered_json::object_t&>().reserve(keys);
+  return object;
+}
+
 double rounded_for_report(double value) {
   if (!std::isfinite(value)) return value;
   if (std::abs(value) < kPrintedZero) return 0.0;
