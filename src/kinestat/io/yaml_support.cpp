@@ -697,23 +697,45 @@ void YamlFile::expect_sequence(const TreeNode& node, std::string_view what) cons
   if (!node.is_sequence()) fail(node, fmt::format("{} must be a list, found {}", what, describe(node)));
 }
 
+namespace {
+
+// The keys of `map` must be names from `allowed` (strings or string views), none twice. The
+// first key that is not reported, in file order; earlier keys are compared directly (maps of a
+// model have a few keys each), a large map through a set.
+template <typename Names>
+void check_map_keys(const YamlFile& file, const TreeNode& map, std::string_view what, const Names& allowed) {
+  file.expect_map(map, what);
+  constexpr std::size_t kCompareDirectly = 16;
+  const std::size_t size = map.size();
+  std::set<std::string_view> seen;
+  for (std::size_t i = 0; i < size; ++i) {
+    const TreeNode key_node = map.key(i);
+    if (!key_node.is_scalar()) file.fail(key_node, fmt::format("keys of {} must be names", what));
+    const std::string_view key = key_node.scalar();
+    if (std::find_if(allowed.begin(), allowed.end(), [&](const auto& name) { return std::string_view(name) == key; }) ==
+        allowed.end()) {
+      std::string list;
+      for (const auto& name : allowed) list += fmt::format("{}{}", list.empty() ? "" : ", ", std::string_view(name));
+      file.fail(key_node, fmt::format("unknown key '{}' in {}; expected one of: {}", key, what, list));
+    }
+    bool duplicate = false;
+    if (size <= kCompareDirectly) {
+      for (std::size_t j = 0; j < i && !duplicate; ++j) duplicate = map.key(j).scalar() == key;
+    } else {
+      duplicate = !seen.insert(key).second;
+    }
+    if (duplicate) file.fail(key_node, fmt::format("duplicate key '{}' in {}", key, what));
+  }
+}
+
+}  // namespace
+
 void YamlFile::check_keys(const TreeNode& map, std::string_view what, std::initializer_list<std::string_view> allowed) const {
-  check_keys(map, what, std::vector<std::string>(allowed.begin(), allowed.end()));
+  check_map_keys(*this, map, what, allowed);
 }
 
 void YamlFile::check_keys(const TreeNode& map, std::string_view what, const std::vector<std::string>& allowed) const {
-  expect_map(map, what);
-  std::set<std::string_view> seen;
-  for (const auto& [key_node, value] : map.entries()) {
-    if (!key_node.is_scalar()) fail(key_node, fmt::format("keys of {} must be names", what));
-    const std::string_view key = key_node.scalar();
-    if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
-      std::string list;
-      for (const auto& name : allowed) list += (list.empty() ? "" : ", ") + name;
-      fail(key_node, fmt::format("unknown key '{}' in {}; expected one of: {}", key, what, list));
-    }
-    if (!seen.insert(key).second) fail(key_node, fmt::format("duplicate key '{}' in {}", key, what));
-  }
+  check_map_keys(*this, map, what, allowed);
 }
 
 TreeNode YamlFile::required(const TreeNode& map, std::string_view key, std::string_view what) const {
