@@ -43,6 +43,11 @@ inline constexpr double kSparseToleranceFactor = 20.0;
 /// Pair and coupling systems of a network are ranked against the size of the whole network's
 /// forms, not their own, so a pair whose entries are all rounding noise gets rank 0 (2^19 ε ≈ 1.2e-10).
 inline constexpr double kPairRankRelative = 0x1p19 * kEpsilon;
+/// Column-pivoted QR (linalg::pivoted_column_order): remaining column norms within this
+/// fraction of the largest are a tie, taken in the columns' original order, so that rounding
+/// (a model moved, turned or rescaled) cannot pick among equally good rows to release or
+/// coordinates to constrain (2^26 ε ≈ 1.5e-8: far above rounding, far below a real difference).
+inline constexpr double kPivotTie = 0x1p26 * kEpsilon;
 /// A variable can be chosen free in floating point when its row of the orthonormal null-space
 /// basis keeps this much norm after removing earlier choices (2^22 ε ≈ 9.3e-10).
 inline constexpr double kFreeVariableResidual = 0x1p22 * kEpsilon;

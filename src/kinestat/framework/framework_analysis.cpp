@@ -9,6 +9,7 @@
 #include "kinestat/framework/physical_scaling.hpp"
 #include "kinestat/framework/second_order.hpp"
 #include "kinestat/linalg/homogeneous_solution.hpp"
+#include "kinestat/linalg/pivoted_qr.hpp"
 #include "kinestat/linalg/sign_convention.hpp"
 #include "kinestat/linalg/sparse_qr.hpp"
 #include "kinestat/linalg/sparse_rank.hpp"
@@ -38,15 +39,15 @@ Eigen::MatrixXd deterministic_null_space(const Eigen::MatrixXd& svd_basis, const
   return basis;
 }
 
-// Indices of the `rank` columns chosen by a column-pivoted QR, and the rest (both sorted).
+// Indices of the `rank` columns chosen by a column-pivoted QR (ties to the earlier column,
+// linalg::pivoted_column_order), and the rest (both sorted).
 std::pair<std::vector<Eigen::Index>, std::vector<Eigen::Index>> pivot_columns(const Eigen::MatrixXd& a, Eigen::Index rank) {
   std::vector<Eigen::Index> kept, rest;
   if (a.cols() == 0) return {kept, rest};
   std::vector<bool> chosen(static_cast<std::size_t>(a.cols()), false);
   if (a.rows() > 0 && rank > 0) {
-    Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(a);
-    for (Eigen::Index i = 0; i < rank && i < a.cols(); ++i)
-      chosen[static_cast<std::size_t>(qr.colsPermutation().indices()(i))] = true;
+    const std::vector<Eigen::Index> order = linalg::pivoted_column_order(a);
+    for (Eigen::Index i = 0; i < rank && i < a.cols(); ++i) chosen[static_cast<std::size_t>(order[static_cast<std::size_t>(i)])] = true;
   }
   for (Eigen::Index j = 0; j < a.cols(); ++j) (chosen[static_cast<std::size_t>(j)] ? kept : rest).push_back(j);
   return {kept, rest};
