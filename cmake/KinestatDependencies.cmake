@@ -1,11 +1,12 @@
 # All dependencies come from Debian packages; nothing is downloaded at build time.
 find_package(Eigen3 3.3 REQUIRED NO_MODULE)
-find_package(yaml-cpp REQUIRED)
 find_package(fmt REQUIRED)
 find_package(nlohmann_json 3 REQUIRED)
 find_package(CLI11 REQUIRED)
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(GMPXX REQUIRED IMPORTED_TARGET gmpxx gmp)
+# libyaml (Debian libyaml-dev) parses model files event by event (io/yaml_support.cpp); private.
+pkg_check_modules(LIBYAML REQUIRED IMPORTED_TARGET yaml-0.1)
 
 # SuiteSparse 5 on Debian 12 ships no CMake config for SPQR: find it by hand.
 find_path(SUITESPARSE_INCLUDE_DIR SuiteSparseQR.hpp PATH_SUFFIXES suitesparse REQUIRED)

@@ -7,7 +7,7 @@
 set -euo pipefail
 packages=(
   git build-essential cmake ninja-build pkg-config
-  libeigen3-dev libsuitesparse-dev libopenblas-dev libgmp-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libfmt-dev
+  libeigen3-dev libsuitesparse-dev libopenblas-dev libgmp-dev libyaml-dev libcli11-dev nlohmann-json3-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libtinyxml2-dev libsdformat-dev libmujoco-dev libqhull-dev
   clang libclang-rt-14-dev

@@ -118,6 +118,8 @@ class ModelTree {
   };
 
   TreeNode root() const { return records_.empty() ? TreeNode() : TreeNode(this, root_); }
+  /// Node `index` (in the order added), e.g. a container still being built.
+  TreeNode node(std::uint32_t index) const { return index < records_.size() ? TreeNode(this, index) : TreeNode(); }
   std::size_t node_count() const { return records_.size(); }
 
   /// Appends a node and returns its index (used while building).

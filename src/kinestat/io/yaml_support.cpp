@@ -6,8 +6,7 @@
 #include <fmt/format.h>
 #include <sys/stat.h>
 #include <unistd.h>
-#include <yaml-cpp/eventhandler.h>
-#include <yaml-cpp/yaml.h>
+#include <yaml.h>
 
 #include <algorithm>
 #include <cctype>
@@ -15,8 +14,9 @@
 #include <cmath>
 #include <cstring>
 #include <istream>
+#include <new>
 #include <set>
-#include <streambuf>
+#include <unordered_map>
 
 namespace kinestat::io {
 
@@ -25,27 +25,40 @@ namespace {
 // Where the first character a model file may not contain stands (1-based line and column,
 // columns counted in characters, and its byte offset), or line 0: bytes that are not
 // well-formed UTF-8 (overlong forms, surrogates and code points above U+10FFFF rejected, as in
-// RFC 3629), and C0 control characters other than tab, line feed and carriage return, and DEL,
-// which YAML does not allow either. yaml-cpp passes both through into names (it even turns a
-// NUL and the next character into a lone byte 0xA0), and a name must be printable in every
-// report, JSON included. With `strings`, the text is an unescaped string, where carriage
-// returns are not allowed either.
+// RFC 3629), and C0 control characters other than tab, line feed and carriage return, DEL and
+// the C1 controls U+0080-U+009F, which YAML does not allow either (U+0085 is a line end in
+// YAML 1.1, which libyaml implements). A name must be printable in every report, JSON
+// included. In the raw text, the line and paragraph separators U+2028 / U+2029 (more YAML 1.1
+// line ends, which would shift every line number after them) and the noncharacters U+FFFE /
+// U+FFFF are refused too. With `unescaped`, the text is an unescaped string, where carriage
+// returns are not allowed but the separators are (written as escapes).
 struct TextPosition {
+  enum class Problem : std::uint8_t { none, utf8, control, separator, noncharacter };
   int line = 0, column = 0;
   std::size_t offset = 0;
-  bool control = false;  ///< a control character, not a UTF-8 error
+  Problem problem = Problem::none;
 };
 TextPosition first_unreadable_character(std::string_view text, bool unescaped = false) {
+  using Problem = TextPosition::Problem;
   int line = 1, column = 1;
   std::size_t i = 0;
   while (i < text.size()) {
     const auto byte = static_cast<unsigned char>(text[i]);
+    if (byte >= 0x20 && byte < 0x7F) {  // printable ASCII: the common case, one test
+      ++column;
+      ++i;
+      continue;
+    }
     const std::size_t length = utf8_character_length(text, i);
-    if (length == 0) return {line, column, i, false};
+    if (length == 0) return {line, column, i, Problem::utf8};
     const bool allowed_control = byte == '\t' || byte == '\n' || (byte == '\r' && !unescaped);
-    if ((byte < 0x20 && !allowed_control) || byte == 0x7F) return {line, column, i, true};
+    if ((byte < 0x20 && !allowed_control) || byte == 0x7F) return {line, column, i, Problem::control};
     // C1 controls (U+0080-U+009F) reach a terminal as escape sequences too.
-    if (unescaped && byte == 0xC2 && static_cast<unsigned char>(text[i + 1]) < 0xA0) return {line, column, i, true};
+    if (byte == 0xC2 && static_cast<unsigned char>(text[i + 1]) < 0xA0) return {line, column, i, Problem::control};
+    if (!unescaped && byte == 0xE2 && text[i + 1] == '\x80' && (text[i + 2] == '\xA8' || text[i + 2] == '\xA9'))
+      return {line, column, i, Problem::separator};
+    if (!unescaped && byte == 0xEF && text[i + 1] == '\xBF' && (text[i + 2] == '\xBE' || text[i + 2] == '\xBF'))
+      return {line, column, i, Problem::noncharacter};
     if (byte == '\n') {
       ++line;
       column = 1;
@@ -58,7 +71,9 @@ TextPosition first_unreadable_character(std::string_view text, bool unescaped = 
 }
 
 // The first carriage return that is not followed by a line feed (line ends of classic Mac
-// OS), which yaml-cpp does not take as a line end. {line, column} 1-based, or line 0.
+// OS), refused by name: YAML parsers disagree on them (yaml-cpp took none, libyaml takes them
+// as line ends) and so would the line numbers of every message. {line, column} 1-based, or
+// line 0.
 std::pair<int, int> lone_carriage_return(std::string_view text) {
   int line = 1;
   std::size_t line_start = 0;
@@ -99,14 +114,10 @@ int excessive_block_nesting(std::string_view text) {
   return 0;
 }
 
-// The first place where "[" / "{" nesting exceeds `limit`, outside quoted strings and
-// comments, as {line, column} (1-based) or {0, 0}. yaml-cpp's scanner queues the tokens of a
-// flow collection before the parser sees them (about 280 bytes per bracket), so this cheap scan
-// runs first.
 // What a scan of the raw text finds before the parser runs: where flow nesting first passes the
 // limit, and where the flow entries (separating commas) first pass the node limit. Both are cheap
 // (one pass over the bytes) so that a file built to exhaust the parser is refused in a fraction
-// of a second instead of after yaml-cpp has scanned tens of megabytes (about 4 MB/s).
+// of a second instead of after the parser has built tens of millions of nodes.
 struct FlowScan {
   std::pair<int, int> too_deep{0, 0};     ///< line, column; 0, 0: within the limit
   std::pair<int, int> too_many{0, 0};     ///< line, column of the entry past the node limit
@@ -163,47 +174,187 @@ std::string nesting_message(bool flow, int limit) {
                      flow ? "flow" : "block", limit);
 }
 
+// "U+HHHH" for the well-formed UTF-8 character at `offset` of `text`.
 std::string code_point_text(std::string_view text, std::size_t offset) {
-  const auto byte = static_cast<unsigned char>(text[offset]);
-  if (byte == 0xC2) return fmt::format("U+{:04X}", static_cast<unsigned char>(text[offset + 1]));
-  return fmt::format("U+{:04X}", byte);
+  const std::size_t length = std::max<std::size_t>(1, utf8_character_length(text, offset));
+  auto code = static_cast<std::uint32_t>(static_cast<unsigned char>(text[offset]));
+  if (length > 1) code &= 0x7Fu >> length;  // the payload bits of the lead byte
+  for (std::size_t k = 1; k < length; ++k) code = (code << 6) | (static_cast<unsigned char>(text[offset + k]) & 0x3Fu);
+  return fmt::format("U+{:04X}", code);
 }
 
-// A view of a string as an input stream, so the parser reads the text without a copy.
-class TextBuffer : public std::streambuf {
- public:
-  explicit TextBuffer(const std::string& text) {
-    char* begin = const_cast<char*>(text.data());  // read only: the get area is never written
-    setg(begin, begin, begin + text.size());
+// The message for the first character of the raw text that a model file may not contain.
+std::string unreadable_message(std::string_view text, const TextPosition& bad) {
+  const auto byte = static_cast<unsigned char>(text[bad.offset]);
+  switch (bad.problem) {
+    case TextPosition::Problem::utf8:
+      return fmt::format("byte 0x{:02X} is not UTF-8: model files are UTF-8 text (save UTF-16 or Latin-1 files as "
+                         "UTF-8)",
+                         byte);
+    case TextPosition::Problem::separator:
+      return fmt::format("the line separator {} is not allowed in a model file (YAML 1.1 takes it as a line end); "
+                         "inside a double-quoted string, write it as the escape \\u{}",
+                         code_point_text(text, bad.offset), code_point_text(text, bad.offset).substr(2));
+    case TextPosition::Problem::noncharacter:
+      return fmt::format("the noncharacter {} is not allowed in a model file", code_point_text(text, bad.offset));
+    default: return fmt::format("control character {} is not allowed in a model file", code_point_text(text, bad.offset));
   }
+}
+
+// libyaml's event parser reading `text` in place (no copy), and the event it produced last.
+class EventParser {
+ public:
+  explicit EventParser(std::string_view text) {
+    if (yaml_parser_initialize(&parser_) == 0) throw std::bad_alloc();
+    yaml_parser_set_input_string(&parser_, reinterpret_cast<const unsigned char*>(text.data()), text.size());
+  }
+  EventParser(const EventParser&) = delete;
+  EventParser& operator=(const EventParser&) = delete;
+  ~EventParser() {
+    release();
+    yaml_parser_delete(&parser_);
+  }
+  /// The next event, or nullptr when the text is not well-formed YAML (see state()).
+  const yaml_event_t* next() {
+    release();
+    if (yaml_parser_parse(&parser_, &event_) == 0) return nullptr;
+    holding_ = true;
+    return &event_;
+  }
+  const yaml_parser_t& state() const { return parser_; }
+
+ private:
+  void release() {
+    if (holding_) yaml_event_delete(&event_);
+    holding_ = false;
+  }
+  yaml_parser_t parser_{};
+  yaml_event_t event_{};
+  bool holding_ = false;
 };
 
-// Builds the ModelTree from the parser's events, enforcing the limits as nodes arrive.
-class TreeBuilder : public YAML::EventHandler {
+// 1-based line and column (in characters) of byte `offset` of `text`.
+std::pair<int, int> position_of_offset(std::string_view text, std::size_t offset) {
+  int line = 1, column = 1;
+  for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
+    const auto byte = static_cast<unsigned char>(text[i]);
+    if (byte == '\n') {
+      ++line;
+      column = 1;
+    } else if ((byte & 0xC0) != 0x80) {
+      ++column;
+    }
+  }
+  return {line, column};
+}
+
+// The InputError for a text that libyaml refused: its problem at its position, and what it
+// was reading (libyaml's context, or else the innermost open list or map, `open`) with where
+// that starts. libyaml counts lines and columns from 0.
+struct OpenCollection {
+  bool defined = false, map = false, flow = false;
+  std::uint32_t line = 0, column = 0;  ///< 1-based
+};
+InputError malformed(const std::string& path, std::string_view text, const yaml_parser_t& parser, const OpenCollection& open) {
+  if (parser.error == YAML_MEMORY_ERROR) return InputError({path, 0, 0}, "out of memory while parsing the model file");
+  std::string problem = parser.problem != nullptr ? parser.problem : "unknown problem";
+  // The one escape error the reader names: a \u or \U escape of a UTF-16 surrogate (or past U+10FFFF).
+  if (problem == "found invalid Unicode character escape code") {
+    problem = "invalid unicode escape: a \\u or \\U escape of a UTF-16 surrogate (U+D800-U+DFFF) or above U+10FFFF";
+  }
+  if (parser.error == YAML_READER_ERROR) {
+    const auto [line, column] = position_of_offset(text, parser.problem_offset);
+    return InputError({path, line, column}, fmt::format("malformed YAML: {}", problem));
+  }
+  const yaml_mark_t& mark = parser.problem_mark;
+  std::string context;
+  const bool own_context = parser.context != nullptr && (parser.context_mark.line != mark.line ||
+                                                        parser.context_mark.column != mark.column);
+  if (own_context) {
+    context = fmt::format(" ({} that starts at line {}, column {})", parser.context, parser.context_mark.line + 1,
+                          parser.context_mark.column + 1);
+  } else if (open.defined) {
+    context = fmt::format(" (in the {} {} that starts at line {}, column {})", open.flow ? "flow" : "block",
+                          open.map ? "map" : "list", open.line, open.column);
+  }
+  return InputError({path, static_cast<int>(mark.line + 1), static_cast<int>(mark.column + 1)},
+                    fmt::format("malformed YAML: {}{}", problem, context));
+}
+
+std::string_view event_text(const yaml_char_t* text) {
+  return text == nullptr ? std::string_view() : std::string_view(reinterpret_cast<const char*>(text));
+}
+
+// Builds the ModelTree from libyaml's events, enforcing the limits as nodes arrive.
+class TreeBuilder {
  public:
   TreeBuilder(const std::string& path, const ReadingLimits& limits, ModelTree& tree)
       : path_(path), limits_(limits), tree_(tree) {}
 
-  bool has_document() const { return documents_ > 0; }
   bool has_root() const { return root_set_; }
+  /// The innermost list or map not closed yet (for messages).
+  OpenCollection innermost_open() const {
+    OpenCollection open;
+    if (stack_.empty()) return open;
+    const Open& last = stack_.back();
+    const TreeNode node = tree_.node(last.node);
+    open.defined = true;
+    open.map = last.map;
+    open.flow = last.flow;
+    open.line = static_cast<std::uint32_t>(node.line());
+    open.column = static_cast<std::uint32_t>(node.column());
+    return open;
+  }
 
-  void OnDocumentStart(const YAML::Mark& mark) override {
-    if (++documents_ > 1) {
-      throw InputError(at(mark), "a second YAML document starts here ('---'): a model file holds exactly one "
-                                 "model; put each model in a file of its own");
+  /// Adds what `event` says to the tree.
+  void handle(const yaml_event_t& event) {
+    const yaml_mark_t& mark = event.start_mark;
+    switch (event.type) {
+      case YAML_DOCUMENT_START_EVENT:
+        if (++documents_ > 1) {
+          throw InputError(at(mark), "a second YAML document starts here ('---'): a model file holds exactly one "
+                                     "model; put each model in a file of its own");
+        }
+        break;
+      case YAML_ALIAS_EVENT: on_alias(mark, event_text(event.data.alias.anchor)); break;
+      case YAML_SCALAR_EVENT: on_scalar(event); break;
+      case YAML_SEQUENCE_START_EVENT:
+        open(mark, TreeNode::Kind::sequence, event_text(event.data.sequence_start.anchor),
+             event.data.sequence_start.style == YAML_FLOW_SEQUENCE_STYLE);
+        break;
+      case YAML_MAPPING_START_EVENT:
+        open(mark, TreeNode::Kind::map, event_text(event.data.mapping_start.anchor),
+             event.data.mapping_start.style == YAML_FLOW_MAPPING_STYLE);
+        break;
+      case YAML_SEQUENCE_END_EVENT:
+      case YAML_MAPPING_END_EVENT: close(); break;
+      default: break;  // stream start and end, document end
     }
   }
-  void OnDocumentEnd() override {}
 
-  void OnNull(const YAML::Mark& mark, YAML::anchor_t anchor) override {
-    close_leaf(add(mark, TreeNode::Kind::null, 0, 0), anchor);
-  }
+ private:
+  struct Anchor {
+    std::uint32_t node = 0;
+    std::uint64_t expanded = 0;  ///< nodes the anchored node stands for
+    std::string name;
+    bool open = false;
+  };
+  struct Open {
+    std::uint32_t node = 0;
+    std::uint64_t expanded_at_start = 0;
+    std::uint32_t anchor = 0;  ///< 1 + index into anchors_, 0 for none
+    bool map = false, flow = false;
+    std::vector<std::uint32_t> children;
+  };
 
-  void OnAlias(const YAML::Mark& mark, YAML::anchor_t anchor) override {
-    if (anchor >= anchors_.size() || !anchors_[anchor].defined) {
-      throw InputError(at(mark), "an alias refers to an anchor that is not defined");
+  void on_alias(const yaml_mark_t& mark, std::string_view name) {
+    const auto found = anchor_index_.find(std::string(name));
+    if (found == anchor_index_.end()) {
+      throw InputError(at(mark), fmt::format("the alias '*{}' refers to an anchor that is not defined before it "
+                                             "('&{}')",
+                                             name, name));
     }
-    const Anchor& target = anchors_[anchor];
+    const Anchor& target = anchors_[found->second];
     if (target.open) {
       throw InputError(at(mark), fmt::format("the alias '*{}' refers to the list or map that contains it (a "
                                              "self-referencing alias would expand without end)",
@@ -213,9 +364,12 @@ class TreeBuilder : public YAML::EventHandler {
     attach(target.node);
   }
 
-  void OnScalar(const YAML::Mark& mark, const std::string& tag, YAML::anchor_t anchor, const std::string& value) override {
+  void on_scalar(const yaml_event_t& event) {
+    const yaml_mark_t& mark = event.start_mark;
+    const auto& scalar = event.data.scalar;
+    const std::string_view value(reinterpret_cast<const char*>(scalar.value), scalar.length);
     if (const TextPosition bad = first_unreadable_character(value, true); bad.line > 0) {
-      throw InputError(at(mark), bad.control
+      throw InputError(at(mark), bad.problem == TextPosition::Problem::control
                                      ? fmt::format("this string contains the control character {} (written as an "
                                                    "escape?); names and values must be printable text (tab and "
                                                    "newline allowed)",
@@ -223,7 +377,14 @@ class TreeBuilder : public YAML::EventHandler {
                                      : "this string is not valid UTF-8 after its escapes are resolved (a \\u escape "
                                        "of a lone surrogate?)");
     }
-    if (tag == "?" && value == "<<" && !stack_.empty() && stack_.back().map && stack_.back().children.size() % 2 == 0) {
+    // A plain scalar without a tag: '~', 'null' and an empty node are nulls, '<<' a merge key.
+    const bool plain = scalar.style == YAML_PLAIN_SCALAR_STYLE && scalar.tag == nullptr;
+    const std::string_view anchor = event_text(scalar.anchor);
+    if (plain && (value.empty() || value == "~" || value == "null" || value == "Null" || value == "NULL")) {
+      close_leaf(add(mark, TreeNode::Kind::null, 0, 0), anchor);
+      return;
+    }
+    if (plain && value == "<<" && !stack_.empty() && stack_.back().map && stack_.back().children.size() % 2 == 0) {
       throw InputError(at(mark), "YAML merge keys ('<<: *anchor') are not supported: write the keys of the map out "
                                  "in full");
     }
@@ -231,39 +392,11 @@ class TreeBuilder : public YAML::EventHandler {
     close_leaf(add(mark, TreeNode::Kind::scalar, offset, static_cast<std::uint32_t>(value.size())), anchor);
   }
 
-  void OnSequenceStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor,
-                       YAML::EmitterStyle::value style) override {
-    open(mark, TreeNode::Kind::sequence, anchor, style);
-  }
-  void OnSequenceEnd() override { close(); }
-  void OnMapStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor,
-                  YAML::EmitterStyle::value style) override {
-    open(mark, TreeNode::Kind::map, anchor, style);
-  }
-  void OnMapEnd() override { close(); }
-  void OnAnchor(const YAML::Mark&, const std::string& name) override { anchor_names_.push_back(name); }
-
- private:
-  struct Anchor {
-    std::uint32_t node = 0;
-    std::uint64_t expanded = 0;  ///< nodes the anchored node stands for
-    std::string name;
-    bool defined = false, open = false;
-  };
-  struct Open {
-    std::uint32_t node = 0;
-    std::uint64_t expanded_at_start = 0;
-    YAML::anchor_t anchor = 0;
-    bool map = false;
-    std::vector<std::uint32_t> children;
-  };
-
-  SourceLocation at(const YAML::Mark& mark) const {
-    if (mark.is_null()) return {path_, 1, 1};
-    return {path_, mark.line + 1, mark.column + 1};
+  SourceLocation at(const yaml_mark_t& mark) const {
+    return {path_, static_cast<int>(mark.line + 1), static_cast<int>(mark.column + 1)};
   }
 
-  void count(std::uint64_t nodes, const YAML::Mark& mark) {
+  void count(std::uint64_t nodes, const yaml_mark_t& mark) {
     expanded_ += nodes;
     if (expanded_ > limits_.max_nodes) {
       throw InputError(at(mark), fmt::format("the document expands to more than {} nodes, the node limit (each "
@@ -272,7 +405,7 @@ class TreeBuilder : public YAML::EventHandler {
     }
   }
 
-  std::uint32_t add(const YAML::Mark& mark, TreeNode::Kind kind, std::uint32_t begin, std::uint32_t length) {
+  std::uint32_t add(const yaml_mark_t& mark, TreeNode::Kind kind, std::uint32_t begin, std::uint32_t length) {
     count(1, mark);
     ModelTree::Record record;
     record.line = static_cast<std::uint32_t>(mark.line + 1);
@@ -283,15 +416,17 @@ class TreeBuilder : public YAML::EventHandler {
     return tree_.add(record);
   }
 
-  // Registers anchor `anchor` (0 for none) as standing for `node`.
-  Anchor* define(YAML::anchor_t anchor, std::uint32_t node) {
-    if (anchor == 0) return nullptr;
-    if (anchors_.size() <= anchor) anchors_.resize(anchor + 1);
-    Anchor& entry = anchors_[anchor];
+  // Registers the anchor `name` ("" for none) as standing for `node`; a later anchor of the
+  // same name replaces it for the aliases that follow. Returns 1 + its index, or 0.
+  std::uint32_t define(std::string_view name, std::uint32_t node) {
+    if (name.empty()) return 0;
+    Anchor entry;
     entry.node = node;
-    entry.defined = true;
-    entry.name = anchor <= anchor_names_.size() ? anchor_names_[anchor - 1] : std::to_string(anchor);
-    return &entry;
+    entry.name = std::string(name);
+    anchors_.push_back(std::move(entry));
+    const auto index = static_cast<std::uint32_t>(anchors_.size() - 1);
+    anchor_index_[anchors_.back().name] = index;
+    return index + 1;
   }
 
   void attach(std::uint32_t node) {
@@ -303,26 +438,28 @@ class TreeBuilder : public YAML::EventHandler {
     }
   }
 
-  void close_leaf(std::uint32_t node, YAML::anchor_t anchor) {
-    if (Anchor* entry = define(anchor, node)) entry->expanded = 1;
+  void close_leaf(std::uint32_t node, std::string_view anchor) {
+    if (const std::uint32_t id = define(anchor, node); id != 0) anchors_[id - 1].expanded = 1;
     attach(node);
   }
 
-  void open(const YAML::Mark& mark, TreeNode::Kind kind, YAML::anchor_t anchor, YAML::EmitterStyle::value style) {
+  void open(const yaml_mark_t& mark, TreeNode::Kind kind, std::string_view anchor, bool flow) {
     // Levels are counted below the top-level map of the model.
     if (static_cast<int>(stack_.size()) > limits_.max_nesting) {
-      throw InputError(at(mark), nesting_message(style == YAML::EmitterStyle::Flow, limits_.max_nesting));
+      throw InputError(at(mark), nesting_message(flow, limits_.max_nesting));
     }
     const std::uint64_t start = expanded_;
     const std::uint32_t node = add(mark, kind, 0, 0);
-    if (Anchor* entry = define(anchor, node)) entry->open = true;
+    const std::uint32_t id = define(anchor, node);
+    if (id != 0) anchors_[id - 1].open = true;
     // Reuse the child lists of closed containers at this depth: no allocation per container.
     if (spare_.size() <= stack_.size()) spare_.resize(stack_.size() + 1);
     Open entry;
     entry.node = node;
     entry.expanded_at_start = start;
-    entry.anchor = anchor;
+    entry.anchor = id;
     entry.map = kind == TreeNode::Kind::map;
+    entry.flow = flow;
     entry.children = std::move(spare_[stack_.size()]);
     entry.children.clear();
     stack_.push_back(std::move(entry));
@@ -333,7 +470,7 @@ class TreeBuilder : public YAML::EventHandler {
     stack_.pop_back();
     tree_.set_children(done.node, done.children, done.map);
     if (done.anchor != 0) {
-      Anchor& entry = anchors_[done.anchor];
+      Anchor& entry = anchors_[done.anchor - 1];
       entry.open = false;
       entry.expanded = expanded_ - done.expanded_at_start;
     }
@@ -347,7 +484,7 @@ class TreeBuilder : public YAML::EventHandler {
   std::vector<Open> stack_;
   std::vector<std::vector<std::uint32_t>> spare_;
   std::vector<Anchor> anchors_;
-  std::vector<std::string> anchor_names_;
+  std::unordered_map<std::string, std::uint32_t> anchor_index_;
   std::uint64_t expanded_ = 0;
   int documents_ = 0;
   bool root_set_ = false;
@@ -506,12 +643,7 @@ std::optional<mpq_class> parse_exact_decimal(std::string_view literal) {
 YamlFile YamlFile::parse(std::string path, const std::string& text, const ReadingLimits& limits) {
   if (text.size() > limits.max_bytes) too_large(path, limits);
   if (const TextPosition bad = first_unreadable_character(text); bad.line > 0) {
-    const auto byte = static_cast<unsigned char>(text[bad.offset]);
-    throw InputError({path, bad.line, bad.column},
-                     bad.control ? fmt::format("control character U+{:04X} is not allowed in a model file", byte)
-                                 : fmt::format("byte 0x{:02X} is not UTF-8: model files are UTF-8 text (save UTF-16 "
-                                               "or Latin-1 files as UTF-8)",
-                                               byte));
+    throw InputError({path, bad.line, bad.column}, unreadable_message(text, bad));
   }
   if (const auto [line, column] = lone_carriage_return(text); line > 0) {
     throw InputError({path, line, column}, "a line ends with a lone carriage return (classic Mac line ends): save the "
@@ -532,13 +664,12 @@ YamlFile YamlFile::parse(std::string path, const std::string& text, const Readin
   }
   auto tree = std::make_shared<ModelTree>();
   TreeBuilder builder(path, limits, *tree);
-  TextBuffer buffer(text);
-  std::istream stream(&buffer);
-  try {
-    YAML::Parser parser(stream);
-    if (parser.HandleNextDocument(builder)) (void)parser.HandleNextDocument(builder);
-  } catch (const YAML::Exception& error) {
-    throw InputError({path, error.mark.line + 1, error.mark.column + 1}, fmt::format("malformed YAML: {}", error.msg));
+  EventParser parser(text);
+  while (true) {
+    const yaml_event_t* event = parser.next();
+    if (event == nullptr) throw malformed(path, text, parser.state(), builder.innermost_open());
+    if (event->type == YAML_STREAM_END_EVENT) break;
+    builder.handle(*event);
   }
   if (!builder.has_root() || tree->root().is_null()) throw InputError({path, 1, 1}, "empty model file: expected a map");
   tree->shrink();
@@ -566,23 +697,45 @@ void YamlFile::expect_sequence(const TreeNode& node, std::string_view what) cons
   if (!node.is_sequence()) fail(node, fmt::format("{} must be a list, found {}", what, describe(node)));
 }
 
+namespace {
+
+// The keys of `map` must be names from `allowed` (strings or string views), none twice. The
+// first key that is not reported, in file order; earlier keys are compared directly (maps of a
+// model have a few keys each), a large map through a set.
+template <typename Names>
+void check_map_keys(const YamlFile& file, const TreeNode& map, std::string_view what, const Names& allowed) {
+  file.expect_map(map, what);
+  constexpr std::size_t kCompareDirectly = 16;
+  const std::size_t size = map.size();
+  std::set<std::string_view> seen;
+  for (std::size_t i = 0; i < size; ++i) {
+    const TreeNode key_node = map.key(i);
+    if (!key_node.is_scalar()) file.fail(key_node, fmt::format("keys of {} must be names", what));
+    const std::string_view key = key_node.scalar();
+    if (std::find_if(allowed.begin(), allowed.end(), [&](const auto& name) { return std::string_view(name) == key; }) ==
+        allowed.end()) {
+      std::string list;
+      for (const auto& name : allowed) list += fmt::format("{}{}", list.empty() ? "" : ", ", std::string_view(name));
+      file.fail(key_node, fmt::format("unknown key '{}' in {}; expected one of: {}", key, what, list));
+    }
+    bool duplicate = false;
+    if (size <= kCompareDirectly) {
+      for (std::size_t j = 0; j < i && !duplicate; ++j) duplicate = map.key(j).scalar() == key;
+    } else {
+      duplicate = !seen.insert(key).second;
+    }
+    if (duplicate) file.fail(key_node, fmt::format("duplicate key '{}' in {}", key, what));
+  }
+}
+
+}  // namespace
+
 void YamlFile::check_keys(const TreeNode& map, std::string_view what, std::initializer_list<std::string_view> allowed) const {
-  check_keys(map, what, std::vector<std::string>(allowed.begin(), allowed.end()));
+  check_map_keys(*this, map, what, allowed);
 }
 
 void YamlFile::check_keys(const TreeNode& map, std::string_view what, const std::vector<std::string>& allowed) const {
-  expect_map(map, what);
-  std::set<std::string_view> seen;
-  for (const auto& [key_node, value] : map.entries()) {
-    if (!key_node.is_scalar()) fail(key_node, fmt::format("keys of {} must be names", what));
-    const std::string_view key = key_node.scalar();
-    if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
-      std::string list;
-      for (const auto& name : allowed) list += (list.empty() ? "" : ", ") + name;
-      fail(key_node, fmt::format("unknown key '{}' in {}; expected one of: {}", key, what, list));
-    }
-    if (!seen.insert(key).second) fail(key_node, fmt::format("duplicate key '{}' in {}", key, what));
-  }
+  check_map_keys(*this, map, what, allowed);
 }
 
 TreeNode YamlFile::required(const TreeNode& map, std::string_view key, std::string_view what) const {

@@ -1,1 +1,0 @@
-#error "a public kinestat header includes <yaml-cpp/yaml.h>, a private dependency"

@@ -1,0 +1,1 @@
+#error "a public kinestat header includes <yaml.h> (libyaml), a private dependency"
