@@ -1,0 +1,71 @@
+#pragma once
+// The rank of a large sparse matrix A (m × n) decided on many processes: MUMPS (through PETSc)
+// factors the symmetric Jordan–Wielandt matrix H = [[0, A], [Aᵀ, 0]], whose eigenvalues are
+// ±σ_i(A) and m + n − 2·rank zeros, with null-pivot detection at the serial rule's absolute
+// threshold; the null pivots give the rank, MUMPS's null-space basis gives null vectors of A
+// (mechanisms) and of Aᵀ (self-stresses), and SLEPc's Krylov–Schur on MUMPS's solve gives
+// the smallest kept singular value, so the decision reports its evidence like the serial ones
+// (docs/scaling.md, "The distributed rank decision").
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include <cstddef>
+#include <vector>
+
+#include "kinestat/linalg/rank_decision.hpp"
+
+namespace kinestat::distributed {
+
+/// What the distributed decision computes besides the rank.
+struct DistributedRankOptions {
+  /// Null vectors wanted: the first `vectors` of A's null space (mechanisms) and of Aᵀ's
+  /// (self-stresses); 0: none (counts and evidence only).
+  Eigen::Index vectors = 0;
+  /// When H's null space has at most this many vectors, all are computed and the largest
+  /// dropped singular value is bounded by ‖H Q‖_F (Q an orthonormal basis of them: H then has
+  /// that many eigenvalues within the bound); above it, largest_dropped stays 0 (not computed).
+  Eigen::Index full_basis_limit = 256;
+  /// Compute the smallest kept singular value with SLEPc (the evidence); false: counts only.
+  bool smallest_kept = true;
+};
+
+/// Outcome of a distributed rank decision. Counts are the same on every process; vectors and
+/// matrices are filled on rank 0 only.
+struct DistributedRank {
+  /// The decision in the serial form: rank, threshold, largest (σ_max, from the caller),
+  /// smallest_kept (σ_r from SLEPc, 0 when not computed or not verified), largest_dropped (the
+  /// bound above, 0 when not computed); `sparse` is true, so its status is close or unproven
+  /// as for the serial sparse QR (a factorisation's pivots bound no singular value).
+  linalg::RankDecision decision;
+  Eigen::Index null_pivots = 0;   ///< MUMPS's null pivots of H (INFOG(28)): m + n − 2·rank
+  bool smallest_kept_verified = false;  ///< SLEPc's σ_r passed its residual check
+  double smallest_kept_residual = 0.0;  ///< ‖H u − σ_r u‖ / (σ_max ‖u‖) of its singular vector pair u
+  bool dropped_bounded = false;         ///< largest_dropped is the bound of the whole null space
+  /// Orthonormal bases (rank 0): the first `vectors` null vectors of A (n rows) and of Aᵀ (m rows).
+  Eigen::MatrixXd mechanisms, self_stresses;
+  /// Largest ‖H v‖ / (σ_max ‖v‖) over the null vectors of H computed (0 when none): the rounding
+  /// level when the decision is sound.
+  double null_vector_residual = 0.0;
+  Eigen::Index null_vectors_computed = 0;  ///< null vectors of H computed by MUMPS
+  int processes = 1;
+  /// Wall time, seconds: scattering and assembling H, the MUMPS analysis and factorisation,
+  /// the null vectors, SLEPc's smallest kept value.
+  double assembly_seconds = 0.0, factor_seconds = 0.0, vector_seconds = 0.0, evidence_seconds = 0.0;
+  /// MUMPS's own memory count, megabytes: the largest of any process (INFOG(21)) and the sum
+  /// over processes (INFOG(22)), as effectively used during the factorisation.
+  long long factor_megabytes_max = 0, factor_megabytes_total = 0;
+  /// Peak resident memory of each process, bytes (rank 0 only; index = MPI rank).
+  std::vector<std::size_t> peak_memory;
+};
+
+/// Decides the rank of `a` on all processes of PETSC_COMM_WORLD (collective; a PetscSession
+/// must be alive). `a` (non-dimensional and scaled as the serial path scales it) and
+/// `threshold` (the serial rule's decision: linalg::sparse_rank_threshold) are read on rank 0
+/// only, where `a` may be null elsewhere; rank 0 scatters the rows of H. Throws kinestat::Error
+/// (exit 3) when PETSc or MUMPS fails, std::bad_alloc when memory runs out, and
+/// kinestat::Error when the null pivots are not paired (an odd count: the decision is ambiguous).
+DistributedRank distributed_rank(const Eigen::SparseMatrix<double>* a, const linalg::RankDecision& threshold,
+                                 const DistributedRankOptions& options = {});
+
+}  // namespace kinestat::distributed
