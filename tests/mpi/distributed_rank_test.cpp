@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 #include <mpi.h>
 
+#include <Eigen/SVD>
+
 #include "kinestat/distributed/framework_rank.hpp"
 #include "kinestat/framework/framework_analysis.hpp"
 #include "kinestat/linalg/sparse_rank.hpp"
@@ -26,24 +28,33 @@ struct Expected {
 
 // Runs both paths; checks the hand counts and that the serial sparse path agrees (rank 0).
 DistributedFrameworkResult check_lattice(const framework::FrameworkModel& model, Expected hand, Eigen::Index vectors,
-                                         const char* name) {
+                                         const char* name, Eigen::Index full_basis_limit = 0) {
   DistributedRankOptions options;
   options.vectors = vectors;
+  options.full_basis_limit = full_basis_limit;
   const bool root = world_rank() == 0;
   DistributedFrameworkResult r = analyse_framework_distributed(root ? &model : nullptr, Tolerances{}, options);
   EXPECT_EQ(r.analysis.mechanisms, hand.mechanisms) << name;
   EXPECT_EQ(r.analysis.self_stresses, hand.self_stresses) << name;
   EXPECT_EQ(r.backend.null_pivots, hand.mechanisms + hand.self_stresses) << name;
   if (root) {
-    const framework::FrameworkResult serial = framework::analyse_framework(model);
+    framework::AnalysisOptions sparse;
+    sparse.dense_limit = 0;  // the serial sparse path, whatever the size
+    const framework::FrameworkResult serial = framework::analyse_framework(model, sparse);
     EXPECT_EQ(serial.method, framework::RankMethod::sparse_qr) << name;
     EXPECT_EQ(r.analysis.rank, serial.rank) << name;
     EXPECT_EQ(r.analysis.mechanisms, serial.mechanisms) << name;
     EXPECT_EQ(r.analysis.self_stresses, serial.self_stresses) << name;
     EXPECT_EQ(r.analysis.decision.threshold, serial.decision.threshold) << name;
-    // The evidence: a verified singular value above the threshold, well clear of it.
-    EXPECT_TRUE(r.backend.smallest_kept_verified) << name;
-    EXPECT_GT(r.analysis.decision.smallest_kept, 1e3 * r.analysis.decision.threshold) << name;
+    // The evidence: no singular value within two decades of the threshold on either side (the
+    // inertia counts), and where the whole null space is computed, a verified smallest kept
+    // singular value well above the threshold.
+    EXPECT_EQ(r.backend.rank_above_margin, r.analysis.rank) << name;
+    EXPECT_EQ(r.backend.rank_below_margin, r.analysis.rank) << name;
+    if (r.backend.dropped_bounded) {
+      EXPECT_TRUE(r.backend.smallest_kept_verified) << name;
+      EXPECT_GT(r.analysis.decision.smallest_kept, 1e3 * r.analysis.decision.threshold) << name;
+    }
     // The bases: orthonormal null vectors of D(c) and D(c)ᵀ, to rounding.
     framework::FrameworkResult scratch;
     const Eigen::SparseMatrix<double> a = framework::prepare_analysis(model, scratch);
@@ -65,18 +76,33 @@ DistributedFrameworkResult check_lattice(const framework::FrameworkModel& model,
 }
 
 // n × n square grid, bottom row pinned: n − 1 mechanisms (each row of vertical bars shears)
-// and n − 1 self-stresses (the bars between pinned nodes). n = 71: 9 940 bars; all 140 null
-// vectors of H are computed, so the largest dropped singular value is bounded.
-TEST(DistributedRank, SquareGridOfTenThousandBars) {
-  const int n = 71;
+// and n − 1 self-stresses (the bars between pinned nodes). n = 16 (480 bars, small enough for
+// the dense SVD): all 30 null vectors of H are computed, so the largest dropped singular value
+// is bounded and SLEPc's smallest kept one is checked against the dense SVD's.
+TEST(DistributedRank, SquareGridEvidenceMatchesTheDenseSvd) {
+  const int n = 16;
   const auto model = framework::planar_lattice(n, false);
-  ASSERT_EQ(model.elements.size(), 2u * n * (n - 1));
-  const auto r = check_lattice(model, {n - 1, n - 1}, 5, "square 71");
+  const auto r = check_lattice(model, {n - 1, n - 1}, 3, "square 16", 256);
   if (world_rank() == 0) {
     EXPECT_TRUE(r.backend.dropped_bounded);
     EXPECT_LT(r.analysis.decision.largest_dropped, r.analysis.decision.threshold);
     EXPECT_GT(r.analysis.decision.gap(), 1e3);
+    framework::FrameworkResult scratch;
+    const Eigen::MatrixXd dense(framework::prepare_analysis(model, scratch));
+    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(dense);
+    const Eigen::Index rank = r.analysis.rank;
+    EXPECT_NEAR(r.analysis.decision.smallest_kept, svd.singularValues()(rank - 1), 1e-8 * svd.singularValues()(0));
+    // σ_max is the serial path's estimate (60 steps of power iteration): within 1 %.
+    EXPECT_NEAR(r.analysis.decision.largest, svd.singularValues()(0), 1e-2 * svd.singularValues()(0));
   }
+}
+
+// n = 71: 9 940 bars.
+TEST(DistributedRank, SquareGridOfTenThousandBars) {
+  const int n = 71;
+  const auto model = framework::planar_lattice(n, false);
+  ASSERT_EQ(model.elements.size(), 2u * n * (n - 1));
+  check_lattice(model, {n - 1, n - 1}, 3, "square 71");
 }
 
 // The triangulated grid (one diagonal per cell): rigid, (n − 1)² self-stresses. n = 58: 9 861 bars.

@@ -1,11 +1,12 @@
 #pragma once
-// The rank of a large sparse matrix A (m × n) decided on many processes: MUMPS (through PETSc)
-// factors the symmetric Jordan–Wielandt matrix H = [[0, A], [Aᵀ, 0]], whose eigenvalues are
-// ±σ_i(A) and m + n − 2·rank zeros, with null-pivot detection at the serial rule's absolute
-// threshold; the null pivots give the rank, MUMPS's null-space basis gives null vectors of A
-// (mechanisms) and of Aᵀ (self-stresses), and SLEPc's Krylov–Schur on MUMPS's solve gives
-// the smallest kept singular value, so the decision reports its evidence like the serial ones
-// (docs/scaling.md, "The distributed rank decision").
+// The rank of a large sparse matrix A (m × n) decided on many processes. The symmetric
+// Jordan–Wielandt matrix H = [[0, A], [Aᵀ, 0]] has eigenvalues ±σ_i(A) and zeros, so by
+// Sylvester's law of inertia H + t·I has one negative eigenvalue per singular value above t:
+// MUMPS's LDLᵀ factorisation of H + t·I (through PETSc, t the serial rule's absolute
+// threshold) gives the rank as its count of negative pivots. The same count at 100·t and t/100
+// shows the gap; inverse iteration with the factor gives null vectors of A (mechanisms) and of
+// Aᵀ (self-stresses), and SLEPc's Krylov–Schur, with the null space deflated, the smallest
+// kept singular value (docs/scaling.md, "The distributed rank decision").
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
@@ -22,11 +23,13 @@ struct DistributedRankOptions {
   /// Null vectors wanted: the first `vectors` of A's null space (mechanisms) and of Aᵀ's
   /// (self-stresses); 0: none (counts and evidence only).
   Eigen::Index vectors = 0;
-  /// When H's null space has at most this many vectors, all are computed and the largest
-  /// dropped singular value is bounded by ‖H Q‖_F (Q an orthonormal basis of them: H then has
-  /// that many eigenvalues within the bound); above it, largest_dropped stays 0 (not computed).
+  /// When H's null space has at most this many vectors, all are computed: the largest dropped
+  /// singular value is bounded by ‖H Q‖_F (Q an orthonormal basis of them: H then has that many
+  /// eigenvalues within the bound), and SLEPc, with them deflated, finds the smallest kept one;
+  /// above it, largest_dropped and smallest_kept stay 0 (not computed) and the inertia counts
+  /// at kCertainMargin·t and t / kCertainMargin are the evidence.
   Eigen::Index full_basis_limit = 256;
-  /// Compute the smallest kept singular value with SLEPc (the evidence); false: counts only.
+  /// Compute the smallest kept singular value with SLEPc when the null space is whole.
   bool smallest_kept = true;
 };
 
@@ -36,9 +39,15 @@ struct DistributedRank {
   /// The decision in the serial form: rank, threshold, largest (σ_max, from the caller),
   /// smallest_kept (σ_r from SLEPc, 0 when not computed or not verified), largest_dropped (the
   /// bound above, 0 when not computed); `sparse` is true, so its status is close or unproven
-  /// as for the serial sparse QR (a factorisation's pivots bound no singular value).
+  /// as for the serial sparse QR.
   linalg::RankDecision decision;
-  Eigen::Index null_pivots = 0;   ///< MUMPS's null pivots of H (INFOG(28)): m + n − 2·rank
+  /// H's eigenvalues within the threshold, m + n − 2·rank (rank = the negative eigenvalues of
+  /// H + t·I, t the threshold, from the inertia of its LDLᵀ factorisation).
+  Eigen::Index null_pivots = 0;
+  /// The same count at kCertainMargin·t and t / kCertainMargin: equal to the rank when no
+  /// singular value lies within two decades of the threshold on that side (the decision's gap
+  /// is then at least kCertainMargin²; it is what the counts prove without singular values).
+  Eigen::Index rank_above_margin = 0, rank_below_margin = 0;
   bool smallest_kept_verified = false;  ///< SLEPc's σ_r passed its residual check
   double smallest_kept_residual = 0.0;  ///< ‖H u − σ_r u‖ / (σ_max ‖u‖) of its singular vector pair u
   bool dropped_bounded = false;         ///< largest_dropped is the bound of the whole null space
@@ -64,7 +73,7 @@ struct DistributedRank {
 /// `threshold` (the serial rule's decision: linalg::sparse_rank_threshold) are read on rank 0
 /// only, where `a` may be null elsewhere; rank 0 scatters the rows of H. Throws kinestat::Error
 /// (exit 3) when PETSc or MUMPS fails, std::bad_alloc when memory runs out, and
-/// kinestat::Error when the null pivots are not paired (an odd count: the decision is ambiguous).
+/// kinestat::Error when MUMPS fails otherwise.
 DistributedRank distributed_rank(const Eigen::SparseMatrix<double>* a, const linalg::RankDecision& threshold,
                                  const DistributedRankOptions& options = {});
 
