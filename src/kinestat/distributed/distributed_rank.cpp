@@ -225,11 +225,6 @@ void smallest_kept(Mat h, Mat factor, double shift, std::vector<Vec>& null_space
   KINESTAT_PETSC_CHECK(EPSSolve(eps));
   PetscInt converged = 0;
   KINESTAT_PETSC_CHECK(EPSGetConverged(eps, &converged));
-  if (std::getenv("KINESTAT_PETSC_TRACEBACK")) {
-    PetscInt its = 0;
-    EPSGetIterationNumber(eps, &its);
-    std::fprintf(stderr, "converged %d after %d restarts\n", static_cast<int>(converged), static_cast<int>(its));
-  }
   KINESTAT_PETSC_CHECK(MatCreateVecs(h, w.out(), u.out()));
   KINESTAT_PETSC_CHECK(VecDuplicate(u, residual.out()));
   double best = 0.0, best_residual = 0.0;
@@ -246,7 +241,6 @@ void smallest_kept(Mat h, Mat factor, double shift, std::vector<Vec>& null_space
     KINESTAT_PETSC_CHECK(VecNorm(u, NORM_2, &norm));
     if (norm == 0.0) continue;
     const double relative = r / (largest * norm);
-    if (std::getenv("KINESTAT_PETSC_TRACEBACK")) std::fprintf(stderr, "mu %g lambda %g residual %g\n", real, lambda, relative);
     if (relative > kDistributedSingularResidual) continue;
     if (best == 0.0 || std::abs(lambda) < best) {
       best = std::abs(lambda);
@@ -446,9 +440,6 @@ DistributedRank distributed_rank(const Eigen::SparseMatrix<double>* a, const lin
   }
   if (options.smallest_kept && d.rank > 0 && complete == 1) smallest_kept(h, factor, t, null_space, d.largest, result);
   result.evidence_seconds = MPI_Wtime() - clock;
-  if (std::getenv("KINESTAT_PETSC_TRACEBACK"))
-    std::fprintf(stderr, "residual %g seconds: assembly %.2f factor %.2f vectors %.2f (%ld) evidence %.2f\n", result.null_vector_residual, result.assembly_seconds,
-                 result.factor_seconds, result.vector_seconds, static_cast<long>(result.null_vectors_computed), result.evidence_seconds);
   gather_memory();
   return result;
 }

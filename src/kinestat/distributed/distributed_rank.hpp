@@ -28,7 +28,7 @@ struct DistributedRankOptions {
   /// eigenvalues within the bound), and SLEPc, with them deflated, finds the smallest kept one;
   /// above it, largest_dropped and smallest_kept stay 0 (not computed) and the inertia counts
   /// at kCertainMargin·t and t / kCertainMargin are the evidence.
-  Eigen::Index full_basis_limit = 256;
+  Eigen::Index full_basis_limit = 64;
   /// Compute the smallest kept singular value with SLEPc when the null space is whole.
   bool smallest_kept = true;
 };

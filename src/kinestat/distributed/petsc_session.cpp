@@ -11,7 +11,8 @@ namespace kinestat::distributed {
 
 PetscSession::PetscSession() {
   if (SlepcInitializeNoArguments() != 0) throw std::runtime_error("PETSc/SLEPc could not be initialised");
-  // Errors come back as codes; the backend turns them into exceptions with PETSc's message.
+  // Errors come back as codes; the backend turns them into exceptions with PETSc's message
+  // (KINESTAT_PETSC_TRACEBACK set in the environment: PETSc prints its own traceback too).
   if (std::getenv("KINESTAT_PETSC_TRACEBACK") == nullptr) PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
   MPI_Comm_rank(PETSC_COMM_WORLD, &rank_);
   MPI_Comm_size(PETSC_COMM_WORLD, &size_);
