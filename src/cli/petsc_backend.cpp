@@ -52,11 +52,11 @@ nlohmann::ordered_json backend_json(const distributed::DistributedRank& b) {
   nlohmann::ordered_json j;
   j["name"] = "petsc";
   j["processes"] = b.processes;
-  j["solver"] = "MUMPS LDL^T of [[0, D], [D^T, 0]] + t I: rank = its negative pivots (Sylvester's inertia); "
+  j["solver"] = "MUMPS LDL^T of [[0, D], [D^T, 0]] + s I, s = 100 x threshold: rank = its negative pivots (Sylvester's inertia); "
                 "SLEPc Krylov-Schur for the smallest kept value";
   j["null_space_dimension"] = b.null_pivots;
+  j["shift"] = b.shift;
   j["rank_above_margin"] = b.rank_above_margin;
-  j["rank_below_margin"] = b.rank_below_margin;
   j["smallest_kept_verified"] = b.smallest_kept_verified;
   j["smallest_kept_residual"] = b.smallest_kept_residual;
   j["largest_dropped_bounded"] = b.dropped_bounded;
@@ -80,12 +80,12 @@ std::string backend_text(const distributed::DistributedRank& b) {
   for (std::size_t p = 0; p < b.peak_memory.size(); ++p)
     peak += fmt::format("{}{:.0f} MB", p == 0 ? "" : ", ", static_cast<double>(b.peak_memory[p]) / 1e6);
   return fmt::format(
-      "backend: petsc on {} process(es): rank = negative pivots of MUMPS's LDL^T of [[0, D], [D^T, 0]] + t I; "
-      "rank at 100 t: {}, at t/100: {}; smallest kept value by SLEPc {}; null vectors computed {} (largest relative "
+      "backend: petsc on {} process(es): rank = negative pivots of MUMPS's LDL^T of [[0, D], [D^T, 0]] + s I, s = {:.3g} "
+      "(100 x threshold); rank at 100 s: {}; smallest kept value by SLEPc {}; null vectors computed {} (largest relative "
       "residual {:.1e}); largest dropped {}\n"
       "  time: assembly {:.2f} s, factorisation {:.2f} s, null vectors {:.2f} s, smallest kept {:.2f} s; peak memory per "
       "process {}; MUMPS {} MB max per process, {} MB in all\n",
-      b.processes, b.rank_above_margin, b.rank_below_margin,
+      b.processes, b.shift, b.rank_above_margin,
       b.smallest_kept_verified ? "verified" : "not computed (the null space is computed whole only up to 64 vectors)", b.null_vectors_computed,
       b.null_vector_residual, b.dropped_bounded ? "bounded by the whole null space" : "not computed", b.assembly_seconds,
       b.factor_seconds, b.vector_seconds, b.evidence_seconds, peak, b.factor_megabytes_max, b.factor_megabytes_total);

@@ -49,11 +49,6 @@ inline constexpr double kFreeVariableResidual = 0x1p22 * kEpsilon;
 /// The SVD's self-check: ‖A − U Σ Vᵀ‖ and the orthonormality of U and V (on probe vectors)
 /// pass below this, relative to max(1, ‖A‖) (2^19 ε ≈ 1.2e-10).
 inline constexpr double kSvdResidualTolerance = 0x1p19 * kEpsilon;
-/// The distributed backend (src/kinestat/distributed) accepts SLEPc's smallest kept singular
-/// value σ_r when its singular vector pair u satisfies ‖H u − σ_r u‖ ≤ this × σ_max ‖u‖, H the
-/// Jordan–Wielandt matrix [[0, A], [Aᵀ, 0]] (2^26 ε ≈ 1.5e-8: the eigensolver's own tolerance
-/// is 1e-10 relative, and the check must not reject a pair that rounding alone perturbs).
-inline constexpr double kDistributedSingularResidual = 0x1p26 * kEpsilon;
 /// Row and column equilibration stops when log2 of every row and column maximum is within this
 /// of 0 (not a rounding level: equilibration only improves conditioning and changes no rank).
 inline constexpr double kEquilibrationTolerance = 1e-3;

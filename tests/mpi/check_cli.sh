@@ -21,7 +21,7 @@ assert petsc["method"] == "petsc_mumps" and serial["method"] == "sparse_qr"
 assert petsc["rank_decision"]["threshold"] == serial["rank_decision"]["threshold"]
 backend = petsc["backend"]
 assert backend["processes"] == 2, backend
-assert backend["rank_above_margin"] == backend["rank_below_margin"] == petsc["rank"], backend
+assert backend["rank_above_margin"] == petsc["rank"], backend
 assert len(backend["measured"]["peak_memory_bytes"]) == 2, backend
 print("serial and petsc agree:", petsc["rank"], petsc["mechanisms"], petsc["self_stresses"])
 PY

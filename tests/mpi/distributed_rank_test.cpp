@@ -46,11 +46,9 @@ DistributedFrameworkResult check_lattice(const framework::FrameworkModel& model,
     EXPECT_EQ(r.analysis.mechanisms, serial.mechanisms) << name;
     EXPECT_EQ(r.analysis.self_stresses, serial.self_stresses) << name;
     EXPECT_EQ(r.analysis.decision.threshold, serial.decision.threshold) << name;
-    // The evidence: no singular value within two decades of the threshold on either side (the
-    // inertia counts), and where the whole null space is computed, a verified smallest kept
-    // singular value well above the threshold.
+    // The evidence: no singular value in (100 t, 10⁴ t] (the inertia count at 10⁴ t), and where
+    // the whole null space is computed, a verified smallest kept singular value well above t.
     EXPECT_EQ(r.backend.rank_above_margin, r.analysis.rank) << name;
-    EXPECT_EQ(r.backend.rank_below_margin, r.analysis.rank) << name;
     if (r.backend.dropped_bounded) {
       EXPECT_TRUE(r.backend.smallest_kept_verified) << name;
       EXPECT_GT(r.analysis.decision.smallest_kept, 1e3 * r.analysis.decision.threshold) << name;

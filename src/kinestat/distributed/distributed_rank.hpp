@@ -1,12 +1,12 @@
 #pragma once
 // The rank of a large sparse matrix A (m × n) decided on many processes. The symmetric
 // Jordan–Wielandt matrix H = [[0, A], [Aᵀ, 0]] has eigenvalues ±σ_i(A) and zeros, so by
-// Sylvester's law of inertia H + t·I has one negative eigenvalue per singular value above t:
-// MUMPS's LDLᵀ factorisation of H + t·I (through PETSc, t the serial rule's absolute
-// threshold) gives the rank as its count of negative pivots. The same count at 100·t and t/100
-// shows the gap; inverse iteration with the factor gives null vectors of A (mechanisms) and of
-// Aᵀ (self-stresses), and SLEPc's Krylov–Schur, with the null space deflated, the smallest
-// kept singular value (docs/scaling.md, "The distributed rank decision").
+// Sylvester's law of inertia H + s·I has one negative eigenvalue per singular value above s:
+// MUMPS's LDLᵀ factorisation of H + s·I (through PETSc; s = 100 × the serial rule's absolute
+// threshold, see DistributedRank::shift) gives the rank as its count of negative pivots. The
+// same count at 100·s shows the gap; inverse iteration with the factor gives null vectors of A
+// (mechanisms) and of Aᵀ (self-stresses), and SLEPc's Krylov–Schur, with the null space
+// deflated, the smallest kept singular value (docs/scaling.md, "The distributed rank decision").
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
@@ -15,8 +15,17 @@
 #include <vector>
 
 #include "kinestat/linalg/rank_decision.hpp"
+#include "kinestat/tolerances.hpp"
 
 namespace kinestat::distributed {
+
+/// The backend accepts SLEPc's smallest kept singular value σ_r when its singular vector pair u
+/// satisfies ‖H u − σ_r u‖ ≤ this × σ_max ‖u‖, H the Jordan–Wielandt matrix [[0, A], [Aᵀ, 0]]
+/// (2^26 ε ≈ 1.5e-8: the eigensolver's own tolerance is 1e-10 relative, and the check must not
+/// reject a pair that rounding alone perturbs). Relative, dimensionless. Kept with the backend,
+/// not in kinestat/tolerances.hpp, only so that this optional library changes no header of the
+/// serial build; it belongs there when the backend is merged.
+inline constexpr double kDistributedSingularResidual = 0x1p26 * kEpsilon;
 
 /// What the distributed decision computes besides the rank.
 struct DistributedRankOptions {
@@ -26,8 +35,8 @@ struct DistributedRankOptions {
   /// When H's null space has at most this many vectors, all are computed: the largest dropped
   /// singular value is bounded by ‖H Q‖_F (Q an orthonormal basis of them: H then has that many
   /// eigenvalues within the bound), and SLEPc, with them deflated, finds the smallest kept one;
-  /// above it, largest_dropped and smallest_kept stay 0 (not computed) and the inertia counts
-  /// at kCertainMargin·t and t / kCertainMargin are the evidence.
+  /// above it, largest_dropped and smallest_kept stay 0 (not computed) and the inertia count
+  /// at kCertainMargin × the shift is the evidence.
   Eigen::Index full_basis_limit = 64;
   /// Compute the smallest kept singular value with SLEPc when the null space is whole.
   bool smallest_kept = true;
@@ -41,13 +50,16 @@ struct DistributedRank {
   /// bound above, 0 when not computed); `sparse` is true, so its status is close or unproven
   /// as for the serial sparse QR.
   linalg::RankDecision decision;
-  /// H's eigenvalues within the threshold, m + n − 2·rank (rank = the negative eigenvalues of
-  /// H + t·I, t the threshold, from the inertia of its LDLᵀ factorisation).
+  /// H's eigenvalues below the shift in magnitude, m + n − 2·rank (rank = the negative
+  /// eigenvalues of H + s·I from the inertia of its LDLᵀ factorisation).
   Eigen::Index null_pivots = 0;
-  /// The same count at kCertainMargin·t and t / kCertainMargin: equal to the rank when no
-  /// singular value lies within two decades of the threshold on that side (the decision's gap
-  /// is then at least kCertainMargin²; it is what the counts prove without singular values).
-  Eigen::Index rank_above_margin = 0, rank_below_margin = 0;
+  /// The shift s = kCertainMargin × the threshold t at which the rank is counted (absolute):
+  /// an indefinite LDLᵀ does not resolve eigenvalues of H as small as t itself, so the count is
+  /// the rank at t unless a singular value lies in (t, s] (distributed_rank.cpp).
+  double shift = 0.0;
+  /// The same count at kCertainMargin·s: equal to the rank when no singular value lies in
+  /// (s, kCertainMargin·s], the evidence the counts give without singular values.
+  Eigen::Index rank_above_margin = 0;
   bool smallest_kept_verified = false;  ///< SLEPc's σ_r passed its residual check
   double smallest_kept_residual = 0.0;  ///< ‖H u − σ_r u‖ / (σ_max ‖u‖) of its singular vector pair u
   bool dropped_bounded = false;         ///< largest_dropped is the bound of the whole null space
