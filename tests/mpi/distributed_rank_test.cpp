@@ -67,7 +67,9 @@ DistributedFrameworkResult check_lattice(const framework::FrameworkModel& model,
     if (modes.cols() > 0) {
       EXPECT_LT((modes.transpose() * modes - Eigen::MatrixXd::Identity(modes.cols(), modes.cols())).norm(), 1e-10) << name;
     }
-    EXPECT_LT(r.backend.null_vector_residual, 1e-10) << name;
+    // The null vectors of H from inverse iteration: residual within the shift (the LDLᵀ's
+    // backward error, measured 1e-9 σ_max on the cubic lattice, is what limits it).
+    EXPECT_LT(r.backend.null_vector_residual, r.backend.shift / largest) << name;
     EXPECT_EQ(static_cast<int>(r.backend.peak_memory.size()), r.backend.processes) << name;
   }
   return r;
