@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "framework_test_support.hpp"
 #include "kinestat/framework/finite_motion.hpp"
@@ -169,6 +170,30 @@ TEST(SecondOrder, BricardOctahedronFlexesFinitely) {
     EXPECT_GE(o.trace.amplitude, 0.1 * a.length * (1 - 1e-6));
   }
   EXPECT_GE(traced, 1u);
+}
+
+// Every mode of the free Bricard octahedron, not only the flex: each is a combination of the
+// six rigid motions and the flex, all finite, so each must trace through 0.1 L with every
+// bar length kept (measured here from the positions) and D(c) at rank 18 - 7 = 11 all along
+// (a rank of 12 anywhere would leave only the rigid motions). Off the path the self-stress's
+// dependent row turns independent with a tiny singular value; the corrector lost closure at
+// steps 4-18 on six of the seven modes until it kept the path's rank.
+TEST(SecondOrder, BricardOctahedronEveryModeTracesWithTheRankOfThePath) {
+  const FrameworkModel model = load_example("bricard-octahedron.yaml");
+  const FrameworkResult a = analyse_framework(model);
+  ASSERT_EQ(a.modes.size(), 7u);
+  for (std::size_t k = 0; k < a.modes.size(); ++k) {
+    SCOPED_TRACE("mode " + std::to_string(k + 1));
+    const FiniteTrace trace = trace_motion(model, a, a.modes[k].velocities);
+    EXPECT_TRUE(trace.closed);
+    EXPECT_GE(trace.amplitude, 0.1 * a.length * (1 - 1e-6));
+    for (Eigen::Index r : trace.rank_along_path) EXPECT_EQ(r, 11);
+    for (const Eigen::MatrixXd& p : trace.positions)
+      for (const Element& e : model.elements) {
+        const double l0 = (model.nodes[e.nodes[1]].position - model.nodes[e.nodes[0]].position).norm();
+        EXPECT_NEAR((p.col(static_cast<Eigen::Index>(e.nodes[1])) - p.col(static_cast<Eigen::Index>(e.nodes[0]))).norm(), l0, 1e-10);
+      }
+  }
 }
 
 // The planar four-bar (no self-stress): nothing can block it at second order; a four-bar away

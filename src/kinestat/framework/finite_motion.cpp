@@ -121,24 +121,46 @@ std::pair<Eigen::Index, Eigen::MatrixXd> rank_and_null_space(const Eigen::Matrix
 
 // Newton corrector on the constraints, kept on the hyperplane through the predicted point
 // normal to the tangent (pseudo-arclength): minimum-norm least-squares steps, so a rank-deficient
-// D(c) (self-stresses) is no obstacle as long as the constraints stay consistent. Adds the
-// steps taken to `moved` (D̂'s units).
+// D(c) (self-stresses) is no obstacle as long as the constraints stay consistent. A step that
+// does not lower the residual is halved (up to kCorrectorHalvings times, as the network tracer
+// does). The steps use the `path_rank` largest singular values of D(c) only (plus the
+// tangent's row), the rank on the path where this step began: off the path a self-stress's
+// dependent rows become independent with a singular value as small as the distance to the
+// path, and steps along it overshoot, while the stress's share of the defect is quadratic in
+// that distance and vanishes as the other rows converge. Bricard's octahedron (rank 11 of 12
+// rows all along its flex) lost closure at step 4 without both. Adds the steps taken to
+// `moved` (D̂'s units).
+constexpr int kCorrectorIterations = 40;
+constexpr int kCorrectorHalvings = 12;
+
 double correct(DisplacedConfiguration& now, const FrameworkModel& model, const FrameworkResult& a, const Eigen::VectorXd& tangent,
-               Eigen::VectorXd& moved) {
-  double residual = largest(closure(model, now, a));
-  for (int iteration = 0; iteration < 20 && residual > kCorrectorTarget; ++iteration) {
+               Eigen::Index path_rank, Eigen::VectorXd& moved) {
+  Eigen::VectorXd defect = closure(model, now, a);
+  double residual = largest(defect);
+  for (int iteration = 0; iteration < kCorrectorIterations && residual > kCorrectorTarget; ++iteration) {
     Eigen::MatrixXd system(a.m + 1, a.n);
     system << jacobian_at(model, a, now), tangent.transpose();
     Eigen::VectorXd rhs = Eigen::VectorXd::Zero(a.m + 1);
-    rhs.head(a.m) = -closure(model, now, a);
-    const Eigen::VectorXd step = system.completeOrthogonalDecomposition().solve(rhs);
-    DisplacedConfiguration trial = now;
-    displace(trial, a, step);
-    const double next = largest(closure(model, trial, a));
-    if (!(next < residual)) break;  // stagnated at rounding level (or diverging)
-    now = std::move(trial);
-    moved += step;
-    residual = next;
+    rhs.head(a.m) = -defect;
+    const linalg::SvdAnalysis svd = linalg::analyse_svd(system);
+    const Eigen::Index kept = std::min(svd.rank.rank, path_rank + 1);
+    const Eigen::VectorXd step = svd.v.leftCols(kept) *
+                                 (svd.u.leftCols(kept).transpose() * rhs).cwiseQuotient(svd.singular_values.head(kept));
+    bool improved = false;
+    for (int halving = 0; halving <= kCorrectorHalvings && !improved; ++halving) {
+      const Eigen::VectorXd scaled_step = std::ldexp(1.0, -halving) * step;
+      DisplacedConfiguration trial = now;
+      displace(trial, a, scaled_step);
+      Eigen::VectorXd next = closure(model, trial, a);
+      if (largest(next) < residual) {
+        now = std::move(trial);
+        moved += scaled_step;
+        defect = std::move(next);
+        residual = largest(defect);
+        improved = true;
+      }
+    }
+    if (!improved) break;  // stagnated at rounding level (or no descent)
   }
   return residual;
 }
@@ -181,7 +203,7 @@ FiniteTrace trace_motion(const FrameworkModel& model, const FrameworkResult& a, 
     tangent = projected.normalized();
     Eigen::VectorXd moved = step_length * tangent;  // this step's chord, D̂'s units
     displace(now, a, moved);
-    const double residual = correct(now, model, a, tangent, moved);
+    const double residual = correct(now, model, a, tangent, rank, moved);
     if (residual > kTraceResidual) {
       trace.closed = false;
       trace.failed_step = static_cast<std::size_t>(step) + 1;

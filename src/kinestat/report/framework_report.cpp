@@ -234,7 +234,7 @@ std::string framework_classification(const FrameworkResult& a) {
 
 nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const FrameworkResult& a, const design::Verdict* verdict,
                                              const framework::GenericFramework* generic) {
-  nlohmann::ordered_json j;
+  nlohmann::ordered_json j = json_object(48);
   j["kind"] = "framework";
   if (!model.name.empty()) j["name"] = model.name;
   j["space"] = model.dimension == 2 ? "planar" : "spatial";
@@ -297,7 +297,7 @@ nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const 
     for (Eigen::Index i = 0; i < resultants.size(); ++i) {
       if (compact(a) && resultants(i) == 0.0) continue;
       const auto& ref = row_ref(a, i);
-      nlohmann::ordered_json entry;
+      nlohmann::ordered_json entry = json_object(3);
       entry["element"] = model.elements[ref.element].name;
       entry["deformation"] = deformation_name(model, ref);
       entry["value"] = rounded(resultants(i));
@@ -308,7 +308,7 @@ nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const 
   j["modes"] = nlohmann::ordered_json::array();
   for (std::size_t k = 0; k < a.modes.size(); ++k) {
     const auto& mode = a.modes[k];
-    nlohmann::ordered_json m;
+    nlohmann::ordered_json m = json_object(8);
     m["velocities"] = velocities_by_node(model, a, mode.velocities);
     m["moving"] = nlohmann::ordered_json::array();
     for (Eigen::Index col : mode.moving) m["moving"].push_back(framework_column_label(model, a, col));
@@ -324,7 +324,7 @@ nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const 
     j["modes"].push_back(std::move(m));
   }
   if (a.prestress.tested) {
-    nlohmann::ordered_json p;
+    nlohmann::ordered_json p = json_object(8);
     p["stable"] = a.prestress.stable;
     p["nonrigid_modes"] = a.prestress.nonrigid_modes;
     p["rigid_motions"] = a.prestress.rigid_motions;
@@ -335,7 +335,7 @@ nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const 
   }
   j["stresses"] = nlohmann::ordered_json::array();
   for (const auto& state : a.stresses) {
-    nlohmann::ordered_json s;
+    nlohmann::ordered_json s = json_object(4);
     s["resultants"] = resultants_json(state.resultants);
     s["candidates"] = nlohmann::ordered_json::array();
     for (Eigen::Index row : state.candidates) s["candidates"].push_back(framework_row_label(model, a, row));
@@ -354,7 +354,7 @@ nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const 
     j["constrain"].push_back(
         {{"node", model.nodes[ref.node].name}, {"coordinate", framework::kSlotNames[static_cast<std::size_t>(ref.slot)]}});
   }
-  if (verdict) return lead_with_verdict(*verdict, j, model.units);
+  if (verdict) return lead_with_verdict(*verdict, std::move(j), model.units);
   return j;
 }
 

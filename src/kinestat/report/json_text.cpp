@@ -1,7 +1,6 @@
 #include "kinestat/report/json_text.hpp"
 
-#include <fmt/format.h>
-
+#include <charconv>
 #include <cmath>
 #include <string>
 
@@ -15,10 +14,21 @@ std::string json_text(const nlohmann::ordered_json& value, int indent) {
   return text;
 }
 
+nlohmann::ordered_json json_object(std::size_t keys) {
+  nlohmann::ordered_json object = nlohmann::ordered_json::object();
+  object.get_ref<nlohmann::ordered_json::object_t&>().reserve(keys);
+  return object;
+}
+
 double rounded_for_report(double value) {
   if (!std::isfinite(value)) return value;
   if (std::abs(value) < kPrintedZero) return 0.0;
-  const double r = std::stod(fmt::format("{:.10g}", value));
+  // Ten significant digits and back, both correctly rounded (to_chars / from_chars: the same
+  // digits as "{:.10g}" and strtod, without a string allocation for each of 10^5-10^6 numbers).
+  char digits[32];
+  const auto written = std::to_chars(digits, digits + sizeof digits, value, std::chars_format::general, 10);
+  double r = 0.0;
+  std::from_chars(digits, written.ptr, r);
   return r == 0.0 ? 0.0 : r;
 }
 

@@ -12,6 +12,12 @@ namespace kinestat::report {
 /// from elsewhere, such as the command line) become U+FFFD instead of an exception.
 std::string json_text(const nlohmann::ordered_json& value, int indent = 2);
 
+/// An empty JSON object with room for `keys` keys. nlohmann's ordered_map is a std::vector of
+/// (const key, value) pairs whose move may throw, so each time an object grows, every value
+/// already in it is copied: an object that received a large array before its other keys copied
+/// that array again at each growth (a tenth of a report with all its vectors).
+nlohmann::ordered_json json_object(std::size_t keys);
+
 /// `value` to ten significant digits, as every report prints numbers: enough to read, and stable
 /// against last-bit noise of the SVD; below kPrintedZero in magnitude, and -0, printed as 0.
 double rounded_for_report(double value);

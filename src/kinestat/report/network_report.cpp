@@ -579,7 +579,7 @@ Json network_report_json(const network::Model& model, const NetworkResult& r, co
                      {"MD", rational_matrix_json(r.MD)},   {"AD", rational_matrix_json(r.AD)},
                      {"MN", rational_matrix_json(r.MN)},   {"AN", rational_matrix_json(r.AN)}};
   }
-  if (options.verdict) return lead_with_verdict(*options.verdict, j, model.units);
+  if (options.verdict) return lead_with_verdict(*options.verdict, std::move(j), model.units);
   return j;
 }
 
@@ -681,7 +681,7 @@ nlohmann::ordered_json sparse_network_report_json(const network::Model& model, c
     j["pairs"] = rows;
   }
   j["not_computed"] = sparse_left_out(r, pairs);
-  if (verdict) return lead_with_verdict(*verdict, j, model.units);
+  if (verdict) return lead_with_verdict(*verdict, std::move(j), model.units);
   return j;
 }
 

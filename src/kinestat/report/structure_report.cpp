@@ -273,7 +273,7 @@ std::string structure_report_json(const StructureReport& report) {
   } else {
     j["transformations"] = nullptr;
   }
-  if (report.verdict) return json_text(lead_with_verdict(*report.verdict, j, report.units));
+  if (report.verdict) return json_text(lead_with_verdict(*report.verdict, std::move(j), report.units));
   return json_text(j);
 }
 

@@ -3,8 +3,10 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <utility>
 
 #include "kinestat/io/printable_text.hpp"
+#include "kinestat/report/json_text.hpp"
 #include "kinestat/report/rank_status_text.hpp"
 #include "kinestat/tolerances.hpp"
 
@@ -100,11 +102,12 @@ Json verdict_json(const design::Verdict& v) {
   return j;
 }
 
-Json lead_with_verdict(const design::Verdict& verdict, const Json& report, const std::string& units) {
-  Json j;
+Json lead_with_verdict(const design::Verdict& verdict, Json report, const std::string& units) {
+  // Room for callers' further keys too (json_object: growing an object copies its values).
+  Json j = json_object(report.size() + 16);
   j["verdict"] = verdict_json(verdict);
   if (!units.empty()) j["units"] = units;
-  for (const auto& [key, value] : report.items()) j[key] = value;
+  for (auto it = report.begin(); it != report.end(); ++it) j[it.key()] = std::move(it.value());
   return j;
 }
 

@@ -13,8 +13,9 @@ namespace kinestat::report {
 /// The `verdict` object of a JSON report (keys documented in docs/report.md).
 nlohmann::ordered_json verdict_json(const design::Verdict& verdict);
 
-/// `report` with `"verdict"` as its first key (and `"units"` after it when `units` is not empty).
-nlohmann::ordered_json lead_with_verdict(const design::Verdict& verdict, const nlohmann::ordered_json& report,
+/// `report` with `"verdict"` as its first key (and `"units"` after it when `units` is not empty);
+/// the report's values are moved, not copied.
+nlohmann::ordered_json lead_with_verdict(const design::Verdict& verdict, nlohmann::ordered_json report,
                                          const std::string& units = {});
 
 /// The text block: "Verdict: ..." and what follows, ending with a blank line.
