@@ -14,6 +14,10 @@ packages=(
   chromium
   # The Python module (pybind11) and its tests, for Debian's /usr/bin/python3.
   python3-dev python3-pybind11 python3-numpy python3-pytest
+  # The optional distributed backend (`analyze --backend petsc`, cmake/KinestatPetsc.cmake):
+  # PETSc with MUMPS, SLEPc and OpenMPI. CI builds it in the release preset and runs its tests
+  # (ctest label `mpi`, under mpirun -n 2); a build without them simply leaves it out.
+  petsc-dev slepc-dev libopenmpi-dev openmpi-bin
 )
 # Node.js and npm build the HTML report viewer. Machines that already have them (for example
 # NodeSource's nodejs, which conflicts with Debian's npm package) keep their own.

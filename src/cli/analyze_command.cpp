@@ -19,10 +19,15 @@ void register_analyze(CLI::App& app, Action& action) {
   command->add_option("--tolerance", options->tolerance,
                       "Relative rank tolerance (fraction of the largest singular value); default max(rows,cols)*eps")
       ->check(positive_finite_number());
+  command->add_option("--backend", options->backend,
+                      "serial (default), or petsc: frameworks' counts decided by PETSc/MUMPS on every process of "
+                      "`mpirun -n P kinestat analyze --backend petsc FILE` (docs/scaling.md)")
+      ->check(CLI::IsMember({"serial", "petsc"}));
   register_network_options(*command);
   register_framework_options(*command);
   command->callback([options, &action] {
     action = [options] {
+      if (options->backend == "petsc") return run_petsc_analysis(*options);
       const InputFormat format = input_format(options->model_path);
       if (format == InputFormat::spacar) return run_framework_analysis(*options, read_spacar_model(options->model_path), options->model_path);
       if (format != InputFormat::kinestat)

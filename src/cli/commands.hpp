@@ -26,6 +26,7 @@ struct CommonOptions {
   bool json = false;
   std::string output_path;  ///< empty: standard output
   std::optional<double> tolerance;  ///< relative rank tolerance (default: the LAPACK rule)
+  std::string backend = "serial";  ///< `analyze --backend`: serial, or petsc (under mpirun)
 };
 
 /// Parses the command line, runs the chosen subcommand and returns the exit code: 0 success,
@@ -78,5 +79,8 @@ std::vector<std::string> given_framework_options();
 /// used by a framework model".
 void reject_options(const std::vector<std::string>& given, const std::string& kind, const std::string& path);
 int run_framework_analysis(const CommonOptions& options, const framework::FrameworkModel& model, const std::string& path);
+/// `analyze --backend petsc` (petsc_backend.cpp): initialises MPI and PETSc, reads the model on
+/// rank 0 and decides its counts on every process; without the backend built, an error (exit 2).
+int run_petsc_analysis(const CommonOptions& options);
 
 }  // namespace kinestat::cli

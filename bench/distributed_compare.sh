@@ -1,0 +1,33 @@
+#!/bin/sh
+# Serial sparse path vs the distributed backend on P = 1 and P = 2 processes, side by side in
+# one run (bench/README.md, "Distributed backend"): wall time and peak memory per process.
+# Serial: /usr/bin/time -v of `kinestat analyze MODEL --json`; P processes: the same for mpirun
+# (whole run) and the backend's own report (peak resident memory of each rank, MUMPS's memory).
+# Usage: bench/distributed_compare.sh KINESTAT MODEL...
+set -eu
+kinestat=$1
+shift
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+export OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1
+work=$(mktemp -d)
+for model in "$@"; do
+  /usr/bin/time -f "%e %M" -o "$work/time" "$kinestat" analyze "$model" --json > "$work/serial.json"
+  read -r seconds kb < "$work/time"
+  /usr/bin/python3 -c "
+import json, sys
+j = json.load(open('$work/serial.json'))
+print(f\"| {sys.argv[1]} | serial sparse QR | {j['rows']} x {j['cols']} | rank {j['rank']}, {j['mechanisms']} / {j['self_stresses']} | $seconds s | {$kb / 1024:.0f} MB |\")
+" "$(basename "$model")"
+  for p in 1 2; do
+    /usr/bin/time -f "%e %M" -o "$work/time" mpirun -n "$p" "$kinestat" analyze --backend petsc "$model" --json > "$work/petsc.json"
+    read -r seconds kb < "$work/time"
+    /usr/bin/python3 -c "
+import json, sys
+j = json.load(open('$work/petsc.json'))
+b = j['backend']; m = b['measured']; s = m['seconds']
+peaks = ' + '.join(f'{x / 1e6:.0f}' for x in m['peak_memory_bytes'])
+print(f\"| {sys.argv[1]} | petsc P = $p | {j['rows']} x {j['cols']} | rank {j['rank']}, {j['mechanisms']} / {j['self_stresses']} | $seconds s (factorisations {s['factorisation']:.1f} s) | {peaks} MB per rank; MUMPS {m['mumps_megabytes_max']} MB max |\")
+" "$(basename "$model")"
+  done
+done
+rm -rf "$work"

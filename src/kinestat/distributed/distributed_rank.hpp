@@ -1,0 +1,92 @@
+#pragma once
+// The rank of a large sparse matrix A (m × n) decided on many processes. The symmetric
+// Jordan–Wielandt matrix H = [[0, A], [Aᵀ, 0]] has eigenvalues ±σ_i(A) and zeros, so by
+// Sylvester's law of inertia H + s·I has one negative eigenvalue per singular value above s:
+// MUMPS's LDLᵀ factorisation of H + s·I (through PETSc; s = 100 × the serial rule's absolute
+// threshold, see DistributedRank::shift) gives the rank as its count of negative pivots. The
+// same count at 100·s shows the gap; inverse iteration with the factor gives null vectors of A
+// (mechanisms) and of Aᵀ (self-stresses), and SLEPc's Krylov–Schur, with the null space
+// deflated, the smallest kept singular value (docs/scaling.md, "The distributed rank decision").
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include <cstddef>
+#include <vector>
+
+#include "kinestat/linalg/rank_decision.hpp"
+#include "kinestat/tolerances.hpp"
+
+namespace kinestat::distributed {
+
+/// The backend accepts SLEPc's smallest kept singular value σ_r when its singular vector pair u
+/// satisfies ‖H u − σ_r u‖ ≤ this × σ_max ‖u‖, H the Jordan–Wielandt matrix [[0, A], [Aᵀ, 0]]
+/// (2^26 ε ≈ 1.5e-8: the eigensolver's own tolerance is 1e-10 relative, and the check must not
+/// reject a pair that rounding alone perturbs). Relative, dimensionless. Kept with the backend,
+/// not in kinestat/tolerances.hpp, only so that this optional library changes no header of the
+/// serial build; it belongs there when the backend is merged.
+inline constexpr double kDistributedSingularResidual = 0x1p26 * kEpsilon;
+
+/// What the distributed decision computes besides the rank.
+struct DistributedRankOptions {
+  /// Null vectors wanted: the first `vectors` of A's null space (mechanisms) and of Aᵀ's
+  /// (self-stresses); 0: none (counts and evidence only).
+  Eigen::Index vectors = 0;
+  /// When H's null space has at most this many vectors, all are computed: the largest dropped
+  /// singular value is bounded by ‖H Q‖_F (Q an orthonormal basis of them: H then has that many
+  /// eigenvalues within the bound), and SLEPc, with them deflated, finds the smallest kept one;
+  /// above it, largest_dropped and smallest_kept stay 0 (not computed) and the inertia count
+  /// at kCertainMargin × the shift is the evidence.
+  Eigen::Index full_basis_limit = 64;
+  /// Compute the smallest kept singular value with SLEPc when the null space is whole.
+  bool smallest_kept = true;
+};
+
+/// Outcome of a distributed rank decision. Counts are the same on every process; vectors and
+/// matrices are filled on rank 0 only.
+struct DistributedRank {
+  /// The decision in the serial form: rank, threshold, largest (σ_max, from the caller),
+  /// smallest_kept (σ_r from SLEPc, 0 when not computed or not verified), largest_dropped (the
+  /// bound above, 0 when not computed); `sparse` is true, so its status is close or unproven
+  /// as for the serial sparse QR.
+  linalg::RankDecision decision;
+  /// H's eigenvalues below the shift in magnitude, m + n − 2·rank (rank = the negative
+  /// eigenvalues of H + s·I from the inertia of its LDLᵀ factorisation).
+  Eigen::Index null_pivots = 0;
+  /// The shift s = kCertainMargin × the threshold t at which the rank is counted (absolute):
+  /// an indefinite LDLᵀ does not resolve eigenvalues of H as small as t itself, so the count is
+  /// the rank at t unless a singular value lies in (t, s] (distributed_rank.cpp).
+  double shift = 0.0;
+  /// The same count at kCertainMargin·s: equal to the rank when no singular value lies in
+  /// (s, kCertainMargin·s], the evidence the counts give without singular values.
+  Eigen::Index rank_above_margin = 0;
+  bool smallest_kept_verified = false;  ///< SLEPc's σ_r passed its residual check
+  double smallest_kept_residual = 0.0;  ///< ‖H u − σ_r u‖ / (σ_max ‖u‖) of its singular vector pair u
+  bool dropped_bounded = false;         ///< largest_dropped is the bound of the whole null space
+  /// Orthonormal bases (rank 0): the first `vectors` null vectors of A (n rows) and of Aᵀ (m rows).
+  Eigen::MatrixXd mechanisms, self_stresses;
+  /// Largest ‖H v‖ / (σ_max ‖v‖) over the null vectors of H computed (0 when none): the rounding
+  /// level when the decision is sound.
+  double null_vector_residual = 0.0;
+  Eigen::Index null_vectors_computed = 0;  ///< null vectors of H computed by MUMPS
+  int processes = 1;
+  /// Wall time, seconds: scattering and assembling H, the MUMPS analysis and factorisation,
+  /// the null vectors, SLEPc's smallest kept value.
+  double assembly_seconds = 0.0, factor_seconds = 0.0, vector_seconds = 0.0, evidence_seconds = 0.0;
+  /// MUMPS's own memory count, megabytes: the largest of any process (INFOG(21)) and the sum
+  /// over processes (INFOG(22)), as effectively used during the factorisation.
+  long long factor_megabytes_max = 0, factor_megabytes_total = 0;
+  /// Peak resident memory of each process, bytes (rank 0 only; index = MPI rank).
+  std::vector<std::size_t> peak_memory;
+};
+
+/// Decides the rank of `a` on all processes of PETSC_COMM_WORLD (collective; a PetscSession
+/// must be alive). `a` (non-dimensional and scaled as the serial path scales it) and
+/// `threshold` (the serial rule's decision: linalg::sparse_rank_threshold) are read on rank 0
+/// only, where `a` may be null elsewhere; rank 0 scatters the rows of H. Throws kinestat::Error
+/// (exit 3) when PETSc or MUMPS fails, std::bad_alloc when memory runs out, and
+/// kinestat::Error when MUMPS fails otherwise.
+DistributedRank distributed_rank(const Eigen::SparseMatrix<double>* a, const linalg::RankDecision& threshold,
+                                 const DistributedRankOptions& options = {});
+
+}  // namespace kinestat::distributed
