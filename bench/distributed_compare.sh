@@ -19,7 +19,7 @@ j = json.load(open('$work/serial.json'))
 print(f\"| {sys.argv[1]} | serial sparse QR | {j['rows']} x {j['cols']} | rank {j['rank']}, {j['mechanisms']} / {j['self_stresses']} | $seconds s | {$kb / 1024:.0f} MB |\")
 " "$(basename "$model")"
   for p in 1 2; do
-    /usr/bin/time -f "%e %M" -o "$work/time" mpirun -n "$p" "$kinestat" analyze --backend petsc "$model" --json > "$work/petsc.json"
+    /usr/bin/time -f "%e %M" -o "$work/time" mpirun -n "$p" "$kinestat" analyze --backend petsc --timings "$model" --json > "$work/petsc.json"
     read -r seconds kb < "$work/time"
     /usr/bin/python3 -c "
 import json, sys

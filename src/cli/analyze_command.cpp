@@ -23,6 +23,9 @@ void register_analyze(CLI::App& app, Action& action) {
                       "serial (default), or petsc: frameworks' counts decided by PETSc/MUMPS on every process of "
                       "`mpirun -n P kinestat analyze --backend petsc FILE` (docs/scaling.md)")
       ->check(CLI::IsMember({"serial", "petsc"}));
+  command->add_flag("--timings", options->timings,
+                    "With --backend petsc: add each stage's wall time and every process's peak memory to the report "
+                    "(they change from run to run, so the report is then not reproducible byte for byte)");
   register_network_options(*command);
   register_framework_options(*command);
   command->callback([options, &action] {

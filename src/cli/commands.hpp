@@ -27,6 +27,7 @@ struct CommonOptions {
   std::string output_path;  ///< empty: standard output
   std::optional<double> tolerance;  ///< relative rank tolerance (default: the LAPACK rule)
   std::string backend = "serial";  ///< `analyze --backend`: serial, or petsc (under mpirun)
+  bool timings = false;            ///< `analyze --timings`: the petsc backend's times and memory in the report
 };
 
 /// Parses the command line, runs the chosen subcommand and returns the exit code: 0 success,

@@ -48,7 +48,7 @@ framework::FrameworkModel read_framework(const CommonOptions& options) {
   return io::read_framework_model(model);
 }
 
-nlohmann::ordered_json backend_json(const distributed::DistributedRank& b) {
+nlohmann::ordered_json backend_json(const distributed::DistributedRank& b, bool timings) {
   nlohmann::ordered_json j;
   j["name"] = "petsc";
   j["processes"] = b.processes;
@@ -62,7 +62,9 @@ nlohmann::ordered_json backend_json(const distributed::DistributedRank& b) {
   j["largest_dropped_bounded"] = b.dropped_bounded;
   j["null_vectors_computed"] = b.null_vectors_computed;
   j["null_vector_residual"] = b.null_vector_residual;
-  // Measurements of this run: they change from run to run (everything else is reproducible).
+  // Measurements of this run change from run to run: only on request (--timings), so that the
+  // same input gives the same JSON.
+  if (!timings) return j;
   nlohmann::ordered_json measured;
   measured["seconds"] = {{"assembly", b.assembly_seconds},
                          {"factorisation", b.factor_seconds},
@@ -75,20 +77,24 @@ nlohmann::ordered_json backend_json(const distributed::DistributedRank& b) {
   return j;
 }
 
-std::string backend_text(const distributed::DistributedRank& b) {
+std::string backend_text(const distributed::DistributedRank& b, bool timings) {
   std::string peak;
   for (std::size_t p = 0; p < b.peak_memory.size(); ++p)
     peak += fmt::format("{}{:.0f} MB", p == 0 ? "" : ", ", static_cast<double>(b.peak_memory[p]) / 1e6);
-  return fmt::format(
+  std::string text = fmt::format(
       "backend: petsc on {} process(es): rank = negative pivots of MUMPS's LDL^T of [[0, D], [D^T, 0]] + s I, s = {:.3g} "
       "(100 x threshold); rank at 100 s: {}; smallest kept value by SLEPc {}; null vectors computed {} (largest relative "
-      "residual {:.1e}); largest dropped {}\n"
-      "  time: assembly {:.2f} s, factorisation {:.2f} s, null vectors {:.2f} s, smallest kept {:.2f} s; peak memory per "
-      "process {}; MUMPS {} MB max per process, {} MB in all\n",
+      "residual {:.1e}); largest dropped {}\n",
       b.processes, b.shift, b.rank_above_margin,
       b.smallest_kept_verified ? "verified" : "not computed (the null space is computed whole only up to 64 vectors)", b.null_vectors_computed,
-      b.null_vector_residual, b.dropped_bounded ? "bounded by the whole null space" : "not computed", b.assembly_seconds,
-      b.factor_seconds, b.vector_seconds, b.evidence_seconds, peak, b.factor_megabytes_max, b.factor_megabytes_total);
+      b.null_vector_residual, b.dropped_bounded ? "bounded by the whole null space" : "not computed");
+  if (timings)
+    text += fmt::format(
+        "  time: assembly {:.2f} s, factorisation {:.2f} s, null vectors {:.2f} s, smallest kept {:.2f} s; peak memory per "
+        "process {}; MUMPS {} MB max per process, {} MB in all\n",
+        b.assembly_seconds, b.factor_seconds, b.vector_seconds, b.evidence_seconds, peak, b.factor_megabytes_max,
+        b.factor_megabytes_total);
+  return text;
 }
 
 }  // namespace
@@ -144,14 +150,14 @@ int run_petsc_analysis(const CommonOptions& options) {
   if (options.json) {
     nlohmann::ordered_json j = report::framework_report_json(*model, result.analysis, &verdict, nullptr);
     j["method"] = "petsc_mumps";
-    j["backend"] = backend_json(result.backend);
+    j["backend"] = backend_json(result.backend, options.timings);
     emit(options, report::json_text(j));
   } else {
     std::string text = report::framework_report_text(*model, result.analysis, &verdict, nullptr);
     const std::string serial = "sparse QR, counts only";
     if (const std::size_t at = text.find(serial); at != std::string::npos)
       text.replace(at, serial.size(), fmt::format("MUMPS inertia on {} process(es), counts only", result.backend.processes));
-    emit(options, text + backend_text(result.backend));
+    emit(options, text + backend_text(result.backend, options.timings));
   }
   return 0;
 }

@@ -43,6 +43,11 @@ inline constexpr double kSparseToleranceFactor = 20.0;
 /// Pair and coupling systems of a network are ranked against the size of the whole network's
 /// forms, not their own, so a pair whose entries are all rounding noise gets rank 0 (2^19 ε ≈ 1.2e-10).
 inline constexpr double kPairRankRelative = 0x1p19 * kEpsilon;
+/// The distributed backend (kinestat/distributed) accepts SLEPc's smallest kept singular value
+/// σ_r when its singular vector pair u satisfies ‖H u − σ_r u‖ ≤ this × σ_max ‖u‖, H the
+/// Jordan–Wielandt matrix [[0, A], [Aᵀ, 0]] (2^26 ε ≈ 1.5e-8: the eigensolver's own tolerance is
+/// 1e-10 relative, and the check must not reject a pair that rounding alone perturbs).
+inline constexpr double kDistributedSingularResidual = 0x1p26 * kEpsilon;
 /// Column-pivoted QR (linalg::pivoted_column_order): remaining column norms within this
 /// fraction of the largest are a tie, taken in the columns' original order, so that rounding
 /// (a model moved, turned or rescaled) cannot pick among equally good rows to release or

@@ -22,7 +22,7 @@ assert petsc["rank_decision"]["threshold"] == serial["rank_decision"]["threshold
 backend = petsc["backend"]
 assert backend["processes"] == 2, backend
 assert backend["rank_above_margin"] == petsc["rank"], backend
-assert len(backend["measured"]["peak_memory_bytes"]) == 2, backend
+assert "measured" not in backend, backend  # only with --timings: the same input gives the same JSON
 print("serial and petsc agree:", petsc["rank"], petsc["mechanisms"], petsc["self_stresses"])
 PY
 # Text output names the backend.

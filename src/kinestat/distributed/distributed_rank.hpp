@@ -19,13 +19,6 @@
 
 namespace kinestat::distributed {
 
-/// The backend accepts SLEPc's smallest kept singular value σ_r when its singular vector pair u
-/// satisfies ‖H u − σ_r u‖ ≤ this × σ_max ‖u‖, H the Jordan–Wielandt matrix [[0, A], [Aᵀ, 0]]
-/// (2^26 ε ≈ 1.5e-8: the eigensolver's own tolerance is 1e-10 relative, and the check must not
-/// reject a pair that rounding alone perturbs). Relative, dimensionless. Kept with the backend,
-/// not in kinestat/tolerances.hpp, only so that this optional library changes no header of the
-/// serial build; it belongs there when the backend is merged.
-inline constexpr double kDistributedSingularResidual = 0x1p26 * kEpsilon;
 
 /// What the distributed decision computes besides the rank.
 struct DistributedRankOptions {
