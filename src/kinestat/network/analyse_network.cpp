@@ -253,24 +253,6 @@ Tolerances tolerance_for_rank(Tolerances t, const Eigen::VectorXd& singular_valu
   return t;
 }
 
-// The rank of the user's (rational) M^N modulo large primes is a certain lower bound of its
-// exact rank, and equal to it unless both primes divide every non-zero maximal minor. The
-// floating-point decisions follow it when they differ (a = C - (d l - m) by the identities),
-// unless `follow` is false (the user set the tolerance).
-void certify_ranks(NetworkResult& r, const RationalMatrix& user_mn, const UnitMatrices& solved, const Tolerances& base, bool follow) {
-  const linalg::ModularRank check = linalg::modular_rank(user_mn);
-  r.modular_check = ModularCheck{static_cast<int>(check.rank), check.primes, check.agreeing, false};
-  if (!follow || check.primes == 0 || check.rank == r.circulation.solution.rank.rank) return;
-  const Index m = check.rank, a = r.C - (static_cast<Index>(r.d) * r.l - m);
-  const Eigen::VectorXd motion_values = r.circulation.solution.singular_values;
-  const Eigen::VectorXd action_values = r.cutset_law.solution.singular_values;
-  r.circulation.solution = solve(solved.MN, false, tolerance_for_rank(base, motion_values, m), 0.0);
-  r.circuit_action.solution = solve(solved.MN.transpose(), false, tolerance_for_rank(base, motion_values, m), 0.0);
-  r.cutset_law.solution = solve(solved.AN, false, tolerance_for_rank(base, action_values, a), 0.0);
-  r.cutset_motion.solution = solve(solved.AN.transpose(), false, tolerance_for_rank(base, action_values, a), 0.0);
-  r.modular_check->followed = true;
-}
-
 bool choose_exact(const Model& model, Arithmetic arithmetic, std::string& reason) {
   switch (arithmetic) {
     case Arithmetic::exact: reason = "exact rational arithmetic (requested)"; return true;
@@ -303,32 +285,50 @@ std::vector<Index> chosen_primaries(const std::vector<std::string>& requested, c
   return chosen;
 }
 
-}  // namespace
+// ---- the stages -------------------------------------------------------------------------
+// analyse_network runs these in order; each is a pure function of the model, the options and
+// the stages before it, and returns a plain struct (docs/network.md, "The analysis in stages").
 
-NetworkResult analyse_network(const Model& model, const AnalysisOptions& options) {
-  if (model.couplings.empty()) throw ModelError("couplings", -1, "the model has no couplings");
-  NetworkResult r;
-  r.model_name = model.name;
-  r.d = model.space.dimension();
-  const int d = r.d;
-  r.bodies = static_cast<int>(model.bodies.size());
-  r.e = static_cast<int>(model.couplings.size());
-  r.ground = model.ground.value_or(0);
+// Stage 1 (frame-free): the coupling graph, its spanning tree and the circuit and cutset
+// matrices (seed 000 eqs 3a, 3b).
+struct NetworkTopologyStage {
+  graph::CouplingGraph graph;
+  graph::SpanningTree tree;
+  Eigen::MatrixXi B, Q;
+  graph::TreeWalk walk;  ///< from the ground: how each body's motion sums the couplings' motions
+};
 
+NetworkTopologyStage network_topology_stage(const Model& model, int ground) {
   std::vector<graph::Edge> edges;
   for (const auto& c : model.couplings) edges.push_back({c.from, c.to});
-  const graph::CouplingGraph graph(r.bodies, edges);
+  graph::CouplingGraph graph(static_cast<int>(model.bodies.size()), edges);
   check_connected(model, graph);
-  const graph::SpanningTree tree = choose_tree(model, graph, r.ground);
-  r.branches = tree.branches;
-  r.chords = tree.chords;
-  r.B = graph.circuit_matrix(tree);
-  r.Q = graph.cutset_matrix(tree);
-  r.l = static_cast<int>(r.B.rows());
-  r.k = static_cast<int>(r.Q.rows());
+  graph::SpanningTree tree = choose_tree(model, graph, ground);
+  Eigen::MatrixXi B = graph.circuit_matrix(tree);
+  Eigen::MatrixXi Q = graph.cutset_matrix(tree);
+  graph::TreeWalk walk = graph.walk(tree, ground);
+  return {std::move(graph), std::move(tree), std::move(B), std::move(Q), std::move(walk)};
+}
 
-  // Bases in the user's frame (reported) and in the analysis frame (solved).
-  r.exact = choose_exact(model, options.arithmetic, r.arithmetic_reason);
+// Stage 2, the one boundary into the analysis frame: the arithmetic, the frame every decision
+// is made in (the user's own frame for exact arithmetic, where rationals need no
+// conditioning; centred on the couplings and scaled by their extent in floating point), and
+// the unit matrices in both frames: `solved` for the decisions, `user` for the report.
+struct ConditionedNetworkStage {
+  bool exact = false;
+  std::string arithmetic_reason;
+  bool certify = false;  ///< floating point whose ranks of M^N are checked modulo primes
+  AnalysisFrame frame;   ///< origin and length unit of the decisions (user frame and units)
+  double input_rounding = 0.0;  ///< floating point: rounding level of the input in `frame`
+  UnitMatrices user, solved;
+  std::vector<Magnitude> motions, actions;  ///< unit screws in the user's frame
+};
+
+ConditionedNetworkStage condition_network_stage(const Model& model, const NetworkTopologyStage& topology,
+                                                const AnalysisOptions& options) {
+  const int d = model.space.dimension();
+  ConditionedNetworkStage s;
+  s.exact = choose_exact(model, options.arithmetic, s.arithmetic_reason);
   const auto basis_of = [&](std::size_t i, const screw::CouplingGeometry& geometry) {
     const auto& c = model.couplings[i];
     try {
@@ -337,34 +337,32 @@ NetworkResult analyse_network(const Model& model, const AnalysisOptions& options
       throw ModelError("couplings", static_cast<int>(i), fmt::format("coupling '{}': {}", c.name, error.what()));
     }
   };
-  std::vector<screw::CouplingBasis> user_bases, frame_bases;
+  std::vector<screw::CouplingBasis> user_bases;
   for (std::size_t i = 0; i < model.couplings.size(); ++i) user_bases.push_back(basis_of(i, model.couplings[i].geometry));
   // Large models of short decimals: floating point, its ranks checked by modular arithmetic.
   int freedoms = 0;
   for (const auto& b : user_bases) freedoms += static_cast<int>(b.motions.size());
-  const bool certify = r.exact && options.arithmetic == Arithmetic::automatic &&
-                       elimination_work(d * r.l, freedoms) > kExactEliminationWork;
-  if (certify) {
-    r.exact = false;
-    r.arithmetic_reason = fmt::format(
+  const int circuit_rows = d * static_cast<int>(topology.B.rows());
+  s.certify = s.exact && options.arithmetic == Arithmetic::automatic &&
+              elimination_work(circuit_rows, freedoms) > kExactEliminationWork;
+  if (s.certify) {
+    s.exact = false;
+    s.arithmetic_reason = fmt::format(
         "floating point with ranks checked by modular arithmetic: every number is a short decimal, but exact elimination of "
         "the {} x {} matrix M^N would be slow",
-        d * r.l, freedoms);
+        circuit_rows, freedoms);
   }
-  const AnalysisFrame frame = r.exact ? AnalysisFrame{} : AnalysisFrame::of(model);
-  r.length_scale = frame.scale.get_d();
-  for (std::size_t i = 0; i < model.couplings.size(); ++i)
-    frame_bases.push_back(basis_of(i, frame.to_frame(model.couplings[i].geometry, model.space)));
-  const UnitMatrices user = unit_matrices(user_bases, d, r.B, r.Q);
-  const UnitMatrices solved = unit_matrices(frame_bases, d, r.B, r.Q);
-  r.BM = user.BM;
-  r.QA = user.QA;
-  r.MD = user.MD;
-  r.AD = user.AD;
-  r.MN = user.MN;
-  r.AN = user.AN;
-  r.F = static_cast<int>(user.MD.cols());
-  r.C = static_cast<int>(user.AD.cols());
+  s.frame = s.exact ? AnalysisFrame{} : AnalysisFrame::of(model);
+  s.input_rounding = s.exact ? 0.0 : input_rounding(model, s.frame);
+  s.user = unit_matrices(user_bases, d, topology.B, topology.Q);
+  if (s.exact) {
+    s.solved = s.user;  // the identity frame: the same bases
+  } else {
+    std::vector<screw::CouplingBasis> frame_bases;
+    for (std::size_t i = 0; i < model.couplings.size(); ++i)
+      frame_bases.push_back(basis_of(i, s.frame.to_frame(model.couplings[i].geometry, model.space)));
+    s.solved = unit_matrices(frame_bases, d, topology.B, topology.Q);
+  }
 
   std::vector<std::string> motion_names, action_names;
   for (std::size_t i = 0; i < model.couplings.size(); ++i) {
@@ -376,34 +374,84 @@ NetworkResult analyse_network(const Model& model, const AnalysisOptions& options
   make_unique(motion_names);
   make_unique(action_names);
   for (std::size_t i = 0, n = 0, a = 0; i < model.couplings.size(); ++i) {
-    for (const auto& s : user_bases[i].motions) r.motions.push_back({motion_names[n++], static_cast<int>(i), s});
-    for (const auto& s : user_bases[i].actions) r.actions.push_back({action_names[a++], static_cast<int>(i), s});
+    for (const auto& u : user_bases[i].motions) s.motions.push_back({motion_names[n++], static_cast<int>(i), u});
+    for (const auto& u : user_bases[i].actions) s.actions.push_back({action_names[a++], static_cast<int>(i), u});
   }
+  return s;
+}
 
-  // (i) circulation law, (ii) cutset law, (iii) cutset motions, (iv) circuit actions.
-  const Tolerances& tol = options.tolerances;
-  const double rounding = r.exact ? 0.0 : input_rounding(model, frame);
-  r.circulation.solution = solve(solved.MN, r.exact, tol, rounding);
-  r.cutset_law.solution = solve(solved.AN, r.exact, tol, rounding);
-  r.cutset_motion.solution = solve(solved.AN.transpose(), r.exact, tol, rounding);
-  r.circuit_action.solution = solve(solved.MN.transpose(), r.exact, tol, rounding);
+// Stage 3 (analysis frame): the ranks of the four methods, (i) circulation law, (ii) cutset
+// law, (iii) cutset motions, (iv) circuit actions, with their homogeneous solutions; in
+// floating point with the modular check of M^N when `certify`.
+struct NetworkRanksStage {
+  linalg::HomogeneousSolution circulation, cutset_law, cutset_motion, circuit_action;
+  std::optional<ModularCheck> modular_check;
+};
+
+// The rank of the user's (rational) M^N modulo large primes is a certain lower bound of its
+// exact rank, and equal to it unless both primes divide every non-zero maximal minor. The
+// floating-point decisions follow it when they differ (a = C - (d l - m) by the identities),
+// unless `follow` is false (the user set the tolerance).
+void certify_network_ranks(NetworkRanksStage& s, const ConditionedNetworkStage& c, int d, const Tolerances& base, bool follow) {
+  const linalg::ModularRank check = linalg::modular_rank(c.user.MN);
+  s.modular_check = ModularCheck{static_cast<int>(check.rank), check.primes, check.agreeing, false};
+  if (!follow || check.primes == 0 || check.rank == s.circulation.rank.rank) return;
+  const Index l = c.solved.MN.rows() / d;
+  const Index m = check.rank, a = c.solved.AD.cols() - (static_cast<Index>(d) * l - m);
+  const Eigen::VectorXd motion_values = s.circulation.singular_values;
+  const Eigen::VectorXd action_values = s.cutset_law.singular_values;
+  s.circulation = solve(c.solved.MN, false, tolerance_for_rank(base, motion_values, m), 0.0);
+  s.circuit_action = solve(c.solved.MN.transpose(), false, tolerance_for_rank(base, motion_values, m), 0.0);
+  s.cutset_law = solve(c.solved.AN, false, tolerance_for_rank(base, action_values, a), 0.0);
+  s.cutset_motion = solve(c.solved.AN.transpose(), false, tolerance_for_rank(base, action_values, a), 0.0);
+  s.modular_check->followed = true;
+}
+
+NetworkRanksStage decide_network_ranks_stage(const ConditionedNetworkStage& c, int d, const Tolerances& tol) {
+  NetworkRanksStage s;
+  s.circulation = solve(c.solved.MN, c.exact, tol, c.input_rounding);
+  s.cutset_law = solve(c.solved.AN, c.exact, tol, c.input_rounding);
+  s.cutset_motion = solve(c.solved.AN.transpose(), c.exact, tol, c.input_rounding);
+  s.circuit_action = solve(c.solved.MN.transpose(), c.exact, tol, c.input_rounding);
   // A tolerance the user chose is kept; the check is still reported.
-  if (certify) certify_ranks(r, user.MN, solved, tol, !tol.rank);
-  if (!r.exact) {
-    // The conditioned frame mixes the d rows of each circuit (cutset), so the rows that are
-    // redundant there are not the user's: choose them again on the user's M^N and A^N.
-    r.circulation.solution.redundant_rows =
-        linalg::redundant_rows(user.MN.to_double(), r.circulation.solution.rank.rank);
-    r.cutset_law.solution.redundant_rows = linalg::redundant_rows(user.AN.to_double(), r.cutset_law.solution.rank.rank);
+  if (c.certify) certify_network_ranks(s, c, d, tol, !tol.rank);
+  return s;
+}
+
+// Each body's motion relative to the ground (d rows, one column per primary motion), summed
+// along the tree walk from the ground over the coupling blocks of `contracted`.
+std::vector<LinearForms> body_motions_along_tree(const graph::TreeWalk& walk, const LinearForms& contracted, int bodies,
+                                                 int d, Index primaries, bool exact) {
+  std::vector<LinearForms> body_motion(static_cast<std::size_t>(bodies), zero_forms(d, primaries, exact));
+  for (int body : walk.order) {
+    const int e = walk.parent_edge[static_cast<std::size_t>(body)];
+    if (e < 0) continue;
+    body_motion[static_cast<std::size_t>(body)] =
+        combine(body_motion[static_cast<std::size_t>(walk.parent_body[static_cast<std::size_t>(body)])],
+                block_rows(contracted, static_cast<Index>(e) * d, d), walk.sign[static_cast<std::size_t>(body)]);
   }
-  r.m = static_cast<int>(r.circulation.solution.rank.rank);
-  r.a = static_cast<int>(r.cutset_law.solution.rank.rank);
-  r.FN = r.F - r.m;
-  r.CN = r.C - r.a;
-  r.classification = classify(r.FN, r.CN);
-  r.identities_hold = r.FN - r.CN == r.F - d * r.l && r.CN - r.FN == r.C - d * r.k && r.FN == d * r.k - r.a &&
-                      r.CN == d * r.l - r.m && r.cutset_motion.solution.nullity() == r.FN &&
-                      r.circuit_action.solution.nullity() == r.CN;
+  return body_motion;
+}
+
+// Stage 4 (analysis frame): the primary variables, the magnitudes and contracted matrices of
+// all four methods, each body's motion relative to the ground and every pair's fij and cij
+// with the primaries that appear in it. Only the pair systems' linear forms are left for the
+// user's frame.
+struct NetworkBasesStage {
+  NetworkRanksStage ranks;  ///< circulation and cutset_law with the chosen free variables
+  std::vector<int> primary_motion, primary_action;
+  LinearForms M_i, A_ii, M_iii, A_iv;  ///< [M]d,e and [A]d,e by each method, coupling-major
+  bool motion_methods_agree = false, action_methods_agree = false;
+  std::vector<PairSystem> pairs;  ///< decided; motion_system and action_system still empty
+};
+
+NetworkBasesStage choose_network_bases_stage(const Model& model, const NetworkTopologyStage& topology,
+                                             const ConditionedNetworkStage& c, NetworkRanksStage ranks,
+                                             const AnalysisOptions& options) {
+  const int d = model.space.dimension();
+  const int bodies = static_cast<int>(model.bodies.size());
+  NetworkBasesStage s;
+  s.ranks = std::move(ranks);
 
   // Primary variables: the user's, or the earliest that can be free.
   const std::vector<std::string> requested = options.primary ? *options.primary : model.primary;
@@ -413,25 +461,28 @@ NetworkResult analyse_network(const Model& model, const AnalysisOptions& options
     const auto is = [&](const std::vector<Magnitude>& list) {
       return std::any_of(list.begin(), list.end(), [&](const Magnitude& m) { return m.name == requested[i]; });
     };
-    if (is(r.motions)) {
+    if (is(c.motions)) {
       requested_motion.push_back(requested[i]);
       motion_request_index.push_back(i);
-    } else if (is(r.actions)) {
+    } else if (is(c.actions)) {
       requested_action.push_back(requested[i]);
       action_request_index.push_back(i);
     } else {
+      std::vector<std::string> motion_names, action_names;
+      for (const auto& m : c.motions) motion_names.push_back(m.name);
+      for (const auto& a : c.actions) action_names.push_back(a.name);
       throw ModelError("primary", static_cast<int>(i),
                        fmt::format("'{}' is not a motion or action magnitude of this model (motions: {}; actions: {})",
                                    requested[i], fmt::join(motion_names, ", "), fmt::join(action_names, ", ")));
     }
   }
-  auto apply_choice = [&](MethodResult& method, const std::vector<std::string>& names,
+  auto apply_choice = [&](linalg::HomogeneousSolution& solution, const std::vector<std::string>& names,
                           const std::vector<std::size_t>& request_index, const std::vector<Magnitude>& magnitudes,
                           const char* kind, const char* total) {
     if (names.empty()) return;
-    const auto chosen = chosen_primaries(names, magnitudes, request_index, method.solution.nullity(), kind, total);
+    const auto chosen = chosen_primaries(names, magnitudes, request_index, solution.nullity(), kind, total);
     try {
-      method.solution = linalg::with_free_variables(method.solution, chosen, options.tolerances.free_variable);
+      solution = linalg::with_free_variables(solution, chosen, options.tolerances.free_variable);
     } catch (const linalg::DependentFreeVariable& error) {
       const auto it = std::find(chosen.begin(), chosen.end(), error.variable());
       const std::size_t at = it == chosen.end() ? 0 : static_cast<std::size_t>(it - chosen.begin());
@@ -441,52 +492,25 @@ NetworkResult analyse_network(const Model& model, const AnalysisOptions& options
                                    names[at], kind, names[at]));
     }
   };
-  apply_choice(r.circulation, requested_motion, motion_request_index, r.motions, "motion", "FN");
-  apply_choice(r.cutset_law, requested_action, action_request_index, r.actions, "action", "CN");
-  for (Index v : r.circulation.solution.free_variables) r.primary_motion.push_back(static_cast<int>(v));
-  for (Index v : r.cutset_law.solution.free_variables) r.primary_action.push_back(static_cast<int>(v));
-  // Unit translations and torques built in the analysis frame are L times those of the user's
-  // frame, so their magnitudes are 1/L of the user's: map coefficients back exactly.
-  const LinearForms K_motion = solution_forms(r.circulation.solution);
-  const LinearForms K_action = solution_forms(r.cutset_law.solution);
-  r.motion_magnitudes = to_user_magnitudes(K_motion, r.motions, r.primary_motion, frame.scale);
-  r.action_magnitudes = to_user_magnitudes(K_action, r.actions, r.primary_action, frame.scale);
-  r.circulation.solution.coefficients = r.motion_magnitudes.values;
-  r.circulation.solution.exact_coefficients = r.motion_magnitudes.exact;
-  r.cutset_law.solution.coefficients = r.action_magnitudes.values;
-  r.cutset_law.solution.exact_coefficients = r.action_magnitudes.exact;
+  apply_choice(s.ranks.circulation, requested_motion, motion_request_index, c.motions, "motion", "FN");
+  apply_choice(s.ranks.cutset_law, requested_action, action_request_index, c.actions, "action", "CN");
+  for (Index v : s.ranks.circulation.free_variables) s.primary_motion.push_back(static_cast<int>(v));
+  for (Index v : s.ranks.cutset_law.free_variables) s.primary_action.push_back(static_cast<int>(v));
 
-  // Contracted matrices [M]d,e and [A]d,e by both methods each: in the analysis frame for rank
-  // decisions, in the user's frame and primaries for the report.
-  const auto motion_to_user = [&](const std::vector<Rational>& v) { return frame.motion_to_user(v, model.space); };
-  const auto action_to_user = [&](const std::vector<Rational>& v) { return frame.action_to_user(v, model.space); };
-  const LinearForms M_i = contract_couplings(solved.MD, solved.first_motion, K_motion, d, r.exact);
-  const LinearForms A_ii = contract_couplings(solved.AD, solved.first_action, K_action, d, r.exact);
-  const LinearForms M_iii = contract_graph(solution_forms(r.cutset_motion.solution), r.Q, d, r.exact);
-  const LinearForms A_iv = contract_graph(solution_forms(r.circuit_action.solution), r.B, d, r.exact);
-  r.motion_methods_agree = same_span(M_i, M_iii, options.tolerances.pair_rank);
-  r.action_methods_agree = same_span(A_ii, A_iv, options.tolerances.pair_rank);
-  r.circulation.contracted = contract_couplings(user.MD, user.first_motion, r.motion_magnitudes, d, r.exact);
-  r.cutset_law.contracted = contract_couplings(user.AD, user.first_action, r.action_magnitudes, d, r.exact);
-  r.cutset_motion.contracted = blocks_to_user(M_iii, d, motion_to_user);
-  r.circuit_action.contracted = blocks_to_user(A_iv, d, action_to_user);
+  // Contracted matrices [M]d,e and [A]d,e by both methods each.
+  const LinearForms K_motion = solution_forms(s.ranks.circulation);
+  const LinearForms K_action = solution_forms(s.ranks.cutset_law);
+  s.M_i = contract_couplings(c.solved.MD, c.solved.first_motion, K_motion, d, c.exact);
+  s.A_ii = contract_couplings(c.solved.AD, c.solved.first_action, K_action, d, c.exact);
+  s.M_iii = contract_graph(solution_forms(s.ranks.cutset_motion), topology.Q, d, c.exact);
+  s.A_iv = contract_graph(solution_forms(s.ranks.circuit_action), topology.B, d, c.exact);
+  s.motion_methods_agree = same_span(s.M_i, s.M_iii, options.tolerances.pair_rank);
+  s.action_methods_agree = same_span(s.A_ii, s.A_iv, options.tolerances.pair_rank);
 
   // Motion of every body relative to the ground, then of every pair (seed 000, section 2.7).
-  const graph::TreeWalk walk = graph.walk(tree, r.ground);
-  const auto body_motions = [&](const LinearForms& contracted) {
-    std::vector<LinearForms> body_motion(static_cast<std::size_t>(r.bodies), zero_forms(d, r.FN, r.exact));
-    for (int body : walk.order) {
-      const int e = walk.parent_edge[static_cast<std::size_t>(body)];
-      if (e < 0) continue;
-      body_motion[static_cast<std::size_t>(body)] =
-          combine(body_motion[static_cast<std::size_t>(walk.parent_body[static_cast<std::size_t>(body)])],
-                  block_rows(contracted, static_cast<Index>(e) * d, d), walk.sign[static_cast<std::size_t>(body)]);
-    }
-    return body_motion;
-  };
-  const std::vector<LinearForms> body_motion = body_motions(M_i);
-  const std::vector<LinearForms> body_motion_user = body_motions(r.circulation.contracted);
-  const double motion_scale = M_i.values.norm(), action_scale = A_ii.values.norm();
+  const auto FN = static_cast<Index>(s.primary_motion.size());
+  const std::vector<LinearForms> body_motion = body_motions_along_tree(topology.walk, s.M_i, bodies, d, FN, c.exact);
+  const double motion_scale = s.M_i.values.norm(), action_scale = s.A_ii.values.norm();
   // A primary appears when its column is nonzero: exactly, or in floating point above the
   // same absolute threshold that forms_rank uses, so rounding noise does not add primaries.
   const double pair_relative = options.tolerances.pair_rank;
@@ -499,15 +523,15 @@ NetworkResult analyse_network(const Model& model, const AnalysisOptions& options
     }
     return used;
   };
-  std::vector<std::vector<std::vector<int>>> couplings_of_pair(static_cast<std::size_t>(r.bodies));
-  for (auto& row : couplings_of_pair) row.resize(static_cast<std::size_t>(r.bodies));
-  for (int e = 0; e < r.e; ++e) {
-    const int i = std::min(model.couplings[static_cast<std::size_t>(e)].from, model.couplings[static_cast<std::size_t>(e)].to);
-    const int j = std::max(model.couplings[static_cast<std::size_t>(e)].from, model.couplings[static_cast<std::size_t>(e)].to);
-    couplings_of_pair[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)].push_back(e);
+  std::vector<std::vector<std::vector<int>>> couplings_of_pair(static_cast<std::size_t>(bodies));
+  for (auto& row : couplings_of_pair) row.resize(static_cast<std::size_t>(bodies));
+  for (std::size_t e = 0; e < model.couplings.size(); ++e) {
+    const int i = std::min(model.couplings[e].from, model.couplings[e].to);
+    const int j = std::max(model.couplings[e].from, model.couplings[e].to);
+    couplings_of_pair[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)].push_back(static_cast<int>(e));
   }
-  for (int i = 0; i < r.bodies; ++i)
-    for (int j = i + 1; j < r.bodies; ++j) {
+  for (int i = 0; i < bodies; ++i)
+    for (int j = i + 1; j < bodies; ++j) {
       const auto& direct = couplings_of_pair[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)];
       if (direct.empty() && !options.all_pairs) continue;
       PairSystem pair;
@@ -517,28 +541,124 @@ NetworkResult analyse_network(const Model& model, const AnalysisOptions& options
       pair.motion_rank = forms_rank(relative, motion_scale, pair_relative);
       pair.fij = static_cast<int>(pair.motion_rank.rank);
       pair.motion_primaries = appearing(relative, motion_scale);
-      pair.motion_system = combine(body_motion_user[static_cast<std::size_t>(j)], body_motion_user[static_cast<std::size_t>(i)], -1);
       if (direct.empty()) {
         pair.f = d;
-        pair.action_system = zero_forms(d, r.CN, r.exact);
-        r.pairs.push_back(pair);
+        s.pairs.push_back(pair);
         continue;
       }
       for (int e : direct) {
         PairSystem row = pair;
         row.coupling = e;
-        row.f = user.first_motion[static_cast<std::size_t>(e) + 1] - user.first_motion[static_cast<std::size_t>(e)];
+        row.f = c.user.first_motion[static_cast<std::size_t>(e) + 1] - c.user.first_motion[static_cast<std::size_t>(e)];
         row.c = d - row.f;
-        const LinearForms action = block_rows(A_ii, static_cast<Index>(e) * d, d);
+        const LinearForms action = block_rows(s.A_ii, static_cast<Index>(e) * d, d);
         row.action_rank = forms_rank(action, action_scale, pair_relative);
         row.cij = static_cast<int>(row.action_rank.rank);
         row.action_primaries = appearing(action, action_scale);
-        row.action_system = block_rows(r.cutset_law.contracted, static_cast<Index>(e) * d, d);
-        r.pairs.push_back(row);
+        s.pairs.push_back(row);
       }
     }
+  return s;
+}
 
-  // Numeric magnitudes when every primary of a kind has a value.
+// Stage 5, the one boundary back to the user's frame: everything decided above, with the
+// magnitudes, contracted matrices, body motions and pair systems in the user's frame, length
+// unit and primaries. The redundant rows of floating-point M^N and A^N are the one choice made
+// here, on the user's matrices: the conditioned frame mixes the d rows of each circuit
+// (cutset), so the rows that are redundant there are not the user's.
+NetworkResult network_in_user_frame(const Model& model, NetworkTopologyStage topology, ConditionedNetworkStage c,
+                                    NetworkBasesStage b) {
+  NetworkResult r;
+  r.model_name = model.name;
+  r.d = model.space.dimension();
+  const int d = r.d;
+  r.bodies = static_cast<int>(model.bodies.size());
+  r.e = static_cast<int>(model.couplings.size());
+  r.ground = model.ground.value_or(0);
+  r.branches = std::move(topology.tree.branches);
+  r.chords = std::move(topology.tree.chords);
+  r.B = std::move(topology.B);
+  r.Q = std::move(topology.Q);
+  r.l = static_cast<int>(r.B.rows());
+  r.k = static_cast<int>(r.Q.rows());
+  r.exact = c.exact;
+  r.arithmetic_reason = std::move(c.arithmetic_reason);
+  r.length_scale = c.frame.scale.get_d();
+  r.F = static_cast<int>(c.user.MD.cols());
+  r.C = static_cast<int>(c.user.AD.cols());
+  r.motions = std::move(c.motions);
+  r.actions = std::move(c.actions);
+
+  r.circulation.solution = std::move(b.ranks.circulation);
+  r.cutset_law.solution = std::move(b.ranks.cutset_law);
+  r.cutset_motion.solution = std::move(b.ranks.cutset_motion);
+  r.circuit_action.solution = std::move(b.ranks.circuit_action);
+  r.modular_check = b.ranks.modular_check;
+  if (!r.exact) {
+    r.circulation.solution.redundant_rows = linalg::redundant_rows(c.user.MN.to_double(), r.circulation.solution.rank.rank);
+    r.cutset_law.solution.redundant_rows = linalg::redundant_rows(c.user.AN.to_double(), r.cutset_law.solution.rank.rank);
+  }
+  r.m = static_cast<int>(r.circulation.solution.rank.rank);
+  r.a = static_cast<int>(r.cutset_law.solution.rank.rank);
+  r.FN = r.F - r.m;
+  r.CN = r.C - r.a;
+  r.classification = classify(r.FN, r.CN);
+  r.identities_hold = r.FN - r.CN == r.F - d * r.l && r.CN - r.FN == r.C - d * r.k && r.FN == d * r.k - r.a &&
+                      r.CN == d * r.l - r.m && r.cutset_motion.solution.nullity() == r.FN &&
+                      r.circuit_action.solution.nullity() == r.CN;
+  r.primary_motion = std::move(b.primary_motion);
+  r.primary_action = std::move(b.primary_action);
+
+  // Unit translations and torques built in the analysis frame are L times those of the user's
+  // frame, so their magnitudes are 1/L of the user's: map coefficients back exactly.
+  r.motion_magnitudes = to_user_magnitudes(solution_forms(r.circulation.solution), r.motions, r.primary_motion, c.frame.scale);
+  r.action_magnitudes = to_user_magnitudes(solution_forms(r.cutset_law.solution), r.actions, r.primary_action, c.frame.scale);
+  r.circulation.solution.coefficients = r.motion_magnitudes.values;
+  r.circulation.solution.exact_coefficients = r.motion_magnitudes.exact;
+  r.cutset_law.solution.coefficients = r.action_magnitudes.values;
+  r.cutset_law.solution.exact_coefficients = r.action_magnitudes.exact;
+
+  // Contracted matrices: (i) and (ii) from the user's unit matrices and magnitudes, (iii) and
+  // (iv) moved block by block.
+  const AnalysisFrame& frame = c.frame;
+  const auto motion_to_user = [&](const std::vector<Rational>& v) { return frame.motion_to_user(v, model.space); };
+  const auto action_to_user = [&](const std::vector<Rational>& v) { return frame.action_to_user(v, model.space); };
+  r.motion_methods_agree = b.motion_methods_agree;
+  r.action_methods_agree = b.action_methods_agree;
+  r.circulation.contracted = contract_couplings(c.user.MD, c.user.first_motion, r.motion_magnitudes, d, r.exact);
+  r.cutset_law.contracted = contract_couplings(c.user.AD, c.user.first_action, r.action_magnitudes, d, r.exact);
+  r.cutset_motion.contracted = blocks_to_user(b.M_iii, d, motion_to_user);
+  r.circuit_action.contracted = blocks_to_user(b.A_iv, d, action_to_user);
+  r.BM = std::move(c.user.BM);
+  r.QA = std::move(c.user.QA);
+  r.MD = std::move(c.user.MD);
+  r.AD = std::move(c.user.AD);
+  r.MN = std::move(c.user.MN);
+  r.AN = std::move(c.user.AN);
+
+  // Body motions and pair systems.
+  r.body_motions = body_motions_along_tree(topology.walk, r.circulation.contracted, r.bodies, d, r.FN, r.exact);
+  r.pairs = std::move(b.pairs);
+  for (PairSystem& pair : r.pairs) {
+    pair.motion_system = combine(r.body_motions[static_cast<std::size_t>(pair.body_j)],
+                                 r.body_motions[static_cast<std::size_t>(pair.body_i)], -1);
+    pair.action_system = pair.coupling ? block_rows(r.cutset_law.contracted, static_cast<Index>(*pair.coupling) * d, d)
+                                       : zero_forms(d, r.CN, r.exact);
+  }
+  return r;
+}
+
+// Stage 6 (user frame): numeric magnitudes and coupling screws from the values of the
+// primaries given in the model or the options.
+struct NetworkValuesStage {
+  std::optional<Eigen::VectorXd> motion_values, action_values;
+  std::vector<std::string> missing_motion_values, missing_action_values;
+  std::optional<Eigen::MatrixXd> coupling_motion_values, coupling_action_values;
+};
+
+NetworkValuesStage network_values_stage(const Model& model, const NetworkResult& r, const AnalysisOptions& options) {
+  const int d = r.d;
+  NetworkValuesStage s;
   std::vector<std::pair<std::string, Rational>> values = model.values;
   for (const auto& v : options.values) {
     auto it = std::find_if(values.begin(), values.end(), [&](const auto& x) { return x.first == v.first; });
@@ -590,36 +710,70 @@ NetworkResult analyse_network(const Model& model, const AnalysisOptions& options
     for (int e = 0; e < r.e; ++e) screws.col(e) = evaluate(contracted.values.middleRows(static_cast<Index>(e) * d, d), v);
     return screws;
   };
-  if (auto v = value_vector(r.primary_motion, r.motions, r.missing_motion_values); v && r.FN > 0) {
-    r.motion_values = evaluate(r.motion_magnitudes.values, *v);
-    r.coupling_motion_values = coupling_screws(r.circulation.contracted, *v);
+  if (auto v = value_vector(r.primary_motion, r.motions, s.missing_motion_values); v && r.FN > 0) {
+    s.motion_values = evaluate(r.motion_magnitudes.values, *v);
+    s.coupling_motion_values = coupling_screws(r.circulation.contracted, *v);
   }
-  if (auto v = value_vector(r.primary_action, r.actions, r.missing_action_values); v && r.CN > 0) {
-    r.action_values = evaluate(r.action_magnitudes.values, *v);
-    r.coupling_action_values = coupling_screws(r.cutset_law.contracted, *v);
+  if (auto v = value_vector(r.primary_action, r.actions, s.missing_action_values); v && r.CN > 0) {
+    s.action_values = evaluate(r.action_magnitudes.values, *v);
+    s.coupling_action_values = coupling_screws(r.cutset_law.contracted, *v);
   }
+  return s;
+}
 
-  // Exact decisions get the evidence of a floating-point SVD of the same matrices, in the
-  // conditioned frame (placement- and unit-free): how near the design is to another rank.
-  // Exact arithmetic on long literals analyses the rounded geometry: say also if floating point,
-  // which tolerates the rounding, sees a different mechanism.
+// Stage 7 (exact analyses only): the evidence of a floating-point SVD of the same matrices in
+// the conditioned frame (placement- and unit-free), how near the design is to another rank;
+// and, for long literals, the floating-point FN and CN when they differ (exact arithmetic then
+// analyses the rounded geometry, floating point tolerates the rounding).
+struct ExactEvidenceStage {
+  Eigen::VectorXd motion_values, action_values;  ///< singular values of M^N and A^N, conditioned frame
+  std::optional<std::pair<int, int>> floating_point_disagreement;
+};
+
+ExactEvidenceStage exact_evidence_stage(const Model& model, const NetworkResult& r, const Tolerances& tol) {
+  ExactEvidenceStage s;
+  const AnalysisFrame conditioned = AnalysisFrame::of(model);
+  std::vector<screw::CouplingBasis> bases;
+  for (const auto& c : model.couplings) bases.push_back(screw::coupling_basis(c.type, conditioned.to_frame(c.geometry, model.space), model.space));
+  const UnitMatrices u = unit_matrices(bases, r.d, r.B, r.Q);
+  const Eigen::MatrixXd mn = u.MN.to_double(), an = u.AN.to_double();
+  s.motion_values = linalg::singular_values(mn);
+  s.action_values = linalg::singular_values(an);
+  if (model.max_significant_digits > kExactMaxSignificantDigits) {
+    const linalg::RankTolerance rounded{tol.rank, input_rounding(model, conditioned)};
+    const int fn = r.F - static_cast<int>(linalg::decide_rank(s.motion_values, mn.rows(), mn.cols(), rounded).rank);
+    const int cn = r.C - static_cast<int>(linalg::decide_rank(s.action_values, an.rows(), an.cols(), rounded).rank);
+    if (fn != r.FN || cn != r.CN) s.floating_point_disagreement = std::make_pair(fn, cn);
+  }
+  return s;
+}
+
+}  // namespace
+
+NetworkResult analyse_network(const Model& model, const AnalysisOptions& options) {
+  if (model.couplings.empty()) throw ModelError("couplings", -1, "the model has no couplings");
+  const int ground = model.ground.value_or(0);
+  NetworkTopologyStage topology = network_topology_stage(model, ground);
+  ConditionedNetworkStage conditioned = condition_network_stage(model, topology, options);
+  NetworkRanksStage ranks = decide_network_ranks_stage(conditioned, model.space.dimension(), options.tolerances);
+  NetworkBasesStage bases = choose_network_bases_stage(model, topology, conditioned, std::move(ranks), options);
+  NetworkResult r = network_in_user_frame(model, std::move(topology), std::move(conditioned), std::move(bases));
+
+  NetworkValuesStage values = network_values_stage(model, r, options);
+  r.motion_values = std::move(values.motion_values);
+  r.action_values = std::move(values.action_values);
+  r.missing_motion_values = std::move(values.missing_motion_values);
+  r.missing_action_values = std::move(values.missing_action_values);
+  r.coupling_motion_values = std::move(values.coupling_motion_values);
+  r.coupling_action_values = std::move(values.coupling_action_values);
+
   if (r.exact) {
-    const AnalysisFrame conditioned = AnalysisFrame::of(model);
-    std::vector<screw::CouplingBasis> bases;
-    for (const auto& c : model.couplings) bases.push_back(screw::coupling_basis(c.type, conditioned.to_frame(c.geometry, model.space), model.space));
-    const UnitMatrices u = unit_matrices(bases, d, r.B, r.Q);
-    const Eigen::MatrixXd mn = u.MN.to_double(), an = u.AN.to_double();
-    const Eigen::VectorXd motion_values = linalg::singular_values(mn), action_values = linalg::singular_values(an);
-    linalg::add_floating_evidence(r.circulation.solution.rank, motion_values);
-    linalg::add_floating_evidence(r.circuit_action.solution.rank, motion_values);
-    linalg::add_floating_evidence(r.cutset_law.solution.rank, action_values);
-    linalg::add_floating_evidence(r.cutset_motion.solution.rank, action_values);
-    if (model.max_significant_digits > kExactMaxSignificantDigits) {
-      const linalg::RankTolerance rounded{tol.rank, input_rounding(model, conditioned)};
-      const int fn = r.F - static_cast<int>(linalg::decide_rank(motion_values, mn.rows(), mn.cols(), rounded).rank);
-      const int cn = r.C - static_cast<int>(linalg::decide_rank(action_values, an.rows(), an.cols(), rounded).rank);
-      if (fn != r.FN || cn != r.CN) r.floating_point_disagreement = std::make_pair(fn, cn);
-    }
+    const ExactEvidenceStage evidence = exact_evidence_stage(model, r, options.tolerances);
+    linalg::add_floating_evidence(r.circulation.solution.rank, evidence.motion_values);
+    linalg::add_floating_evidence(r.circuit_action.solution.rank, evidence.motion_values);
+    linalg::add_floating_evidence(r.cutset_law.solution.rank, evidence.action_values);
+    linalg::add_floating_evidence(r.cutset_motion.solution.rank, evidence.action_values);
+    r.floating_point_disagreement = evidence.floating_point_disagreement;
   }
   return r;
 }

@@ -1,8 +1,11 @@
 #pragma once
 // Everything the coupling-network analysis finds, as plain data (seed 000): the graph
 // matrices, the unit matrices, ranks with their evidence, FN and CN, the motions and
-// actions of every coupling in terms of primary variables, and the motion system of every
-// pair of bodies.
+// actions of every coupling in terms of primary variables, the motion of every body, and the
+// motion system of every pair of bodies. Every screw, linear form and matrix here is in the
+// user's frame and length unit (the analysis decides in a conditioned frame and converts once,
+// docs/network.md); only rank evidence (singular values, thresholds) is of the conditioned
+// matrices.
 
 #include <Eigen/Core>
 
@@ -100,6 +103,13 @@ struct NetworkResult {
   LinearForms action_magnitudes;      ///< [C]C in the action primaries (C rows)
   bool motion_methods_agree = false;  ///< (i) and (iii) give the same [M]d,e
   bool action_methods_agree = false;  ///< (ii) and (iv) give the same [A]d,e
+
+  /// Each body's motion relative to the ground, by body index (the ground's is zero): d rows,
+  /// one column per primary motion (the motion with that primary = 1 and the others 0), axis
+  /// formation (ω; v) with v the velocity of the point at the user's origin, in the user's frame
+  /// and length unit per unit of the primary. Body j's motion relative to body i is
+  /// body_motions[j] − body_motions[i] (PairSystem::motion_system).
+  std::vector<LinearForms> body_motions;
 
   std::vector<PairSystem> pairs;
 

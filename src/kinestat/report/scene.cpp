@@ -197,12 +197,8 @@ Scene network_scene(const network::Model& model, const network::NetworkResult& r
       scene.elements.push_back({model.bodies[b] + ".marker", "link", static_cast<int>(b), static_cast<int>(scene.nodes.size()) - 1, false, std::nullopt});
     }
 
-  // The motion of every body relative to the ground, per motion primary.
-  std::vector<const network::PairSystem*> to_ground(n, nullptr);
-  for (const auto& pair : r.pairs) {
-    if (pair.body_i == r.ground && !to_ground[static_cast<std::size_t>(pair.body_j)]) to_ground[static_cast<std::size_t>(pair.body_j)] = &pair;
-    if (pair.body_j == r.ground && !to_ground[static_cast<std::size_t>(pair.body_i)]) to_ground[static_cast<std::size_t>(pair.body_i)] = &pair;
-  }
+  // The motion of every body relative to the ground, per motion primary, as the analysis keeps
+  // it (NetworkResult::body_motions: user frame and length unit).
   for (std::size_t k = 0; k < r.primary_motion.size(); ++k) {
     SceneMode mode;
     mode.label = "mode " + std::to_string(k + 1) + ": " + r.motions[static_cast<std::size_t>(r.primary_motion[k])].name + " = 1";
@@ -214,11 +210,10 @@ Scene network_scene(const network::Model& model, const network::NetworkResult& r
       if (static_cast<Eigen::Index>(k) < r.motion_magnitudes.values.cols() && r.motion_magnitudes.values(row, static_cast<Eigen::Index>(k)) != 0.0)
         mode.moving.push_back(r.motions[static_cast<std::size_t>(row)].name);
     for (std::size_t b = 0; b < n; ++b) {
-      if (static_cast<int>(b) == r.ground || !to_ground[b]) continue;
-      const auto& forms = to_ground[b]->motion_system.values;
+      if (static_cast<int>(b) == r.ground || b >= r.body_motions.size()) continue;
+      const auto& forms = r.body_motions[b].values;
       if (static_cast<Eigen::Index>(k) >= forms.cols()) continue;
-      Eigen::VectorXd motion = forms.col(static_cast<Eigen::Index>(k));
-      if (to_ground[b]->body_j == r.ground) motion = -motion;
+      const Eigen::VectorXd motion = forms.col(static_cast<Eigen::Index>(k));
       if (motion.cwiseAbs().maxCoeff() == 0.0) continue;
       const auto [omega, v0] = twist_of(model.space, motion);
       mode.twists.push_back(screw_axis(model.bodies[b], centre[b], omega, v0, size));
@@ -226,11 +221,10 @@ Scene network_scene(const network::Model& model, const network::NetworkResult& r
     for (const auto& node : scene.nodes) {
       const auto b = static_cast<std::size_t>(node.body);
       Vector3d v = Vector3d::Zero();
-      if (static_cast<int>(b) != r.ground && to_ground[b]) {
-        const auto& forms = to_ground[b]->motion_system.values;
+      if (static_cast<int>(b) != r.ground && b < r.body_motions.size()) {
+        const auto& forms = r.body_motions[b].values;
         if (static_cast<Eigen::Index>(k) < forms.cols()) {
-          Eigen::VectorXd motion = forms.col(static_cast<Eigen::Index>(k));
-          if (to_ground[b]->body_j == r.ground) motion = -motion;
+          const Eigen::VectorXd motion = forms.col(static_cast<Eigen::Index>(k));
           const auto [omega, v0] = twist_of(model.space, motion);
           v = v0 + omega.cross(node.position);
         }
