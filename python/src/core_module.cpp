@@ -35,6 +35,7 @@
 #include "kinestat/network/analysis_frame.hpp"
 #include "kinestat/network/second_order.hpp"
 #include "kinestat/network/generic_network.hpp"
+#include "kinestat/report/analysis_report.hpp"
 #include "kinestat/report/framework_report.hpp"
 #include "kinestat/report/html_writer.hpp"
 #include "kinestat/report/json_text.hpp"
@@ -110,14 +111,16 @@ std::shared_ptr<Analysed> analyse(const std::string& path, const std::optional<s
     else if (arithmetic == "float") options.arithmetic = network::Arithmetic::floating;
     else if (arithmetic != "auto") throw py::value_error("arithmetic is 'auto', 'exact' or 'float'");
     if (!primary.empty()) options.primary = primary;
-    analysed->network = io::analyse_network_file(*file.network, file.path, options);
-    analysed->verdict = design::network_verdict(file.network->model, *analysed->network, options);
-    analysed->network_generic = network::generic_network(file.network->model, *analysed->network);
-    network::NetworkSecondOrderOptions second_order_options;  // as `kinestat analyze`: traces with the analysis's rank rule
-    second_order_options.tracing.tolerance = network::rank_rule_of(file.network->model, options.tolerances.rank);
-    analysed->network_second_order = network::classify_network_motions(file.network->model, *analysed->network, second_order_options);
-    if (analysed->network_generic)
-      analysed->verdict.generic = report::network_generic_sentences(file.network->model, *analysed->network, *analysed->network_generic);
+    report::NetworkAnalysis analysis;  // as `kinestat analyze`
+    try {
+      analysis = report::analyse_network_as_reported(file.network->model, options);
+    } catch (const network::ModelError& error) {
+      throw io::locate(error, *file.network, file.path);
+    }
+    analysed->network = std::move(analysis.result);
+    analysed->verdict = std::move(analysis.verdict);
+    analysed->network_generic = std::move(analysis.generic);
+    analysed->network_second_order = std::move(analysis.second_order);
   } else if (file.framework) {
     framework::AnalysisOptions options;
     options.tolerances = Tolerances::with_rank(tolerance);

@@ -7,15 +7,10 @@
 
 #include "cli/commands.hpp"
 #include "cli/option_checks.hpp"
-#include "kinestat/design/network_verdict.hpp"
-#include "kinestat/design/sparse_network_verdict.hpp"
 #include "kinestat/io/network_reader.hpp"
 #include "kinestat/network/analyse_network.hpp"
-#include "kinestat/network/analysis_frame.hpp"
-#include "kinestat/network/second_order.hpp"
-#include "kinestat/network/generic_network.hpp"
 #include "kinestat/network/sparse_network.hpp"
-#include "kinestat/network/sparse_pair_freedoms.hpp"
+#include "kinestat/report/analysis_report.hpp"
 #include "kinestat/report/json_text.hpp"
 #include "kinestat/report/network_report.hpp"
 
@@ -127,58 +122,45 @@ int run_network_analysis(const CommonOptions& common, const io::LoadedNetwork& l
   const bool dense_request = o.dense || o.exact || o.matrices || !o.primary.empty() || !o.values.empty();
   if (o.sparse || (!dense_request && static_cast<int>(loaded.model.couplings.size()) > network::kDenseNetworkLimit)) {
     const std::vector<std::pair<int, int>> chosen = parse_pairs(o.pairs, loaded.model);
-    const bool want_pairs = !o.pairs.empty() || o.coupled_pairs_only;
-    network::SparseNetworkResult sparse;
-    std::vector<network::SparsePairFreedom> pairs;
+    report::SparseNetworkAnalysis sparse;
     try {
-      sparse = network::analyse_network_sparse(loaded.model, options.tolerances, design::kSparseVerdictStates, want_pairs);
-      if (want_pairs) pairs = network::sparse_pair_freedoms(loaded.model, sparse, chosen, o.coupled_pairs_only, options.tolerances);
+      sparse = report::analyse_sparse_network_as_reported(loaded.model, options.tolerances, chosen, o.coupled_pairs_only);
     } catch (const network::ModelError& error) {
       throw io::locate(error, loaded, path);
     }
-    const design::Verdict verdict = design::sparse_network_verdict(loaded.model, sparse, options.tolerances);
-    const auto* listed = want_pairs ? &pairs : nullptr;
-    emit(common, common.json ? report::json_text(report::sparse_network_report_json(loaded.model, sparse, &verdict, listed))
-                             : report::sparse_network_report_text(loaded.model, sparse, &verdict, listed));
+    const auto* listed = sparse.listed_pairs ? &sparse.pairs : nullptr;
+    emit(common, common.json ? report::json_text(report::sparse_network_report_json(loaded.model, sparse.result, &sparse.verdict, listed))
+                             : report::sparse_network_report_text(loaded.model, sparse.result, &sparse.verdict, listed));
     return 0;
   }
   if (!o.pairs.empty())
     throw io::InputError({"--pair", 0, 0}, "--pair chooses pairs on the sparse path; the dense path lists every pair of "
                                            "bodies (unless --coupled-pairs): drop --pair, or add --sparse");
-  network::NetworkResult result;
+  // Results that overflow a double are refused before anything is derived from them.
+  report::NetworkAnalysisParts parts;
+  parts.check = [&o, &loaded, &path](const network::NetworkResult& result) {
+    if (const auto overflowing = first_non_finite_result(result)) {
+      const auto values = loaded.field_locations.find("values");
+      const io::SourceLocation where = !o.values.empty() ? io::SourceLocation{"--value", 0, 0}
+                                       : values != loaded.field_locations.end() ? values->second
+                                                                                : io::SourceLocation{path, 0, 0};
+      throw io::InputError(where, fmt::format("{} overflows a double (beyond about 1e308): the values or coordinates are "
+                                              "too large; scale them down (units do not change the counts)",
+                                              *overflowing));
+    }
+  };
+  report::NetworkAnalysis analysis;
   try {
-    result = network::analyse_network(loaded.model, options);
+    analysis = report::analyse_network_as_reported(loaded.model, options, parts);
   } catch (const network::ModelError& error) {
     if (error.field() == "primary" && !o.primary.empty()) throw io::InputError({"--primary", 0, 0}, error.what());
     if (error.field() == "values" && !o.values.empty()) throw io::InputError({"--value", 0, 0}, error.what());
     throw io::locate(error, loaded, path);
   }
-  if (const auto overflowing = first_non_finite_result(result)) {
-    const auto values = loaded.field_locations.find("values");
-    const io::SourceLocation where = !o.values.empty() ? io::SourceLocation{"--value", 0, 0}
-                                     : values != loaded.field_locations.end() ? values->second
-                                                                              : io::SourceLocation{path, 0, 0};
-    throw io::InputError(where, fmt::format("{} overflows a double (beyond about 1e308): the values or coordinates are "
-                                            "too large; scale them down (units do not change the counts)",
-                                            *overflowing));
-  }
-  design::Verdict verdict = design::network_verdict(loaded.model, result, options);
-  report::NetworkReportOptions report_options;
+  report::NetworkReportOptions report_options = analysis.report_options();
   report_options.matrices = o.matrices;
-  report_options.verdict = &verdict;
-  const std::optional<network::GenericNetwork> generic = network::generic_network(loaded.model, result);
-  if (generic) {
-    report_options.generic = &*generic;
-    verdict.generic = report::network_generic_sentences(loaded.model, result, *generic);
-  }
-  // Motions that pass second order are traced with the analysis's rank rule (`--tolerance`).
-  network::NetworkSecondOrderOptions second_order_options;
-  second_order_options.tracing.tolerance =
-      network::rank_rule_of(loaded.model, options.tolerances.rank);
-  const network::NetworkSecondOrder second_order = network::classify_network_motions(loaded.model, result, second_order_options);
-  report_options.second_order = &second_order;
-  emit(common, common.json ? report::json_text(report::network_report_json(loaded.model, result, report_options))
-                           : report::network_report_text(loaded.model, result, report_options));
+  emit(common, common.json ? report::json_text(report::network_report_json(loaded.model, analysis.result, report_options))
+                           : report::network_report_text(loaded.model, analysis.result, report_options));
   return 0;
 }
 

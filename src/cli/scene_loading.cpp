@@ -3,7 +3,6 @@
 
 #include "cli/commands.hpp"
 #include "kinestat/design/framework_verdict.hpp"
-#include "kinestat/design/network_verdict.hpp"
 #include "kinestat/design/structure_verdict.hpp"
 #include "kinestat/framework/framework_analysis.hpp"
 #include "kinestat/framework/generic_framework.hpp"
@@ -13,7 +12,7 @@
 #include "kinestat/io/network_structure.hpp"
 #include "kinestat/io/structure_reader.hpp"
 #include "kinestat/network/analyse_network.hpp"
-#include "kinestat/network/generic_network.hpp"
+#include "kinestat/report/analysis_report.hpp"
 #include "kinestat/report/framework_report.hpp"
 #include "kinestat/report/network_report.hpp"
 #include "kinestat/structure/decomposition.hpp"
@@ -51,16 +50,17 @@ LoadedScene load_scene(const std::string& path, std::optional<double> tolerance,
     const io::LoadedNetwork network = file ? io::read_network_model(*file) : read_imported_network(path, format);
     network::AnalysisOptions options;
     options.tolerances = Tolerances::with_rank(tolerance);
-    network::NetworkResult result;
+    // The pictures need no second-order classification.
+    report::NetworkAnalysisParts parts;
+    parts.second_order = false;
+    report::NetworkAnalysis analysis;
     try {
-      result = network::analyse_network(network.model, options);
+      analysis = report::analyse_network_as_reported(network.model, options, parts);
     } catch (const network::ModelError& error) {
       throw io::locate(error, network, path);
     }
-    loaded.scene = report::network_scene(network.model, result);
-    loaded.scene.verdict = design::network_verdict(network.model, result, options);
-    if (const auto generic = network::generic_network(network.model, result))
-      loaded.scene.verdict->generic = report::network_generic_sentences(network.model, result, *generic);
+    loaded.scene = report::network_scene(network.model, analysis.result);
+    loaded.scene.verdict = std::move(analysis.verdict);
     loaded.scene.units = network.model.units;
     try {
       loaded.structure_model = io::structure_of_network(network, path);

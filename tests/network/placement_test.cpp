@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <fmt/format.h>
 
 #include <cmath>
 #include <string>
@@ -122,6 +123,58 @@ TEST(Placement, FarFromTheOriginRandomNetworksKeepTheirAnswer) {
     ++checked;
   }
   EXPECT_GE(checked, 60) << close << " were close in floating point where they are";
+}
+
+
+// Body motions are reported in the user's frame, whichever frame decides (exact: the user's;
+// floating point: centred on the couplings and scaled). Kinematics alone fixes them: across a
+// revolute at P, the relative twist (ω; v) of its two bodies (planar: ω about z, v the velocity
+// of the point at the user's origin) moves P not at all, v + ω ẑ × P = 0; the ground does not
+// move; and the four-bar (FN = 1) moves. Checked for the planar four-bar at its place and moved
+// 1000 units away (full-precision coordinates, floating point), grounded on the ground link and
+// on the coupler (a body with a larger index than some others).
+TEST(Placement, BodyMotionsAreTheUsersAndFixEveryRevolute) {
+  for (const char* ground : {"ground", "coupler"})
+    for (const double offset : {0.0, 1000.0 + 1.0 / 3.0})
+      for (const Arithmetic arithmetic : {Arithmetic::exact, Arithmetic::floating}) {
+        if (offset != 0.0 && arithmetic == Arithmetic::exact) continue;
+        const auto point = [&](int x, int y) {
+          return offset == 0.0 ? fmt::format("[{}, {}]", x, y) : fmt::format("[{:.17g}, {:.17g}]", x + offset, y - offset);
+        };
+        const io::LoadedNetwork loaded = testing::parse_network(fmt::format(
+            "kinestat: 1\nkind: network\nname: four-bar\ndimension: planar\nground: {}\ncouplings:\n"
+            "  - {{name: A, type: revolute, between: [ground, crank], point: {}}}\n"
+            "  - {{name: B, type: revolute, between: [crank, coupler], point: {}}}\n"
+            "  - {{name: C, type: revolute, between: [coupler, rocker], point: {}}}\n"
+            "  - {{name: D, type: revolute, between: [rocker, ground], point: {}}}\n",
+            ground, point(0, 0), point(1, 2), point(4, 3), point(5, 0)));
+        const Model& model = loaded.model;
+        SCOPED_TRACE(fmt::format("ground {}, offset {}, {}", ground, offset, arithmetic == Arithmetic::exact ? "exact" : "floating"));
+        AnalysisOptions options;
+        options.arithmetic = arithmetic;
+        const NetworkResult r = analyse_network(model, options);
+        ASSERT_EQ(r.FN, 1);
+        ASSERT_EQ(r.body_motions.size(), model.bodies.size());
+        const auto g = static_cast<std::size_t>(r.ground);
+        EXPECT_EQ(model.bodies[g], ground);
+        EXPECT_EQ(r.body_motions[g].values.norm(), 0.0);
+        double largest = 0.0;
+        for (const auto& motion : r.body_motions) {
+          ASSERT_EQ(motion.values.rows(), 3);
+          ASSERT_EQ(motion.values.cols(), 1);
+          largest = std::max(largest, std::abs(motion.values(0, 0)));
+        }
+        EXPECT_GT(largest, 0.0);
+        for (const auto& c : model.couplings) {
+          const Eigen::Vector3d twist = r.body_motions[static_cast<std::size_t>(c.to)].values.col(0) -
+                                        r.body_motions[static_cast<std::size_t>(c.from)].values.col(0);
+          const double px = c.geometry.point[0].get_d(), py = c.geometry.point[1].get_d();
+          const double vx = twist(1) - twist(0) * py, vy = twist(2) + twist(0) * px;
+          const double scale = largest * (1.0 + std::abs(px) + std::abs(py));
+          EXPECT_NEAR(vx, 0.0, 1e-12 * scale) << c.name;
+          EXPECT_NEAR(vy, 0.0, 1e-12 * scale) << c.name;
+        }
+      }
 }
 
 }  // namespace

@@ -32,35 +32,55 @@ nlohmann::ordered_json framework_json(const framework::FrameworkModel& model, st
 nlohmann::ordered_json network_json(const io::LoadedNetwork& loaded, const std::string& path, std::optional<double> tolerance) {
   network::AnalysisOptions options;
   options.tolerances = Tolerances::with_rank(tolerance);
-  if (static_cast<int>(loaded.model.couplings.size()) > network::kDenseNetworkLimit) {
-    network::SparseNetworkResult sparse;
-    try {
-      sparse = network::analyse_network_sparse(loaded.model, options.tolerances, design::kSparseVerdictStates, false);
-    } catch (const network::ModelError& error) {
-      throw io::locate(error, loaded, path);
+  try {
+    if (static_cast<int>(loaded.model.couplings.size()) > network::kDenseNetworkLimit) {
+      const SparseNetworkAnalysis sparse = analyse_sparse_network_as_reported(loaded.model, options.tolerances);
+      return sparse_network_report_json(loaded.model, sparse.result, &sparse.verdict, nullptr);
     }
-    const design::Verdict verdict = design::sparse_network_verdict(loaded.model, sparse, options.tolerances);
-    return sparse_network_report_json(loaded.model, sparse, &verdict, nullptr);
+    const NetworkAnalysis analysis = analyse_network_as_reported(loaded.model, options);
+    return network_report_json(loaded.model, analysis.result, analysis.report_options());
+  } catch (const network::ModelError& error) {
+    throw io::locate(error, loaded, path);
   }
-  const network::NetworkResult result = io::analyse_network_file(loaded, path, options);
-  design::Verdict verdict = design::network_verdict(loaded.model, result, options);
-  NetworkReportOptions report_options;
-  report_options.verdict = &verdict;
-  const std::optional<network::GenericNetwork> generic = network::generic_network(loaded.model, result);
-  if (generic) {
-    report_options.generic = &*generic;
-    verdict.generic = network_generic_sentences(loaded.model, result, *generic);
-  }
-  // As `kinestat analyze`: passing motions traced with the analysis's rank rule.
-  network::NetworkSecondOrderOptions second_order_options;
-  second_order_options.tracing.tolerance =
-      network::rank_rule_of(loaded.model, options.tolerances.rank);
-  const network::NetworkSecondOrder second_order = network::classify_network_motions(loaded.model, result, second_order_options);
-  report_options.second_order = &second_order;
-  return network_report_json(loaded.model, result, report_options);
 }
 
 }  // namespace
+
+NetworkReportOptions NetworkAnalysis::report_options() const {
+  NetworkReportOptions options;
+  options.verdict = &verdict;
+  if (generic) options.generic = &*generic;
+  if (second_order) options.second_order = &*second_order;
+  return options;
+}
+
+NetworkAnalysis analyse_network_as_reported(const network::Model& model, const network::AnalysisOptions& options,
+                                            const NetworkAnalysisParts& parts) {
+  NetworkAnalysis a;
+  a.result = network::analyse_network(model, options);
+  if (parts.check) parts.check(a.result);
+  a.verdict = design::network_verdict(model, a.result, options);
+  a.generic = network::generic_network(model, a.result);
+  if (a.generic) a.verdict.generic = network_generic_sentences(model, a.result, *a.generic);
+  if (parts.second_order) {
+    // Motions that pass second order are traced with the analysis's rank rule (`--tolerance`).
+    network::NetworkSecondOrderOptions second_order_options;
+    second_order_options.tracing.tolerance = network::rank_rule_of(model, options.tolerances.rank);
+    a.second_order = network::classify_network_motions(model, a.result, second_order_options);
+  }
+  return a;
+}
+
+SparseNetworkAnalysis analyse_sparse_network_as_reported(const network::Model& model, const Tolerances& tolerances,
+                                                         const std::vector<std::pair<int, int>>& chosen,
+                                                         bool coupled_pairs) {
+  SparseNetworkAnalysis a;
+  a.listed_pairs = !chosen.empty() || coupled_pairs;
+  a.result = network::analyse_network_sparse(model, tolerances, design::kSparseVerdictStates, a.listed_pairs);
+  if (a.listed_pairs) a.pairs = network::sparse_pair_freedoms(model, a.result, chosen, coupled_pairs, tolerances);
+  a.verdict = design::sparse_network_verdict(model, a.result, tolerances);
+  return a;
+}
 
 nlohmann::ordered_json analysis_report_json(const io::ModelFile& model, std::optional<double> tolerance) {
   if (model.framework) return framework_json(*model.framework, tolerance);
