@@ -1,7 +1,12 @@
 #pragma once
 // Davies' four methods on a coupling network (seed 000): Kirchhoff's circulation law for
 // motions, the cutset law for actions, and their virtual-power duals (cutset motions and
-// circuit actions). A pure function: model in, plain result out.
+// circuit actions). A pure function: model in, plain result out, run in named stages
+// (analyse_network.cpp; docs/network.md, "The analysis in stages"): topology -> condition
+// (into the analysis frame) -> ranks -> bases and supports -> convert (back to the user's
+// frame, once) -> values and evidence. Every report goes through
+// report::analyse_network_as_reported, which adds the verdict, the generic answer and the
+// second-order classification.
 
 #include "kinestat/error.hpp"
 #include <map>
@@ -55,7 +60,13 @@ class ModelError : public Error {
   int index_;
 };
 
-/// Analyses `model` by all four methods. Throws ModelError.
+/// Analyses `model` (coordinates in the user's frame and length unit) by all four methods.
+/// Every decision (ranks, primaries, pair freedoms) is made in the analysis frame: the user's
+/// own with exact arithmetic, centred on the coupling points and scaled by their extent in
+/// floating point (AnalysisFrame); every screw, linear form and body motion of the result is in
+/// the user's frame and length unit (axis formation (ω; v) for motions, v the velocity of the
+/// point at the user's origin; ray formation (moment about the user's origin; force) for
+/// actions), tolerances relative as in `options.tolerances`. Throws ModelError.
 NetworkResult analyse_network(const Model& model, const AnalysisOptions& options = {});
 
 }  // namespace kinestat::network
