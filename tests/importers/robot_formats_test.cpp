@@ -15,6 +15,7 @@
 
 #include <Eigen/Dense>
 
+#include "support/subspace_angles.hpp"
 #include "kinestat/io/input_error.hpp"
 #include "kinestat/io/mjcf_reader.hpp"
 #include "kinestat/io/network_reader.hpp"
@@ -127,13 +128,7 @@ Eigen::MatrixXd coupling_wrenches(const network::NetworkResult& r, const network
   return rows;
 }
 
-// Cosines of the principal angles between the column spans of `a` and `b` (both of full column
-// rank): the singular values of Qaᵀ Qb. Equal spaces give cosines 1.
-Eigen::VectorXd principal_cosines(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
-  const Eigen::MatrixXd qa = Eigen::HouseholderQR<Eigen::MatrixXd>(a).householderQ() * Eigen::MatrixXd::Identity(a.rows(), a.cols());
-  const Eigen::MatrixXd qb = Eigen::HouseholderQR<Eigen::MatrixXd>(b).householderQ() * Eigen::MatrixXd::Identity(b.rows(), b.cols());
-  return Eigen::JacobiSVD<Eigen::MatrixXd>(qa.transpose() * qb).singularValues();
-}
+using kinestat::testing::principal_cosines;
 
 struct Expected {
   const char* yaml;

@@ -16,6 +16,7 @@
 #include <map>
 #include <string>
 
+#include "support/subspace_angles.hpp"
 #include "kinestat/framework/framework_analysis.hpp"
 #include "kinestat/io/framework_reader.hpp"
 #include "kinestat/io/input_error.hpp"
@@ -161,13 +162,7 @@ double mode_rate(const framework::FrameworkResult& a, const FrameworkModel& m, s
   return 0.0;
 }
 
-// Cosines of the principal angles between the column spans of `a` and `b` (both of full column
-// rank): the singular values of Qaᵀ Qb. Equal spaces give cosines 1.
-Eigen::VectorXd principal_cosines(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
-  const Eigen::MatrixXd qa = Eigen::HouseholderQR<Eigen::MatrixXd>(a).householderQ() * Eigen::MatrixXd::Identity(a.rows(), a.cols());
-  const Eigen::MatrixXd qb = Eigen::HouseholderQR<Eigen::MatrixXd>(b).householderQ() * Eigen::MatrixXd::Identity(b.rows(), b.cols());
-  return Eigen::JacobiSVD<Eigen::MatrixXd>(qa.transpose() * qb).singularValues();
-}
+using kinestat::testing::principal_cosines;
 
 using Names = std::map<std::string, std::string>;
 

@@ -19,11 +19,11 @@ namespace {
 
 using framework::FrameworkModel;
 
-std::string source(const std::string& relative) { return std::string(KINESTAT_SOURCE_DIR) + "/" + relative; }
+std::string source_file(const std::string& relative) { return std::string(KINESTAT_SOURCE_DIR) + "/" + relative; }
 
 FrameworkModel load(const std::string& relative) {
-  if (relative.ends_with(".dat")) return read_spacar(source(relative)).model;
-  return read_framework_model(YamlFile::load(source(relative)));
+  if (relative.ends_with(".dat")) return read_spacar(source_file(relative)).model;
+  return read_framework_model(YamlFile::load(source_file(relative)));
 }
 
 void expect_same_counts(const FrameworkModel& a, const FrameworkModel& b, const std::string& what) {

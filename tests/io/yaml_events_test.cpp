@@ -14,7 +14,7 @@
 namespace kinestat::io {
 namespace {
 
-std::string error_of(const std::string& text) {
+std::string event_error_of(const std::string& text) {
   try {
     (void)YamlFile::parse("in.yaml", text);
     return "accepted";
@@ -27,22 +27,22 @@ bool starts(const std::string& text, const std::string& prefix) { return text.rf
 
 TEST(YamlEvents, MalformedYamlSaysWhereAndWhatWasBeingRead) {
   // The flow list opened by '[' at column 12 of line 2 never closes: the text ends at 3:1.
-  const std::string message = error_of("kinestat: 1\ncouplings: [\n");
+  const std::string message = event_error_of("kinestat: 1\ncouplings: [\n");
   EXPECT_TRUE(starts(message, "in.yaml:3:1: error: malformed YAML: ")) << message;
   EXPECT_NE(message.find("(in the flow list that starts at line 2, column 12)"), std::string::npos) << message;
   // libyaml's own context when it points elsewhere: the quoted string opened at 2:7 never ends.
-  const std::string quote = error_of("kinestat: 1\nname: \"abc\n");
+  const std::string quote = event_error_of("kinestat: 1\nname: \"abc\n");
   EXPECT_TRUE(starts(quote, "in.yaml:3:1: error: malformed YAML: ")) << quote;
   EXPECT_NE(quote.find("that starts at line 2, column 7)"), std::string::npos) << quote;
   // A surrogate escape: libyaml's message, mapped to one that names the escape.
-  EXPECT_NE(error_of("name: \"\\ud800\"\n").find("malformed YAML: invalid unicode escape"), std::string::npos);
+  EXPECT_NE(event_error_of("name: \"\\ud800\"\n").find("malformed YAML: invalid unicode escape"), std::string::npos);
 }
 
 TEST(YamlEvents, ColumnsCountCharactersNotBytes) {
   // "ä: [a, *u]": ä, ':', ' ', '[', 'a', ',', ' ' are 7 characters (8 bytes); '*' is column 8.
-  EXPECT_TRUE(starts(error_of("\xC3\xA4: [a, *u]\n"), "in.yaml:1:8: error: the alias '*u' refers to an anchor that is "
+  EXPECT_TRUE(starts(event_error_of("\xC3\xA4: [a, *u]\n"), "in.yaml:1:8: error: the alias '*u' refers to an anchor that is "
                                                       "not defined before it ('&u')"))
-      << error_of("\xC3\xA4: [a, *u]\n");
+      << event_error_of("\xC3\xA4: [a, *u]\n");
 }
 
 TEST(YamlEvents, PlainNullsEmptyNodesAndQuotedStrings) {
@@ -73,28 +73,28 @@ TEST(YamlEvents, AnAnchorDefinedAgainServesTheAliasesAfterIt) {
   EXPECT_EQ(file.root()["c"].size(), 3u);
   EXPECT_EQ(file.root()["d"][1].size(), 3u);
   // An alias before its anchor: 'a: *x' puts '*' at column 4.
-  EXPECT_TRUE(starts(error_of("a: *x\nb: &x 1\n"), "in.yaml:1:4: error: the alias '*x' refers to an anchor that is not "
+  EXPECT_TRUE(starts(event_error_of("a: *x\nb: &x 1\n"), "in.yaml:1:4: error: the alias '*x' refers to an anchor that is not "
                                                    "defined before it"))
-      << error_of("a: *x\nb: &x 1\n");
+      << event_error_of("a: *x\nb: &x 1\n");
 }
 
 TEST(YamlEvents, CharactersYamlTakesAsLineEndsOrRefusesAreNamed) {
   // "kinestat: 1 # " is 14 characters: the C1 control in the comment is at column 15.
-  EXPECT_TRUE(starts(error_of("kinestat: 1 # \xC2\x9B\n"), "in.yaml:1:15: error: control character U+009B is not allowed"))
-      << error_of("kinestat: 1 # \xC2\x9B\n");
+  EXPECT_TRUE(starts(event_error_of("kinestat: 1 # \xC2\x9B\n"), "in.yaml:1:15: error: control character U+009B is not allowed"))
+      << event_error_of("kinestat: 1 # \xC2\x9B\n");
   // NEL (U+0085, a YAML 1.1 line end) after "name: a": column 8.
-  EXPECT_TRUE(starts(error_of("name: a\xC2\x85" "b\n"), "in.yaml:1:8: error: control character U+0085 is not allowed"))
-      << error_of("name: a\xC2\x85" "b\n");
+  EXPECT_TRUE(starts(event_error_of("name: a\xC2\x85" "b\n"), "in.yaml:1:8: error: control character U+0085 is not allowed"))
+      << event_error_of("name: a\xC2\x85" "b\n");
   // The line and paragraph separators, raw: refused; as escapes in a double-quoted string: kept.
-  EXPECT_TRUE(starts(error_of("name: a\xE2\x80\xA8" "b\n"), "in.yaml:1:8: error: the line separator U+2028 is not allowed"))
-      << error_of("name: a\xE2\x80\xA8" "b\n");
-  EXPECT_TRUE(starts(error_of("x: 1\nname: \xE2\x80\xA9\n"), "in.yaml:2:7: error: the line separator U+2029"))
-      << error_of("x: 1\nname: \xE2\x80\xA9\n");
+  EXPECT_TRUE(starts(event_error_of("name: a\xE2\x80\xA8" "b\n"), "in.yaml:1:8: error: the line separator U+2028 is not allowed"))
+      << event_error_of("name: a\xE2\x80\xA8" "b\n");
+  EXPECT_TRUE(starts(event_error_of("x: 1\nname: \xE2\x80\xA9\n"), "in.yaml:2:7: error: the line separator U+2029"))
+      << event_error_of("x: 1\nname: \xE2\x80\xA9\n");
   const auto file = YamlFile::parse("in.yaml", "name: \"a\\u2028b\"\n");
   EXPECT_EQ(file.root()["name"].scalar(), "a\xE2\x80\xA8" "b");
   // The noncharacter U+FFFE after "name: ": column 7.
-  EXPECT_TRUE(starts(error_of("name: \xEF\xBF\xBE\n"), "in.yaml:1:7: error: the noncharacter U+FFFE is not allowed"))
-      << error_of("name: \xEF\xBF\xBE\n");
+  EXPECT_TRUE(starts(event_error_of("name: \xEF\xBF\xBE\n"), "in.yaml:1:7: error: the noncharacter U+FFFE is not allowed"))
+      << event_error_of("name: \xEF\xBF\xBE\n");
 }
 
 TEST(YamlEvents, CompactJsonReads) {
@@ -113,12 +113,12 @@ TEST(YamlEvents, CompactJsonReads) {
 TEST(YamlEvents, OneDocumentEvenWithoutMarkers) {
   // After a document end marker, a second document starts at its '---' on line 3; without the
   // marker the text is not YAML 1.1 (a document after '...' must start with '---').
-  EXPECT_TRUE(starts(error_of("kinestat: 1\n...\n---\nname: b\n"), "in.yaml:3:1: error: a second YAML document"))
-      << error_of("kinestat: 1\n...\n---\nname: b\n");
-  EXPECT_TRUE(starts(error_of("kinestat: 1\n...\nname: b\n"), "in.yaml:3:1: error: malformed YAML: "))
-      << error_of("kinestat: 1\n...\nname: b\n");
+  EXPECT_TRUE(starts(event_error_of("kinestat: 1\n...\n---\nname: b\n"), "in.yaml:3:1: error: a second YAML document"))
+      << event_error_of("kinestat: 1\n...\n---\nname: b\n");
+  EXPECT_TRUE(starts(event_error_of("kinestat: 1\n...\nname: b\n"), "in.yaml:3:1: error: malformed YAML: "))
+      << event_error_of("kinestat: 1\n...\nname: b\n");
   // Comments and blank lines only: no document.
-  EXPECT_TRUE(starts(error_of("# nothing\n\n"), "in.yaml:1:1: error: empty model file")) << error_of("# nothing\n\n");
+  EXPECT_TRUE(starts(event_error_of("# nothing\n\n"), "in.yaml:1:1: error: empty model file")) << event_error_of("# nothing\n\n");
 }
 
 }  // namespace

@@ -21,7 +21,7 @@ using kinestat::testing::example_path;
 using kinestat::testing::run_cli;
 using kinestat::testing::write_temp_file;
 
-std::string data(const std::string& name) { return std::string(KINESTAT_SOURCE_DIR) + "/tests/kinematics/data/" + name; }
+std::string data_file(const std::string& name) { return std::string(KINESTAT_SOURCE_DIR) + "/tests/kinematics/data/" + name; }
 
 double length(const nlohmann::json& positions, const std::string& a, const std::string& b) {
   double sum = 0;
@@ -166,7 +166,7 @@ TEST(MoveCli, FourBarReportsTheInputsAtWhichItCannotBeAssembled) {
 }
 
 TEST(MoveCli, TriadSweepTextNamesTheGroupsAndTheirMethods) {
-  const auto r = run_cli("move " + data("class-iii-triad-planar.yaml") + " --sweep A=0:6.283185307179586:36");
+  const auto r = run_cli("move " + data_file("class-iii-triad-planar.yaml") + " --sweep A=0:6.283185307179586:36");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("triad"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("Newton's method"), std::string::npos) << r.out;

@@ -41,7 +41,7 @@ const std::vector<Expected> kExamples = {
     {"screw-jack.yaml", 3, 15, 1, 2, 1, 4, "overconstrained_chain"},
 };
 
-class AnalyzeCommand : public testing::TestWithParam<Expected> {};
+class AnalyzeCommand : public ::testing::TestWithParam<Expected> {};
 
 TEST_P(AnalyzeCommand, TextReportExitsZero) {
   const auto result = run("analyze " + example(GetParam().file));
@@ -90,7 +90,7 @@ TEST_P(AnalyzeCommand, FloatingPointGivesTheSameFNAndCN) {
   EXPECT_EQ(j["CN"], GetParam().CN);
 }
 
-INSTANTIATE_TEST_SUITE_P(Examples, AnalyzeCommand, testing::ValuesIn(kExamples), [](const testing::TestParamInfo<Expected>& param_info) {
+INSTANTIATE_TEST_SUITE_P(Examples, AnalyzeCommand, ::testing::ValuesIn(kExamples), [](const ::testing::TestParamInfo<Expected>& param_info) {
   std::string name = param_info.param.file.substr(0, param_info.param.file.find('.'));
   for (char& ch : name)
     if (ch == '-') ch = '_';

@@ -33,17 +33,17 @@ const std::vector<Published> kMechanisms = {
     {"tsai-3upu.yaml", 3, 0},         {"screw-jack.yaml", 1, 4},
 };
 
-network::NetworkResult analyse(const network::Model& model, Arithmetic arithmetic = Arithmetic::automatic) {
+network::NetworkResult analyse_model(const network::Model& model, Arithmetic arithmetic = Arithmetic::automatic) {
   network::AnalysisOptions options;
   options.arithmetic = arithmetic;
   return network::analyse_network(model, options);
 }
 
-class Invariance : public testing::TestWithParam<Published> {
+class Invariance : public ::testing::TestWithParam<Published> {
  protected:
   void SetUp() override {
     model_ = load_example(GetParam().file);
-    reference_ = analyse(model_);
+    reference_ = analyse_model(model_);
     ASSERT_EQ(reference_.FN, GetParam().FN);
     ASSERT_EQ(reference_.CN, GetParam().CN);
   }
@@ -74,7 +74,7 @@ TEST_P(Invariance, RigidMotionWithRationalRotation) {
   const Matrix3 rotation = planar() ? z_rotation(Rational(3, 5), Rational(4, 5)) : quaternion_rotation(1, 2, 3, 4);
   const screw::Vec3 translation = planar() ? screw::Vec3{7, -2, 0} : screw::Vec3{7, -2, Rational(5, 2)};
   const auto moved = rigidly_moved(model_, rotation, translation);
-  const auto r = analyse(moved);
+  const auto r = analyse_model(moved);
   EXPECT_TRUE(r.exact);
   expect_same(moved, r);
 }
@@ -82,26 +82,26 @@ TEST_P(Invariance, RigidMotionWithRationalRotation) {
 TEST_P(Invariance, AnotherRigidMotion) {
   const Matrix3 rotation = planar() ? z_rotation(Rational(-5, 13), Rational(12, 13)) : quaternion_rotation(3, -1, 5, 2);
   const auto moved = rigidly_moved(model_, rotation, {Rational(-1, 8), 100, 0});
-  expect_same(moved, analyse(moved));
+  expect_same(moved, analyse_model(moved));
 }
 
 TEST_P(Invariance, LengthsTimes1000) {
   const auto big = scaled(model_, 1000);
-  expect_same(big, analyse(big));
-  expect_same(big, analyse(big, Arithmetic::floating));
+  expect_same(big, analyse_model(big));
+  expect_same(big, analyse_model(big, Arithmetic::floating));
 }
 
 TEST_P(Invariance, LengthsOver1000) {
   const auto small = scaled(model_, Rational(1, 1000));
-  expect_same(small, analyse(small));
-  expect_same(small, analyse(small, Arithmetic::floating));
+  expect_same(small, analyse_model(small));
+  expect_same(small, analyse_model(small, Arithmetic::floating));
 }
 
 TEST_P(Invariance, RenamedAndReordered) {
   for (unsigned seed : {1u, 2u, 3u}) {
     SCOPED_TRACE(seed);
     const auto renamed = renamed_and_reordered(model_, seed);
-    expect_same(renamed, analyse(renamed), true);
+    expect_same(renamed, analyse_model(renamed), true);
   }
 }
 
@@ -109,7 +109,7 @@ TEST_P(Invariance, OtherSpanningTrees) {
   for (unsigned seed : {0u, 1u, 2u, 3u, 4u, 5u}) {
     SCOPED_TRACE(seed);
     const auto other = with_random_tree(model_, seed);
-    expect_same(other, analyse(other));
+    expect_same(other, analyse_model(other));
   }
 }
 
@@ -119,7 +119,7 @@ TEST_P(Invariance, AnyBodyAsGround) {
     SCOPED_TRACE(model_.bodies[ground]);
     auto other = model_;
     other.ground = static_cast<int>(ground);
-    expect_same(other, analyse(other));
+    expect_same(other, analyse_model(other));
   }
 }
 
@@ -146,8 +146,8 @@ TEST_P(Invariance, CoupledPairsOnlyIsASubsetOfAllPairs) {
 }
 
 TEST_P(Invariance, ExactAndFloatingPointAgree) {
-  const auto exact = analyse(model_, Arithmetic::exact);
-  const auto floating = analyse(model_, Arithmetic::floating);
+  const auto exact = analyse_model(model_, Arithmetic::exact);
+  const auto floating = analyse_model(model_, Arithmetic::floating);
   EXPECT_TRUE(exact.exact);
   EXPECT_FALSE(floating.exact);
   expect_same(model_, exact);
@@ -167,7 +167,7 @@ TEST_P(Invariance, PairPrimariesAgreeInFloatingPoint) {
   for (std::size_t i = 0; i < models.size(); ++i) {
     SCOPED_TRACE(i);
     auto model = models[i];
-    const auto exact = analyse(model, Arithmetic::exact);
+    const auto exact = analyse_model(model, Arithmetic::exact);
     // The same primaries for both, so that the names can be compared.
     network::AnalysisOptions options;
     options.arithmetic = Arithmetic::floating;
@@ -188,8 +188,8 @@ TEST_P(Invariance, RedundantRowsAgreeInFloatingPoint) {
                                               rigidly_moved(model_, rotation, {12345, -678, planar() ? 0 : 91})};
   for (std::size_t i = 0; i < models.size(); ++i) {
     SCOPED_TRACE(i);
-    const auto exact = analyse(models[i], Arithmetic::exact);
-    const auto floating = analyse(models[i], Arithmetic::floating);
+    const auto exact = analyse_model(models[i], Arithmetic::exact);
+    const auto floating = analyse_model(models[i], Arithmetic::floating);
     EXPECT_EQ(floating.circulation.solution.redundant_rows, exact.circulation.solution.redundant_rows);
     EXPECT_EQ(floating.cutset_law.solution.redundant_rows, exact.cutset_law.solution.redundant_rows);
     // Dropping them leaves as many rows as the rank: CN rows of M^N, FN rows of A^N.
@@ -201,7 +201,7 @@ TEST_P(Invariance, RedundantRowsAgreeInFloatingPoint) {
 TEST_P(Invariance, RigidMotionThenFloatingPoint) {
   const Matrix3 rotation = planar() ? z_rotation(Rational(3, 5), Rational(4, 5)) : quaternion_rotation(1, 2, 3, 4);
   const auto moved = rigidly_moved(model_, rotation, {7, -2, 0});
-  expect_same(moved, analyse(moved, Arithmetic::floating));
+  expect_same(moved, analyse_model(moved, Arithmetic::floating));
 }
 
 TEST_P(Invariance, ThirtyDegreesInFullDoublePrecision) {
@@ -223,12 +223,12 @@ TEST_P(Invariance, ThirtyDegreesInFullDoublePrecision) {
       }
   }
   const auto rotated = rounded_to_double(rigidly_moved(model_, rotation, {Rational(1, 10), 0, 0}));
-  const auto r = analyse(rotated);
+  const auto r = analyse_model(rotated);
   EXPECT_FALSE(r.exact);
   expect_same(rotated, r);
   // Exact arithmetic analyses the rounded geometry, which may be a different mechanism; if it
   // is, the library must say that floating point disagrees, with the published answer.
-  const auto e = analyse(rotated, Arithmetic::exact);
+  const auto e = analyse_model(rotated, Arithmetic::exact);
   if (e.FN != GetParam().FN || e.CN != GetParam().CN) {
     ASSERT_TRUE(e.floating_point_disagreement.has_value());
     EXPECT_EQ(e.floating_point_disagreement->first, GetParam().FN);
@@ -238,7 +238,7 @@ TEST_P(Invariance, ThirtyDegreesInFullDoublePrecision) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Mechanisms, Invariance, testing::ValuesIn(kMechanisms), [](const testing::TestParamInfo<Published>& param_info) {
+INSTANTIATE_TEST_SUITE_P(Mechanisms, Invariance, ::testing::ValuesIn(kMechanisms), [](const ::testing::TestParamInfo<Published>& param_info) {
   std::string name = param_info.param.file.substr(0, param_info.param.file.find('.'));
   for (char& ch : name)
     if (ch == '-') ch = '_';

@@ -16,7 +16,7 @@ namespace {
 using kinestat::testing::example_path;
 using kinestat::testing::run_cli;
 
-std::string read(const std::string& path) {
+std::string read_text(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::stringstream s;
   s << in.rdbuf();
@@ -37,7 +37,7 @@ TEST(HtmlReport, SelfContainedFileForTheTruss) {
   const std::string path = temp("truss.html");
   const auto run = run_cli("report " + example_path("truss-12.yaml") + " -o " + path);
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  const std::string html = read(path);
+  const std::string html = read_text(path);
   EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
   EXPECT_NE(html.find("window.KINESTAT_SCENE = {"), std::string::npos);
   EXPECT_NE(html.find("\"self-stress 1\""), std::string::npos);
@@ -93,14 +93,14 @@ TEST(LargeModel, TwoHundredThousandElementsGiveBoundedFiles) {
   auto run = run_cli("draw " + path + " -o " + svg);
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_LT(std::filesystem::file_size(svg), 8u * 1024 * 1024);
-  EXPECT_NE(read(svg).find("elements: drawn as one path"), std::string::npos);
+  EXPECT_NE(read_text(svg).find("elements: drawn as one path"), std::string::npos);
   std::filesystem::remove(svg);
   if (kinestat::report::html_report_built_in()) {
     const std::string html = temp("large.html");
     run = run_cli("report " + path + " -o " + html);
     ASSERT_EQ(run.exit_code, 0) << run.err;
     EXPECT_LT(std::filesystem::file_size(html), 12u * 1024 * 1024);
-    EXPECT_NE(read(html).find("\"large\":true"), std::string::npos);
+    EXPECT_NE(read_text(html).find("\"large\":true"), std::string::npos);
     std::filesystem::remove(html);
   }
   std::filesystem::remove(path);

@@ -16,14 +16,14 @@ namespace {
 using kinestat::testing::example_path;
 namespace report = kinestat::report;
 
-report::Scene framework_scene_of(const std::string& example) {
+report::Scene example_scene(const std::string& example) {
   const auto file = kinestat::io::YamlFile::load(example_path(example));
   const auto model = kinestat::io::read_framework_model(file);
   return report::framework_scene(model, kinestat::framework::analyse_framework(model));
 }
 
 TEST(Scene, Truss12HasTwelveBarsOneModeAndOneSelfStressOfBothSigns) {
-  const auto scene = framework_scene_of("truss-12.yaml");
+  const auto scene = example_scene("truss-12.yaml");
   ASSERT_EQ(scene.elements.size(), 12u);
   ASSERT_EQ(scene.modes.size(), 1u);
   ASSERT_EQ(scene.stresses.size(), 1u);
@@ -46,7 +46,7 @@ TEST(Scene, Truss12HasTwelveBarsOneModeAndOneSelfStressOfBothSigns) {
 }
 
 TEST(Scene, FourBarModeMovesOnlyTheFreeJointsPerpendicularToTheirCranks) {
-  const auto scene = framework_scene_of("four-bar-linkage.yaml");
+  const auto scene = example_scene("four-bar-linkage.yaml");
   ASSERT_EQ(scene.modes.size(), 1u);
   const auto& v = scene.modes[0].velocity;
   EXPECT_EQ(v[0].norm(), 0.0);  // A

@@ -13,9 +13,6 @@ namespace {
 using framework::FrameworkResult;
 using framework::FrameworkModel;
 
-
-std::string counted(Eigen::Index n, const char* one, const char* many) { return fmt::format("{} {}", n, n == 1 ? one : many); }
-
 }  // namespace
 
 std::string framework_row_name(const FrameworkModel& model, const FrameworkResult& analysis, Eigen::Index row) {

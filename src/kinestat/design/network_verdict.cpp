@@ -73,8 +73,6 @@ void add_shares(VerdictState& state, const std::vector<double>& size, const std:
   rank_participants(state.participants);
 }
 
-std::string counted(int n, const char* one, const char* many) { return fmt::format("{} {}", n, n == 1 ? one : many); }
-
 // ---- counting a (changed) network -------------------------------------------------------
 
 struct Standing {

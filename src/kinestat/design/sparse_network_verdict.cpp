@@ -23,9 +23,6 @@ using network::Model;
 using network::SparseNetworkResult;
 using Index = Eigen::Index;
 
-
-std::string counted(std::size_t n, const char* one, const char* many) { return fmt::format("{} {}", n, n == 1 ? one : many); }
-
 // True unless body b's actions in K (the rows of its own couplings in its column block, the
 // conditioned frame) clearly span all d twists (kIdleSpinScreen): a floating-point screen that
 // keeps the exact small-model analysis below for the bodies that might spin; most bodies of a

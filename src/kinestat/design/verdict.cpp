@@ -9,9 +9,7 @@
 
 namespace kinestat::design {
 
-namespace {
-std::string counted(int n, const char* one, const char* many) { return fmt::format("{} {}", n, n == 1 ? one : many); }
-}  // namespace
+std::string counted(long long n, const char* one, const char* many) { return fmt::format("{} {}", n, n == 1 ? one : many); }
 
 std::string constraint_words(int extra_motions, int redundant_constraints) {
   if (extra_motions == 0 && redundant_constraints == 0) return "exactly constrained";

@@ -69,6 +69,9 @@ void rank_participants(std::vector<Participant>& list);
 /// any of `states`, ranked by rank_participants.
 std::vector<Participant> strongest(const std::vector<VerdictState>& states, const std::string& kind);
 
+/// "1 input" or "3 inputs": the count `n` and the noun in the singular (`one`) or plural (`many`).
+std::string counted(long long n, const char* one, const char* many);
+
 /// "exactly constrained" or "1 extra motion, 2 redundant constraints" (the words of `summary`).
 std::string constraint_words(int extra_motions, int redundant_constraints);
 

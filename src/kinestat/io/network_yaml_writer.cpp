@@ -7,7 +7,7 @@ namespace kinestat::io {
 
 namespace {
 
-std::string quoted(const std::string& text) { return nlohmann::json(text).dump(); }
+std::string yaml_quoted(const std::string& text) { return nlohmann::json(text).dump(); }
 
 // A rational as a decimal: exact when its denominator has no prime factors but 2 and 5.
 std::string decimal(const screw::Rational& value) {
@@ -29,7 +29,7 @@ std::string decimal(const screw::Rational& value) {
   return (negative ? "-" : "") + text;
 }
 
-std::string vector(const screw::Vec3& v) { return fmt::format("[{}, {}, {}]", decimal(v[0]), decimal(v[1]), decimal(v[2])); }
+std::string yaml_vector(const screw::Vec3& v) { return fmt::format("[{}, {}, {}]", decimal(v[0]), decimal(v[1]), decimal(v[2])); }
 
 }  // namespace
 
@@ -37,21 +37,21 @@ std::string network_yaml(const network::Model& model, const std::vector<std::str
   std::string out;
   for (const auto& c : comments) out += "# " + c + "\n";
   out += "kinestat: 1\nkind: network\n";
-  if (!model.name.empty()) out += "name: " + quoted(model.name) + "\n";
+  if (!model.name.empty()) out += "name: " + yaml_quoted(model.name) + "\n";
   out += model.space.is_planar() ? "dimension: planar\n" : "dimension: spatial\n";
-  if (!model.units.empty()) out += "units: " + quoted(model.units) + "\n";
+  if (!model.units.empty()) out += "units: " + yaml_quoted(model.units) + "\n";
   out += "bodies: [";
-  for (std::size_t b = 0; b < model.bodies.size(); ++b) out += (b ? ", " : "") + quoted(model.bodies[b]);
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) out += (b ? ", " : "") + yaml_quoted(model.bodies[b]);
   out += "]\n";
-  if (model.ground) out += "ground: " + quoted(model.bodies[static_cast<std::size_t>(*model.ground)]) + "\n";
+  if (model.ground) out += "ground: " + yaml_quoted(model.bodies[static_cast<std::size_t>(*model.ground)]) + "\n";
   out += "couplings:\n";
   for (const auto& c : model.couplings) {
-    out += fmt::format("  - {{name: {}, type: {}, between: [{}, {}], point: {}", quoted(c.name), screw::coupling_type_name(c.type),
-                       quoted(model.bodies[static_cast<std::size_t>(c.from)]), quoted(model.bodies[static_cast<std::size_t>(c.to)]),
-                       vector(c.geometry.point));
-    if (c.geometry.axis) out += ", axis: " + vector(*c.geometry.axis);
-    if (c.geometry.axis2) out += ", axis2: " + vector(*c.geometry.axis2);
-    if (c.geometry.normal) out += ", normal: " + vector(*c.geometry.normal);
+    out += fmt::format("  - {{name: {}, type: {}, between: [{}, {}], point: {}", yaml_quoted(c.name), screw::coupling_type_name(c.type),
+                       yaml_quoted(model.bodies[static_cast<std::size_t>(c.from)]), yaml_quoted(model.bodies[static_cast<std::size_t>(c.to)]),
+                       yaml_vector(c.geometry.point));
+    if (c.geometry.axis) out += ", axis: " + yaml_vector(*c.geometry.axis);
+    if (c.geometry.axis2) out += ", axis2: " + yaml_vector(*c.geometry.axis2);
+    if (c.geometry.normal) out += ", normal: " + yaml_vector(*c.geometry.normal);
     if (c.type == screw::CouplingType::helical) out += ", pitch: " + decimal(c.geometry.pitch);
     out += "}\n";
   }

@@ -64,12 +64,12 @@ class MutedStandardError {
 Eigen::Vector3d vector(const ignition::math::Vector3d& v) { return {v.X(), v.Y(), v.Z()}; }
 
 /// x_outer = rotation * x_inner + origin.
-struct Frame {
+struct SdfFrame {
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
   Eigen::Vector3d origin = Eigen::Vector3d::Zero();
 };
 
-Frame frame(const ignition::math::Pose3d& pose) {
+SdfFrame frame(const ignition::math::Pose3d& pose) {
   const auto& q = pose.Rot();
   return {Eigen::Quaterniond(q.W(), q.X(), q.Y(), q.Z()).normalized().toRotationMatrix(), vector(pose.Pos())};
 }
@@ -80,10 +80,10 @@ class SdformatReader {
 
   ImportedNetwork read(const sdf::Root& root, const sdf::Errors& errors) {
     if (!errors.empty()) fail(errors.front());
-    std::vector<std::pair<const sdf::Model*, Frame>> models;
+    std::vector<std::pair<const sdf::Model*, SdfFrame>> models;
     std::string name;
     if (const sdf::Model* single = root.Model()) {
-      models.push_back({single, Frame{}});
+      models.push_back({single, SdfFrame{}});
       name = single->Name();
     } else {
       for (std::uint64_t w = 0; w < root.WorldCount(); ++w) {
@@ -120,7 +120,7 @@ class SdformatReader {
     return {element->FilePath().empty() ? path_ : element->FilePath(), line.value_or(0), line ? 1 : 0};
   }
 
-  void read_model(NetworkBuilder& builder, const sdf::Model& model, const Frame& placed, const std::string& scope) {
+  void read_model(NetworkBuilder& builder, const sdf::Model& model, const SdfFrame& placed, const std::string& scope) {
     for (std::uint64_t l = 0; l < model.LinkCount(); ++l) builder.body(scope + model.LinkByIndex(l)->Name());
     if (ground_candidate_.empty() && !model.CanonicalLinkName().empty()) ground_candidate_ = scope + model.CanonicalLinkName();
     for (std::uint64_t j = 0; j < model.JointCount(); ++j) read_joint(builder, *model.JointByIndex(j), placed, scope);
@@ -129,7 +129,7 @@ class SdformatReader {
       ignition::math::Pose3d pose;
       const sdf::Errors e = nested->SemanticPose().Resolve(pose, "__model__");
       if (!e.empty()) fail(e.front());
-      const Frame inner = frame(pose);
+      const SdfFrame inner = frame(pose);
       read_model(builder, *nested, {placed.rotation * inner.rotation, placed.rotation * inner.origin + placed.origin},
                  scope + nested->Name() + "::");
     }
@@ -146,7 +146,7 @@ class SdformatReader {
     return scope + name;
   }
 
-  Eigen::Vector3d axis(const sdf::Joint& joint, unsigned index, const Frame& placed) const {
+  Eigen::Vector3d axis(const sdf::Joint& joint, unsigned index, const SdfFrame& placed) const {
     const sdf::JointAxis* a = joint.Axis(index);
     if (!a) throw InputError(where(joint.Element()), fmt::format("joint '{}' needs an <axis{}>", joint.Name(), index ? "2" : ""));
     ignition::math::Vector3d xyz;
@@ -155,11 +155,11 @@ class SdformatReader {
     return placed.rotation * vector(xyz);
   }
 
-  void read_joint(NetworkBuilder& builder, const sdf::Joint& joint, const Frame& placed, const std::string& scope) {
+  void read_joint(NetworkBuilder& builder, const sdf::Joint& joint, const SdfFrame& placed, const std::string& scope) {
     ignition::math::Pose3d pose;
     const sdf::Errors e = joint.SemanticPose().Resolve(pose, "__model__");
     if (!e.empty()) fail(e.front());
-    const Frame f = frame(pose);
+    const SdfFrame f = frame(pose);
     JointGeometry g;
     g.point = placed.rotation * f.origin + placed.origin;
     screw::CouplingType type = screw::CouplingType::rigid;

@@ -22,7 +22,7 @@ using framework::FrameworkModel;
 namespace {
 
 
-std::string number(double value) { return fmt::format("{}", value == 0.0 ? 0.0 : value); }
+std::string spacar_number(double value) { return fmt::format("{}", value == 0.0 ? 0.0 : value); }
 
 class SpacarWriter {
  public:
@@ -137,8 +137,8 @@ class SpacarWriter {
     for (std::size_t i = 0; i < model_.nodes.size(); ++i) {
       if (position_[i] != static_cast<long>(2 * i + 1)) continue;  // shares a joint partner's position node
       const auto& x = model_.nodes[i].position;
-      if (planar_) out_ += fmt::format("X  {:6}  {}  {}  # node {}\n", position_[i], number(x.x()), number(x.y()), printable_text(model_.nodes[i].name));
-      else out_ += fmt::format("X  {:6}  {}  {}  {}  # node {}\n", position_[i], number(x.x()), number(x.y()), number(x.z()), printable_text(model_.nodes[i].name));
+      if (planar_) out_ += fmt::format("X  {:6}  {}  {}  # node {}\n", position_[i], spacar_number(x.x()), spacar_number(x.y()), printable_text(model_.nodes[i].name));
+      else out_ += fmt::format("X  {:6}  {}  {}  {}  # node {}\n", position_[i], spacar_number(x.x()), spacar_number(x.y()), spacar_number(x.z()), printable_text(model_.nodes[i].name));
     }
     out_ += "\n";
   }
@@ -151,7 +151,7 @@ class SpacarWriter {
                           orientation(q), comment);
     } else {
       out_ += fmt::format("BEAM  {:4}  {:4} {:4}  {:4} {:4}  {}  {}  {}  # {}\n", element, position_[p], orientation(p),
-                          position_[q], orientation(q), number(y.x()), number(y.y()), number(y.z()), comment);
+                          position_[q], orientation(q), spacar_number(y.x()), spacar_number(y.y()), spacar_number(y.z()), comment);
     }
   }
 
@@ -184,7 +184,7 @@ class SpacarWriter {
         } else {
           const Eigen::Vector3d direction = Eigen::Matrix3d::Identity().col(hinge - 3);
           out_ += fmt::format("HINGE  {:4}  {:4} {:4}  {}  {}  {}  # hinge {} (about {})\n", next++, orientation(p),
-                              orientation(q), number(direction.x()), number(direction.y()), number(direction.z()),
+                              orientation(q), spacar_number(direction.x()), spacar_number(direction.y()), spacar_number(direction.z()),
                               printable_text(element.name), framework::kSlotNames[static_cast<std::size_t>(hinge)]);
         }
       } else {

@@ -16,20 +16,20 @@ namespace kinestat::report {
 namespace {
 
 /// Rounds to `digits` decimals so that the JSON text is deterministic and short.
-double rounded(double value, int digits = 6) {
+double scene_rounded(double value, int digits = 6) {
   if (!std::isfinite(value)) return 0.0;
   const double scale = std::pow(10.0, digits);
   const double r = std::round(value * scale) / scale;
   return r == 0.0 ? 0.0 : r;
 }
 
-nlohmann::ordered_json vector_json(const Eigen::Vector3d& v) { return {rounded(v.x()), rounded(v.y()), rounded(v.z())}; }
+nlohmann::ordered_json vector_json(const Eigen::Vector3d& v) { return {scene_rounded(v.x()), scene_rounded(v.y()), scene_rounded(v.z())}; }
 
 nlohmann::ordered_json screws_json(const std::vector<std::vector<double>>& screws) {
   auto out = nlohmann::ordered_json::array();
   for (const auto& s : screws) {
     auto row = nlohmann::ordered_json::array();
-    for (double v : s) row.push_back(rounded(v));
+    for (double v : s) row.push_back(scene_rounded(v));
     out.push_back(row);
   }
   return out;
@@ -37,7 +37,7 @@ nlohmann::ordered_json screws_json(const std::vector<std::vector<double>>& screw
 
 nlohmann::ordered_json screw_json(const SceneScrew& s) {
   return {{"name", s.name},       {"anchor", vector_json(s.anchor)}, {"point", vector_json(s.point)},
-          {"direction", vector_json(s.direction)}, {"magnitude", rounded(s.magnitude)}, {"pitch", rounded(s.pitch)},
+          {"direction", vector_json(s.direction)}, {"magnitude", scene_rounded(s.magnitude)}, {"pitch", scene_rounded(s.pitch)},
           {"pure", s.pure}};
 }
 
@@ -47,7 +47,7 @@ nlohmann::ordered_json viewer_verdict_json(const design::Verdict& v) {
   nlohmann::ordered_json j = verdict_json(v);
   const auto participants = [](const std::vector<design::Participant>& list) {
     auto out = nlohmann::ordered_json::array();
-    for (const auto& p : list) out.push_back({{"kind", p.kind}, {"name", p.name}, {"participation", rounded(p.participation, 4)}});
+    for (const auto& p : list) out.push_back({{"kind", p.kind}, {"name", p.name}, {"participation", scene_rounded(p.participation, 4)}});
     return out;
   };
   j["motion_participants"] = participants(v.motion_participants);
@@ -72,7 +72,7 @@ std::string script_safe(std::string text) {
 std::string html_escape(const std::string& text) { return markup_escape(text); }
 
 // `value` to `digits` significant digits (deterministic: through fixed text).
-double significant(double value, int digits) {
+double significant_digits(double value, int digits) {
   if (!std::isfinite(value) || value == 0.0) return 0.0;
   return std::stod(fmt::format("{:.{}g}", value, digits));
 }
@@ -121,8 +121,8 @@ nlohmann::ordered_json trace_json(const Scene& scene, const SceneTrace& trace) {
     points.push_back(std::move(row));
   }
   auto arc = nlohmann::ordered_json::array();
-  for (double s : trace.arc) arc.push_back(significant(s, 6));
-  return {{"max_residual", significant(trace.max_residual, 3)}, {"note", trace.note}, {"start", trace.start}, {"arc", arc},
+  for (double s : trace.arc) arc.push_back(significant_digits(s, 6));
+  return {{"max_residual", significant_digits(trace.max_residual, 3)}, {"note", trace.note}, {"start", trace.start}, {"arc", arc},
           {"nodes", nodes}, {"quantum", quantum}, {"offsets", points}};
 }
 
@@ -146,7 +146,7 @@ nlohmann::ordered_json scene_json(const Scene& scene) {
   auto fixed_nodes = nlohmann::ordered_json::array();
   auto names = nlohmann::ordered_json::array();
   for (const auto& node : scene.nodes) {
-    for (int k = 0; k < 3; ++k) position.push_back(rounded(node.position(k)));
+    for (int k = 0; k < 3; ++k) position.push_back(scene_rounded(node.position(k)));
     fixed_nodes.push_back(node.fixed ? 1 : 0);
     if (!scene.large) names.push_back(node.name);
   }
@@ -206,7 +206,7 @@ nlohmann::ordered_json scene_json(const Scene& scene) {
   for (const auto& mode : scene.modes) {
     auto velocity = nlohmann::ordered_json::array();
     for (const auto& v : mode.velocity)
-      for (int k = 0; k < 3; ++k) velocity.push_back(rounded(v(k)));
+      for (int k = 0; k < 3; ++k) velocity.push_back(scene_rounded(v(k)));
     auto twists = nlohmann::ordered_json::array();
     for (const auto& t : mode.twists) twists.push_back(screw_json(t));
     nlohmann::ordered_json entry = {{"label", mode.label}, {"velocity", velocity}, {"moving", mode.moving}, {"twists", twists}};
@@ -216,9 +216,9 @@ nlohmann::ordered_json scene_json(const Scene& scene) {
   }
   for (const auto& stress : scene.stresses) {
     auto value = nlohmann::ordered_json::array();
-    for (double v : stress.value) value.push_back(rounded(v));
+    for (double v : stress.value) value.push_back(scene_rounded(v));
     auto resultants = nlohmann::ordered_json::array();
-    for (const auto& r : stress.resultants) resultants.push_back({r.element, r.deformation, rounded(r.value)});
+    for (const auto& r : stress.resultants) resultants.push_back({r.element, r.deformation, scene_rounded(r.value)});
     auto wrenches = nlohmann::ordered_json::array();
     for (const auto& w : stress.wrenches) wrenches.push_back(screw_json(w));
     j["stresses"].push_back({{"label", stress.label}, {"value", value}, {"kind", stress.kind}, {"resultants", resultants}, {"wrenches", wrenches}});

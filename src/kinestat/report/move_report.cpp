@@ -16,16 +16,15 @@ namespace kinestat::report {
 
 namespace {
 
-double rounded(double value) { return rounded_for_report(value); }
 // Residuals keep tiny values: three significant digits.
-double evidence(double value) {
+double three_significant(double value) {
   if (!std::isfinite(value) || value == 0.0) return value;
   return std::strtod(fmt::format("{:.3g}", value).c_str(), nullptr);
 }
-std::string number(double value) { return fmt::format("{:.6g}", rounded(value)); }
+std::string printed_number(double value) { return fmt::format("{:.6g}", rounded_for_report(value)); }
 
 // Positions are printed relative to the model's size: entries below kPrintedZero × length are 0.
-double coordinate(double value, double length) { return std::abs(value) < kPrintedZero * length ? 0.0 : rounded(value); }
+double coordinate(double value, double length) { return std::abs(value) < kPrintedZero * length ? 0.0 : rounded_for_report(value); }
 
 }  // namespace
 
@@ -53,10 +52,10 @@ std::string path_outcome_text(bool closed, double amplitude, double length, doub
                               const char* followed) {
   if (closed)
     return fmt::format("traced to arc length {} ({} of the characteristic length {}) with closure residual at most {} (relative)",
-                       number(amplitude), number(amplitude / length), number(length), fmt::format("{:.3g}", evidence(max_residual)));
+                       printed_number(amplitude), printed_number(amplitude / length), printed_number(length), fmt::format("{:.3g}", three_significant(max_residual)));
   return fmt::format("the corrector lost closure at step {} of {} (residual {:.3g}, relative): no finite motion along this {} "
                      "beyond arc length {}",
-                     failed_step, steps, evidence(max_residual), followed, number(amplitude));
+                     failed_step, steps, three_significant(max_residual), followed, printed_number(amplitude));
 }
 
 std::string outcome_text(const FrameworkMove& move, double length) {
@@ -82,8 +81,8 @@ void add_path_summary(nlohmann::ordered_json& j, const PathSummary& s) {
   j["closed"] = s.closed;
   if (s.failed_step) j["failed_step"] = *s.failed_step;
   else j["failed_step"] = nullptr;
-  j["amplitude"] = rounded(s.amplitude);
-  j["max_residual"] = evidence(s.max_residual);
+  j["amplitude"] = rounded_for_report(s.amplitude);
+  j["max_residual"] = three_significant(s.max_residual);
   j["rank_drops"] = *s.rank_drops;
   j["path"] = nlohmann::ordered_json::array();
 }
@@ -92,9 +91,9 @@ nlohmann::ordered_json path_point(const PathSummary& s, std::size_t k) {
   nlohmann::ordered_json point;
   const double arc = k < s.arcs->size() ? (*s.arcs)[k] : 0.0;
   point["step"] = k;
-  point["parameter"] = rounded(arc / s.length);
-  point["arc_length"] = rounded(arc);
-  point["residual"] = evidence(k < s.residuals->size() ? (*s.residuals)[k] : 0.0);
+  point["parameter"] = rounded_for_report(arc / s.length);
+  point["arc_length"] = rounded_for_report(arc);
+  point["residual"] = three_significant(k < s.residuals->size() ? (*s.residuals)[k] : 0.0);
   point["rank"] = k < s.ranks->size() ? (*s.ranks)[k] : 0;
   return point;
 }
@@ -114,8 +113,8 @@ nlohmann::ordered_json framework_move_json(const framework::FrameworkModel& mode
   } else {
     j["order"] = nullptr;
   }
-  j["characteristic_length"] = rounded(analysis.length);
-  j["amplitude_fraction"] = rounded(move.amplitude_fraction);
+  j["characteristic_length"] = rounded_for_report(analysis.length);
+  j["amplitude_fraction"] = rounded_for_report(move.amplitude_fraction);
   j["steps"] = move.steps;
   const auto& t = move.trace;
   const PathSummary summary{t.closed, t.closed ? std::nullopt : std::optional<std::size_t>(t.failed_step), t.amplitude,
@@ -161,13 +160,13 @@ std::string framework_move_text(const framework::FrameworkModel& model, const fr
   out += "\n  step  parameter   residual   rank  positions of the nodes that move\n";
   for (std::size_t k = 0; k < t.positions.size(); ++k) {
     const double arc = k < t.arc_length_along_path.size() ? t.arc_length_along_path[k] : 0.0;
-    out += fmt::format("  {:>4}  {:<10}  {:<9}  {:>4} ", k, number(arc / analysis.length),
-                       fmt::format("{:.3g}", evidence(k < t.residual_along_path.size() ? t.residual_along_path[k] : 0.0)),
+    out += fmt::format("  {:>4}  {:<10}  {:<9}  {:>4} ", k, printed_number(arc / analysis.length),
+                       fmt::format("{:.3g}", three_significant(k < t.residual_along_path.size() ? t.residual_along_path[k] : 0.0)),
                        k < t.rank_along_path.size() ? t.rank_along_path[k] : 0);
     for (std::size_t n : moving) {
       out += fmt::format(" {} (", model.nodes[n].name);
       for (int c = 0; c < dimension; ++c)
-        out += (c ? ", " : "") + number(coordinate(t.positions[k](c, static_cast<Eigen::Index>(n)), analysis.length));
+        out += (c ? ", " : "") + printed_number(coordinate(t.positions[k](c, static_cast<Eigen::Index>(n)), analysis.length));
       out += ")";
     }
     out += "\n";
@@ -217,8 +216,8 @@ nlohmann::ordered_json network_move_json(const network::Model& model, const netw
   j["primary"] = primary_name(result, move.mode);
   j["order"] = network::network_motion_order_name(network_move_order(move));
   const auto& t = move.trace;
-  j["characteristic_length"] = rounded(t.characteristic_length);
-  j["amplitude_fraction"] = rounded(move.amplitude_fraction);
+  j["characteristic_length"] = rounded_for_report(t.characteristic_length);
+  j["amplitude_fraction"] = rounded_for_report(move.amplitude_fraction);
   j["steps"] = move.steps;
   if (t.traced()) j["not_traced"] = nullptr;
   else j["not_traced"] = network::trace_refusal_text(t.refusal);
@@ -266,10 +265,10 @@ std::string network_move_text(const network::Model& model, const network::Networ
   out += "\n  step  parameter   residual   rank  joint coordinates that change (rad; translations in length units)\n";
   for (std::size_t k = 0; k < t.coordinates.size(); ++k) {
     const double arc = k < t.arc_length_along_path.size() ? t.arc_length_along_path[k] : 0.0;
-    out += fmt::format("  {:>4}  {:<10}  {:<9}  {:>4} ", k, number(arc / t.characteristic_length),
-                       fmt::format("{:.3g}", evidence(k < t.residual_along_path.size() ? t.residual_along_path[k] : 0.0)),
+    out += fmt::format("  {:>4}  {:<10}  {:<9}  {:>4} ", k, printed_number(arc / t.characteristic_length),
+                       fmt::format("{:.3g}", three_significant(k < t.residual_along_path.size() ? t.residual_along_path[k] : 0.0)),
                        k < t.rank_along_path.size() ? t.rank_along_path[k] : 0);
-    for (std::size_t i : moving) out += fmt::format(" {} {}", io::printable_text(result.motions[i].name), number(joint_coordinate(result, t, k, i)));
+    for (std::size_t i : moving) out += fmt::format(" {} {}", io::printable_text(result.motions[i].name), printed_number(joint_coordinate(result, t, k, i)));
     out += "\n";
   }
   return out;
@@ -304,7 +303,7 @@ std::string group_label(const network::Model& model, const kinematics::GroupPlan
 std::string inputs_text(const network::Model& model, const PositionSweep& sweep, std::size_t step) {
   std::vector<std::string> parts;
   for (std::size_t i = 0; i < sweep.plan.drivers.size(); ++i)
-    parts.push_back(fmt::format("{} = {}", model.couplings[static_cast<std::size_t>(sweep.plan.drivers[i])].name, number(sweep.values[step][i])));
+    parts.push_back(fmt::format("{} = {}", model.couplings[static_cast<std::size_t>(sweep.plan.drivers[i])].name, printed_number(sweep.values[step][i])));
   return fmt::format("{}", fmt::join(parts, ", "));
 }
 
@@ -317,7 +316,7 @@ nlohmann::ordered_json positions_json(const network::Model& model, const Positio
   j["kind"] = "network";
   j["command"] = "move";
   if (!model.name.empty()) j["name"] = model.name;
-  j["characteristic_length"] = rounded(length);
+  j["characteristic_length"] = rounded_for_report(length);
   j["inputs"] = names_of(model, sweep.plan.drivers, false);
   j["groups"] = nlohmann::ordered_json::array();
   for (const auto& g : sweep.plan.groups) {
@@ -337,7 +336,7 @@ nlohmann::ordered_json positions_json(const network::Model& model, const Positio
     nlohmann::ordered_json step;
     nlohmann::ordered_json inputs;
     for (std::size_t i = 0; i < sweep.plan.drivers.size(); ++i)
-      inputs[model.couplings[static_cast<std::size_t>(sweep.plan.drivers[i])].name] = rounded(sweep.values[s][i]);
+      inputs[model.couplings[static_cast<std::size_t>(sweep.plan.drivers[i])].name] = rounded_for_report(sweep.values[s][i]);
     step["inputs"] = inputs;
     step["assembled"] = r.assembled;
     if (r.failed_group) {
@@ -354,7 +353,7 @@ nlohmann::ordered_json positions_json(const network::Model& model, const Positio
     } else {
       step["failed_group"] = nullptr;
     }
-    if (r.assembled) step["max_residual"] = evidence(r.max_residual);
+    if (r.assembled) step["max_residual"] = three_significant(r.max_residual);
     else step["max_residual"] = nullptr;
     step["groups"] = nlohmann::ordered_json::array();
     for (std::size_t g = 0; g < r.groups.size(); ++g) {
@@ -363,9 +362,9 @@ nlohmann::ordered_json positions_json(const network::Model& model, const Positio
       group["status"] = kinematics::assembly_status_name(r.groups[g].status);
       if (sweep.plan.groups[g].method == kinematics::GroupMethod::newton) {
         group["iterations"] = r.groups[g].iterations;
-        group["residual"] = evidence(r.groups[g].discriminant);
+        group["residual"] = three_significant(r.groups[g].discriminant);
       } else if (sweep.plan.groups[g].method == kinematics::GroupMethod::closed_form) {
-        group["discriminant"] = evidence(r.groups[g].discriminant);
+        group["discriminant"] = three_significant(r.groups[g].discriminant);
       }
       if (!r.groups[g].reason.empty()) group["reason"] = r.groups[g].reason;
       step["groups"].push_back(std::move(group));
@@ -378,7 +377,7 @@ nlohmann::ordered_json positions_json(const network::Model& model, const Positio
         continue;
       }
       const auto& p = r.poses[b];
-      bodies[model.bodies[b]] = {{"x", coordinate(p.x, length)}, {"y", coordinate(p.y, length)}, {"angle", rounded(p.angle)}};
+      bodies[model.bodies[b]] = {{"x", coordinate(p.x, length)}, {"y", coordinate(p.y, length)}, {"angle", rounded_for_report(p.angle)}};
     }
     step["bodies"] = std::move(bodies);
     nlohmann::ordered_json couplings;
@@ -391,7 +390,7 @@ nlohmann::ordered_json positions_json(const network::Model& model, const Positio
       const auto point = kinematics::coupling_point(model, r.poses, static_cast<int>(c));
       const double value = kinematics::coupling_value(model, r.poses, static_cast<int>(c));
       couplings[coupling.name] = {{"point", {coordinate(point[0], length), coordinate(point[1], length)}},
-                                  {"value", coupling.type == screw::CouplingType::revolute ? rounded(value) : coordinate(value, length)}};
+                                  {"value", coupling.type == screw::CouplingType::revolute ? rounded_for_report(value) : coordinate(value, length)}};
     }
     step["couplings"] = std::move(couplings);
     j["steps"].push_back(std::move(step));
@@ -428,14 +427,14 @@ std::string positions_text(const network::Model& model, const PositionSweep& swe
     for (std::size_t g = 0; g < r.groups.size(); ++g)
       if (r.groups[g].status == AssemblyStatus::singular)
         singular.push_back(fmt::format("{} is at a singular position ({})", group_label(model, sweep.plan.groups[g]), r.groups[g].reason));
-    out += fmt::format("residual {:.3g};", evidence(r.max_residual));
+    out += fmt::format("residual {:.3g};", three_significant(r.max_residual));
     for (std::size_t c = 0; c < model.couplings.size(); ++c) {
       const auto& coupling = model.couplings[c];
       const auto point = kinematics::coupling_point(model, r.poses, static_cast<int>(c));
       if (coupling.type == screw::CouplingType::revolute)
-        out += fmt::format(" {} ({}, {})", coupling.name, number(coordinate(point[0], length)), number(coordinate(point[1], length)));
+        out += fmt::format(" {} ({}, {})", coupling.name, printed_number(coordinate(point[0], length)), printed_number(coordinate(point[1], length)));
       else
-        out += fmt::format(" {} slide {}", coupling.name, number(coordinate(kinematics::coupling_value(model, r.poses, static_cast<int>(c)), length)));
+        out += fmt::format(" {} slide {}", coupling.name, printed_number(coordinate(kinematics::coupling_value(model, r.poses, static_cast<int>(c)), length)));
     }
     out += "\n";
     for (const auto& text : singular) out += "    " + text + "\n";

@@ -7,6 +7,9 @@
 namespace kinestat::screw {
 
 namespace {
+// A named namespace inside the anonymous one: coupling_basis.cpp has helpers of the same names
+// (letter_for, join, spatial_basis ...), and a unity build compiles both files as one.
+namespace small_mirror {
 
 // Mirrors coupling_basis.cpp step by step in SmallRational (same unit scaling, same order,
 // same independence and reciprocity rules), so the exact values are the same rationals.
@@ -291,23 +294,24 @@ RoundedUnitScrew rounded(const UnitScrew& s) {
   return r;
 }
 
+}  // namespace small_mirror
 }  // namespace
 
 std::optional<RoundedCouplingBasis> small_coupling_basis(CouplingType type, const CouplingGeometry& geometry,
                                                          const ScrewSpace& space) {
   try {
-    return small_basis(type, geometry, space);
+    return small_mirror::small_basis(type, geometry, space);
   } catch (const SmallRational::Overflow&) {
     return std::nullopt;
-  } catch (const Unsupported&) {
+  } catch (const small_mirror::Unsupported&) {
     return std::nullopt;
   }
 }
 
 RoundedCouplingBasis rounded(const CouplingBasis& basis) {
   RoundedCouplingBasis r;
-  for (const UnitScrew& m : basis.motions) r.motions.push_back(rounded(m));
-  for (const UnitScrew& a : basis.actions) r.actions.push_back(rounded(a));
+  for (const UnitScrew& m : basis.motions) r.motions.push_back(small_mirror::rounded(m));
+  for (const UnitScrew& a : basis.actions) r.actions.push_back(small_mirror::rounded(a));
   return r;
 }
 
