@@ -138,7 +138,6 @@ std::string backend_text(const distributed::DistributedRank& b, bool timings, co
   return text;
 }
 
-
 // Replaces the first `from` in `text` by `to` (the serial reports' wording of their method).
 void petsc_replace_first(std::string& text, const std::string& from, const std::string& to) {
   if (const std::size_t at = text.find(from); at != std::string::npos) text.replace(at, from.size(), to);

@@ -92,7 +92,7 @@ residuals = petsc["backend"]["vector_residuals"]
 bound = serial["rank_evidence"]["body_twist"]["threshold"] / serial["rank_evidence"]["body_twist"]["largest_singular_value"]
 assert len(residuals["motions"]) == 8 and len(residuals["self_stresses"]) == 8, residuals
 assert all(r < bound for r in residuals["motions"] + residuals["self_stresses"]), (residuals, bound)
-assert petsc["null_space_residual"] < 1e-12, petsc["null_space_residual"]
+assert petsc["null_space_residual"] < 1e-11, petsc["null_space_residual"]
 print("network: serial and petsc agree:", petsc["FN"], petsc["CN"], len(petsc["stressed_couplings"]), len(petsc["moving_couplings"]))
 PY
 # Errors: exit 2 with the file named, from every process.

@@ -63,8 +63,8 @@ DistributedNetworkResult check_network(const network::Model& model, Eigen::Index
   // (s, 100 s] (the ladder's does); then the vectors come from the factor at t.
   EXPECT_LE(r.backend.rank_above_margin, p.rank.rank) << name;
   EXPECT_EQ(r.backend.vectors_at_threshold, r.backend.rank_above_margin != p.rank.rank) << name;
-  // Supports from generic vectors at rounding level.
-  EXPECT_LT(p.residual, 1e-12) << name;
+  // Supports from generic vectors at rounding level (their entries rounded to 2⁻⁴⁴ of the largest).
+  EXPECT_LT(p.residual, 1e-11) << name;
   // Each basis vector by its own residual, recomputed here from K: below the rank threshold
   // (relative), or it would contradict the decision, and at rounding level in fact.
   const double bound = p.rank.threshold / p.rank.largest;
@@ -74,13 +74,13 @@ DistributedNetworkResult check_network(const network::Model& model, Eigen::Index
   for (Eigen::Index j = 0; j < p.motion_basis.cols(); ++j) {
     const double residual = (k * p.motion_basis.col(j)).norm() / (p.rank.largest * p.motion_basis.col(j).norm());
     EXPECT_LT(residual, bound) << name << " motion " << j;
-    EXPECT_LT(residual, 1e-12) << name << " motion " << j;
+    EXPECT_LT(residual, 1e-11) << name << " motion " << j;
     EXPECT_LT(r.backend.mechanism_residuals[static_cast<std::size_t>(j)], bound) << name;
   }
   for (Eigen::Index j = 0; j < p.stress_basis.cols(); ++j) {
     const double residual = (k.transpose() * p.stress_basis.col(j)).norm() / (p.rank.largest * p.stress_basis.col(j).norm());
     EXPECT_LT(residual, bound) << name << " self-stress " << j;
-    EXPECT_LT(residual, 1e-12) << name << " self-stress " << j;
+    EXPECT_LT(residual, 1e-11) << name << " self-stress " << j;
     EXPECT_LT(r.backend.self_stress_residuals[static_cast<std::size_t>(j)], bound) << name;
   }
   // The same spaces: the backend's vectors lie in the serial path's null spaces.

@@ -178,6 +178,26 @@ PetscInt factor_shifted(Mat h, double shift, Mat* factor, DistributedRank& resul
   return negative;
 }
 
+// MUMPS's parallel factorisation and solves sum in the order messages arrive, so that with
+// P ≥ 2 the null vectors differ from run to run in their last bits. What rank 0 reports is made
+// repeatable where it can be: every entry of a vector is rounded to a multiple of 2⁻⁴⁴ of the
+// vector's largest (entries equal but for that noise, as in a symmetric model, become equal,
+// so ties are broken alike; the residual this adds, about 10⁻¹³ σ_max, stays far below the
+// threshold), and residuals are given to two significant digits. A value on a rounding
+// boundary can still come out either way.
+void distributed_round_entries(Eigen::Ref<Eigen::VectorXd> v) {
+  const double largest = v.cwiseAbs().maxCoeff();
+  if (largest == 0.0) return;
+  const double unit = std::ldexp(largest, -44);
+  for (Eigen::Index i = 0; i < v.size(); ++i) v(i) = std::round(v(i) / unit) * unit;
+}
+
+double distributed_two_digits(double value) {
+  if (value == 0.0 || !std::isfinite(value)) return value;
+  const double unit = std::pow(10.0, std::floor(std::log10(std::abs(value))) - 1.0);
+  return std::round(value / unit) * unit;
+}
+
 // A pseudo-random number in [−1, 1) for entry `index` of draw `draw` (splitmix64): the same
 // on any number of processes.
 double pseudo_random(std::uint64_t index, std::uint64_t draw) {
@@ -255,7 +275,7 @@ void smallest_kept(Mat h, Mat factor, double shift, std::vector<Vec>& null_space
     }
   }
   result.smallest_kept_verified = best > 0.0;
-  result.smallest_kept_residual = best_residual;
+  result.smallest_kept_residual = distributed_two_digits(best_residual);
   result.decision.smallest_kept = best;
 }
 
@@ -449,10 +469,20 @@ DistributedRank distributed_rank(const Eigen::SparseMatrix<double>* a, const lin
     }
     result.mechanisms = mechanism_basis.leftCols(std::min(options.vectors, mechanism_used));
     result.self_stresses = stress_basis.leftCols(std::min(options.vectors, stress_used));
-    for (Eigen::Index j = 0; j < result.mechanisms.cols(); ++j)
-      result.mechanism_residuals.push_back(((*a) * result.mechanisms.col(j)).norm() / d.largest);
-    for (Eigen::Index j = 0; j < result.self_stresses.cols(); ++j)
-      result.self_stress_residuals.push_back((a->transpose() * result.self_stresses.col(j)).norm() / d.largest);
+    for (Eigen::Index j = 0; j < result.mechanisms.cols(); ++j) {
+      distributed_round_entries(result.mechanisms.col(j));
+      const double norm = result.mechanisms.col(j).norm();
+      result.mechanism_residuals.push_back(distributed_two_digits(((*a) * result.mechanisms.col(j)).norm() / (d.largest * norm)));
+    }
+    for (Eigen::Index j = 0; j < result.self_stresses.cols(); ++j) {
+      distributed_round_entries(result.self_stresses.col(j));
+      const double norm = result.self_stresses.col(j).norm();
+      result.self_stress_residuals.push_back(
+          distributed_two_digits((a->transpose() * result.self_stresses.col(j)).norm() / (d.largest * norm)));
+    }
+    if (result.generic_mechanism.size() > 0) distributed_round_entries(result.generic_mechanism);
+    if (result.generic_self_stress.size() > 0) distributed_round_entries(result.generic_self_stress);
+    result.null_vector_residual = distributed_two_digits(result.null_vector_residual);
   }
   result.vector_seconds = MPI_Wtime() - clock;
 

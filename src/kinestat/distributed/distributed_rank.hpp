@@ -63,8 +63,11 @@ struct DistributedRank {
   bool dropped_bounded = false;         ///< largest_dropped is the bound of the whole null space
   /// Orthonormal bases (rank 0): the first `vectors` null vectors of A (n rows) and of Aᵀ (m rows).
   Eigen::MatrixXd mechanisms, self_stresses;
-  /// ‖A q‖ / σ_max of each column q of `mechanisms` and ‖Aᵀ q‖ / σ_max of each of `self_stresses`
-  /// (rank 0; unit vectors, A as passed in).
+  /// ‖A q‖ / (σ_max ‖q‖) of each column q of `mechanisms` and ‖Aᵀ q‖ / (σ_max ‖q‖) of each of
+  /// `self_stresses` (rank 0; A as passed in), to two significant digits. The vectors' entries
+  /// are rounded to 2⁻⁴⁴ of their largest, so that a run on P ≥ 2 processes (whose MUMPS sums
+  /// in message order) reports the same vectors and residuals but for values on a rounding
+  /// boundary (distributed_rank.cpp).
   std::vector<double> mechanism_residuals, self_stress_residuals;
   /// With DistributedRankOptions::generic_vectors (rank 0): a generic null vector of A (n rows)
   /// and of Aᵀ (m rows), unit norm; empty when that null space is empty.
