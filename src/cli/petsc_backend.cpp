@@ -175,8 +175,12 @@ void petsc_report_framework(const CommonOptions& options, const framework::Frame
 
 void petsc_report_network(const CommonOptions& options, const io::LoadedNetwork& loaded,
                     const distributed::DistributedNetworkResult& result) {
-  const design::Verdict verdict =
-      design::sparse_network_verdict(loaded.model, result.analysis, Tolerances::with_rank(options.tolerance));
+  design::Verdict verdict = design::sparse_network_verdict(loaded.model, result.analysis, Tolerances::with_rank(options.tolerance));
+  // The states' basis vectors are the backend's null vectors, not the sparse QR's.
+  for (design::VerdictState& state : verdict.states) {
+    petsc_replace_first(state.description, "basis vector of the sparse QR of K^T", "null vector of K^T from MUMPS");
+    petsc_replace_first(state.description, "basis vectors of the sparse QR of K", "null vectors of K from MUMPS");
+  }
   if (options.json) {
     nlohmann::ordered_json j = report::sparse_network_report_json(loaded.model, result.analysis, &verdict, nullptr);
     j["method"] = "petsc_mumps";
