@@ -76,6 +76,8 @@ int run_network_analysis(const CommonOptions& options, const io::LoadedNetwork& 
 /// Names of the kind-specific options given on the command line (e.g. "--primary").
 std::vector<std::string> given_network_options();
 std::vector<std::string> given_framework_options();
+/// The value of `analyze --vectors` (0 when not given).
+long long requested_vectors();
 /// Exit 2 when options of another model kind were given: "--primary is an option that is not
 /// used by a framework model".
 void reject_options(const std::vector<std::string>& given, const std::string& kind, const std::string& path);

@@ -29,6 +29,8 @@ std::vector<std::string> given_framework_options() {
   return given;
 }
 
+long long requested_vectors() { return sparse_vectors; }
+
 void reject_options(const std::vector<std::string>& given, const std::string& kind, const std::string& path) {
   if (given.empty()) return;
   throw io::InputError({path, 1, 1}, fmt::format("{} {} not used by {} model; remove {}", fmt::join(given, ", "),
@@ -42,7 +44,8 @@ void register_framework_options(CLI::App& analyze) {
       ->check(non_negative_whole_number());
   vectors_option = analyze.add_option("--vectors", sparse_vectors,
                      "Frameworks above --dense-limit: also the first K modes and K stress states (from the sparse QR) "
-                     "and the release proposal; default 0 (counts only)")
+                     "and the release proposal; default 0 (counts only). With --backend petsc: the first K of each (no "
+                     "proposal), for frameworks and networks")
       ->check(non_negative_whole_number());
 }
 

@@ -1,6 +1,7 @@
-// `kinestat analyze --backend petsc FILE` (run under mpirun): a framework's counts decided by
-// the distributed backend (src/kinestat/distributed, docs/scaling.md). Rank 0 reads the model,
-// builds D(c) and writes the report; every process takes part in the factorisation. Without the
+// `kinestat analyze --backend petsc FILE` (run under mpirun): a framework's or a coupling
+// network's counts (and with --vectors the first null vectors) decided by the distributed
+// backend (src/kinestat/distributed, docs/scaling.md). Rank 0 reads the model, builds D(c) or K
+// and writes the report; every process takes part in the factorisation. Without the
 // backend built, the option is refused. Nothing here runs, and MPI is never initialised, unless
 // `--backend petsc` is given.
 
@@ -15,10 +16,14 @@
 
 #if KINESTAT_HAVE_PETSC
 #include "kinestat/design/framework_verdict.hpp"
+#include "kinestat/design/sparse_network_verdict.hpp"
 #include "kinestat/distributed/framework_rank.hpp"
+#include "kinestat/distributed/network_rank.hpp"
 #include "kinestat/distributed/petsc_session.hpp"
+#include "kinestat/io/network_reader.hpp"
 #include "kinestat/report/framework_report.hpp"
 #include "kinestat/report/json_text.hpp"
+#include "kinestat/report/network_report.hpp"
 #endif
 
 namespace kinestat::cli {
@@ -34,25 +39,52 @@ int run_petsc_analysis(const CommonOptions&) {
 
 namespace {
 
-// The model on rank 0: frameworks only (kinestat YAML / JSON or SPACAR).
-framework::FrameworkModel read_framework(const CommonOptions& options) {
+// The model on rank 0: a framework (kinestat YAML / JSON or SPACAR) or a coupling network
+// (kinestat YAML / JSON, URDF, SDFormat, MJCF), with K already built for a network so that a bad
+// one is refused (exit 2, at its position in the file) before any collective call.
+struct PetscModel {
+  std::optional<framework::FrameworkModel> framework;
+  std::optional<io::LoadedNetwork> network;
+  network::SparseNetworkResult system;  ///< network::build_body_twist_system of the network
+};
+
+void read_petsc_model(const CommonOptions& options, PetscModel& out) {
   const InputFormat format = input_format(options.model_path);
-  if (format == InputFormat::spacar) return read_spacar_model(options.model_path);
-  if (format != InputFormat::kinestat)
-    throw io::InputError({options.model_path, 0, 0}, "--backend petsc analyses frameworks only; this is a coupling network");
-  const io::YamlFile model = io::YamlFile::load(options.model_path);
-  if (io::model_kind(model) != "framework")
-    throw io::InputError({options.model_path, 0, 0},
-                         "--backend petsc analyses frameworks only (kind: framework); this model is of kind '" +
-                             io::model_kind(model) + "'");
-  return io::read_framework_model(model);
+  std::string path = options.model_path;
+  if (format == InputFormat::spacar) {
+    out.framework = read_spacar_model(options.model_path);
+    return;
+  }
+  if (format != InputFormat::kinestat) {
+    out.network = read_imported_network(options.model_path, format);
+  } else {
+    std::optional<io::YamlFile> model(io::YamlFile::load(options.model_path));
+    const std::string kind = io::model_kind(*model);
+    path = model->path();
+    if (kind == "framework") {
+      out.framework = io::read_framework_model(*model);
+      return;
+    }
+    if (kind != "network")
+      throw io::InputError({options.model_path, 0, 0},
+                           "--backend petsc analyses frameworks and coupling networks; this model is of kind '" + kind + "'");
+    out.network = io::read_network_model(*model);
+  }
+  try {
+    out.system = network::build_body_twist_system(out.network->model, Tolerances::with_rank(options.tolerance));
+  } catch (const network::ModelError& error) {
+    throw io::locate(error, *out.network, path);
+  }
 }
 
-nlohmann::ordered_json backend_json(const distributed::DistributedRank& b, bool timings) {
+// `motions_key`, `stresses_key`: the names of the report's vector lists ("modes" and "stresses"
+// for a framework, "motions" and "self_stresses" for a network).
+nlohmann::ordered_json backend_json(const distributed::DistributedRank& b, bool timings, const char* motions_key,
+                                    const char* stresses_key, const char* matrix) {
   nlohmann::ordered_json j;
   j["name"] = "petsc";
   j["processes"] = b.processes;
-  j["solver"] = "MUMPS LDL^T of [[0, D], [D^T, 0]] + s I, s = 100 x threshold: rank = its negative pivots (Sylvester's inertia); "
+  j["solver"] = std::string(matrix) + ": MUMPS LDL^T of [[0, A], [A^T, 0]] + s I, s = 100 x threshold: rank = its negative pivots (Sylvester's inertia); "
                 "SLEPc Krylov-Schur for the smallest kept value";
   j["null_space_dimension"] = b.null_pivots;
   j["shift"] = b.shift;
@@ -62,6 +94,15 @@ nlohmann::ordered_json backend_json(const distributed::DistributedRank& b, bool 
   j["largest_dropped_bounded"] = b.dropped_bounded;
   j["null_vectors_computed"] = b.null_vectors_computed;
   j["null_vector_residual"] = b.null_vector_residual;
+  j["null_vectors_at_threshold"] = b.vectors_at_threshold;
+  // The residual of each reported vector (unit null vectors of the scaled matrix), in the order
+  // of the report's own lists.
+  if (!b.mechanism_residuals.empty() || !b.self_stress_residuals.empty()) {
+    nlohmann::ordered_json residuals;
+    residuals[motions_key] = b.mechanism_residuals;
+    residuals[stresses_key] = b.self_stress_residuals;
+    j["vector_residuals"] = residuals;
+  }
   // Measurements of this run change from run to run: only on request (--timings), so that the
   // same input gives the same JSON.
   if (!timings) return j;
@@ -77,15 +118,15 @@ nlohmann::ordered_json backend_json(const distributed::DistributedRank& b, bool 
   return j;
 }
 
-std::string backend_text(const distributed::DistributedRank& b, bool timings) {
+std::string backend_text(const distributed::DistributedRank& b, bool timings, const char* matrix) {
   std::string peak;
   for (std::size_t p = 0; p < b.peak_memory.size(); ++p)
     peak += fmt::format("{}{:.0f} MB", p == 0 ? "" : ", ", static_cast<double>(b.peak_memory[p]) / 1e6);
   std::string text = fmt::format(
-      "backend: petsc on {} process(es): rank = negative pivots of MUMPS's LDL^T of [[0, D], [D^T, 0]] + s I, s = {:.3g} "
+      "backend: petsc on {} process(es): rank of {} = negative pivots of MUMPS's LDL^T of [[0, {}], [{}^T, 0]] + s I, s = {:.3g} "
       "(100 x threshold); rank at 100 s: {}; smallest kept value by SLEPc {}; null vectors computed {} (largest relative "
       "residual {:.1e}); largest dropped {}\n",
-      b.processes, b.shift, b.rank_above_margin,
+      b.processes, matrix, matrix, matrix, b.shift, b.rank_above_margin,
       b.smallest_kept_verified ? "verified" : "not computed (the null space is computed whole only up to 64 vectors)", b.null_vectors_computed,
       b.null_vector_residual, b.dropped_bounded ? "bounded by the whole null space" : "not computed");
   if (timings)
@@ -97,24 +138,84 @@ std::string backend_text(const distributed::DistributedRank& b, bool timings) {
   return text;
 }
 
+// Replaces the first `from` in `text` by `to` (the serial reports' wording of their method).
+void petsc_replace_first(std::string& text, const std::string& from, const std::string& to) {
+  if (const std::size_t at = text.find(from); at != std::string::npos) text.replace(at, from.size(), to);
+}
+
+void petsc_report_framework(const CommonOptions& options, const framework::FrameworkModel& model,
+                      const distributed::DistributedFrameworkResult& result) {
+  framework::AnalysisOptions analysis_options;
+  analysis_options.tolerances = Tolerances::with_rank(options.tolerance);
+  analysis_options.vectors = false;
+  // The verdict of the counts (its release proposal would need the serial factorisations).
+  framework::FrameworkResult counts = result.analysis;
+  counts.vectors = false;
+  counts.modes.clear();
+  counts.stresses.clear();
+  design::Verdict verdict = design::framework_verdict(model, counts, analysis_options);
+  if (result.analysis.vectors)
+    verdict.note = "the distributed backend computes the counts and the first modes and stress states, not the release "
+                   "proposal: run the serial sparse path with --vectors for one";
+  if (options.json) {
+    nlohmann::ordered_json j = report::framework_report_json(model, result.analysis, &verdict, nullptr);
+    j["method"] = "petsc_mumps";
+    j["backend"] = backend_json(result.backend, options.timings, "modes", "stresses", "D");
+    if (result.analysis.vectors) j["backend"]["not_computed"] = {"release proposal (releases, constrain)"};
+    emit(options, report::json_text(j));
+    return;
+  }
+  std::string text = report::framework_report_text(model, result.analysis, &verdict, nullptr);
+  const std::string method = fmt::format("MUMPS inertia on {} process(es)", result.backend.processes);
+  petsc_replace_first(text, "sparse QR, counts only", method + ", counts only");
+  petsc_replace_first(text, "sparse QR", method);
+  petsc_replace_first(text, "vectors from the sparse R factors", "null vectors from MUMPS (inverse iteration)");
+  emit(options, text + backend_text(result.backend, options.timings, "D"));
+}
+
+void petsc_report_network(const CommonOptions& options, const io::LoadedNetwork& loaded,
+                    const distributed::DistributedNetworkResult& result) {
+  design::Verdict verdict = design::sparse_network_verdict(loaded.model, result.analysis, Tolerances::with_rank(options.tolerance));
+  // The states' basis vectors are the backend's null vectors, not the sparse QR's.
+  for (design::VerdictState& state : verdict.states) {
+    petsc_replace_first(state.description, "basis vector of the sparse QR of K^T", "null vector of K^T from MUMPS");
+    petsc_replace_first(state.description, "basis vectors of the sparse QR of K", "null vectors of K from MUMPS");
+  }
+  if (options.json) {
+    nlohmann::ordered_json j = report::sparse_network_report_json(loaded.model, result.analysis, &verdict, nullptr);
+    j["method"] = "petsc_mumps";
+    j["backend"] = backend_json(result.backend, options.timings, "motions", "self_stresses", "K");
+    emit(options, report::json_text(j));
+    return;
+  }
+  std::string text = report::sparse_network_report_text(loaded.model, result.analysis, &verdict, nullptr);
+  petsc_replace_first(text, "sparse body-twist form, floating point",
+                fmt::format("body-twist form, floating point, MUMPS inertia on {} process(es)", result.backend.processes));
+  petsc_replace_first(text, "from the QR of K (", "from MUMPS (inverse iteration; ");
+  petsc_replace_first(text, "from the QR of K^T", "from MUMPS");
+  emit(options, text + backend_text(result.backend, options.timings, "K"));
+}
+
 }  // namespace
 
 int run_petsc_analysis(const CommonOptions& options) {
-  const std::vector<std::string> other = given_network_options();
-  const std::vector<std::string> framework_only = given_framework_options();
+  std::vector<std::string> refused = given_network_options();
+  for (const std::string& name : given_framework_options())
+    if (name != "--vectors") refused.push_back(name);
   const distributed::PetscSession session;
   // Rank 0 reads; its outcome is broadcast so that every process ends with the same code.
-  std::optional<framework::FrameworkModel> model;
-  long long code = 0;
+  PetscModel model;
+  long long code = 0, kind = 0;  // kind: 0 framework, 1 network
   std::string message;
   if (session.rank() == 0) {
     try {
-      reject_options(other, "a framework", options.model_path);
-      if (!framework_only.empty())
+      if (!refused.empty())
         throw io::InputError({options.model_path, 1, 1},
-                             fmt::format("{} not used with --backend petsc (it decides counts only); remove it",
-                                         fmt::join(framework_only, ", ")));
-      model = read_framework(options);
+                             fmt::format("{} not used with --backend petsc (it decides counts, supports and the first "
+                                         "--vectors null vectors); remove {}",
+                                         fmt::join(refused, ", "), refused.size() == 1 ? "it" : "them"));
+      read_petsc_model(options, model);
+      kind = model.network ? 1 : 0;
     } catch (const io::InputError& error) {
       message = error.what();
       code = error.exit_code();
@@ -131,9 +232,21 @@ int run_petsc_analysis(const CommonOptions& options) {
     if (session.rank() == 0) std::cerr << message << '\n';
     return static_cast<int>(code);
   }
-  distributed::DistributedFrameworkResult result;
+  kind = session.broadcast(kind);
+  const Tolerances tolerances = Tolerances::with_rank(options.tolerance);
+  distributed::DistributedRankOptions rank_options;
+  rank_options.vectors = static_cast<Eigen::Index>(requested_vectors());
+  // Networks: the serial sparse path's kSparseVerdictStates basis vectors unless --vectors says.
+  if (kind == 1 && given_framework_options().empty()) rank_options.vectors = design::kSparseVerdictStates;
+  distributed::DistributedFrameworkResult framework_result;
+  distributed::DistributedNetworkResult network_result;
   try {
-    result = distributed::analyse_framework_distributed(model ? &*model : nullptr, Tolerances::with_rank(options.tolerance));
+    if (kind == 0)
+      framework_result = distributed::analyse_framework_distributed(model.framework ? &*model.framework : nullptr, tolerances, rank_options);
+    else
+      network_result = distributed::analyse_network_distributed(model.network ? &model.network->model : nullptr,
+                                                                session.rank() == 0 ? &model.system : nullptr, tolerances,
+                                                                rank_options);
   } catch (const Error& error) {
     std::cerr << "kinestat: error: " << error.what() << '\n';
     distributed::PetscSession::abort(error.exit_code());
@@ -143,22 +256,8 @@ int run_petsc_analysis(const CommonOptions& options) {
     distributed::PetscSession::abort(3);
   }
   if (session.rank() != 0) return 0;
-  framework::AnalysisOptions analysis_options;
-  analysis_options.tolerances = Tolerances::with_rank(options.tolerance);
-  analysis_options.vectors = false;
-  const design::Verdict verdict = design::framework_verdict(*model, result.analysis, analysis_options);
-  if (options.json) {
-    nlohmann::ordered_json j = report::framework_report_json(*model, result.analysis, &verdict, nullptr);
-    j["method"] = "petsc_mumps";
-    j["backend"] = backend_json(result.backend, options.timings);
-    emit(options, report::json_text(j));
-  } else {
-    std::string text = report::framework_report_text(*model, result.analysis, &verdict, nullptr);
-    const std::string serial = "sparse QR, counts only";
-    if (const std::size_t at = text.find(serial); at != std::string::npos)
-      text.replace(at, serial.size(), fmt::format("MUMPS inertia on {} process(es), counts only", result.backend.processes));
-    emit(options, text + backend_text(result.backend, options.timings));
-  }
+  if (kind == 0) petsc_report_framework(options, *model.framework, framework_result);
+  else petsc_report_network(options, *model.network, network_result);
   return 0;
 }
 

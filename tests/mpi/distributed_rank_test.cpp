@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <mpi.h>
 
+#include <Eigen/QR>
 #include <Eigen/SVD>
 
 #include "kinestat/distributed/framework_rank.hpp"
@@ -75,6 +76,48 @@ DistributedFrameworkResult check_lattice(const framework::FrameworkModel& model,
   return r;
 }
 
+// The reported modes (or stress states) as columns, in D̂'s units.
+Eigen::MatrixXd framework_vector_columns(const framework::FrameworkResult& a, bool modes) {
+  const std::size_t count = modes ? a.modes.size() : a.stresses.size();
+  Eigen::MatrixXd out(modes ? a.n : a.m, static_cast<Eigen::Index>(count));
+  for (std::size_t j = 0; j < count; ++j)
+    out.col(static_cast<Eigen::Index>(j)) = modes ? a.modes[j].velocities : a.stresses[j].resultants;
+  return out;
+}
+
+// ‖X − Q Qᵀ X‖_F for orthonormal bases X of span(`x`) and Q of span(`subspace`): at least the
+// sine of the largest principal angle between the two spans (0 when span(x) lies in the other).
+double framework_distance_to_span(const Eigen::MatrixXd& x, const Eigen::MatrixXd& subspace) {
+  auto orthonormal = [](const Eigen::MatrixXd& m) -> Eigen::MatrixXd {
+    const Eigen::HouseholderQR<Eigen::MatrixXd> qr(m);
+    return qr.householderQ() * Eigen::MatrixXd::Identity(m.rows(), m.cols());
+  };
+  const Eigen::MatrixXd qx = orthonormal(x), q = orthonormal(subspace);
+  return (qx - q * (q.transpose() * qx)).norm();
+}
+
+// The backend's reported vectors (analysis.modes and .stresses, D̂'s units, as the serial sparse
+// path reports them) against the serial sparse path's with `serial_vectors` of each: every
+// reported residual below the threshold, and the spans inside the serial ones.
+void check_vector_spans(const framework::FrameworkModel& model, const DistributedFrameworkResult& r, Eigen::Index serial_vectors,
+                        const char* name) {
+  framework::AnalysisOptions sparse;
+  sparse.dense_limit = 0;
+  sparse.sparse_vectors = serial_vectors;
+  const framework::FrameworkResult serial = framework::analyse_framework(model, sparse);
+  ASSERT_TRUE(r.analysis.vectors) << name;
+  const double bound = r.analysis.decision.threshold / r.analysis.decision.largest;
+  for (double residual : r.backend.mechanism_residuals) EXPECT_LT(residual, bound) << name;
+  for (double residual : r.backend.self_stress_residuals) EXPECT_LT(residual, bound) << name;
+  EXPECT_LT(r.analysis.null_space_residual, bound) << name;
+  EXPECT_EQ(r.analysis.modes.size(), r.backend.mechanism_residuals.size()) << name;
+  EXPECT_EQ(r.analysis.stresses.size(), r.backend.self_stress_residuals.size()) << name;
+  EXPECT_LT(framework_distance_to_span(framework_vector_columns(r.analysis, true), framework_vector_columns(serial, true)), 1e-8)
+      << name;
+  EXPECT_LT(framework_distance_to_span(framework_vector_columns(r.analysis, false), framework_vector_columns(serial, false)), 1e-8)
+      << name;
+}
+
 // n × n square grid, bottom row pinned: n − 1 mechanisms (each row of vertical bars shears)
 // and n − 1 self-stresses (the bars between pinned nodes). n = 16 (480 bars, small enough for
 // the dense SVD): all 30 null vectors of H are computed, so the largest dropped singular value
@@ -82,8 +125,11 @@ DistributedFrameworkResult check_lattice(const framework::FrameworkModel& model,
 TEST(DistributedRank, SquareGridEvidenceMatchesTheDenseSvd) {
   const int n = 16;
   const auto model = framework::planar_lattice(n, false);
-  const auto r = check_lattice(model, {n - 1, n - 1}, 3, "square 16", 256);
+  const auto r = check_lattice(model, {n - 1, n - 1}, n - 1, "square 16", 256);
   if (world_rank() == 0) {
+    // All 15 modes and 15 stress states: the same spaces as the serial path's 15 (both ways).
+    check_vector_spans(model, r, n - 1, "square 16");
+    EXPECT_EQ(r.analysis.modes.size(), static_cast<std::size_t>(n - 1));
     EXPECT_TRUE(r.backend.dropped_bounded);
     EXPECT_LT(r.analysis.decision.largest_dropped, r.analysis.decision.threshold);
     EXPECT_GT(r.analysis.decision.gap(), 1e3);
@@ -102,7 +148,9 @@ TEST(DistributedRank, SquareGridOfTenThousandBars) {
   const int n = 71;
   const auto model = framework::planar_lattice(n, false);
   ASSERT_EQ(model.elements.size(), 2u * n * (n - 1));
-  check_lattice(model, {n - 1, n - 1}, 3, "square 71");
+  const auto r = check_lattice(model, {n - 1, n - 1}, 3, "square 71");
+  // The first 3 of 70 modes and stress states lie in the serial path's whole null spaces.
+  if (world_rank() == 0) check_vector_spans(model, r, n - 1, "square 71");
 }
 
 // The triangulated grid (one diagonal per cell): rigid, (n − 1)² self-stresses. n = 58: 9 861 bars.

@@ -33,6 +33,11 @@ struct DistributedRankOptions {
   Eigen::Index full_basis_limit = 64;
   /// Compute the smallest kept singular value with SLEPc when the null space is whole.
   bool smallest_kept = true;
+  /// Also keep one generic null vector of A and one of Aᵀ (generic_mechanism,
+  /// generic_self_stress): the first vector inverse iteration gives from a pseudo-random start
+  /// in that block, before orthogonalisation, so that it vanishes only where every null vector
+  /// does (the supports of network::record_motion_support and record_stress_support).
+  bool generic_vectors = false;
 };
 
 /// Outcome of a distributed rank decision. Counts are the same on every process; vectors and
@@ -58,10 +63,22 @@ struct DistributedRank {
   bool dropped_bounded = false;         ///< largest_dropped is the bound of the whole null space
   /// Orthonormal bases (rank 0): the first `vectors` null vectors of A (n rows) and of Aᵀ (m rows).
   Eigen::MatrixXd mechanisms, self_stresses;
+  /// ‖A q‖ / (σ_max ‖q‖) of each column q of `mechanisms` and ‖Aᵀ q‖ / (σ_max ‖q‖) of each of
+  /// `self_stresses` (rank 0; A as passed in), to two significant digits. The vectors' entries
+  /// are rounded to 2⁻⁴⁴ of their largest, so that a run on P ≥ 2 processes (whose MUMPS sums
+  /// in message order) reports the same vectors and residuals but for values on a rounding
+  /// boundary (distributed_rank.cpp).
+  std::vector<double> mechanism_residuals, self_stress_residuals;
+  /// With DistributedRankOptions::generic_vectors (rank 0): a generic null vector of A (n rows)
+  /// and of Aᵀ (m rows), unit norm; empty when that null space is empty.
+  Eigen::VectorXd generic_mechanism, generic_self_stress;
   /// Largest ‖H v‖ / (σ_max ‖v‖) over the null vectors of H computed (0 when none): the rounding
   /// level when the decision is sound.
   double null_vector_residual = 0.0;
   Eigen::Index null_vectors_computed = 0;  ///< null vectors of H computed by MUMPS
+  /// The null vectors came from a third factorisation, of H + t·I (t the threshold), because a
+  /// kept singular value lies in (s, kCertainMargin·s] (rank_above_margin ≠ rank).
+  bool vectors_at_threshold = false;
   int processes = 1;
   /// Wall time, seconds: scattering and assembling H, the MUMPS analysis and factorisation,
   /// the null vectors, SLEPc's smallest kept value.

@@ -9,8 +9,9 @@
 
 namespace kinestat::distributed {
 
-/// The framework's analysis (counts only, as the serial sparse path without --vectors: rank,
-/// mechanisms, self-stresses and the decision with its evidence) and what the backend reports.
+/// The framework's analysis (as the serial sparse path: rank, mechanisms, self-stresses and the
+/// decision with its evidence; with DistributedRankOptions::vectors = k > 0 also the first k
+/// modes and stress states, `vectors` set, but no release proposal) and what the backend reports.
 struct DistributedFrameworkResult {
   framework::FrameworkResult analysis;  ///< complete on rank 0; rank and counts on every process
   DistributedRank backend;

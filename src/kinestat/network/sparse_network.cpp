@@ -88,7 +88,7 @@ double basis_of(const Eigen::SparseMatrix<double>& a, const linalg::SparseQr& qr
 
 }  // namespace
 
-SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances& tolerances, Index vectors, bool pair_vectors) {
+SparseNetworkResult build_body_twist_system(const Model& model, const Tolerances& tolerances) {
   if (model.couplings.empty()) throw ModelError("couplings", -1, "the model has no couplings");
   SparseNetworkResult r;
   r.d = model.space.dimension();
@@ -145,13 +145,58 @@ SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances&
     }
   }
   r.C = static_cast<int>(row_coupling.size());
-  Eigen::SparseMatrix<double> k(r.C, d * (r.bodies - 1));
+  Eigen::SparseMatrix<double>& k = r.K;
+  k.resize(r.C, d * (r.bodies - 1));
   k.setFromTriplets(entries.begin(), entries.end());  // duplicates (a coupling of a body to itself) add up to zero
   entries.clear();
   entries.shrink_to_fit();
 
   // The threshold rises with the rounding of the coordinates as written (the dense rule).
   r.rank = linalg::sparse_rank_threshold(k, {tolerances.rank, frame.input_rounding(model)});
+  return r;
+}
+
+void record_motion_support(const Model& model, const Eigen::SparseMatrix<double>& k, const Eigen::VectorXd& twists,
+                           SparseNetworkResult& r, std::vector<bool>& moving) {
+  const Index d = r.d;
+  auto block = [&r, d](int body) -> Index { return body == r.ground ? -1 : (body < r.ground ? body : body - 1) * d; };
+  r.residual = std::max(r.residual, (k * twists).norm() / (r.rank.largest * twists.norm()));
+  const double zero = kSupportZero * twists.cwiseAbs().maxCoeff();
+  for (std::size_t i = 0; i < model.couplings.size(); ++i) {
+    const Coupling& c = model.couplings[i];
+    const Index to = block(c.to), from = block(c.from);
+    for (Index j = 0; j < d; ++j) {
+      const double relative = (to >= 0 ? twists(to + j) : 0.0) - (from >= 0 ? twists(from + j) : 0.0);
+      if (std::abs(relative) > zero) moving[i] = true;
+    }
+  }
+  for (int body = 0; body < r.bodies; ++body)
+    if (const Index b = block(body); b >= 0 && twists.segment(b, d).cwiseAbs().maxCoeff() > zero) r.moving_bodies.push_back(body);
+}
+
+void record_stress_support(const Eigen::SparseMatrix<double>& kt, const Eigen::VectorXd& actions, SparseNetworkResult& r,
+                           std::vector<bool>& stressed) {
+  r.residual = std::max(r.residual, (kt * actions).norm() / (r.rank.largest * actions.norm()));
+  const double zero = kSupportZero * actions.cwiseAbs().maxCoeff();
+  for (Index row = 0; row < actions.size(); ++row)
+    if (std::abs(actions(row)) > zero) stressed[static_cast<std::size_t>(r.row_coupling[static_cast<std::size_t>(row)])] = true;
+}
+
+void finish_sparse_network(SparseNetworkResult& r, const std::vector<bool>& stressed, const std::vector<bool>& moving) {
+  r.FN = static_cast<int>(r.K.cols() - r.rank.rank);
+  r.CN = static_cast<int>(r.K.rows() - r.rank.rank);
+  r.classification = classify(r.FN, r.CN);
+  for (int i = 0; i < r.e; ++i) {
+    if (stressed[static_cast<std::size_t>(i)]) r.stressed.push_back(i);
+    if (moving[static_cast<std::size_t>(i)]) r.moving.push_back(i);
+  }
+}
+
+SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances& tolerances, Index vectors, bool pair_vectors) {
+  SparseNetworkResult r = build_body_twist_system(model, tolerances);
+  Eigen::SparseMatrix<double> k = std::move(r.K);
+  r.K = Eigen::SparseMatrix<double>();
+  const Index d = r.d;
   if (pair_vectors) {
     r.generic_motions = Eigen::MatrixXd::Zero(k.cols(), d);
     r.generic_stresses = Eigen::MatrixXd::Zero(k.rows(), d);
@@ -169,20 +214,7 @@ SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances&
       const Eigen::VectorXd twists = generic_left_null_vector(kt, qr);
       if (pair_vectors && k.cols() > r.rank.rank) r.generic_motions = generic_left_null_vectors(kt, qr, d);
       // Only when there are motions: otherwise the residual is rounding noise.
-      if (k.cols() > r.rank.rank && twists.norm() > 0) {
-        r.residual = std::max(r.residual, (k * twists).norm() / (r.rank.largest * twists.norm()));
-        const double zero = kSupportZero * twists.cwiseAbs().maxCoeff();
-        for (std::size_t i = 0; i < model.couplings.size(); ++i) {
-          const Coupling& c = model.couplings[i];
-          const Index to = block(c.to), from = block(c.from);
-          for (Index j = 0; j < d; ++j) {
-            const double relative = (to >= 0 ? twists(to + j) : 0.0) - (from >= 0 ? twists(from + j) : 0.0);
-            if (std::abs(relative) > zero) moving[i] = true;
-          }
-        }
-        for (int body = 0; body < r.bodies; ++body)
-          if (const Index b = block(body); b >= 0 && twists.segment(b, d).cwiseAbs().maxCoeff() > zero) r.moving_bodies.push_back(body);
-      }
+      if (k.cols() > r.rank.rank && twists.norm() > 0) record_motion_support(model, k, twists, r, moving);
     }
     {
       // Self-stresses: generic action magnitudes λ with Kᵀ λ = 0 (every body in equilibrium),
@@ -194,12 +226,7 @@ SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances&
         r.basis_residual = std::max(r.basis_residual, basis_of(k, qr, vectors, r.rank.largest, r.motion_basis, r.motion_primaries));
       const Eigen::VectorXd actions = generic_left_null_vector(k, qr);
       if (pair_vectors && k.rows() > qr.rank()) r.generic_stresses = generic_left_null_vectors(k, qr, d);
-      if (k.rows() > qr.rank() && actions.norm() > 0) {
-        r.residual = std::max(r.residual, (kt * actions).norm() / (r.rank.largest * actions.norm()));
-        const double zero = kSupportZero * actions.cwiseAbs().maxCoeff();
-        for (Index row = 0; row < actions.size(); ++row)
-          if (std::abs(actions(row)) > zero) stressed[static_cast<std::size_t>(row_coupling[static_cast<std::size_t>(row)])] = true;
-      }
+      if (k.rows() > qr.rank() && actions.norm() > 0) record_stress_support(kt, actions, r, stressed);
     }
   } else if (k.cols() > 0) {
     // No actions at all: every coupling and body moves freely.
@@ -215,14 +242,8 @@ SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances&
       for (Index j = 0; j < count; ++j) r.motion_primaries.push_back(j);
     }
   }
-  r.FN = static_cast<int>(k.cols() - r.rank.rank);
   r.K = std::move(k);
-  r.CN = static_cast<int>(r.K.rows() - r.rank.rank);
-  r.classification = classify(r.FN, r.CN);
-  for (int i = 0; i < r.e; ++i) {
-    if (stressed[static_cast<std::size_t>(i)]) r.stressed.push_back(i);
-    if (moving[static_cast<std::size_t>(i)]) r.moving.push_back(i);
-  }
+  finish_sparse_network(r, stressed, moving);
   return r;
 }
 

@@ -72,6 +72,28 @@ struct SparseNetworkResult {
 /// Couplings above which the `analyze` command takes the sparse path.
 inline constexpr int kDenseNetworkLimit = 300;
 
+/// The first stage of analyse_network_sparse, without factoring: K (C × d(n − 1), conditioned
+/// analysis frame, in `K`), the coupling and unit action of each row, d, n, e, l, F, C, the
+/// ground, the frame, and the rank rule's threshold and σ_max in `rank` (rank itself 0; the
+/// threshold rises with the rounding of the coordinates as written). Throws ModelError (no
+/// couplings, bodies not connected, a coupling's geometry).
+SparseNetworkResult build_body_twist_system(const Model& model, const Tolerances& tolerances = {});
+
+/// Marks the couplings (`moving`, one flag per coupling) and bodies (`r.moving_bodies`) that move
+/// in the motion `twists` (body twists, the columns of `k` = K), and raises `r.residual` to
+/// ‖K x‖ / (σ_max ‖x‖): entries above kSupportZero of the largest count. `twists` should be a
+/// generic null vector of K (a generic combination vanishes only where every null vector does).
+void record_motion_support(const Model& model, const Eigen::SparseMatrix<double>& k, const Eigen::VectorXd& twists,
+                           SparseNetworkResult& r, std::vector<bool>& moving);
+/// Marks the couplings (`stressed`, one flag per coupling) with an entry of the self-stress
+/// `actions` (one magnitude per row of K, a generic null vector of `kt` = Kᵀ) above kSupportZero
+/// of the largest, and raises `r.residual` to ‖Kᵀ λ‖ / (σ_max ‖λ‖).
+void record_stress_support(const Eigen::SparseMatrix<double>& kt, const Eigen::VectorXd& actions, SparseNetworkResult& r,
+                           std::vector<bool>& stressed);
+/// FN = d(n − 1) − rank K and CN = C − rank K (from `r.K`'s size and `r.rank.rank`), the class,
+/// and the lists `stressed` and `moving` from the flags.
+void finish_sparse_network(SparseNetworkResult& r, const std::vector<bool>& stressed, const std::vector<bool>& moving);
+
 /// FN, CN and the couplings that carry self-stress and that move, from two sparse QR
 /// factorisations (K and Kᵀ). A coupling belongs to a support when its entries in a fixed
 /// pseudo-random combination of the null vectors exceed kSupportZero of the largest: a
