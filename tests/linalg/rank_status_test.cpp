@@ -75,6 +75,19 @@ TEST(RankStatus, ZeroMatrixAndRankZero) {
   EXPECT_FALSE(zero.distance().has_value());
 }
 
+// The distributed backend decides a rank without computing the smallest kept singular value
+// (smallest_kept stays 0): the distance to a rank change is then unknown, not 0.
+TEST(RankStatus, UncomputedSmallestKeptGivesNoDistance) {
+  RankDecision d;
+  d.rank = 5;
+  d.largest = 2.0;
+  d.threshold = 1e-12;
+  d.sparse = true;
+  EXPECT_FALSE(d.distance().has_value());
+  d.smallest_kept = 0.5;
+  EXPECT_DOUBLE_EQ(*d.distance(), 0.25);
+}
+
 TEST(RankStatus, ExactDecisionsKeepTheirStatusAndGainADistance) {
   RankDecision d;
   d.exact = true;

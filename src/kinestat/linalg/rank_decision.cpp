@@ -49,7 +49,9 @@ RankStatus RankDecision::status() const {
 bool RankDecision::close() const { return status() == RankStatus::close; }
 
 std::optional<double> RankDecision::distance() const {
-  if (rank == 0 || !(largest > 0.0)) return std::nullopt;
+  // A kept singular value is positive: 0 means it was not computed (the distributed backend
+  // computes it only for small null spaces), and "0 from a mechanism" would be a false claim.
+  if (rank == 0 || !(largest > 0.0) || !(smallest_kept > 0.0)) return std::nullopt;
   return smallest_kept / largest;
 }
 
