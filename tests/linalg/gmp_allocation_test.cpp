@@ -29,18 +29,20 @@ constexpr bool kAddressSanitizer = false;
 
 // In a child process: address space capped at 256 MB, then a 1 GB integer is asked for.
 // With GMP's own functions this aborts (SIGABRT); with kinestat's it throws std::bad_alloc.
+// The child leaves by std::_Exit: std::exit runs OpenBLAS's shutdown, which joins a worker
+// thread that may be retrying a 128 MB buffer under the cap forever (seen: a 12-minute hang).
 void allocate_beyond_the_limit() {
   rlimit limit{};
   limit.rlim_cur = limit.rlim_max = 256ull << 20;
-  if (setrlimit(RLIMIT_AS, &limit) != 0) std::exit(5);
+  if (setrlimit(RLIMIT_AS, &limit) != 0) std::_Exit(5);
   kinestat::linalg::install_throwing_gmp_allocation();
   try {
     mpz_t huge;
     mpz_init2(huge, 8ull << 30);  // 2^33 bits = 1 GB
     mpz_clear(huge);
-    std::exit(4);
+    std::_Exit(4);
   } catch (const std::bad_alloc&) {
-    std::exit(3);
+    std::_Exit(3);
   }
 }
 
