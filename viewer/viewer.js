@@ -21,6 +21,9 @@
     if (cls) e.className = cls;
     return e;
   };
+  // Dense network modes list motion magnitudes, framework modes coordinates; the modes of a
+  // sparse network (the first basis vectors of mode_total) list the couplings that move.
+  const movingHeading = () => (S.sparse ? 'Moving couplings: ' : 'Moving coordinates: ');
 
   // ---- side panel
   $('title').textContent = S.name || 'kinestat report';
@@ -72,6 +75,9 @@
     o.value = String(i);
     viewSelect.appendChild(o);
   });
+  if (S.sparse && !S.large && (S.mode_total > S.modes.length || S.stress_total > S.stresses.length))
+    $('notes').appendChild(text('p', 'Sparse analysis: the first ' + S.modes.length + ' of ' + S.mode_total + ' mode(s) and the first ' +
+      S.stresses.length + ' of ' + S.stress_total + ' self-stress(es) are shown, as basis vectors of the sparse QR.', 'note'));
   if (S.large) $('notes').appendChild(text('p', 'Large model (' + S.elements.count + ' elements): drawn as one line set, without glyphs, labels or modes.', 'note'));
   if (S.kind === 'structure') $('notes').appendChild(text('p', 'A structure model has no geometry: bodies are placed on a circle (the frame black, at the bottom), pairs drawn as bars, bodies coloured by structural group.', 'note'));
   else if (!S.large && S.modes.length === 0 && S.stresses.length === 0) $('notes').appendChild(text('p', 'No kinematic modes and no self-stress states to show.', 'note'));
@@ -439,7 +445,7 @@
     } else if (v.kind === 'mode') {
       const mode = S.modes[v.index];
       (mode.twists || []).forEach((t) => twistGroup.add(screwAxis(t, 0xe66101)));
-      if (mode.moving && mode.moving.length) $('moving').appendChild(text('p', 'Moving coordinates: ' + mode.moving.join(', '), 'note'));
+      if (mode.moving && mode.moving.length) $('moving').appendChild(text('p', movingHeading() + mode.moving.join(', '), 'note'));
       $('firstOrderBox').style.display = mode.trace ? '' : 'none';
       const t = tracedPath(v);
       if (mode.trace) {
@@ -464,7 +470,7 @@
     } else {
       legend.textContent = 'drag to rotate, wheel to zoom';
       const lines = S.modes.filter((md) => md.moving && md.moving.length).map((md) => md.label + ' moves ' + md.moving.join(', '));
-      if (lines.length) $('moving').appendChild(text('p', 'Moving coordinates: ' + lines.join('; '), 'note'));
+      if (lines.length) $('moving').appendChild(text('p', movingHeading() + lines.join('; '), 'note'));
     }
     if (lineSet) {
       const c = lineSet.geometry.attributes.color.array;

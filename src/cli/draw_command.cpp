@@ -1,5 +1,7 @@
 // `kinestat draw FILE --what graph|mechanism|structure`: static SVG pictures of a model.
 
+#include <fmt/format.h>
+
 #include <memory>
 
 #include "cli/commands.hpp"
@@ -34,12 +36,16 @@ int run(const DrawOptions& options) {
   } else if (what == "mechanism") {
     if (kind == "structure")
       refuse("a model of kind 'structure' has no geometry to draw; use --what graph or --what structure");
+    // A sparse network's scene holds only the first basis vectors of its modes and self-stresses.
+    const auto how_many = [](std::size_t drawn, std::size_t total, const std::string& states) {
+      return total > drawn ? fmt::format("the model has {} {}; the first {} can be drawn", total, states, drawn)
+                           : fmt::format("the model has {} {}", drawn, states);
+    };
     if (options.mode > static_cast<int>(loaded.scene.modes.size()) && options.mode != 1)
-      refuse("--mode " + std::to_string(options.mode) + ": the model has " + std::to_string(loaded.scene.modes.size()) +
-             " kinematic mode(s)");
+      refuse(fmt::format("--mode {}: {}", options.mode, how_many(loaded.scene.modes.size(), loaded.scene.mode_total, "kinematic mode(s)")));
     if (options.stress > static_cast<int>(loaded.scene.stresses.size()) && options.stress != 1)
-      refuse("--stress " + std::to_string(options.stress) + ": the model has " +
-             std::to_string(loaded.scene.stresses.size()) + " self-stress state(s)");
+      refuse(fmt::format("--stress {}: {}", options.stress,
+                         how_many(loaded.scene.stresses.size(), loaded.scene.stress_total, "self-stress state(s)")));
     emit(options.common, report::mechanism_svg(loaded.scene, {options.mode, options.stress}));
   } else {
     if (loaded.structure_error) throw *loaded.structure_error;

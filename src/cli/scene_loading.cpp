@@ -12,6 +12,7 @@
 #include "kinestat/io/network_structure.hpp"
 #include "kinestat/io/structure_reader.hpp"
 #include "kinestat/network/analyse_network.hpp"
+#include "kinestat/network/sparse_network.hpp"
 #include "kinestat/report/analysis_report.hpp"
 #include "kinestat/report/framework_report.hpp"
 #include "kinestat/report/network_report.hpp"
@@ -50,17 +51,23 @@ LoadedScene load_scene(const std::string& path, std::optional<double> tolerance,
     const io::LoadedNetwork network = file ? io::read_network_model(*file) : read_imported_network(path, format);
     network::AnalysisOptions options;
     options.tolerances = Tolerances::with_rank(tolerance);
-    // The pictures need no second-order classification.
-    report::NetworkAnalysisParts parts;
-    parts.second_order = false;
-    report::NetworkAnalysis analysis;
     try {
-      analysis = report::analyse_network_as_reported(network.model, options, parts);
+      if (static_cast<int>(network.model.couplings.size()) > network::kDenseNetworkLimit) {
+        // As `analyze` does: Davies' dense matrices grow as the cube of the network.
+        report::SparseNetworkAnalysis analysis = report::analyse_sparse_network_as_reported(network.model, options.tolerances);
+        loaded.scene = report::sparse_network_scene(network.model, analysis.result);
+        loaded.scene.verdict = std::move(analysis.verdict);
+      } else {
+        // The pictures need no second-order classification.
+        report::NetworkAnalysisParts parts;
+        parts.second_order = false;
+        report::NetworkAnalysis analysis = report::analyse_network_as_reported(network.model, options, parts);
+        loaded.scene = report::network_scene(network.model, analysis.result);
+        loaded.scene.verdict = std::move(analysis.verdict);
+      }
     } catch (const network::ModelError& error) {
       throw io::locate(error, network, path);
     }
-    loaded.scene = report::network_scene(network.model, analysis.result);
-    loaded.scene.verdict = std::move(analysis.verdict);
     loaded.scene.units = network.model.units;
     try {
       loaded.structure_model = io::structure_of_network(network, path);

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <regex>
 #include <string>
@@ -106,6 +107,38 @@ TEST(Pictures, DaviesNetworkDrawsBothSelfStressesAndItsThreeModes) {
   EXPECT_EQ(json["stresses"].size(), 2u);
   EXPECT_FALSE(json["stresses"][0]["wrenches"].empty());
   EXPECT_FALSE(json["modes"][2]["twists"].empty());
+}
+
+// Networks above network::kDenseNetworkLimit couplings are drawn from the sparse analysis, as
+// `analyze` reports them (the dense Davies analysis of 400 couplings took 14 s and 0.8 GB just to
+// draw): 200 parallel links between the ground and a top bar (FN = 1, CN = 200 − 2 by hand, see
+// scene_test), through `draw` and `report`.
+TEST(Pictures, LargeNetworkIsDrawnFromTheSparseAnalysis) {
+  std::string yaml = "kinestat: 1\nkind: network\nname: parallel links\ndimension: planar\nground: ground\ncouplings:\n";
+  for (int i = 0; i < 200; ++i)
+    yaml += "  - {name: A" + std::to_string(i) + ", type: revolute, between: [ground, L" + std::to_string(i) + "], point: [" +
+            std::to_string(i) + ", 0]}\n  - {name: B" + std::to_string(i) + ", type: revolute, between: [L" + std::to_string(i) +
+            ", top], point: [" + std::to_string(i) + ", 10]}\n";
+  const std::string path = kinestat::testing::write_temp_file("parallel_links.yaml", yaml);
+  const auto drawn = kinestat::testing::run_cli("draw " + path + " --what mechanism --mode 1 --stress 2");
+  ASSERT_EQ(drawn.exit_code, 0) << drawn.err;
+  EXPECT_NE(drawn.out.find("mode 1 (sparse QR basis) (of 1)"), std::string::npos);
+  EXPECT_NE(drawn.out.find("self-stress 2 (sparse QR basis) (first 8 of 198)"), std::string::npos);
+  EXPECT_NE(drawn.out.find("198 redundant constraints"), std::string::npos);
+  EXPECT_GE(count(drawn.out, "class=\"wrench\""), 2);
+  const auto refused = kinestat::testing::run_cli("draw " + path + " --what mechanism --stress 9");
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.err.find("--stress 9: the model has 198 self-stress state(s); the first 8 can be drawn"), std::string::npos) << refused.err;
+  const auto graph = kinestat::testing::run_cli("draw " + path);
+  ASSERT_EQ(graph.exit_code, 0) << graph.err;
+  EXPECT_NE(graph.out.find("tree from the ground: branches thick, chords thin"), std::string::npos);
+  if (report::html_report_built_in()) {
+    const auto html = kinestat::testing::run_cli("report " + path);
+    ASSERT_EQ(html.exit_code, 0) << html.err;
+    EXPECT_NE(html.out.find("\"sparse\":true"), std::string::npos);
+    EXPECT_NE(html.out.find("\"stress_total\":198"), std::string::npos);
+  }
+  std::filesystem::remove(path);
 }
 
 TEST(Pictures, PlanarFourBarTwistsAreItsInstantCentres) {

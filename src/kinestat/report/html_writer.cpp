@@ -137,6 +137,12 @@ nlohmann::ordered_json scene_json(const Scene& scene) {
   j["dimension"] = scene.dimension;
   j["screw_components"] = scene.screw_dimension == 3 ? std::vector<int>{2, 3, 4} : std::vector<int>{0, 1, 2, 3, 4, 5};
   j["large"] = scene.large;
+  if (scene.sparse) {
+    // A sparse network's modes name couplings, and are the first of mode_total.
+    j["sparse"] = true;
+    j["mode_total"] = scene.mode_total;
+    j["stress_total"] = scene.stress_total;
+  }
   j["summary"] = nlohmann::ordered_json::array();
   for (const auto& fact : scene.summary) j["summary"].push_back({fact.key, fact.value});
   j["bodies"] = scene.bodies;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "kinestat/graph/coupling_graph.hpp"
 #include "kinestat/report/framework_report.hpp"
 #include "kinestat/report/rank_status_text.hpp"
 #include "kinestat/report/structure_report.hpp"
@@ -100,15 +101,114 @@ std::string fixed(double value, int digits) {
   return text;
 }
 
-Scene network_scene(const network::Model& model, const network::NetworkResult& result) {
-  Scene scene;
+namespace {
+
+/// Where a network's bodies are drawn: each body's centre (the mean of its coupling points) and
+/// the model's size (the largest distance between two drawn points before the markers).
+struct NetworkLayout {
+  std::vector<Vector3d> centre;
+  double size = 1.0;
+};
+
+/// The largest distance between two of `points`: exact for pictures of up to
+/// kExactExtentPoints points, the diagonal of their bounding box (at most √3 times larger)
+/// above, so that large networks are laid out in linear time.
+constexpr std::size_t kExactExtentPoints = 4096;
+double drawing_extent(const std::vector<SceneNode>& nodes) {
+  double extent = 0.0;
+  if (nodes.size() <= kExactExtentPoints) {
+    for (const auto& a : nodes)
+      for (const auto& b : nodes) extent = std::max(extent, (a.position - b.position).norm());
+    return extent;
+  }
+  Vector3d lo = nodes.front().position, hi = lo;
+  for (const auto& node : nodes) {
+    lo = lo.cwiseMin(node.position);
+    hi = hi.cwiseMax(node.position);
+  }
+  return (hi - lo).norm();
+}
+
+/// The geometry every network picture shares, whatever the analysis: bodies as stars (a centre
+/// linked to one end node per coupling), a glyph and a graph edge per coupling (without screws
+/// or magnitude names), and a small three-armed marker on every body centre — a body rotating
+/// about an axis through all its coupling points (Davies' sa, ta) would otherwise not visibly
+/// move. At most one arm lies along any axis, so every rotation moves the marker.
+NetworkLayout network_drawing(const network::Model& model, int ground, Scene& scene) {
   scene.kind = "network";
   scene.name = model.name;
   scene.screw_dimension = model.space.dimension();
   scene.dimension = model.space.is_planar() ? 2 : 3;
   scene.bodies = model.bodies;
-  scene.ground = result.ground;
+  scene.ground = ground;
+  const std::size_t n = model.bodies.size();
+  NetworkLayout layout;
+  layout.centre.assign(n, Vector3d::Zero());
+  std::vector<int> count(n, 0);
+  for (const auto& c : model.couplings) {
+    const Vector3d p = to_vector(c.geometry.point);
+    for (int b : {c.from, c.to}) {
+      layout.centre[static_cast<std::size_t>(b)] += p;
+      ++count[static_cast<std::size_t>(b)];
+    }
+  }
+  for (std::size_t b = 0; b < n; ++b) {
+    if (count[b] > 0) layout.centre[b] /= count[b];
+    scene.nodes.push_back({model.bodies[b], layout.centre[b], static_cast<int>(b), static_cast<int>(b) == ground, {}, {}});
+  }
+  for (const auto& c : model.couplings) {
+    const Vector3d p = to_vector(c.geometry.point);
+    for (int b : {c.from, c.to}) {
+      scene.nodes.push_back({c.name + "@" + model.bodies[static_cast<std::size_t>(b)], p, b, b == ground, {}, {}});
+      scene.elements.push_back({c.name, "link", b, static_cast<int>(scene.nodes.size()) - 1, false, std::nullopt});
+    }
+    SceneGlyph glyph;
+    glyph.name = c.name;
+    glyph.type = std::string(screw::coupling_type_name(c.type));
+    glyph.from = c.from;
+    glyph.to = c.to;
+    glyph.point = p;
+    if (c.geometry.axis) glyph.axis = to_vector(*c.geometry.axis);
+    if (c.geometry.axis2) glyph.axis2 = to_vector(*c.geometry.axis2);
+    if (c.geometry.normal) glyph.normal = to_vector(*c.geometry.normal);
+    scene.glyphs.push_back(glyph);
+    GraphEdge edge;
+    edge.name = c.name;
+    edge.from = c.from;
+    edge.to = c.to;
+    scene.edges.push_back(edge);
+  }
+  const double extent = drawing_extent(scene.nodes);
+  const double arm = extent > 0.0 ? 0.1 * extent : 0.1;
+  layout.size = extent > 0.0 ? extent : 1.0;  // compares the two halves of a screw
+  const int arms = model.space.is_planar() ? 2 : 3;
+  for (std::size_t b = 0; b < n; ++b)
+    for (int axis = 0; axis < arms; ++axis) {
+      scene.nodes.push_back({model.bodies[b] + ".marker" + std::to_string(axis), layout.centre[b] + arm * Vector3d::Unit(axis),
+                             static_cast<int>(b), static_cast<int>(b) == ground, {}, {}});
+      scene.elements.push_back({model.bodies[b] + ".marker", "link", static_cast<int>(b), static_cast<int>(scene.nodes.size()) - 1, false, std::nullopt});
+    }
+  return layout;
+}
+
+/// Node velocities of a mode from each body's twist relative to the ground (ω, velocity of the
+/// point at the user's origin; user frame and length unit; `twists[b]` empty for the ground).
+std::vector<Vector3d> node_velocities(const Scene& scene, const std::vector<std::optional<std::pair<Vector3d, Vector3d>>>& twists) {
+  std::vector<Vector3d> velocity;
+  velocity.reserve(scene.nodes.size());
+  for (const auto& node : scene.nodes) {
+    const auto& twist = twists[static_cast<std::size_t>(node.body)];
+    velocity.push_back(twist ? Vector3d(twist->second + twist->first.cross(node.position)) : Vector3d::Zero());
+  }
+  return velocity;
+}
+
+}  // namespace
+
+Scene network_scene(const network::Model& model, const network::NetworkResult& result) {
+  Scene scene;
   const auto& r = result;
+  const NetworkLayout layout = network_drawing(model, r.ground, scene);
   scene.summary = {
       {"kind", "coupling network (Davies, seed 000)"},
       {"d", std::to_string(r.d)},
@@ -125,80 +225,29 @@ Scene network_scene(const network::Model& model, const network::NetworkResult& r
       {"class", network::class_description(r.classification)},
       {"arithmetic", r.exact ? "exact" : "floating point"},
   };
-
-  // Bodies are drawn as stars: a centre (the mean of its coupling points) linked to one end
-  // node per coupling it takes part in.
-  const std::size_t n = model.bodies.size();
-  std::vector<Vector3d> centre(n, Vector3d::Zero());
-  std::vector<int> count(n, 0);
-  for (const auto& c : model.couplings) {
-    const Vector3d p = to_vector(c.geometry.point);
-    for (int b : {c.from, c.to}) {
-      centre[static_cast<std::size_t>(b)] += p;
-      ++count[static_cast<std::size_t>(b)];
-    }
-  }
-  for (std::size_t b = 0; b < n; ++b) {
-    if (count[b] > 0) centre[b] /= count[b];
-    scene.nodes.push_back({model.bodies[b], centre[b], static_cast<int>(b), static_cast<int>(b) == r.ground, {}, {}});
-  }
   for (std::size_t e = 0; e < model.couplings.size(); ++e) {
-    const auto& c = model.couplings[e];
-    const Vector3d p = to_vector(c.geometry.point);
-    for (int b : {c.from, c.to}) {
-      scene.nodes.push_back({c.name + "@" + model.bodies[static_cast<std::size_t>(b)], p, b, b == r.ground, {}, {}});
-      scene.elements.push_back({c.name, "link", b, static_cast<int>(scene.nodes.size()) - 1, false, std::nullopt});
-    }
-    SceneGlyph glyph;
-    glyph.name = c.name;
-    glyph.type = std::string(screw::coupling_type_name(c.type));
-    glyph.from = c.from;
-    glyph.to = c.to;
-    glyph.point = p;
-    if (c.geometry.axis) glyph.axis = to_vector(*c.geometry.axis);
-    if (c.geometry.axis2) glyph.axis2 = to_vector(*c.geometry.axis2);
-    if (c.geometry.normal) glyph.normal = to_vector(*c.geometry.normal);
+    SceneGlyph& glyph = scene.glyphs[e];
+    GraphEdge& edge = scene.edges[e];
     for (const auto& m : r.motions)
-      if (m.coupling == static_cast<int>(e)) glyph.motions.push_back(screw_doubles(m.unit_screw.coordinates));
+      if (m.coupling == static_cast<int>(e)) {
+        glyph.motions.push_back(screw_doubles(m.unit_screw.coordinates));
+        edge.motion_names.push_back(m.name);
+      }
     for (const auto& a : r.actions)
-      if (a.coupling == static_cast<int>(e)) glyph.actions.push_back(screw_doubles(a.unit_screw.coordinates));
-    glyph.f = static_cast<int>(glyph.motions.size());
-    glyph.c = static_cast<int>(glyph.actions.size());
-    scene.glyphs.push_back(glyph);
-    GraphEdge edge;
-    edge.name = c.name;
-    edge.from = c.from;
-    edge.to = c.to;
-    edge.f = glyph.f;
-    edge.c = glyph.c;
-    for (const auto& m : r.motions)
-      if (m.coupling == static_cast<int>(e)) edge.motion_names.push_back(m.name);
-    for (const auto& a : r.actions)
-      if (a.coupling == static_cast<int>(e)) edge.action_names.push_back(a.name);
-    scene.edges.push_back(edge);
+      if (a.coupling == static_cast<int>(e)) {
+        glyph.actions.push_back(screw_doubles(a.unit_screw.coordinates));
+        edge.action_names.push_back(a.name);
+      }
+    glyph.f = edge.f = static_cast<int>(glyph.motions.size());
+    glyph.c = edge.c = static_cast<int>(glyph.actions.size());
   }
   for (int chord : r.chords) scene.edges[static_cast<std::size_t>(chord)].branch = false;
   scene.B = r.B;
   scene.Q = r.Q;
 
-  // A small three-armed marker on every body centre: a body rotating about an axis through all
-  // its coupling points (Davies' sa, ta) would otherwise not visibly move. At most one arm lies
-  // along any axis, so every rotation moves the marker.
-  double extent = 0.0;
-  for (const auto& a : scene.nodes)
-    for (const auto& b : scene.nodes) extent = std::max(extent, (a.position - b.position).norm());
-  const double arm = extent > 0.0 ? 0.1 * extent : 0.1;
-  const double size = extent > 0.0 ? extent : 1.0;  // compares the two halves of a screw
-  const int arms = model.space.is_planar() ? 2 : 3;
-  for (std::size_t b = 0; b < n; ++b)
-    for (int axis = 0; axis < arms; ++axis) {
-      scene.nodes.push_back({model.bodies[b] + ".marker" + std::to_string(axis), centre[b] + arm * Vector3d::Unit(axis),
-                             static_cast<int>(b), static_cast<int>(b) == r.ground, {}, {}});
-      scene.elements.push_back({model.bodies[b] + ".marker", "link", static_cast<int>(b), static_cast<int>(scene.nodes.size()) - 1, false, std::nullopt});
-    }
-
   // The motion of every body relative to the ground, per motion primary, as the analysis keeps
   // it (NetworkResult::body_motions: user frame and length unit).
+  const std::size_t n = model.bodies.size();
   for (std::size_t k = 0; k < r.primary_motion.size(); ++k) {
     SceneMode mode;
     mode.label = "mode " + std::to_string(k + 1) + ": " + r.motions[static_cast<std::size_t>(r.primary_motion[k])].name + " = 1";
@@ -209,28 +258,17 @@ Scene network_scene(const network::Model& model, const network::NetworkResult& r
     for (Eigen::Index row = 0; row < r.motion_magnitudes.values.rows(); ++row)
       if (static_cast<Eigen::Index>(k) < r.motion_magnitudes.values.cols() && r.motion_magnitudes.values(row, static_cast<Eigen::Index>(k)) != 0.0)
         mode.moving.push_back(r.motions[static_cast<std::size_t>(row)].name);
+    std::vector<std::optional<std::pair<Vector3d, Vector3d>>> twists(n);
     for (std::size_t b = 0; b < n; ++b) {
       if (static_cast<int>(b) == r.ground || b >= r.body_motions.size()) continue;
       const auto& forms = r.body_motions[b].values;
       if (static_cast<Eigen::Index>(k) >= forms.cols()) continue;
       const Eigen::VectorXd motion = forms.col(static_cast<Eigen::Index>(k));
+      twists[b] = twist_of(model.space, motion);
       if (motion.cwiseAbs().maxCoeff() == 0.0) continue;
-      const auto [omega, v0] = twist_of(model.space, motion);
-      mode.twists.push_back(screw_axis(model.bodies[b], centre[b], omega, v0, size));
+      mode.twists.push_back(screw_axis(model.bodies[b], layout.centre[b], twists[b]->first, twists[b]->second, layout.size));
     }
-    for (const auto& node : scene.nodes) {
-      const auto b = static_cast<std::size_t>(node.body);
-      Vector3d v = Vector3d::Zero();
-      if (static_cast<int>(b) != r.ground && b < r.body_motions.size()) {
-        const auto& forms = r.body_motions[b].values;
-        if (static_cast<Eigen::Index>(k) < forms.cols()) {
-          const Eigen::VectorXd motion = forms.col(static_cast<Eigen::Index>(k));
-          const auto [omega, v0] = twist_of(model.space, motion);
-          v = v0 + omega.cross(node.position);
-        }
-      }
-      mode.velocity.push_back(v);
-    }
+    mode.velocity = node_velocities(scene, twists);
     scene.modes.push_back(std::move(mode));
   }
   // Self-stresses: action primary k = +1; the wrench each coupling transmits (the sum of its
@@ -252,7 +290,7 @@ Scene network_scene(const network::Model& model, const network::NetworkResult& r
       }
       if (action.size() == 0 || action.cwiseAbs().maxCoeff() == 0.0) continue;
       const auto [moment, force] = twist_of(model.space, action);
-      stress.wrenches.push_back(screw_axis(model.couplings[e].name, to_vector(model.couplings[e].geometry.point), force, moment, size));
+      stress.wrenches.push_back(screw_axis(model.couplings[e].name, to_vector(model.couplings[e].geometry.point), force, moment, layout.size));
     }
     scene.stresses.push_back(std::move(stress));
   }
@@ -267,6 +305,110 @@ Scene network_scene(const network::Model& model, const network::NetworkResult& r
       sp.motions.push_back(std::move(s));
     }
     scene.pairs.push_back(std::move(sp));
+  }
+  scene.large = scene.elements.size() > kLargeSceneElements;
+  return scene;
+}
+
+Scene sparse_network_scene(const network::Model& model, const network::SparseNetworkResult& r) {
+  using Index = Eigen::Index;
+  Scene scene;
+  scene.sparse = true;
+  scene.mode_total = static_cast<std::size_t>(r.FN);
+  scene.stress_total = static_cast<std::size_t>(r.CN);
+  const NetworkLayout layout = network_drawing(model, r.ground, scene);
+  scene.summary = {
+      {"kind", "coupling network (sparse body-twist form)"},
+      {"d", std::to_string(r.d)},
+      {"bodies n", std::to_string(r.bodies)},
+      {"couplings e", std::to_string(r.e)},
+      {"circuits l", std::to_string(r.l)},
+      {"gross freedoms F", std::to_string(r.F)},
+      {"gross constraints C", std::to_string(r.C)},
+      {"rank of K", rank_evidence(r.rank)},
+      {"FN (nett degree of freedom)", std::to_string(r.FN)},
+      {"CN (nett degree of constraint)", std::to_string(r.CN)},
+      {"class", network::class_description(r.classification)},
+      {"couplings with a self-stress", std::to_string(r.stressed.size())},
+      {"couplings that move", std::to_string(r.moving.size())},
+      {"arithmetic", "floating point"},
+  };
+  // Each row of K is one unit action of its coupling (user frame in row_actions); f = d − c.
+  for (std::size_t row = 0; row < r.row_coupling.size(); ++row) {
+    const auto e = static_cast<std::size_t>(r.row_coupling[row]);
+    const auto& action = r.row_actions[row];
+    scene.glyphs[e].actions.emplace_back(action.coordinates.begin(), action.coordinates.begin() + r.d);
+  }
+  for (std::size_t e = 0; e < model.couplings.size(); ++e) {
+    scene.glyphs[e].c = scene.edges[e].c = static_cast<int>(scene.glyphs[e].actions.size());
+    scene.glyphs[e].f = scene.edges[e].f = r.d - scene.glyphs[e].c;
+  }
+  // No Davies tree on this path: the picture's tree is the breadth-first one from the ground.
+  std::vector<graph::Edge> edges;
+  edges.reserve(model.couplings.size());
+  for (const auto& c : model.couplings) edges.push_back({c.from, c.to});
+  for (int chord : graph::CouplingGraph(static_cast<int>(model.bodies.size()), edges).breadth_first_tree(r.ground).chords)
+    scene.edges[static_cast<std::size_t>(chord)].branch = false;
+
+  // Twists of the conditioned analysis frame (origin o, lengths over s) in the user's frame:
+  // (ω; v') -> (ω; s v' + o × ω), as the sparse verdict converts them.
+  const std::size_t n = model.bodies.size();
+  const auto column_of = [&](std::size_t b) { return static_cast<Index>(static_cast<int>(b) < r.ground ? b : b - 1) * r.d; };
+  for (Index j = 0; j < r.motion_basis.cols(); ++j) {
+    const Index primary = r.motion_primaries[static_cast<std::size_t>(j)];
+    const Eigen::VectorXd x = r.motion_basis.col(j) / r.motion_basis(primary, j);  // the primary = 1
+    SceneMode mode;
+    mode.label = fmt::format("mode {} (sparse QR basis)", j + 1);
+    mode.first_order_reason = "drawn by its twists (first order): a basis vector of the sparse analysis, not traced";
+    std::vector<std::optional<std::pair<Vector3d, Vector3d>>> twists(n);
+    double largest = 0.0;
+    for (std::size_t b = 0; b < n; ++b) {
+      if (static_cast<int>(b) == r.ground) continue;
+      auto [omega, v] = twist_of(model.space, x.segment(column_of(b), r.d));
+      v = r.frame_scale * v + r.frame_origin.cross(omega);
+      twists[b] = std::pair{omega, v};
+      largest = std::max(largest, x.segment(column_of(b), r.d).cwiseAbs().maxCoeff());
+    }
+    // Bodies and couplings that move: twist entries (conditioned frame) above kSupportZero of the largest.
+    const auto moves = [&](std::size_t b) {
+      return static_cast<int>(b) != r.ground && x.segment(column_of(b), r.d).cwiseAbs().maxCoeff() > kSupportZero * largest;
+    };
+    for (std::size_t e = 0; e < model.couplings.size(); ++e) {
+      const auto& c = model.couplings[e];
+      const auto from = static_cast<std::size_t>(c.from), to = static_cast<std::size_t>(c.to);
+      Eigen::VectorXd relative = Eigen::VectorXd::Zero(r.d);
+      if (from != static_cast<std::size_t>(r.ground)) relative -= x.segment(column_of(from), r.d);
+      if (to != static_cast<std::size_t>(r.ground)) relative += x.segment(column_of(to), r.d);
+      if ((moves(from) || moves(to)) && relative.cwiseAbs().maxCoeff() > kSupportZero * largest) mode.moving.push_back(c.name);
+    }
+    for (std::size_t b = 0; b < n; ++b)
+      if (moves(b)) mode.twists.push_back(screw_axis(model.bodies[b], layout.centre[b], twists[b]->first, twists[b]->second, layout.size));
+    mode.velocity = node_velocities(scene, twists);
+    scene.modes.push_back(std::move(mode));
+  }
+  // Self-stresses: the wrench each coupling transmits (its unit actions times their magnitudes,
+  // user frame: the magnitudes are the same in both frames), primary = 1.
+  for (Index j = 0; j < r.stress_basis.cols(); ++j) {
+    const Index primary = r.stress_primaries[static_cast<std::size_t>(j)];
+    const Eigen::VectorXd lambda = r.stress_basis.col(j) / r.stress_basis(primary, j);
+    const double zero = kSupportZero * lambda.cwiseAbs().maxCoeff();
+    SceneStress stress;
+    stress.label = fmt::format("self-stress {} (sparse QR basis)", j + 1);
+    stress.value.assign(scene.elements.size(), 0.0);
+    stress.kind.assign(scene.elements.size(), "");
+    std::vector<Eigen::VectorXd> wrench(model.couplings.size());
+    for (Index row = 0; row < lambda.size(); ++row) {
+      if (std::abs(lambda(row)) <= zero) continue;
+      const auto e = static_cast<std::size_t>(r.row_coupling[static_cast<std::size_t>(row)]);
+      if (wrench[e].size() == 0) wrench[e] = Eigen::VectorXd::Zero(r.d);
+      for (Index i = 0; i < r.d; ++i) wrench[e](i) += lambda(row) * r.row_actions[static_cast<std::size_t>(row)].coordinates[static_cast<std::size_t>(i)];
+    }
+    for (std::size_t e = 0; e < model.couplings.size(); ++e) {
+      if (wrench[e].size() == 0 || wrench[e].cwiseAbs().maxCoeff() == 0.0) continue;
+      const auto [moment, force] = twist_of(model.space, wrench[e]);
+      stress.wrenches.push_back(screw_axis(model.couplings[e].name, to_vector(model.couplings[e].geometry.point), force, moment, layout.size));
+    }
+    scene.stresses.push_back(std::move(stress));
   }
   scene.large = scene.elements.size() > kLargeSceneElements;
   return scene;

@@ -16,6 +16,7 @@
 #include "kinestat/framework/two_way_trace.hpp"
 #include "kinestat/network/model.hpp"
 #include "kinestat/network/network_result.hpp"
+#include "kinestat/network/sparse_network.hpp"
 #include "kinestat/structure/decomposition.hpp"
 #include "kinestat/structure/structure_model.hpp"
 
@@ -174,6 +175,14 @@ struct Scene {
   std::vector<int> group_of;
   /// The model had more elements than a picture can show one by one.
   bool large = false;
+  /// A network analysed in sparse body-twist form (above network::kDenseNetworkLimit
+  /// couplings): no circuits, cutsets (B, Q empty), magnitude names or pair systems; the tree
+  /// drawn is the breadth-first one from the ground; modes and self-stresses are the first
+  /// basis vectors of the sparse QR, and a mode's `moving` names couplings.
+  bool sparse = false;
+  /// The model's number of modes and of self-stresses when the scene holds only the first
+  /// ones (sparse networks); 0 when `modes` and `stresses` are all of them.
+  std::size_t mode_total = 0, stress_total = 0;
   /// The verdict every picture leads with (design layer; filled by whoever loads the model).
   std::optional<design::Verdict> verdict;
   /// The model's length unit (`units:`), empty when the file names none ("model units").
@@ -187,7 +196,14 @@ std::string length_unit(const Scene& scene);
 /// no labels, elements merged into one path / line set.
 inline constexpr std::size_t kLargeSceneElements = 20000;
 
+/// The scene of a network from its dense (Davies) analysis: every motion and action primary.
 Scene network_scene(const network::Model& model, const network::NetworkResult& result);
+/// The scene of a network from its sparse analysis (network::analyse_network_sparse with
+/// vectors): the bodies, couplings and their unit actions, the first basis vectors of the
+/// motions (body twists relative to the ground) and of the self-stresses (the wrench every
+/// coupling transmits), each scaled so that its primary is 1; user frame and length unit.
+/// Linear in the network's size, for networks of any size.
+Scene sparse_network_scene(const network::Model& model, const network::SparseNetworkResult& result);
 /// The scene of a framework. `traces` (framework::animation_traces, one entry per mode, or
 /// empty) gives the modes whose finite motion was traced both ways; every other mode gets the
 /// reason it is drawn to first order only.

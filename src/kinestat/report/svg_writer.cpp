@@ -200,7 +200,9 @@ void coupling_graph_panel(std::string& out, const Scene& scene, P origin, double
   const auto at = body_layout(scene, centre, size * 0.32);
   const bool network = scene.kind == "network";
   panel_title(out, origin + P{size / 2, 22}, network ? "coupling graph" : "bodies and pairs",
-              network ? "tree branches thick, chords thin; circuits and cutsets" : "pairs with freedoms f; colour: structural group");
+              !network        ? "pairs with freedoms f; colour: structural group"
+              : scene.sparse  ? "tree from the ground: branches thick, chords thin"
+                              : "tree branches thick, chords thin; circuits and cutsets");
   const std::vector<int> ones(scene.edges.size(), 1);
   const auto index = parallel_index(scene, ones);
   std::vector<P> middle(scene.edges.size());
@@ -550,6 +552,13 @@ class LabelSpace {
 
 }  // namespace
 
+namespace {
+// "of 3", or "first 8 of 43" when the scene holds only the first of the model's states.
+std::string out_of(std::size_t drawn, std::size_t total) {
+  return total > drawn ? fmt::format("first {} of {}", drawn, total) : fmt::format("of {}", drawn);
+}
+}  // namespace
+
 std::string mechanism_svg(const Scene& scene, const MechanismDrawing& drawing) {
   View view;
   view.dimension = scene.dimension;
@@ -841,7 +850,7 @@ std::string mechanism_svg(const Scene& scene, const MechanismDrawing& drawing) {
   double y = top + drawing_height + 30;
   if (mode) {
     out += fmt::format("<line x1=\"20\" y1=\"{0}\" x2=\"50\" y2=\"{0}\" stroke=\"#e66101\" stroke-width=\"2\" marker-end=\"url(#arrow-orange)\"/>\n", f2(y - 4));
-    text(out, P{58, y}, fmt::format("{} (of {}): nodal velocities, largest drawn at 20% of the model size", mode->label, scene.modes.size()), "start");
+    text(out, P{58, y}, fmt::format("{} ({}): nodal velocities, largest drawn at 20% of the model size", mode->label, out_of(scene.modes.size(), scene.mode_total)), "start");
     y += 20;
     if (displaced_in_full)
       out += fmt::format("<line x1=\"20\" y1=\"{0}\" x2=\"50\" y2=\"{0}\" stroke=\"#cccccc\" stroke-width=\"2\"/>\n", f2(y - 4));
@@ -862,7 +871,7 @@ std::string mechanism_svg(const Scene& scene, const MechanismDrawing& drawing) {
   if (stress) {
     if (!stress->wrenches.empty()) {
       out += fmt::format("<line x1=\"20\" y1=\"{0}\" x2=\"50\" y2=\"{0}\" stroke=\"#7b3294\" stroke-width=\"2\" stroke-dasharray=\"10,3,2,3\" marker-end=\"url(#arrow)\"/>\n", f2(y - 4));
-      text(out, P{58, y}, fmt::format("{} (of {}): line of action of the wrench each coupling transmits", stress->label, scene.stresses.size()), "start");
+      text(out, P{58, y}, fmt::format("{} ({}): line of action of the wrench each coupling transmits", stress->label, out_of(scene.stresses.size(), scene.stress_total)), "start");
       y += 20;
       text(out, P{58, y}, "arrow: force direction for the primary = +1 (sign as in the text report); width by |F|", "start");
       y += 20;
