@@ -45,7 +45,11 @@ std::pair<std::vector<Eigen::Index>, std::vector<Eigen::Index>> pivot_columns(co
   std::vector<Eigen::Index> kept, rest;
   if (a.cols() == 0) return {kept, rest};
   std::vector<bool> chosen(static_cast<std::size_t>(a.cols()), false);
-  if (a.rows() > 0 && rank > 0) {
+  if (rank >= a.cols()) {
+    // Every column is kept whatever the order: no factorisation needed (a full-rank D(c) has
+    // nothing to constrain; a D(c) with independent rows, nothing to release).
+    std::fill(chosen.begin(), chosen.end(), true);
+  } else if (a.rows() > 0 && rank > 0) {
     const std::vector<Eigen::Index> order = linalg::pivoted_column_order(a);
     for (Eigen::Index i = 0; i < rank && i < a.cols(); ++i) chosen[static_cast<std::size_t>(order[static_cast<std::size_t>(i)])] = true;
   }
