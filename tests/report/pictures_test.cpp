@@ -132,6 +132,9 @@ TEST(Pictures, LargeNetworkIsDrawnFromTheSparseAnalysis) {
   const auto graph = kinestat::testing::run_cli("draw " + path);
   ASSERT_EQ(graph.exit_code, 0) << graph.err;
   EXPECT_NE(graph.out.find("tree from the ground: branches thick, chords thin"), std::string::npos);
+  // 202 bodies on one circle: no names (they would overlap), and the picture says so.
+  EXPECT_NE(graph.out.find("202 bodies: names left out"), std::string::npos);
+  EXPECT_EQ(graph.out.find(">L17<"), std::string::npos);
   if (report::html_report_built_in()) {
     const auto html = kinestat::testing::run_cli("report " + path);
     ASSERT_EQ(html.exit_code, 0) << html.err;

@@ -167,6 +167,11 @@ Curve oriented_curve(const std::vector<P>& at, const GraphEdge& edge, int k, int
 
 const std::array<const char*, 8> kGroupColours = {"#ffffff", "#a6cee3", "#b2df8a", "#fdbf6f", "#cab2d6", "#fb9a99", "#ffff99", "#d9d9d9"};
 
+/// Graphs of more bodies than this are drawn without names: on a circle of 0.64 × 380 px, more
+/// names overlap one another and the edges (the text report and the HTML labels have them all).
+constexpr std::size_t kNamedGraphBodies = 60;
+bool graph_names_drawn(const Scene& scene) { return scene.bodies.size() <= kNamedGraphBodies; }
+
 void draw_bodies(std::string& out, const Scene& scene, const std::vector<P>& at) {
   for (std::size_t b = 0; b < at.size(); ++b) {
     std::string fill = "white";
@@ -175,6 +180,7 @@ void draw_bodies(std::string& out, const Scene& scene, const std::vector<P>& at)
     const bool ground = static_cast<int>(b) == scene.ground;
     out += fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{}\" stroke=\"#222\" stroke-width=\"{}\"/>\n", f2(at[b].x),
                        f2(at[b].y), fixed(kNodeRadius, 0), ground ? "#e0e0e0" : fill, ground ? "2.5" : "1.5");
+    if (!graph_names_drawn(scene)) continue;
     if (scene.bodies[b].size() <= 2) {
       text(out, at[b] + P{0, 4}, scene.bodies[b]);
     } else {
@@ -215,7 +221,7 @@ void coupling_graph_panel(std::string& out, const Scene& scene, P origin, double
     const P d = unit(c.b - c.a);
     const P side = P{-d.y, d.x};
     const std::string label = network ? edge.name : edge.name + " (f=" + std::to_string(edge.f) + ")";
-    text(out, middle[e] + 11.0 * side + P{0, 4}, label, "middle", "font-style=\"italic\" " + kHalo);
+    if (graph_names_drawn(scene)) text(out, middle[e] + 11.0 * side + P{0, 4}, label, "middle", "font-style=\"italic\" " + kHalo);
   }
   if (network) {
     // Circuits: an arc arrow at the centre of their edges, named by their chord.
@@ -239,7 +245,7 @@ void coupling_graph_panel(std::string& out, const Scene& scene, P origin, double
           // The circuit of a chord contains only that chord.
           name = scene.edges[e].name;
         }
-      text(out, mean + P{0, 4}, name, "middle", "font-size=\"10\" fill=\"#1b7837\"");
+      if (graph_names_drawn(scene)) text(out, mean + P{0, 4}, name, "middle", "font-size=\"10\" fill=\"#1b7837\"");
     }
     // Cutsets: a dashed line through the middles of their edges, named by their branch.
     for (Eigen::Index row = 0; row < scene.Q.rows(); ++row) {
@@ -286,7 +292,7 @@ void coupling_graph_panel(std::string& out, const Scene& scene, P origin, double
       for (std::size_t i = 1; i < line.size(); ++i) d += " L" + pt(line[i]);
       out += fmt::format("<path d=\"{}\" fill=\"none\" stroke=\"#762a83\" stroke-width=\"1.5\" stroke-dasharray=\"6,4\"/>\n", d);
       const P label_at = line.back() + 10.0 * unit(line.back() - line[line.size() - 2]);
-      text(out, label_at + P{0, 4}, name, "middle", "font-size=\"10\" fill=\"#762a83\"");
+      if (graph_names_drawn(scene)) text(out, label_at + P{0, 4}, name, "middle", "font-size=\"10\" fill=\"#762a83\"");
     }
   }
   draw_bodies(out, scene, at);
@@ -318,7 +324,7 @@ void expanded_graph_panel(std::string& out, const Scene& scene, P origin, double
         const P m = piece.at(0.5);
         const P d = unit(piece.b - piece.a);
         const std::string label = s < static_cast<int>(names.size()) ? names[static_cast<std::size_t>(s)] : edge.name;
-        text(out, m + 9.0 * P{-d.y, d.x} + P{0, 4}, label, "middle", "font-size=\"10\" font-style=\"italic\" " + kHalo);
+        if (graph_names_drawn(scene)) text(out, m + 9.0 * P{-d.y, d.x} + P{0, 4}, label, "middle", "font-size=\"10\" font-style=\"italic\" " + kHalo);
       }
     } else {
       for (int s = 0; s < edge.c; ++s) {
@@ -328,7 +334,7 @@ void expanded_graph_panel(std::string& out, const Scene& scene, P origin, double
         const P m = c.at(0.5 + 0.14 * (k % 3 - 1));
         const std::string label = s < static_cast<int>(names.size()) ? names[static_cast<std::size_t>(s)] : edge.name;
         out += fmt::format("<rect x=\"{}\" y=\"{}\" width=\"22\" height=\"12\" fill=\"white\"/>\n", f2(m.x - 11), f2(m.y - 7));
-        text(out, m + P{0, 3}, label, "middle", "font-size=\"10\" font-style=\"italic\" " + kHalo);
+        if (graph_names_drawn(scene)) text(out, m + P{0, 3}, label, "middle", "font-size=\"10\" font-style=\"italic\" " + kHalo);
       }
     }
   }
@@ -420,11 +426,16 @@ std::string graph_svg(const Scene& scene) {
   const double width = network ? 3 * size : size + 160;
   // The verdict, when the analysis gave one, under the model's name.
   const std::vector<std::string> verdict = scene.verdict ? verdict_lines(scene) : std::vector<std::string>{};
-  const double height = size + 40 + 16.0 * static_cast<double>(verdict.size());
+  const bool named = graph_names_drawn(scene);
+  const double height = size + 40 + 16.0 * static_cast<double>(verdict.size() + (named ? 0 : 1));
   std::string out = header(width, height);
   text(out, P{width / 2, size + 28}, scene.name, "middle", "font-size=\"12\" fill=\"#333\"");
   for (std::size_t i = 0; i < verdict.size(); ++i)
     text(out, P{width / 2, size + 46 + 16.0 * static_cast<double>(i)}, verdict[i], "middle", "class=\"verdict\" font-size=\"12\" fill=\"#333\"");
+  if (!named)
+    text(out, P{width / 2, size + 46 + 16.0 * static_cast<double>(verdict.size())},
+         fmt::format("{} bodies: names left out, they would overlap (all names: text report; HTML report: labels)", scene.bodies.size()),
+         "middle", "font-size=\"11\" fill=\"#555\"");
   coupling_graph_panel(out, scene, P{network ? 0.0 : 80.0, 0}, size);
   if (network) {
     expanded_graph_panel(out, scene, P{size, 0}, size, true);
