@@ -13,6 +13,7 @@
 #include "kinestat/linalg/sign_convention.hpp"
 #include "kinestat/linalg/sparse_qr.hpp"
 #include "kinestat/linalg/sparse_rank.hpp"
+#include "kinestat/linalg/null_spaces.hpp"
 #include "kinestat/linalg/svd_analysis.hpp"
 
 namespace kinestat::framework {
@@ -212,17 +213,17 @@ FrameworkResult analyse_framework(const FrameworkModel& model, const AnalysisOpt
     }
   } else {
     const Eigen::MatrixXd dense(jacobian);
-    const linalg::SvdAnalysis svd = linalg::analyse_svd(dense, tolerance);
+    const linalg::NullSpaces svd = linalg::analyse_null_spaces(dense, tolerance);
     result.decision = svd.rank;
     result.singular_values = svd.singular_values;
     result.vectors = true;
     const Eigen::Index rank = svd.rank.rank;
 
     // Kinematic modes: V columns of zero singular values and those in excess of the rows.
-    collect_modes(result, deterministic_null_space(svd.null_space(), result.column_scale, options.tolerances.free_variable));
+    collect_modes(result, deterministic_null_space(svd.null_space, result.column_scale, options.tolerances.free_variable));
     // Stress states: U columns of zero singular values and those in excess of the columns.
     const Eigen::MatrixXd transposed = dense.transpose();
-    collect_stresses(result, deterministic_null_space(svd.left_null_space(), result.row_scale, options.tolerances.free_variable));
+    collect_stresses(result, deterministic_null_space(svd.left_null_space, result.row_scale, options.tolerances.free_variable));
     const auto fixed_rows = static_cast<Eigen::Index>(result.partition.fixed_deformations.size());
     // One minimal set of releases: the rows a column-pivoted QR of D(c)ᵀ leaves out of a basis
     // of the row space; then, among the kept rows, the columns left out of a column basis are
