@@ -13,9 +13,6 @@ extern "C" void dgeqrf_(const int* m, const int* n, double* a, const int* lda, d
 extern "C" void dormqr_(const char* side, const char* trans, const int* m, const int* n, const int* k, const double* a,
                         const int* lda, const double* tau, double* c, const int* ldc, double* work, const int* lwork, int* info,
                         std::size_t side_length, std::size_t trans_length);
-extern "C" void dgesdd_(const char* jobz, const int* m, const int* n, double* a, const int* lda, double* s, double* u,
-                        const int* ldu, double* vt, const int* ldvt, double* work, const int* lwork, int* iwork, int* info,
-                        std::size_t jobz_length);
 
 namespace kinestat::linalg {
 
@@ -60,21 +57,6 @@ bool lapack_trailing_q(const Eigen::MatrixXd& qr, const Eigen::VectorXd& tau, Ei
   return info == 0;
 }
 
-// Singular values of the square upper-triangular `r` without vectors (dgesdd, jobz 'N').
-bool lapack_values_only(Eigen::MatrixXd r, Eigen::VectorXd& s) {
-  int n = static_cast<int>(r.rows()), lda = std::max(1, n), one = 1, info = 0, lwork = -1;
-  s.resize(n);
-  std::vector<int> iwork(static_cast<std::size_t>(8 * std::max(1, n)));
-  double query = 0.0, unused = 0.0;
-  const char jobz = 'N';
-  dgesdd_(&jobz, &n, &n, r.data(), &lda, s.data(), &unused, &one, &unused, &one, &query, &lwork, iwork.data(), &info, 1);
-  if (info != 0) return false;
-  lwork = std::max(1, static_cast<int>(query));
-  std::vector<double> work(static_cast<std::size_t>(lwork));
-  dgesdd_(&jobz, &n, &n, r.data(), &lda, s.data(), &unused, &one, &unused, &one, work.data(), &lwork, iwork.data(), &info, 1);
-  return info == 0 && s.allFinite();
-}
-
 // The left null basis `left` on probe vectors: aᵀ (left x) vanishes relative to |a| |x|, and
 // leftᵀ left y = y (the same tolerances as the SVD's check).
 bool left_null_space_check(const Eigen::MatrixXd& a, const Eigen::MatrixXd& left) {
@@ -93,9 +75,9 @@ NullSpaces analyse_null_spaces(const Eigen::MatrixXd& a, const RankTolerance& to
   if (m > n && n > 0) {
     pin_blas_threads();
     Eigen::MatrixXd qr = a;
-    Eigen::VectorXd tau, s;
-    if (lapack_householder_qr(qr, tau) &&
-        lapack_values_only(Eigen::MatrixXd(qr.topRows(n).triangularView<Eigen::Upper>()), s)) {
+    Eigen::VectorXd tau;
+    if (lapack_householder_qr(qr, tau)) {
+      Eigen::VectorXd s = singular_values(Eigen::MatrixXd(qr.topRows(n).triangularView<Eigen::Upper>()));
       NullSpaces result;
       result.rank = decide_rank(s, m, n, tolerance);
       if (result.rank.rank == n && lapack_trailing_q(qr, tau, result.left_null_space) &&

@@ -26,7 +26,7 @@ struct NullSpaces {
 
 /// Numerical rank of `a` (decide_rank on its singular values, the same rule as analyse_svd) and
 /// orthonormal bases of the null spaces of `a` and of `aᵀ`. A tall `a` whose R factor has full
-/// rank by that rule takes the QR route (singular values of R by LAPACK's dgesdd without
+/// rank by that rule takes the QR route (singular values of R by singular_values, without
 /// vectors, the left null space from Q, checked on probe vectors: ‖aᵀ N x‖ and NᵀN − I); every
 /// other matrix, and a QR route that fails its check, the checked full SVD (analyse_svd).
 /// The bases differ from the SVD's by an orthogonal change of basis within the same space.

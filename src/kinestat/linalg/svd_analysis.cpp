@@ -79,6 +79,30 @@ bool lapack_svd(const Eigen::MatrixXd& a, bool full, ThinFactors& f) {
   return true;
 }
 
+// Singular values alone (dgesdd, jobz 'N'): LAPACK then finds them by QR iteration on the
+// bidiagonal form (dlasdq), not by divide and conquer, whose wrong vectors the probe check
+// guards against. Checked by decreasing order and the Frobenius identity Σσ² = ‖A‖²_F; false
+// when LAPACK fails or the check does.
+bool lapack_singular_values(const Eigen::MatrixXd& a, Eigen::VectorXd& s) {
+  int m = static_cast<int>(a.rows()), n = static_cast<int>(a.cols()), lda = std::max(1, m), one = 1, info = 0, lwork = -1;
+  const int p = std::min(m, n);
+  Eigen::MatrixXd work_a = a;
+  s.resize(p);
+  std::vector<int> iwork(static_cast<std::size_t>(8 * std::max(1, p)));
+  double query = 0.0, unused = 0.0;
+  const char jobz = 'N';
+  dgesdd_(&jobz, &m, &n, work_a.data(), &lda, s.data(), &unused, &one, &unused, &one, &query, &lwork, iwork.data(), &info, 1);
+  if (info != 0) return false;
+  lwork = std::max(1, static_cast<int>(query));
+  std::vector<double> work(static_cast<std::size_t>(lwork));
+  dgesdd_(&jobz, &m, &n, work_a.data(), &lda, s.data(), &unused, &one, &unused, &one, work.data(), &lwork, iwork.data(), &info, 1);
+  if (info != 0 || !s.allFinite()) return false;
+  for (Eigen::Index i = 0; i < p; ++i)
+    if (s(i) < 0.0 || (i > 0 && s(i) > s(i - 1))) return false;
+  const double frobenius = a.squaredNorm();
+  return std::abs(s.squaredNorm() - frobenius) <= kSvdResidualTolerance * std::max(1.0, frobenius);
+}
+
 // Checked SVD: LAPACK first, the one-sided Jacobi SVD when LAPACK fails or its factors fail the
 // check. `full`: U and V completed to square orthonormal matrices.
 ThinFactors checked_svd(const Eigen::MatrixXd& a, bool full) {
@@ -132,6 +156,9 @@ SvdAnalysis analyse_svd(const Eigen::MatrixXd& a, const RankTolerance& tolerance
 
 Eigen::VectorXd singular_values(const Eigen::MatrixXd& a) {
   if (a.rows() == 0 || a.cols() == 0) return {};
+  pin_blas_threads();
+  Eigen::VectorXd s;
+  if (lapack_singular_values(a, s)) return s;
   return checked_svd(a, false).s;
 }
 

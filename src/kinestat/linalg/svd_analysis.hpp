@@ -7,7 +7,9 @@
 // equal singular values, which the 0/±1 matrices of coupling networks and frameworks have
 // (seen with Eigen 3.4's BDCSVD: |A - U S V^T| = 0.76 for a 19 x 24 network matrix). Every SVD
 // in kinestat is therefore checked: on generic probe vectors the factors must reconstruct A
-// and be orthonormal, otherwise the slower but reliable one-sided Jacobi SVD is used.
+// and be orthonormal, otherwise the slower but reliable one-sided Jacobi SVD is used. Singular
+// values alone come from LAPACK's QR iteration on the bidiagonal form (no divide and conquer),
+// checked by their order and Σσ² = ‖A‖²_F.
 
 #include <Eigen/Core>
 
@@ -37,10 +39,11 @@ enum class SvdVectors { both, right_only };
 SvdAnalysis analyse_svd(const Eigen::MatrixXd& a, const RankTolerance& tolerance = {},
                         SvdVectors vectors = SvdVectors::both);
 
-/// Singular values of `a`, decreasing, from a checked SVD.
+/// Singular values of `a`, decreasing: LAPACK's dgesdd without vectors (QR iteration on the
+/// bidiagonal form), checked by order and Σσ² = ‖a‖²_F, else from the checked SVD.
 Eigen::VectorXd singular_values(const Eigen::MatrixXd& a);
 
-/// Numerical rank of `a` with its evidence (from a checked SVD).
+/// Numerical rank of `a` with its evidence (from singular_values).
 RankDecision numerical_rank(const Eigen::MatrixXd& a, const RankTolerance& tolerance = {});
 
 }  // namespace kinestat::linalg
