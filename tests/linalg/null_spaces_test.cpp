@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "kinestat/linalg/null_spaces.hpp"
+#include "kinestat/linalg/svd_analysis.hpp"
 #include "support/subspace_angles.hpp"
 
 namespace kinestat::linalg {
@@ -82,6 +83,16 @@ TEST(NullSpaces, WideMatrixTakesTheSvdRoute) {
   EXPECT_EQ(result.left_null_space.cols(), 0);
   // The null space of Aᵀ is the left null space of A.
   EXPECT_NEAR(testing::principal_cosines(result.null_space, c.left_null).minCoeff(), 1.0, 1e-12);
+}
+
+TEST(SingularValues, WithoutVectorsAreTheHandValues) {
+  // singular_values takes LAPACK's values-only route: the same √(1 + b_i²), for A and Aᵀ.
+  const TallCase c = tall_case(30, 7);
+  for (const Eigen::MatrixXd& a : {c.a, Eigen::MatrixXd(c.a.transpose())}) {
+    const Eigen::VectorXd s = singular_values(a);
+    ASSERT_EQ(s.size(), 30);
+    for (Eigen::Index i = 0; i < 30; ++i) EXPECT_NEAR(s(i), c.singular_values(i), 1e-13 * c.singular_values(0));
+  }
 }
 
 }  // namespace
