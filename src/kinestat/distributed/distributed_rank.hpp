@@ -71,18 +71,18 @@ struct DistributedRank {
   /// s is already min(m, n), or DistributedRankOptions::window is false) or when
   /// kDistributedWindowMostPairs pairs were all in the window.
   bool window_searched = false;
-  /// Largest ‖H w − λ w‖ / σ_max of the window's pairs (0 when none).
+  /// Largest ‖H w − λ w‖ / σ_max of the window's pairs, rounded up to a power of ten (0 when none).
   double window_residual = 0.0;
   /// The same count at kCertainMargin·s: equal to the rank when no singular value lies in
   /// (s, kCertainMargin·s], the evidence the counts give without singular values.
   Eigen::Index rank_above_margin = 0;
   bool smallest_kept_verified = false;  ///< SLEPc's σ_r passed its residual check
-  double smallest_kept_residual = 0.0;  ///< ‖H u − σ_r u‖ / (σ_max ‖u‖) of its singular vector pair u
+  double smallest_kept_residual = 0.0;  ///< ‖H u − σ_r u‖ / (σ_max ‖u‖) of its pair u, rounded up to a power of ten
   bool dropped_bounded = false;         ///< largest_dropped is the bound of the whole null space
   /// Orthonormal bases (rank 0): the first `vectors` null vectors of A (n rows) and of Aᵀ (m rows).
   Eigen::MatrixXd mechanisms, self_stresses;
   /// ‖A q‖ / (σ_max ‖q‖) of each column q of `mechanisms` and ‖Aᵀ q‖ / (σ_max ‖q‖) of each of
-  /// `self_stresses` (rank 0; A as passed in), to two significant digits. The vectors' entries
+  /// `self_stresses` (rank 0; A as passed in), rounded up to a power of ten. The vectors' entries
   /// are rounded to 2⁻⁴⁴ of their largest, so that a run on P ≥ 2 processes (whose MUMPS sums
   /// in message order) reports the same vectors and residuals but for values on a rounding
   /// boundary (distributed_rank.cpp).
