@@ -30,7 +30,8 @@ j = json.load(open('$work/petsc.json'))
 b = j['backend']; m = b['measured']; s = m['seconds']
 peaks = ' + '.join(f'{x / 1e6:.0f}' for x in m['peak_memory_bytes'])
 counts = f\"C x d(n-1) = {j['C']} x {j['C'] - j['CN'] + j['FN']} | FN {j['FN']}, CN {j['CN']}\" if j['kind'] == 'network' else f\"{j['rows']} x {j['cols']} | rank {j['rank']}, {j['mechanisms']} / {j['self_stresses']}\"
-print(f\"| {sys.argv[1]} | petsc P = $p | {counts} | $seconds s (factorisations {s['factorisation']:.1f} s, null vectors {s['null_vectors']:.1f} s) | {peaks} MB per rank; MUMPS {m['mumps_megabytes_max']} MB max |\")
+window = f\", window {s['window']:.1f} s\" if 'window' in s else ''
+print(f\"| {sys.argv[1]} | petsc P = $p | {counts} | $seconds s (factorisations {s['factorisation']:.1f} s{window}, null vectors {s['null_vectors']:.1f} s) | {peaks} MB per rank; MUMPS {m['mumps_megabytes_max']} MB max |\")
 " "$(basename "$model")"
   done
 done

@@ -84,11 +84,15 @@ nlohmann::ordered_json backend_json(const distributed::DistributedRank& b, bool 
   nlohmann::ordered_json j;
   j["name"] = "petsc";
   j["processes"] = b.processes;
-  j["solver"] = std::string(matrix) + ": MUMPS LDL^T of [[0, A], [A^T, 0]] + s I, s = 100 x threshold: rank = its negative pivots (Sylvester's inertia); "
+  j["solver"] = std::string(matrix) + ": MUMPS LDL^T of [[0, A], [A^T, 0]] + s I, s = 100 x threshold: rank = its negative pivots (Sylvester's inertia) "
+                "plus the singular values in (threshold, s] (SLEPc Krylov-Schur on s (H + s I)^-1 - I, checked on H); "
                 "SLEPc Krylov-Schur for the smallest kept value";
   j["null_space_dimension"] = b.null_pivots;
   j["shift"] = b.shift;
   j["rank_above_margin"] = b.rank_above_margin;
+  j["window_kept"] = b.window_kept;
+  j["window_searched"] = b.window_searched;
+  j["window_residual"] = b.window_residual;
   j["smallest_kept_verified"] = b.smallest_kept_verified;
   j["smallest_kept_residual"] = b.smallest_kept_residual;
   j["largest_dropped_bounded"] = b.dropped_bounded;
@@ -109,6 +113,7 @@ nlohmann::ordered_json backend_json(const distributed::DistributedRank& b, bool 
   nlohmann::ordered_json measured;
   measured["seconds"] = {{"assembly", b.assembly_seconds},
                          {"factorisation", b.factor_seconds},
+                         {"window", b.window_seconds},
                          {"null_vectors", b.vector_seconds},
                          {"smallest_kept", b.evidence_seconds}};
   measured["peak_memory_bytes"] = b.peak_memory;
@@ -124,16 +129,17 @@ std::string backend_text(const distributed::DistributedRank& b, bool timings, co
     peak += fmt::format("{}{:.0f} MB", p == 0 ? "" : ", ", static_cast<double>(b.peak_memory[p]) / 1e6);
   std::string text = fmt::format(
       "backend: petsc on {} process(es): rank of {} = negative pivots of MUMPS's LDL^T of [[0, {}], [{}^T, 0]] + s I, s = {:.3g} "
-      "(100 x threshold); rank at 100 s: {}; smallest kept value by SLEPc {}; null vectors computed {} (largest relative "
-      "residual {:.1e}); largest dropped {}\n",
-      b.processes, matrix, matrix, matrix, b.shift, b.rank_above_margin,
-      b.smallest_kept_verified ? "verified" : "not computed (the null space is computed whole only up to 64 vectors)", b.null_vectors_computed,
+      "(100 x threshold), plus {} singular value(s) in (threshold, s] by SLEPc ({}); rank at 100 s: {}; smallest kept value by "
+      "SLEPc {}; null vectors computed {} (largest relative residual {:.1e}); largest dropped {}\n",
+      b.processes, matrix, matrix, matrix, b.shift, b.window_kept,
+      b.window_searched ? "searched whole" : "not searched whole", b.rank_above_margin,
+      b.smallest_kept_verified ? "verified" : "not found", b.null_vectors_computed,
       b.null_vector_residual, b.dropped_bounded ? "bounded by the whole null space" : "not computed");
   if (timings)
     text += fmt::format(
-        "  time: assembly {:.2f} s, factorisation {:.2f} s, null vectors {:.2f} s, smallest kept {:.2f} s; peak memory per "
-        "process {}; MUMPS {} MB max per process, {} MB in all\n",
-        b.assembly_seconds, b.factor_seconds, b.vector_seconds, b.evidence_seconds, peak, b.factor_megabytes_max,
+        "  time: assembly {:.2f} s, factorisation {:.2f} s, window {:.2f} s, null vectors {:.2f} s, smallest kept {:.2f} s; peak "
+        "memory per process {}; MUMPS {} MB max per process, {} MB in all\n",
+        b.assembly_seconds, b.factor_seconds, b.window_seconds, b.vector_seconds, b.evidence_seconds, peak, b.factor_megabytes_max,
         b.factor_megabytes_total);
   return text;
 }

@@ -93,6 +93,11 @@ bound = serial["rank_evidence"]["body_twist"]["threshold"] / serial["rank_eviden
 assert len(residuals["motions"]) == 8 and len(residuals["self_stresses"]) == 8, residuals
 assert all(r < bound for r in residuals["motions"] + residuals["self_stresses"]), (residuals, bound)
 assert petsc["null_space_residual"] < 1e-11, petsc["null_space_residual"]
+# No singular value in (t, 100 t] (the window searched whole and empty): the decision is not
+# close, as the serial path's is not (no "close decision" warning on either).
+assert petsc["backend"]["window_searched"] and petsc["backend"]["window_kept"] == 0, petsc["backend"]
+assert serial["rank_evidence"]["body_twist"]["close"] is False
+assert petsc["rank_evidence"]["body_twist"]["close"] is False, petsc["rank_evidence"]["body_twist"]
 print("network: serial and petsc agree:", petsc["FN"], petsc["CN"], len(petsc["stressed_couplings"]), len(petsc["moving_couplings"]))
 PY
 # Errors: exit 2 with the file named, from every process.

@@ -8,13 +8,13 @@
 #include <gtest/gtest.h>
 #include <mpi.h>
 
-#include <Eigen/QR>
 
 #include <algorithm>
 
 #include "kinestat/distributed/network_rank.hpp"
 #include "kinestat/network/sparse_network.hpp"
 #include "support/network_generator.hpp"
+#include "support/subspace_angles.hpp"
 
 namespace kinestat::distributed {
 namespace {
@@ -23,14 +23,6 @@ bool network_test_root() {
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   return rank == 0;
-}
-
-// ‖X − Q Qᵀ X‖_F for the orthonormal columns X and an orthonormal basis Q of span(`subspace`):
-// at least the sine of the largest principal angle between span(X) and that subspace.
-double network_distance_to_span(const Eigen::MatrixXd& x, const Eigen::MatrixXd& subspace) {
-  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(subspace);
-  const Eigen::MatrixXd q = qr.householderQ() * Eigen::MatrixXd::Identity(subspace.rows(), subspace.cols());
-  return (x - q * (q.transpose() * x)).norm();
 }
 
 // Runs both paths with `vectors` basis vectors on the backend; returns the backend's result.
@@ -57,6 +49,23 @@ DistributedNetworkResult check_network(const network::Model& model, Eigen::Index
   EXPECT_EQ(p.moving_bodies, serial.moving_bodies) << name;
   EXPECT_EQ(p.rank.rank, serial.rank.rank) << name;
   EXPECT_EQ(p.rank.threshold, serial.rank.threshold) << name;
+  // Close by the serial rule (smallest kept value below 100 t): when a kept singular value lies
+  // in (t, s = 100 t]; not close when the serial QR's decision is not and the window is empty.
+  // (The serial QR's evidence is its smallest kept |R_ii|, which can be far above σ_r.)
+  if (r.backend.window_kept > 0) {
+    EXPECT_TRUE(p.rank.close()) << name;
+  }
+  if (r.backend.window_kept == 0 && !serial.rank.close()) {
+    EXPECT_FALSE(p.rank.close()) << name;
+  }
+  // The rank at t: the inertia's count at s plus the singular values found in (t, s], a window
+  // searched whole, each pair's residual at rounding level.
+  EXPECT_EQ(r.backend.window_searched, p.rank.rank < std::min(p.K.rows(), p.K.cols())) << name;
+  EXPECT_LT(r.backend.window_residual, 1e-12) << name;
+  if (r.backend.window_kept > 0) {
+    EXPECT_GT(p.rank.smallest_kept, p.rank.threshold) << name;
+    EXPECT_LE(p.rank.smallest_kept, r.backend.shift) << name;
+  }
   EXPECT_EQ(p.F, serial.F) << name;
   EXPECT_EQ(p.C, serial.C) << name;
   // The evidence: the count at 100 s is the rank unless a kept singular value lies in
@@ -86,11 +95,11 @@ DistributedNetworkResult check_network(const network::Model& model, Eigen::Index
   // The same spaces: the backend's vectors lie in the serial path's null spaces.
   if (p.motion_basis.cols() > 0 && serial.FN <= kWholeLimit) {
     EXPECT_EQ(whole.motion_basis.cols(), serial.FN) << name;
-    EXPECT_LT(network_distance_to_span(p.motion_basis, whole.motion_basis), 1e-8) << name;
+    EXPECT_LT(kinestat::testing::distance_to_span(p.motion_basis, whole.motion_basis), 1e-8) << name;
   }
   if (p.stress_basis.cols() > 0 && serial.CN <= kWholeLimit) {
     EXPECT_EQ(whole.stress_basis.cols(), serial.CN) << name;
-    EXPECT_LT(network_distance_to_span(p.stress_basis, whole.stress_basis), 1e-8) << name;
+    EXPECT_LT(kinestat::testing::distance_to_span(p.stress_basis, whole.stress_basis), 1e-8) << name;
   }
   return r;
 }

@@ -6,13 +6,13 @@
 #include <gtest/gtest.h>
 #include <mpi.h>
 
-#include <Eigen/QR>
 #include <Eigen/SVD>
 
 #include "kinestat/distributed/framework_rank.hpp"
 #include "kinestat/framework/framework_analysis.hpp"
 #include "kinestat/linalg/sparse_rank.hpp"
 #include "support/lattice_generator.hpp"
+#include "support/subspace_angles.hpp"
 
 namespace kinestat::distributed {
 namespace {
@@ -85,17 +85,6 @@ Eigen::MatrixXd framework_vector_columns(const framework::FrameworkResult& a, bo
   return out;
 }
 
-// ‖X − Q Qᵀ X‖_F for orthonormal bases X of span(`x`) and Q of span(`subspace`): at least the
-// sine of the largest principal angle between the two spans (0 when span(x) lies in the other).
-double framework_distance_to_span(const Eigen::MatrixXd& x, const Eigen::MatrixXd& subspace) {
-  auto orthonormal = [](const Eigen::MatrixXd& m) -> Eigen::MatrixXd {
-    const Eigen::HouseholderQR<Eigen::MatrixXd> qr(m);
-    return qr.householderQ() * Eigen::MatrixXd::Identity(m.rows(), m.cols());
-  };
-  const Eigen::MatrixXd qx = orthonormal(x), q = orthonormal(subspace);
-  return (qx - q * (q.transpose() * qx)).norm();
-}
-
 // The backend's reported vectors (analysis.modes and .stresses, D̂'s units, as the serial sparse
 // path reports them) against the serial sparse path's with `serial_vectors` of each: every
 // reported residual below the threshold, and the spans inside the serial ones.
@@ -112,9 +101,9 @@ void check_vector_spans(const framework::FrameworkModel& model, const Distribute
   EXPECT_LT(r.analysis.null_space_residual, bound) << name;
   EXPECT_EQ(r.analysis.modes.size(), r.backend.mechanism_residuals.size()) << name;
   EXPECT_EQ(r.analysis.stresses.size(), r.backend.self_stress_residuals.size()) << name;
-  EXPECT_LT(framework_distance_to_span(framework_vector_columns(r.analysis, true), framework_vector_columns(serial, true)), 1e-8)
+  EXPECT_LT(kinestat::testing::distance_to_span(framework_vector_columns(r.analysis, true), framework_vector_columns(serial, true)), 1e-8)
       << name;
-  EXPECT_LT(framework_distance_to_span(framework_vector_columns(r.analysis, false), framework_vector_columns(serial, false)), 1e-8)
+  EXPECT_LT(kinestat::testing::distance_to_span(framework_vector_columns(r.analysis, false), framework_vector_columns(serial, false)), 1e-8)
       << name;
 }
 

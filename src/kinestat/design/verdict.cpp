@@ -1,6 +1,7 @@
 #include "kinestat/design/verdict.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 #include <fmt/format.h>
@@ -38,8 +39,11 @@ void note_near_rank_change(Verdict& verdict, std::optional<double> distance, boo
 }
 
 void rank_participants(std::vector<Participant>& list) {
-  std::stable_sort(list.begin(), list.end(),
-                   [](const Participant& a, const Participant& b) { return a.participation > b.participation; });
+  // As the reports print them (report::verdict_report's share).
+  const auto printed = [](double share) { return std::round(share * kParticipationScale); };
+  std::stable_sort(list.begin(), list.end(), [&printed](const Participant& a, const Participant& b) {
+    return printed(a.participation) > printed(b.participation);
+  });
 }
 
 std::vector<Participant> strongest(const std::vector<VerdictState>& states, const std::string& kind) {

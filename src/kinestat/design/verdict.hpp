@@ -62,7 +62,13 @@ struct Verdict {
   std::optional<double> near_rank_change;
 };
 
-/// Sorts participants by decreasing participation; equal shares keep their order.
+/// Participations are ranked and reported as multiples of 1 / kParticipationScale (four
+/// decimals): shares that print alike rank alike, whatever their last bits.
+inline constexpr double kParticipationScale = 1e4;
+
+/// Sorts participants by decreasing participation rounded to a multiple of
+/// 1 / kParticipationScale; equal rounded shares keep their order (the order of the parts in the
+/// model), so that rounding noise (a parallel run's) never reorders them.
 void rank_participants(std::vector<Participant>& list);
 
 /// The largest share each part of kind `kind` ("extra motion" or "self-stress" states) has in

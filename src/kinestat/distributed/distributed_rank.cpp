@@ -30,6 +30,16 @@ constexpr int kExitLibrary = 3;
 // generated ladders of up to 3 000 couplings, whose smallest kept σ is within 100 s.
 constexpr int kDistributedRefinementSteps = 8;
 
+// The search for singular values in the window (t, s] (distributed_rank below): SLEPc's absolute
+// tolerance on the window operator (eigenvalues of order 1; the pairs are then checked on H
+// itself), its iteration limit, the first number of pairs asked for and the most (asked for in
+// batches 4 times larger while every pair found lies in the window). Solver settings, not
+// decision tolerances: the decision is σ > t on the pairs' Rayleigh quotients.
+constexpr double kDistributedWindowTolerance = 1e-12;
+constexpr PetscInt kDistributedWindowIterations = 1000;
+constexpr PetscInt kDistributedWindowBatch = 2;
+constexpr PetscInt kDistributedWindowMostPairs = 128;
+
 void check(PetscErrorCode code, const char* what) {
   if (code == 0) return;
   if (code == PETSC_ERR_MEM) throw std::bad_alloc();
@@ -192,10 +202,13 @@ void distributed_round_entries(Eigen::Ref<Eigen::VectorXd> v) {
   for (Eigen::Index i = 0; i < v.size(); ++i) v(i) = std::round(v(i) / unit) * unit;
 }
 
-double distributed_two_digits(double value) {
-  if (value == 0.0 || !std::isfinite(value)) return value;
-  const double unit = std::pow(10.0, std::floor(std::log10(std::abs(value))) - 1.0);
-  return std::round(value / unit) * unit;
+// A residual rounded up to a power of ten: an upper bound that the last-bit noise of a run on
+// P ≥ 2 processes (entries of a vector on a 2⁻⁴⁴ rounding boundary, SLEPc's sums) changes only
+// when it straddles a power of ten, where two significant digits changed in most runs (the
+// 1 000-coupling ladder at P = 2: 4.3 · 10⁻¹⁴ in one run, 4.7 · 10⁻¹⁴ in the next).
+double distributed_decade_above(double value) {
+  if (!(value > 0.0) || !std::isfinite(value)) return value;
+  return std::pow(10.0, std::ceil(std::log10(value)));
 }
 
 // A pseudo-random number in [−1, 1) for entry `index` of draw `draw` (splitmix64): the same
@@ -275,8 +288,97 @@ void smallest_kept(Mat h, Mat factor, double shift, std::vector<Vec>& null_space
     }
   }
   result.smallest_kept_verified = best > 0.0;
-  result.smallest_kept_residual = distributed_two_digits(best_residual);
+  result.smallest_kept_residual = distributed_decade_above(best_residual);
   result.decision.smallest_kept = best;
+}
+
+// y = (s·(H + s·I)⁻¹ − I)·x through MUMPS's solve: the operator whose positive eigenvalues are
+// σ/(s − σ) for the singular values σ < s of A (eigenvalue −σ of H), 0 for H's null space,
+// −σ/(s + σ) ∈ (−1, 0) for +σ and below −1 for −σ with σ > s.
+struct DistributedWindowOperator {
+  Mat factor = nullptr;
+  double shift = 0.0;
+};
+
+PetscErrorCode apply_window_operator(Mat shell, Vec x, Vec y) {
+  DistributedWindowOperator* op = nullptr;
+  PetscCall(MatShellGetContext(shell, &op));
+  PetscCall(MatSolve(op->factor, x, y));
+  PetscCall(VecScale(y, op->shift));
+  PetscCall(VecAXPY(y, -1.0, x));
+  return 0;
+}
+
+// One eigenpair of H found through the window operator and checked on H itself: w a unit
+// vector, λ = wᵀ H w, residual ‖H w − λ w‖ / σ_max.
+struct DistributedWindowPair {
+  double lambda = 0.0, residual = 0.0;
+  Vec vector = nullptr;  // owned by the caller's list
+};
+
+// The `count` eigenpairs of the window operator at the end `which` of its spectrum (SLEPc's
+// Krylov–Schur, absolute tolerance kDistributedWindowTolerance on the operator, whose spectrum
+// lies in [−1, ∞) but for σ near s), each checked on H. The vectors are appended to `owned`.
+std::vector<DistributedWindowPair> window_pairs(Mat h, Mat factor, double shift, EPSWhich which, PetscInt count,
+                                                double largest, std::vector<Vec>& owned) {
+  PetscInt local = 0, global = 0;
+  KINESTAT_PETSC_CHECK(MatGetLocalSize(h, &local, nullptr));
+  KINESTAT_PETSC_CHECK(MatGetSize(h, &global, nullptr));
+  DistributedWindowOperator op{factor, shift};
+  OwnedMat shell;
+  KINESTAT_PETSC_CHECK(MatCreateShell(PETSC_COMM_WORLD, local, local, global, global, &op, shell.out()));
+  KINESTAT_PETSC_CHECK(MatShellSetOperation(shell, MATOP_MULT, reinterpret_cast<void (*)(void)>(apply_window_operator)));
+  OwnedEps eps;
+  KINESTAT_PETSC_CHECK(EPSCreate(PETSC_COMM_WORLD, eps.out()));
+  KINESTAT_PETSC_CHECK(EPSSetOperators(eps, shell, nullptr));
+  KINESTAT_PETSC_CHECK(EPSSetProblemType(eps, EPS_HEP));
+  KINESTAT_PETSC_CHECK(EPSSetType(eps, EPSKRYLOVSCHUR));
+  KINESTAT_PETSC_CHECK(EPSSetWhichEigenpairs(eps, which));
+  KINESTAT_PETSC_CHECK(EPSSetDimensions(eps, std::min(count, global), PETSC_DEFAULT, PETSC_DEFAULT));
+  KINESTAT_PETSC_CHECK(EPSSetConvergenceTest(eps, EPS_CONV_ABS));
+  KINESTAT_PETSC_CHECK(EPSSetTolerances(eps, kDistributedWindowTolerance, kDistributedWindowIterations));
+  OwnedVec start, hw, residual;
+  KINESTAT_PETSC_CHECK(MatCreateVecs(h, start.out(), nullptr));
+  PetscInt lo = 0, hi = 0;
+  KINESTAT_PETSC_CHECK(VecGetOwnershipRange(start, &lo, &hi));
+  PetscScalar* entries = nullptr;
+  KINESTAT_PETSC_CHECK(VecGetArray(start, &entries));
+  for (PetscInt i = lo; i < hi; ++i) entries[i - lo] = 1.0 + 0.5 * std::sin(static_cast<double>(i) + 1.0);
+  KINESTAT_PETSC_CHECK(VecRestoreArray(start, &entries));
+  Vec initial[1] = {start};
+  KINESTAT_PETSC_CHECK(EPSSetInitialSpace(eps, 1, initial));
+  KINESTAT_PETSC_CHECK(EPSSolve(eps));
+  PetscInt converged = 0;
+  KINESTAT_PETSC_CHECK(EPSGetConverged(eps, &converged));
+  KINESTAT_PETSC_CHECK(VecDuplicate(start, hw.out()));
+  KINESTAT_PETSC_CHECK(VecDuplicate(start, residual.out()));
+  std::vector<DistributedWindowPair> pairs;
+  for (PetscInt i = 0; i < converged; ++i) {
+    PetscScalar real = 0.0, imaginary = 0.0;
+    Vec w = nullptr;
+    KINESTAT_PETSC_CHECK(VecDuplicate(start, &w));
+    owned.push_back(w);
+    KINESTAT_PETSC_CHECK(EPSGetEigenpair(eps, i, &real, &imaginary, w, nullptr));
+    PetscReal norm = 0.0;
+    KINESTAT_PETSC_CHECK(VecNormalize(w, &norm));
+    if (imaginary != 0.0 || norm == 0.0) continue;
+    KINESTAT_PETSC_CHECK(MatMult(h, w, hw));
+    PetscScalar lambda = 0.0;
+    KINESTAT_PETSC_CHECK(VecDot(hw, w, &lambda));
+    KINESTAT_PETSC_CHECK(VecWAXPY(residual, -lambda, w, hw));
+    PetscReal r = 0.0;
+    KINESTAT_PETSC_CHECK(VecNorm(residual, NORM_2, &r));
+    pairs.push_back({lambda, r / largest, w});
+
+  }
+  return pairs;
+}
+
+// Six significant digits: SLEPc's values at P ≥ 2 differ from run to run in their last bits.
+double distributed_six_digits(double value) {
+  if (value == 0.0 || !std::isfinite(value)) return value;
+  const double unit = std::pow(10.0, std::floor(std::log10(std::abs(value))) - 5.0);
+  return std::round(value / unit) * unit;
 }
 
 }  // namespace
@@ -351,6 +453,47 @@ DistributedRank distributed_rank(const Eigen::SparseMatrix<double>* a, const lin
     result.rank_above_margin = factor_shifted(h, kCertainMargin * t, other.out(), result);
   }
   result.factor_seconds = MPI_Wtime() - clock;
+
+  // The window (t, s]: the serial rule keeps a singular value above t, the inertia at s counts
+  // it as null. The positive eigenvalues of the window operator s·(H + s·I)⁻¹ − I are
+  // σ/(s − σ) for the singular values σ < s (eigenvalue −σ of H) and 0 on H's null space, so its
+  // largest ones, each checked on H itself (Rayleigh quotient λ = wᵀ H w, residual), are those
+  // of the window first, then values at or below t: once one of those is found, the window has
+  // been searched whole. The rank at t is the inertia's count plus the window's.
+  clock = MPI_Wtime();
+  std::vector<Vec> window_owned;  // every vector SLEPc returned
+  struct ReleaseWindow {
+    std::vector<Vec>& vectors;
+    ~ReleaseWindow() {
+      for (Vec& v : vectors) VecDestroy(&v);
+    }
+  } release_window{window_owned};
+  double window_smallest = 0.0;
+  if (options.window && d.rank < std::min<Eigen::Index>(m, n)) {
+    for (PetscInt count = kDistributedWindowBatch;; count *= 4) {
+      for (Vec& v : window_owned) VecDestroy(&v);
+      window_owned.clear();
+      result.window_kept = 0;
+      result.window_residual = 0.0;
+      result.window_searched = false;
+      window_smallest = 0.0;
+      for (const DistributedWindowPair& pair : window_pairs(h, factor, t, EPS_LARGEST_REAL, count, d.largest, window_owned)) {
+        if (pair.residual > kDistributedSingularResidual) continue;
+        const double sigma = -pair.lambda;
+        if (sigma > d.threshold && sigma <= t) {
+          ++result.window_kept;
+          result.window_residual = std::max(result.window_residual, pair.residual);
+          window_smallest = window_smallest == 0.0 ? sigma : std::min(window_smallest, sigma);
+        } else if (sigma <= d.threshold) {
+          result.window_searched = true;
+        }
+      }
+      if (result.window_searched || count >= kDistributedWindowMostPairs) break;
+    }
+    d.rank += result.window_kept;
+    result.window_residual = distributed_decade_above(result.window_residual);
+  }
+  result.window_seconds = MPI_Wtime() - clock;
   result.null_pivots = static_cast<Eigen::Index>(m) + n - 2 * d.rank;
   const PetscInt null_pivots = static_cast<PetscInt>(result.null_pivots);
 
@@ -449,7 +592,7 @@ DistributedRank distributed_rank(const Eigen::SparseMatrix<double>* a, const lin
         KINESTAT_PETSC_CHECK(VecRestoreArrayRead(gathered, &values_read));
         block = mechanism_used < want_mechanisms && (draw % 2 == 1 || stress_used >= want_stresses) ? 1
                 : stress_used < want_stresses                                                  ? 2
-                : mechanism_used < want_mechanisms                                             ? 1
+                : mechanism_used < want_mechanisms                                            ? 1
                                                                                                : 0;
       }
       MPI_Bcast(&block, 1, MPI_INT, 0, PETSC_COMM_WORLD);
@@ -472,24 +615,31 @@ DistributedRank distributed_rank(const Eigen::SparseMatrix<double>* a, const lin
     for (Eigen::Index j = 0; j < result.mechanisms.cols(); ++j) {
       distributed_round_entries(result.mechanisms.col(j));
       const double norm = result.mechanisms.col(j).norm();
-      result.mechanism_residuals.push_back(distributed_two_digits(((*a) * result.mechanisms.col(j)).norm() / (d.largest * norm)));
+      result.mechanism_residuals.push_back(distributed_decade_above(((*a) * result.mechanisms.col(j)).norm() / (d.largest * norm)));
     }
     for (Eigen::Index j = 0; j < result.self_stresses.cols(); ++j) {
       distributed_round_entries(result.self_stresses.col(j));
       const double norm = result.self_stresses.col(j).norm();
       result.self_stress_residuals.push_back(
-          distributed_two_digits((a->transpose() * result.self_stresses.col(j)).norm() / (d.largest * norm)));
+          distributed_decade_above((a->transpose() * result.self_stresses.col(j)).norm() / (d.largest * norm)));
     }
     if (result.generic_mechanism.size() > 0) distributed_round_entries(result.generic_mechanism);
     if (result.generic_self_stress.size() > 0) distributed_round_entries(result.generic_self_stress);
-    result.null_vector_residual = distributed_two_digits(result.null_vector_residual);
+    result.null_vector_residual = distributed_decade_above(result.null_vector_residual);
   }
   result.vector_seconds = MPI_Wtime() - clock;
 
   clock = MPI_Wtime();
   int complete = rank == 0 ? (result.dropped_bounded ? 1 : 0) : 0;
   MPI_Bcast(&complete, 1, MPI_INT, 0, PETSC_COMM_WORLD);
-  if (complete == 1 && options.smallest_kept && d.rank > 0) {
+  // A value kept in the window is the smallest kept one (every other kept value exceeds s).
+  if (result.window_kept > 0) {
+    d.smallest_kept = distributed_six_digits(window_smallest);
+    result.smallest_kept_verified = true;
+    result.smallest_kept_residual = distributed_decade_above(result.window_residual);
+  }
+  const bool search_kept = options.smallest_kept && d.rank > 0 && result.window_kept == 0;
+  if (complete == 1 && search_kept) {
     // The orthonormal null space of H, diag(Q_s, Q_m), as distributed vectors for SLEPc.
     long long count[2] = {stress_used, mechanism_used};
     MPI_Bcast(count, 2, MPI_LONG_LONG, 0, PETSC_COMM_WORLD);
@@ -512,7 +662,31 @@ DistributedRank distributed_rank(const Eigen::SparseMatrix<double>* a, const lin
       }
     }
   }
-  if (options.smallest_kept && d.rank > 0 && complete == 1) smallest_kept(h, factor, t, null_space, d.largest, result);
+  if (search_kept && complete == 1) {
+    smallest_kept(h, factor, t, null_space, d.largest, result);
+  } else if (search_kept && options.window) {
+    // The null space is not whole: the most negative eigenvalue of the window operator,
+    // s/(s − σ) − 1 for the smallest σ above s (eigenvalue −σ of H), checked on H.
+    std::vector<Vec> owned;
+    struct ReleaseOwned {
+      std::vector<Vec>& vectors;
+      ~ReleaseOwned() {
+        for (Vec& v : vectors) VecDestroy(&v);
+      }
+    } release_owned{owned};
+    double best = 0.0, best_residual = 0.0;
+    for (const DistributedWindowPair& pair : window_pairs(h, factor, t, EPS_SMALLEST_REAL, 1, d.largest, owned)) {
+      const double sigma = -pair.lambda;
+      if (pair.residual > kDistributedSingularResidual || !(sigma > t)) continue;
+      if (best == 0.0 || sigma < best) {
+        best = sigma;
+        best_residual = pair.residual;
+      }
+    }
+    result.smallest_kept_verified = best > 0.0;
+    result.smallest_kept_residual = distributed_decade_above(best_residual);
+    d.smallest_kept = distributed_six_digits(best);
+  }
   result.evidence_seconds = MPI_Wtime() - clock;
   gather_memory();
   return result;

@@ -4,9 +4,10 @@
 // Sylvester's law of inertia H + s·I has one negative eigenvalue per singular value above s:
 // MUMPS's LDLᵀ factorisation of H + s·I (through PETSc; s = 100 × the serial rule's absolute
 // threshold, see DistributedRank::shift) gives the rank as its count of negative pivots. The
-// same count at 100·s shows the gap; inverse iteration with the factor gives null vectors of A
-// (mechanisms) and of Aᵀ (self-stresses), and SLEPc's Krylov–Schur, with the null space
-// deflated, the smallest kept singular value (docs/scaling.md, "The distributed rank decision").
+// same count at 100·s shows the gap; SLEPc's Krylov–Schur on s·(H + s·I)⁻¹ − I finds the singular
+// values in (t, s], which the serial rule at t keeps (they are added to the rank); inverse
+// iteration with the factor gives null vectors of A (mechanisms) and of Aᵀ (self-stresses), and
+// SLEPc the smallest kept singular value (docs/scaling.md, "The distributed rank decision").
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
@@ -31,8 +32,13 @@ struct DistributedRankOptions {
   /// above it, largest_dropped and smallest_kept stay 0 (not computed) and the inertia count
   /// at kCertainMargin × the shift is the evidence.
   Eigen::Index full_basis_limit = 64;
-  /// Compute the smallest kept singular value with SLEPc when the null space is whole.
+  /// Compute the smallest kept singular value with SLEPc (with the null space deflated when it
+  /// is whole; otherwise from the window operator, below).
   bool smallest_kept = true;
+  /// Search the window (t, s] for singular values with SLEPc (the window operator
+  /// s·(H + s·I)⁻¹ − I, whose positive eigenvalues are σ/(s − σ) for σ < s) and count those
+  /// above t in the rank, as the serial rule at t does; false: the rank is the inertia's count at s.
+  bool window = true;
   /// Also keep one generic null vector of A and one of Aᵀ (generic_mechanism,
   /// generic_self_stress): the first vector inverse iteration gives from a pseudo-random start
   /// in that block, before orthogonalisation, so that it vanishes only where every null vector
@@ -43,28 +49,40 @@ struct DistributedRankOptions {
 /// Outcome of a distributed rank decision. Counts are the same on every process; vectors and
 /// matrices are filled on rank 0 only.
 struct DistributedRank {
-  /// The decision in the serial form: rank, threshold, largest (σ_max, from the caller),
-  /// smallest_kept (σ_r from SLEPc, 0 when not computed or not verified), largest_dropped (the
+  /// The decision in the serial form: rank (at t: the inertia's count at s plus window_kept),
+  /// threshold, largest (σ_max, from the caller), smallest_kept (σ_r from SLEPc to six
+  /// significant digits, 0 when not computed or not verified), largest_dropped (the
   /// bound above, 0 when not computed); `sparse` is true, so its status is close or unproven
   /// as for the serial sparse QR.
   linalg::RankDecision decision;
-  /// H's eigenvalues below the shift in magnitude, m + n − 2·rank (rank = the negative
-  /// eigenvalues of H + s·I from the inertia of its LDLᵀ factorisation).
+  /// H's eigenvalues below the threshold in magnitude, m + n − 2·rank (rank = the negative
+  /// eigenvalues of H + s·I from the inertia of its LDLᵀ factorisation, plus window_kept).
   Eigen::Index null_pivots = 0;
   /// The shift s = kCertainMargin × the threshold t at which the rank is counted (absolute):
   /// an indefinite LDLᵀ does not resolve eigenvalues of H as small as t itself, so the count is
-  /// the rank at t unless a singular value lies in (t, s] (distributed_rank.cpp).
+  /// the rank at t unless a singular value lies in (t, s]; those are searched with SLEPc
+  /// (window_kept, distributed_rank.cpp).
   double shift = 0.0;
+  /// Singular values found in the window (t, s] (included in decision.rank: the rank at t is
+  /// the inertia's count at s plus these), each from an eigenpair of H checked on H itself.
+  Eigen::Index window_kept = 0;
+  /// The window was searched whole: a checked pair at or below t was found after those in it
+  /// (the window operator orders them by σ, largest first). False when not searched (the rank at
+  /// s is already min(m, n), or DistributedRankOptions::window is false) or when
+  /// kDistributedWindowMostPairs pairs were all in the window.
+  bool window_searched = false;
+  /// Largest ‖H w − λ w‖ / σ_max of the window's pairs, rounded up to a power of ten (0 when none).
+  double window_residual = 0.0;
   /// The same count at kCertainMargin·s: equal to the rank when no singular value lies in
   /// (s, kCertainMargin·s], the evidence the counts give without singular values.
   Eigen::Index rank_above_margin = 0;
   bool smallest_kept_verified = false;  ///< SLEPc's σ_r passed its residual check
-  double smallest_kept_residual = 0.0;  ///< ‖H u − σ_r u‖ / (σ_max ‖u‖) of its singular vector pair u
+  double smallest_kept_residual = 0.0;  ///< ‖H u − σ_r u‖ / (σ_max ‖u‖) of its pair u, rounded up to a power of ten
   bool dropped_bounded = false;         ///< largest_dropped is the bound of the whole null space
   /// Orthonormal bases (rank 0): the first `vectors` null vectors of A (n rows) and of Aᵀ (m rows).
   Eigen::MatrixXd mechanisms, self_stresses;
   /// ‖A q‖ / (σ_max ‖q‖) of each column q of `mechanisms` and ‖Aᵀ q‖ / (σ_max ‖q‖) of each of
-  /// `self_stresses` (rank 0; A as passed in), to two significant digits. The vectors' entries
+  /// `self_stresses` (rank 0; A as passed in), rounded up to a power of ten. The vectors' entries
   /// are rounded to 2⁻⁴⁴ of their largest, so that a run on P ≥ 2 processes (whose MUMPS sums
   /// in message order) reports the same vectors and residuals but for values on a rounding
   /// boundary (distributed_rank.cpp).
@@ -77,12 +95,14 @@ struct DistributedRank {
   double null_vector_residual = 0.0;
   Eigen::Index null_vectors_computed = 0;  ///< null vectors of H computed by MUMPS
   /// The null vectors came from a third factorisation, of H + t·I (t the threshold), because a
-  /// kept singular value lies in (s, kCertainMargin·s] (rank_above_margin ≠ rank).
+  /// kept singular value lies in (t, kCertainMargin·s] (rank_above_margin ≠ rank): each step
+  /// then shrinks a kept direction by kCertainMargin times more than the factor at s does.
   bool vectors_at_threshold = false;
   int processes = 1;
   /// Wall time, seconds: scattering and assembling H, the MUMPS analysis and factorisation,
   /// the null vectors, SLEPc's smallest kept value.
   double assembly_seconds = 0.0, factor_seconds = 0.0, vector_seconds = 0.0, evidence_seconds = 0.0;
+  double window_seconds = 0.0;  ///< wall time of the window's search, seconds
   /// MUMPS's own memory count, megabytes: the largest of any process (INFOG(21)) and the sum
   /// over processes (INFOG(22)), as effectively used during the factorisation.
   long long factor_megabytes_max = 0, factor_megabytes_total = 0;

@@ -56,11 +56,8 @@ DistributedNetworkResult analyse_network_distributed(const network::Model* model
   r.stress_primaries = network_largest_entries(r.stress_basis);
   for (double residual : out.backend.mechanism_residuals) r.basis_residual = std::max(r.basis_residual, residual);
   for (double residual : out.backend.self_stress_residuals) r.basis_residual = std::max(r.basis_residual, residual);
-  // Two significant digits, as the backend's own residuals (repeatable on P ≥ 2 processes).
-  if (r.residual > 0.0) {
-    const double unit = std::pow(10.0, std::floor(std::log10(r.residual)) - 1.0);
-    r.residual = std::round(r.residual / unit) * unit;
-  }
+  // Rounded up to a power of ten, as the backend's own residuals (repeatable on P ≥ 2 processes).
+  if (r.residual > 0.0) r.residual = std::pow(10.0, std::ceil(std::log10(r.residual)));
   network::finish_sparse_network(r, stressed, moving);
   return out;
 }

@@ -17,8 +17,9 @@ namespace {
 using Json = nlohmann::ordered_json;
 using io::printable_text;
 
-// Participations to four digits: enough to rank by eye, stable against last-bit noise.
-double share(double x) { return std::round(x * 1e4) / 1e4; }
+// Participations to four digits (design::kParticipationScale, as they are ranked): enough to
+// rank by eye, stable against last-bit noise.
+double share(double x) { return std::round(x * design::kParticipationScale) / design::kParticipationScale; }
 
 // Participants listed per state in the text report; JSON lists them all.
 constexpr std::size_t kTextParticipants = 6;
