@@ -141,11 +141,13 @@ class ModelTree {
     children_.insert(children_.end(), children.begin(), children.end());
   }
   void set_root(std::uint32_t index) { root_ = index; }
-  /// Frees the slack left by growing the vectors.
-  void shrink() {
-    records_.shrink_to_fit();
-    children_.shrink_to_fit();
-    text_.shrink_to_fit();
+  /// Room for `nodes` nodes and `text` bytes of scalar text before the tree is built, so that
+  /// it is not copied while it grows (nor once more to give back the slack). Room that is never
+  /// written is address space only: the pages are not touched.
+  void reserve(std::size_t nodes, std::size_t text) {
+    records_.reserve(nodes);
+    children_.reserve(nodes);
+    text_.reserve(text);
   }
 
  private:
