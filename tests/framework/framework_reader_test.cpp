@@ -87,6 +87,20 @@ elements: [{type: beam, nodes: [A, B], released: [bending]}]
   EXPECT_EQ(a.mechanisms, 2);
 }
 
+TEST(FrameworkReader, ElementNamesThatOnlyLookLikePositionsAreDistinct) {
+  // "01" and "2.0" are not the positions "1" and "2": no clash.
+  const FrameworkModel model = parse_model(kHead + R"(nodes: {A: [0, 0, 0], B: [1, 0, 0], C: [0, 1, 0]}
+elements:
+  - {name: "01", type: truss, nodes: [A, B]}
+  - {type: truss, nodes: [B, C]}
+  - {name: "2.0", type: truss, nodes: [A, C]}
+)");
+  ASSERT_EQ(model.elements.size(), 3u);
+  EXPECT_EQ(model.elements[0].name, "01");
+  EXPECT_EQ(model.elements[1].name, "2");
+  EXPECT_EQ(model.elements[2].name, "2.0");
+}
+
 struct BadInput {
   const char* name;
   std::string body;  // after the common head
@@ -129,6 +143,20 @@ INSTANTIATE_TEST_SUITE_P(
                                 "elements:\n  - {type: beam, nodes: [A, B]}\n",
                  4, 41, "left-handed"},
         BadInput{"duplicate_node", "nodes: {A: [0, 0, 0], A: [1, 0, 0]}\nelements: []\n", 3, 23, "duplicate node name 'A'"},
+        // Element names, given or by position ("1", "2", ...), are unique; the error is at the
+        // element that repeats a name (its flow map starts at column 5).
+        BadInput{"duplicate_given_element_name",
+                 "nodes: {A: [0, 0, 0], B: [1, 0, 0], C: [0, 1, 0]}\nelements:\n  - {name: a, type: truss, nodes: [A, B]}\n"
+                 "  - {name: a, type: truss, nodes: [B, C]}\n",
+                 6, 5, "duplicate element name 'a'"},
+        BadInput{"given_name_repeats_a_position",
+                 "nodes: {A: [0, 0, 0], B: [1, 0, 0], C: [0, 1, 0]}\nelements:\n  - {type: truss, nodes: [A, B]}\n"
+                 "  - {name: 1, type: truss, nodes: [B, C]}\n",
+                 6, 5, "duplicate element name '1'"},
+        BadInput{"position_repeats_a_given_name",
+                 "nodes: {A: [0, 0, 0], B: [1, 0, 0], C: [0, 1, 0]}\nelements:\n  - {name: 3, type: truss, nodes: [A, B]}\n"
+                 "  - {type: truss, nodes: [B, C]}\n  - {type: truss, nodes: [A, C]}\n",
+                 7, 5, "duplicate element name '3'"},
         BadInput{"nan_position", "nodes: {A: [0, .nan, 0], B: [1, 0, 0]}\nelements: []\n", 3, 16, "finite number"},
         BadInput{"rotation_of_truss_node",
                  "nodes: {A: [0, 0, 0], B: [1, 0, 0]}\nsupports: {A: [rz]}\nelements:\n  - {type: truss, nodes: [A, B]}\n", 4,

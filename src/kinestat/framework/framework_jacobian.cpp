@@ -160,16 +160,24 @@ Eigen::SparseMatrix<double> dependent_jacobian(const FrameworkModel& model, cons
   for (std::size_t j = 0; j < columns.size(); ++j)
     column_position[static_cast<std::size_t>(columns[j])] = static_cast<Eigen::Index>(j);
 
+  // Whether each row is a length, found once per row in order (not once per entry).
+  std::vector<char> length_row(static_cast<std::size_t>(derivative.rows()), 0);
+  for (std::size_t i = 0; i < length_row.size(); ++i) {
+    const DeformationRef& d = indexing.deformations[i];
+    length_row[i] = deformation_is_length(model.dimension, model.elements[d.element], d.deformation) ? 1 : 0;
+  }
   Triplets triplets;
+  triplets.reserve(static_cast<std::size_t>(derivative.nonZeros()));
   for (Eigen::Index k = 0; k < derivative.outerSize(); ++k) {
+    const Eigen::Index c = column_position[static_cast<std::size_t>(k)];
+    if (c < 0) continue;
+    const bool translation = is_translation(indexing.coordinates[static_cast<std::size_t>(k)].slot);
     for (Eigen::SparseMatrix<double>::InnerIterator it(derivative, k); it; ++it) {
       const Eigen::Index r = row_position[static_cast<std::size_t>(it.row())];
-      const Eigen::Index c = column_position[static_cast<std::size_t>(it.col())];
-      if (r < 0 || c < 0) continue;
-      const DeformationRef& d = indexing.deformations[static_cast<std::size_t>(it.row())];
+      if (r < 0) continue;
       double value = it.value();
-      if (is_translation(indexing.coordinates[static_cast<std::size_t>(it.col())].slot)) value *= length;
-      if (deformation_is_length(model.dimension, model.elements[d.element], d.deformation)) value /= length;
+      if (translation) value *= length;
+      if (length_row[static_cast<std::size_t>(it.row())] != 0) value /= length;
       triplets.emplace_back(r, c, value);
     }
   }

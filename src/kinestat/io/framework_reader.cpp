@@ -9,7 +9,10 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <cstdint>
+#include <functional>
 #include <set>
+#include <string_view>
 
 namespace kinestat::io {
 
@@ -28,6 +31,50 @@ std::string join(const std::vector<std::string>& names) {
   return out;
 }
 
+// Names to indices by open addressing (linear probing, at most half full): no allocation per
+// name. The table holds indices only; `name_of(index)` gives the name stored elsewhere (in the
+// model), so the table stays valid while the model's vectors grow.
+class FrameworkNameIndex {
+ public:
+  static constexpr std::size_t kAbsent = static_cast<std::size_t>(-1);
+
+  /// The index whose name is `name`, or kAbsent.
+  template <typename NameOf>
+  std::size_t find(std::string_view name, const NameOf& name_of) const {
+    if (slots_.empty()) return kAbsent;
+    for (std::size_t s = std::hash<std::string_view>{}(name) & mask_;; s = (s + 1) & mask_) {
+      const std::uint32_t held = slots_[s];
+      if (held == 0) return kAbsent;
+      if (name_of(held - 1) == name) return held - 1;
+    }
+  }
+
+  /// Adds `index` (its name not held yet). `expected`: how many names the table will hold.
+  template <typename NameOf>
+  void insert(std::size_t index, std::size_t expected, const NameOf& name_of) {
+    if (2 * (size_ + 1) > slots_.size()) {
+      std::size_t capacity = 16;
+      while (capacity < 2 * std::max(expected, size_ + 1)) capacity <<= 1;
+      std::vector<std::uint32_t> old(capacity, 0);
+      old.swap(slots_);
+      mask_ = capacity - 1;
+      for (const std::uint32_t held : old)
+        if (held != 0) place(held - 1, name_of(held - 1));
+    }
+    place(index, name_of(index));
+    ++size_;
+  }
+
+ private:
+  void place(std::size_t index, std::string_view name) {
+    std::size_t s = std::hash<std::string_view>{}(name) & mask_;
+    while (slots_[s] != 0) s = (s + 1) & mask_;
+    slots_[s] = static_cast<std::uint32_t>(index + 1);
+  }
+  std::vector<std::uint32_t> slots_;  ///< 1 + index, 0 for an empty slot
+  std::size_t mask_ = 0, size_ = 0;
+};
+
 class FrameworkReader {
  public:
   explicit FrameworkReader(const YamlFile& file) : file_(file) {}
@@ -43,14 +90,42 @@ class FrameworkReader {
     const TreeNode elements = file_.required(root, "elements", "the framework model");
     file_.expect_sequence(elements, "'elements'");
     element_nodes_.clear();
-    for (const auto& item : elements.items()) read_element(item);
+    model_.elements.reserve(elements.size());
+    orientations_.reserve(elements.size());
+    element_nodes_.reserve(elements.size());
+    for (const auto& item : elements.items()) read_element(item, elements.size());
     for (std::size_t e = 0; e < model_.elements.size(); ++e) set_frame(e);
     if (auto supports = file_.optional(root, "supports"); supports.defined()) read_supports(supports);
     if (auto independent = file_.optional(root, "independent"); independent.defined()) read_independent(independent);
-    return model_;
+    return std::move(model_);
   }
 
  private:
+  // The text of a non-empty scalar name, without a copy; otherwise YamlFile::string's error.
+  std::string_view name_text(const TreeNode& item, const char* what) const {
+    if (item.is_scalar() && !item.scalar().empty()) return item.scalar();
+    static_cast<void>(file_.string(item, what));  // throws
+    return {};
+  }
+
+  std::size_t find_node(std::string_view name) const {
+    return node_index_.find(name, [this](std::size_t n) -> std::string_view { return model_.nodes[n].name; });
+  }
+  // True when an element read before has the name `name`. Only the names given in the file are
+  // in element_index_: an element without a name is called by its position, so "k" can only
+  // be element k among those (checked directly) or a given name.
+  bool element_name_taken(std::string_view name) const {
+    std::size_t position = 0;
+    const bool canonical = !name.empty() && name[0] != '0' && name.size() <= 9 &&
+                           std::all_of(name.begin(), name.end(), [](char ch) { return ch >= '0' && ch <= '9'; });
+    if (canonical) {
+      for (char ch : name) position = 10 * position + static_cast<std::size_t>(ch - '0');
+      if (position <= model_.elements.size() && model_.elements[position - 1].name == name) return true;
+    }
+    return element_index_.find(name, [this](std::size_t e) -> std::string_view { return model_.elements[e].name; }) !=
+           FrameworkNameIndex::kAbsent;
+  }
+
   Eigen::Vector3d vector3(const TreeNode& node, std::string_view what) const {
     const auto values = file_.numbers(node, what, {3});
     return {values[0].value, values[1].value, values[2].value};
@@ -75,15 +150,19 @@ class FrameworkReader {
   void read_nodes(const TreeNode& nodes) {
     file_.expect_map(nodes, "'nodes'");
     if (nodes.size() == 0) file_.fail(nodes, "'nodes' is empty: a framework needs at least one node");
+    model_.nodes.reserve(nodes.size());
+    const auto dimension = static_cast<std::size_t>(model_.dimension);
+    // Messages are prepared only when an error is raised: the success path of a node formats nothing.
     for (const auto& entry : nodes.entries()) {
-      const std::string name = file_.string(entry.first, "a node name");
-      if (index_.count(name)) file_.fail(entry.first, fmt::format("duplicate node name '{}'", name));
+      const std::string_view name = name_text(entry.first, "a node name");
+      if (find_node(name) != FrameworkNameIndex::kAbsent) file_.fail(entry.first, fmt::format("duplicate node name '{}'", name));
       Node node;
-      node.name = name;
+      node.name = std::string(name);
       const bool detailed = entry.second.is_map();
-      if (detailed) file_.check_keys(entry.second, fmt::format("node '{}'", name), {"position", "orientation"});
-      const TreeNode position =
-          detailed ? file_.required(entry.second, "position", fmt::format("node '{}'", name)) : entry.second;
+      if (detailed && !file_.keys_allowed(entry.second, {"position", "orientation"}))
+        file_.check_keys(entry.second, fmt::format("node '{}'", name), {"position", "orientation"});
+      TreeNode position = detailed ? entry.second["position"] : entry.second;
+      if (!position.defined()) position = file_.required(entry.second, "position", fmt::format("node '{}'", name));
       if (detailed) {
         if (auto orientation = file_.optional(entry.second, "orientation"); orientation.defined()) {
           if (model_.dimension == 2) file_.fail(orientation, "a planar node has no orientation: its rotation is about z");
@@ -91,20 +170,24 @@ class FrameworkReader {
           node.rotational = true;
         }
       }
-      const auto what = fmt::format("the position of node '{}'", name);
-      const auto values = file_.numbers(position, what, {static_cast<std::size_t>(model_.dimension)});
-      for (std::size_t i = 0; i < values.size(); ++i) node.position(static_cast<Eigen::Index>(i)) = values[i].value;
-      index_[name] = model_.nodes.size();
+      double values[3] = {0.0, 0.0, 0.0};
+      if (!file_.plain_numbers(position, dimension, values)) {
+        const auto exact = file_.numbers(position, fmt::format("the position of node '{}'", name), {dimension});
+        for (std::size_t i = 0; i < exact.size(); ++i) values[i] = exact[i].value;
+      }
+      for (std::size_t i = 0; i < dimension; ++i) node.position(static_cast<Eigen::Index>(i)) = values[i];
       model_.nodes.push_back(std::move(node));
+      node_index_.insert(model_.nodes.size() - 1, nodes.size(),
+                         [this](std::size_t n) -> std::string_view { return model_.nodes[n].name; });
     }
     length_ = framework::characteristic_length(model_);
   }
 
   std::size_t node_index(const TreeNode& item) const {
-    const std::string name = file_.string(item, "a node name");
-    const auto found = index_.find(name);
-    if (found == index_.end()) file_.fail(item, fmt::format("unknown node '{}'", name));
-    return found->second;
+    const std::string_view name = name_text(item, "a node name");
+    const std::size_t found = find_node(name);
+    if (found == FrameworkNameIndex::kAbsent) file_.fail(item, fmt::format("unknown node '{}'", name));
+    return found;
   }
 
   // Deformation names and the groups a `released:` or `independent:` list may use.
@@ -159,22 +242,29 @@ class FrameworkReader {
     return "element";
   }
 
-  void read_element(const TreeNode& item) {
-    const std::string label = fmt::format("element {}", model_.elements.size() + 1);
-    file_.check_keys(item, label, {"type", "name", "nodes", "released", "independent", "orientation", "torsion_coupling"});
+  // `count`: the number of elements in the file. Messages are prepared only when an error is
+  // raised: the success path of an element formats nothing.
+  void read_element(const TreeNode& item, std::size_t count) {
+    const auto label = [this] { return fmt::format("element {}", model_.elements.size() + 1); };
+    if (!file_.keys_allowed(item, {"type", "name", "nodes", "released", "independent", "orientation", "torsion_coupling"}))
+      file_.check_keys(item, label(), {"type", "name", "nodes", "released", "independent", "orientation", "torsion_coupling"});
     Element element;
     element.name = std::to_string(model_.elements.size() + 1);
-    if (auto name = file_.optional(item, "name"); name.defined()) element.name = file_.string(name, "an element name");
-    if (!element_names_.insert(element.name).second) file_.fail(item, fmt::format("duplicate element name '{}'", element.name));
-    const TreeNode type = file_.required(item, "type", label);
-    const std::string type_text = file_.string(type, "an element type");
+    const TreeNode given_name = file_.optional(item, "name");
+    if (given_name.defined()) element.name = file_.string(given_name, "an element name");
+    if (element_name_taken(element.name)) file_.fail(item, fmt::format("duplicate element name '{}'", element.name));
+    TreeNode type = item["type"];
+    if (!type.defined()) type = file_.required(item, "type", label());
+    const std::string_view type_text = name_text(type, "an element type");
     if (type_text == "truss") element.type = ElementType::truss;
     else if (type_text == "beam") element.type = ElementType::beam;
     else if (type_text == "rigid_body") element.type = ElementType::rigid_body;
     else file_.fail(type, fmt::format("unknown element type '{}'; expected truss, beam or rigid_body", type_text));
 
-    const TreeNode nodes = file_.required(item, "nodes", label);
-    file_.expect_sequence(nodes, fmt::format("the nodes of element '{}'", element.name));
+    TreeNode nodes = item["nodes"];
+    if (!nodes.defined()) nodes = file_.required(item, "nodes", label());
+    if (!nodes.is_sequence()) file_.expect_sequence(nodes, fmt::format("the nodes of element '{}'", element.name));
+    element.nodes.reserve(nodes.size());
     for (const auto& n : nodes.items()) {
       const std::size_t index = node_index(n);
       if (std::find(element.nodes.begin(), element.nodes.end(), index) != element.nodes.end())
@@ -208,6 +298,10 @@ class FrameworkReader {
     orientations_.push_back(file_.optional(item, "orientation"));
     element_nodes_.push_back(nodes);
     model_.elements.push_back(std::move(element));
+    if (given_name.defined()) {
+      element_index_.insert(model_.elements.size() - 1, count,
+                            [this](std::size_t e) -> std::string_view { return model_.elements[e].name; });
+    }
   }
 
   // The element triad of a beam (eq 4): local x from p to q, y and z across the section.
@@ -333,8 +427,7 @@ class FrameworkReader {
 
   const YamlFile& file_;
   FrameworkModel model_;
-  std::map<std::string, std::size_t> index_;
-  std::set<std::string> element_names_;
+  FrameworkNameIndex node_index_, element_index_;
   std::vector<TreeNode> orientations_;
   std::vector<TreeNode> element_nodes_;
   double length_ = 1.0;

@@ -141,11 +141,13 @@ class ModelTree {
     children_.insert(children_.end(), children.begin(), children.end());
   }
   void set_root(std::uint32_t index) { root_ = index; }
-  /// Frees the slack left by growing the vectors.
-  void shrink() {
-    records_.shrink_to_fit();
-    children_.shrink_to_fit();
-    text_.shrink_to_fit();
+  /// Room for `nodes` nodes and `text` bytes of scalar text before the tree is built, so that
+  /// it is not copied while it grows (nor once more to give back the slack). Room that is never
+  /// written is address space only: the pages are not touched.
+  void reserve(std::size_t nodes, std::size_t text) {
+    records_.reserve(nodes);
+    children_.reserve(nodes);
+    text_.reserve(text);
   }
 
  private:
@@ -155,5 +157,37 @@ class ModelTree {
   std::string text_;
   std::uint32_t root_ = 0;
 };
+
+// The accessors every reader calls per node, inline.
+inline TreeNode::Kind TreeNode::kind() const { return tree_ ? tree_->records_[index_].kind : Kind::undefined; }
+
+inline std::string_view TreeNode::scalar() const {
+  if (kind() != Kind::scalar) return {};
+  const ModelTree::Record& record = tree_->records_[index_];
+  return std::string_view(tree_->text_).substr(record.begin, record.count);
+}
+
+inline std::size_t TreeNode::size() const {
+  const Kind k = kind();
+  return k == Kind::sequence || k == Kind::map ? tree_->records_[index_].count : 0;
+}
+
+inline TreeNode TreeNode::operator[](std::size_t i) const {
+  if (kind() != Kind::sequence || i >= size()) return {};
+  return {tree_, tree_->children_[tree_->records_[index_].begin + i]};
+}
+
+inline TreeNode TreeNode::key(std::size_t i) const {
+  if (kind() != Kind::map || i >= size()) return {};
+  return {tree_, tree_->children_[tree_->records_[index_].begin + 2 * i]};
+}
+
+inline TreeNode TreeNode::value(std::size_t i) const {
+  if (kind() != Kind::map || i >= size()) return {};
+  return {tree_, tree_->children_[tree_->records_[index_].begin + 2 * i + 1]};
+}
+
+inline int TreeNode::line() const { return tree_ ? static_cast<int>(tree_->records_[index_].line) : 0; }
+inline int TreeNode::column() const { return tree_ ? static_cast<int>(tree_->records_[index_].column) : 0; }
 
 }  // namespace kinestat::io

@@ -10,6 +10,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
+#include <cstdint>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -168,6 +170,11 @@ FlowScan scan_flow(std::string_view text, int max_depth, std::size_t max_nodes) 
   }
   return scan;
 }
+
+// The tree is reserved for one node per this many bytes of text before it is built: model
+// files have fewer (a generated lattice one per 6.7 bytes; flow lists of one-digit numbers, the
+// densest, one per 2, then the tree grows as it would without the reservation).
+constexpr std::size_t kBytesPerReservedNode = 4;
 
 std::string nesting_message(bool flow, int limit) {
   return fmt::format("{} nesting deeper than {} levels, the nesting limit (lists and maps inside each other)",
@@ -640,6 +647,117 @@ std::optional<mpq_class> parse_exact_decimal(std::string_view literal) {
   return value;
 }
 
+namespace {
+
+__extension__ typedef unsigned __int128 DecimalWide;
+
+// 10^k as a 128-bit integer (k ≤ 38).
+DecimalWide decimal_power(int k) {
+  DecimalWide power = 1;
+  while (k-- > 0) power *= 10;
+  return power;
+}
+
+// a × b into `out`, unless it passes 128 bits.
+bool decimal_product_fits(DecimalWide a, DecimalWide b, DecimalWide& out) {
+  if (a != 0 && b > ~DecimalWide{0} / a) return false;
+  out = a * b;
+  return true;
+}
+
+// a × 2^shift into `out`, unless it passes 128 bits.
+bool decimal_shift_fits(DecimalWide a, int shift, DecimalWide& out) {
+  if (a != 0 && (shift >= 128 || (shift > 0 && (a >> (128 - shift)) != 0))) return false;
+  out = a == 0 ? a : a << shift;
+  return true;
+}
+
+// Literals decimal_toward_zero reads: 10^19 < 2^64, and |value| within these bounds.
+constexpr int kFastDecimalDigits = 19;
+constexpr double kFastDecimalSmallest = 1e-300;
+constexpr double kFastDecimalLargest = 1e300;
+
+}  // namespace
+
+std::optional<double> decimal_toward_zero(std::string_view literal) {
+  // The grammar of parse_decimal: [+-] digits [. digits] [(e|E) [+-] digits], a digit somewhere
+  // before the exponent; value n × 10^exponent.
+  const std::size_t size = literal.size();
+  std::size_t i = 0;
+  bool negative = false;
+  if (i < size && (literal[i] == '+' || literal[i] == '-')) negative = literal[i++] == '-';
+  const auto is_digit = [](char ch) { return ch >= '0' && ch <= '9'; };
+  std::uint64_t n = 0;
+  int digits = 0;
+  long long exponent = 0;
+  bool any_digit = false;
+  const auto take = [&](char ch) {
+    any_digit = true;
+    if (n == 0 && ch == '0') return true;  // leading zeros are not significant
+    if (++digits > kFastDecimalDigits) return false;
+    n = n * 10 + static_cast<std::uint64_t>(ch - '0');
+    return true;
+  };
+  for (; i < size && is_digit(literal[i]); ++i)
+    if (!take(literal[i])) return std::nullopt;
+  if (i < size && literal[i] == '.') {
+    for (++i; i < size && is_digit(literal[i]); ++i) {
+      if (!take(literal[i])) return std::nullopt;
+      --exponent;
+    }
+  }
+  if (!any_digit) return std::nullopt;
+  if (i < size && (literal[i] == 'e' || literal[i] == 'E')) {
+    ++i;
+    bool exponent_negative = false;
+    if (i < size && (literal[i] == '+' || literal[i] == '-')) exponent_negative = literal[i++] == '-';
+    long long e = 0;
+    bool exponent_digit = false;
+    for (; i < size && is_digit(literal[i]); ++i) {
+      exponent_digit = true;
+      if (e < 100000) e = e * 10 + (literal[i] - '0');
+    }
+    if (!exponent_digit) return std::nullopt;
+    exponent += exponent_negative ? -e : e;
+  }
+  if (i != size) return std::nullopt;
+  if (n == 0) return 0.0;  // GMP's zero has no sign: "-0" reads as +0
+  // 10^|exponent| must fit in 128 bits for the comparison below.
+  if (exponent > 38 || exponent < -38) return std::nullopt;
+  // r: the double nearest to n × 10^exponent. One IEEE operation on exact operands when n and
+  // the power of ten are exact doubles, otherwise from_chars (correctly rounded).
+  double r = 0.0;
+  static constexpr double kPowers[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                                       1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+  if (n <= (std::uint64_t{1} << 53) && exponent >= -22 && exponent <= 22) {
+    const auto exact = static_cast<double>(n);
+    r = exponent >= 0 ? exact * kPowers[exponent] : exact / kPowers[-exponent];
+  } else {
+    char buffer[64];
+    char* end = std::to_chars(buffer, buffer + 32, n).ptr;
+    *end++ = 'e';
+    end = std::to_chars(end, buffer + sizeof buffer, exponent).ptr;
+    const auto [stop, error] = std::from_chars(buffer, end, r);
+    if (error != std::errc() || stop != end) return std::nullopt;
+  }
+  if (!(r >= kFastDecimalSmallest && r <= kFastDecimalLargest)) return std::nullopt;
+  // r = mantissa × 2^binary exactly; compare it with n × 10^exponent in integers, both sides
+  // multiplied by 10^−exponent and 2^−binary where those are negative.
+  int scale = 0;
+  const double fraction = std::frexp(r, &scale);
+  const auto mantissa = static_cast<std::uint64_t>(std::ldexp(fraction, 53));
+  const int binary = scale - 53;
+  DecimalWide left = mantissa, right = n;
+  if (exponent < 0 ? !decimal_product_fits(left, decimal_power(static_cast<int>(-exponent)), left)
+                   : !decimal_product_fits(right, decimal_power(static_cast<int>(exponent)), right))
+    return std::nullopt;
+  if (binary > 0 ? !decimal_shift_fits(left, binary, left) : !decimal_shift_fits(right, -binary, right))
+    return std::nullopt;
+  // Rounded away from zero: the double below is the truncated value.
+  if (left > right) r = std::nextafter(r, 0.0);
+  return negative ? -r : r;
+}
+
 YamlFile YamlFile::parse(std::string path, const std::string& text, const ReadingLimits& limits) {
   if (text.size() > limits.max_bytes) too_large(path, limits);
   if (const TextPosition bad = first_unreadable_character(text); bad.line > 0) {
@@ -663,6 +781,8 @@ YamlFile YamlFile::parse(std::string path, const std::string& text, const Readin
     throw InputError({path, line, 1}, fmt::format("indentation or block nesting deeper than {} levels", kMaxLeadingIndicators));
   }
   auto tree = std::make_shared<ModelTree>();
+  // Every node but the root is one child entry; the scalars' text is never longer than the file.
+  tree->reserve(std::min(text.size() / kBytesPerReservedNode + 1, limits.max_nodes + 1), text.size());
   TreeBuilder builder(path, limits, *tree);
   EventParser parser(text);
   while (true) {
@@ -672,7 +792,6 @@ YamlFile YamlFile::parse(std::string path, const std::string& text, const Readin
     builder.handle(*event);
   }
   if (!builder.has_root() || tree->root().is_null()) throw InputError({path, 1, 1}, "empty model file: expected a map");
-  tree->shrink();
   YamlFile file(std::move(path), std::move(tree));
   file.expect_map(file.root(), "the model file");
   return file;
@@ -738,6 +857,22 @@ void YamlFile::check_keys(const TreeNode& map, std::string_view what, const std:
   check_map_keys(*this, map, what, allowed);
 }
 
+bool YamlFile::keys_allowed(const TreeNode& map, std::initializer_list<std::string_view> allowed) const {
+  // check_map_keys compares at most this many keys directly; larger maps take the full check.
+  constexpr std::size_t kKeysCompared = 16;
+  if (!map.is_map() || map.size() > kKeysCompared) return false;
+  const std::size_t size = map.size();
+  for (std::size_t i = 0; i < size; ++i) {
+    const TreeNode key_node = map.key(i);
+    if (!key_node.is_scalar()) return false;
+    const std::string_view key = key_node.scalar();
+    if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) return false;
+    for (std::size_t j = 0; j < i; ++j)
+      if (map.key(j).scalar() == key) return false;
+  }
+  return true;
+}
+
 TreeNode YamlFile::required(const TreeNode& map, std::string_view key, std::string_view what) const {
   TreeNode value = optional(map, key);
   if (!value.defined()) fail(map, fmt::format("{} is missing the key '{}'", what, key));
@@ -801,6 +936,18 @@ std::vector<ExactNumber> YamlFile::numbers(const TreeNode& node, std::string_vie
   values.reserve(node.size());
   for (const TreeNode& item : node.items()) values.push_back(number(item, what));
   return values;
+}
+
+bool YamlFile::plain_numbers(const TreeNode& list, std::size_t count, double* values) const {
+  if (!list.is_sequence() || list.size() != count) return false;
+  for (std::size_t i = 0; i < count; ++i) {
+    const TreeNode item = list[i];
+    if (!item.is_scalar()) return false;
+    const std::optional<double> value = decimal_toward_zero(item.scalar());
+    if (!value) return false;
+    values[i] = *value;
+  }
+  return true;
 }
 
 std::string model_kind(const YamlFile& file) {

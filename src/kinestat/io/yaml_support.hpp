@@ -67,6 +67,10 @@ class YamlFile {
   /// A map whose keys must all be in `allowed`; duplicate keys are errors.
   void check_keys(const TreeNode& map, std::string_view what, std::initializer_list<std::string_view> allowed) const;
   void check_keys(const TreeNode& map, std::string_view what, const std::vector<std::string>& allowed) const;
+  /// True exactly when check_keys(map, what, allowed) passes: `map` is a map of at most 16
+  /// distinct scalar keys, each in `allowed`. Prepares no message (for a reader's success path:
+  /// call check_keys when this is false, for the error).
+  bool keys_allowed(const TreeNode& map, std::initializer_list<std::string_view> allowed) const;
   /// `map[key]`, or InputError naming the map and the key if it is missing.
   TreeNode required(const TreeNode& map, std::string_view key, std::string_view what) const;
   /// `map[key]` if present, otherwise an undefined node.
@@ -81,6 +85,10 @@ class YamlFile {
   /// Reads a sequence of numbers whose length is one of `lengths`.
   std::vector<ExactNumber> numbers(const TreeNode& node, std::string_view what,
                                    std::initializer_list<std::size_t> lengths) const;
+  /// Fills values[0, count) and returns true when `list` is a list of `count` scalars that
+  /// decimal_toward_zero reads; numbers(list, what, {count}) then gives the same values. False
+  /// otherwise (numbers() then gives the values or the error). Prepares no message.
+  bool plain_numbers(const TreeNode& list, std::size_t count, double* values) const;
   /// Reads a sequence node (errors if `node` is not a sequence).
   void expect_sequence(const TreeNode& node, std::string_view what) const;
   void expect_map(const TreeNode& node, std::string_view what) const;
@@ -96,6 +104,13 @@ int significant_digits(std::string_view literal);
 
 /// Parses a decimal literal exactly ("-1.25e-3" -> -1/800). Empty if it is not one.
 std::optional<mpq_class> parse_exact_decimal(std::string_view literal);
+
+/// The double YamlFile::number gives for a decimal literal — its exact value rounded towards
+/// zero, as GMP's mpq_get_d does — found with 64- and 128-bit integers instead of GMP. Empty
+/// when the literal is not a decimal (see parse_exact_decimal), has more than 19 significant
+/// digits, or its value is not a normal double between 1e-300 and 1e300 in magnitude (zero is
+/// read): YamlFile::number decides those by exact arithmetic.
+std::optional<double> decimal_toward_zero(std::string_view literal);
 
 /// The `kind:` of a model document ("network" when absent). Checks `kinestat: 1`.
 std::string model_kind(const YamlFile& file);

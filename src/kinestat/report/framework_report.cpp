@@ -281,10 +281,14 @@ nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const 
   else j["relative_smallest_singular_value"] = significant(a.relative_smallest_singular_value());
   j["singular_values"] = nlohmann::ordered_json::array();
   for (Eigen::Index i = 0; i < a.singular_values.size(); ++i) j["singular_values"].push_back(significant(a.singular_values(i)));
-  j["row_labels"] = nlohmann::ordered_json::array();
-  for (Eigen::Index i = 0; i < a.m; ++i) j["row_labels"].push_back(framework_row_label(model, a, i));
-  j["column_labels"] = nlohmann::ordered_json::array();
-  for (Eigen::Index i = 0; i < a.n; ++i) j["column_labels"].push_back(framework_column_label(model, a, i));
+  // One label per row and column (10^6 of them for a large lattice): the arrays are reserved
+  // and filled through a reference, not looked up among the report's keys for every label.
+  auto& row_labels = (j["row_labels"] = nlohmann::ordered_json::array()).get_ref<nlohmann::ordered_json::array_t&>();
+  row_labels.reserve(static_cast<std::size_t>(a.m));
+  for (Eigen::Index i = 0; i < a.m; ++i) row_labels.emplace_back(framework_row_label(model, a, i));
+  auto& column_labels = (j["column_labels"] = nlohmann::ordered_json::array()).get_ref<nlohmann::ordered_json::array_t&>();
+  column_labels.reserve(static_cast<std::size_t>(a.n));
+  for (Eigen::Index i = 0; i < a.n; ++i) column_labels.emplace_back(framework_column_label(model, a, i));
   j["vectors"] = a.vectors;
   if (compact(a) && a.vectors) {
     // The first vector_limit of each, as basic null vectors of the sparse R factors.
