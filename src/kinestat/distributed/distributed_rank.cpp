@@ -222,6 +222,20 @@ double pseudo_random(std::uint64_t index, std::uint64_t draw) {
 }
 
 // y = (MUMPS's solve with H)·x: the shell operator whose largest eigenvalues are 1/σ_r.
+// The start vector of every SLEPc solve here, fixed (as the serial power iteration's) so that
+// every run gives the same answer: 1 + sin(i + 1) / 2 for global row i.
+void set_fixed_start(EPS eps, Mat h, OwnedVec& start) {
+  KINESTAT_PETSC_CHECK(MatCreateVecs(h, start.out(), nullptr));
+  PetscInt lo = 0, hi = 0;
+  KINESTAT_PETSC_CHECK(VecGetOwnershipRange(start, &lo, &hi));
+  PetscScalar* entries = nullptr;
+  KINESTAT_PETSC_CHECK(VecGetArray(start, &entries));
+  for (PetscInt i = lo; i < hi; ++i) entries[i - lo] = 1.0 + 0.5 * std::sin(static_cast<double>(i) + 1.0);
+  KINESTAT_PETSC_CHECK(VecRestoreArray(start, &entries));
+  Vec initial[1] = {start};
+  KINESTAT_PETSC_CHECK(EPSSetInitialSpace(eps, 1, initial));
+}
+
 PetscErrorCode apply_solve(Mat shell, Vec x, Vec y) {
   Mat* factor = nullptr;
   PetscCall(MatShellGetContext(shell, &factor));
@@ -251,17 +265,8 @@ void smallest_kept(Mat h, Mat factor, double shift, std::vector<Vec>& null_space
   KINESTAT_PETSC_CHECK(EPSSetWhichEigenpairs(eps, EPS_LARGEST_MAGNITUDE));
   KINESTAT_PETSC_CHECK(EPSSetDimensions(eps, 2, PETSC_DEFAULT, PETSC_DEFAULT));
   KINESTAT_PETSC_CHECK(EPSSetTolerances(eps, 1e-10, 500));
-  // A fixed start vector (as the serial power iteration's): the same answer on every run.
   OwnedVec start, w, u, residual;
-  KINESTAT_PETSC_CHECK(MatCreateVecs(h, start.out(), nullptr));
-  PetscInt lo = 0, hi = 0;
-  KINESTAT_PETSC_CHECK(VecGetOwnershipRange(start, &lo, &hi));
-  PetscScalar* entries = nullptr;
-  KINESTAT_PETSC_CHECK(VecGetArray(start, &entries));
-  for (PetscInt i = lo; i < hi; ++i) entries[i - lo] = 1.0 + 0.5 * std::sin(static_cast<double>(i) + 1.0);
-  KINESTAT_PETSC_CHECK(VecRestoreArray(start, &entries));
-  Vec initial[1] = {start};
-  KINESTAT_PETSC_CHECK(EPSSetInitialSpace(eps, 1, initial));
+  set_fixed_start(eps, h, start);
   KINESTAT_PETSC_CHECK(EPSSolve(eps));
   PetscInt converged = 0;
   KINESTAT_PETSC_CHECK(EPSGetConverged(eps, &converged));
@@ -338,15 +343,7 @@ std::vector<DistributedWindowPair> window_pairs(Mat h, Mat factor, double shift,
   KINESTAT_PETSC_CHECK(EPSSetConvergenceTest(eps, EPS_CONV_ABS));
   KINESTAT_PETSC_CHECK(EPSSetTolerances(eps, kDistributedWindowTolerance, kDistributedWindowIterations));
   OwnedVec start, hw, residual;
-  KINESTAT_PETSC_CHECK(MatCreateVecs(h, start.out(), nullptr));
-  PetscInt lo = 0, hi = 0;
-  KINESTAT_PETSC_CHECK(VecGetOwnershipRange(start, &lo, &hi));
-  PetscScalar* entries = nullptr;
-  KINESTAT_PETSC_CHECK(VecGetArray(start, &entries));
-  for (PetscInt i = lo; i < hi; ++i) entries[i - lo] = 1.0 + 0.5 * std::sin(static_cast<double>(i) + 1.0);
-  KINESTAT_PETSC_CHECK(VecRestoreArray(start, &entries));
-  Vec initial[1] = {start};
-  KINESTAT_PETSC_CHECK(EPSSetInitialSpace(eps, 1, initial));
+  set_fixed_start(eps, h, start);
   KINESTAT_PETSC_CHECK(EPSSolve(eps));
   PetscInt converged = 0;
   KINESTAT_PETSC_CHECK(EPSGetConverged(eps, &converged));
