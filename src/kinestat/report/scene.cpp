@@ -311,7 +311,6 @@ Scene network_scene(const network::Model& model, const network::NetworkResult& r
 }
 
 Scene sparse_network_scene(const network::Model& model, const network::SparseNetworkResult& r) {
-  using Index = Eigen::Index;
   Scene scene;
   scene.sparse = true;
   scene.mode_total = static_cast<std::size_t>(r.FN);
@@ -353,9 +352,9 @@ Scene sparse_network_scene(const network::Model& model, const network::SparseNet
   // Twists of the conditioned analysis frame (origin o, lengths over s) in the user's frame:
   // (ω; v') -> (ω; s v' + o × ω), as the sparse verdict converts them.
   const std::size_t n = model.bodies.size();
-  const auto column_of = [&](std::size_t b) { return static_cast<Index>(static_cast<int>(b) < r.ground ? b : b - 1) * r.d; };
-  for (Index j = 0; j < r.motion_basis.cols(); ++j) {
-    const Index primary = r.motion_primaries[static_cast<std::size_t>(j)];
+  const auto column_of = [&](std::size_t b) { return static_cast<Eigen::Index>(static_cast<int>(b) < r.ground ? b : b - 1) * r.d; };
+  for (Eigen::Index j = 0; j < r.motion_basis.cols(); ++j) {
+    const Eigen::Index primary = r.motion_primaries[static_cast<std::size_t>(j)];
     const Eigen::VectorXd x = r.motion_basis.col(j) / r.motion_basis(primary, j);  // the primary = 1
     SceneMode mode;
     mode.label = fmt::format("mode {} (sparse QR basis)", j + 1);
@@ -388,8 +387,8 @@ Scene sparse_network_scene(const network::Model& model, const network::SparseNet
   }
   // Self-stresses: the wrench each coupling transmits (its unit actions times their magnitudes,
   // user frame: the magnitudes are the same in both frames), primary = 1.
-  for (Index j = 0; j < r.stress_basis.cols(); ++j) {
-    const Index primary = r.stress_primaries[static_cast<std::size_t>(j)];
+  for (Eigen::Index j = 0; j < r.stress_basis.cols(); ++j) {
+    const Eigen::Index primary = r.stress_primaries[static_cast<std::size_t>(j)];
     const Eigen::VectorXd lambda = r.stress_basis.col(j) / r.stress_basis(primary, j);
     const double zero = kSupportZero * lambda.cwiseAbs().maxCoeff();
     SceneStress stress;
@@ -397,11 +396,11 @@ Scene sparse_network_scene(const network::Model& model, const network::SparseNet
     stress.value.assign(scene.elements.size(), 0.0);
     stress.kind.assign(scene.elements.size(), "");
     std::vector<Eigen::VectorXd> wrench(model.couplings.size());
-    for (Index row = 0; row < lambda.size(); ++row) {
+    for (Eigen::Index row = 0; row < lambda.size(); ++row) {
       if (std::abs(lambda(row)) <= zero) continue;
       const auto e = static_cast<std::size_t>(r.row_coupling[static_cast<std::size_t>(row)]);
       if (wrench[e].size() == 0) wrench[e] = Eigen::VectorXd::Zero(r.d);
-      for (Index i = 0; i < r.d; ++i) wrench[e](i) += lambda(row) * r.row_actions[static_cast<std::size_t>(row)].coordinates[static_cast<std::size_t>(i)];
+      for (Eigen::Index i = 0; i < r.d; ++i) wrench[e](i) += lambda(row) * r.row_actions[static_cast<std::size_t>(row)].coordinates[static_cast<std::size_t>(i)];
     }
     for (std::size_t e = 0; e < model.couplings.size(); ++e) {
       if (wrench[e].size() == 0 || wrench[e].cwiseAbs().maxCoeff() == 0.0) continue;
