@@ -221,7 +221,14 @@ double pseudo_random(std::uint64_t index, std::uint64_t draw) {
   return static_cast<double>(x >> 11) * 0x1p-52 - 1.0;
 }
 
-// y = (MUMPS's solve with H)·x: the shell operator whose largest eigenvalues are 1/σ_r.
+// Destroys every vector of a list when its scope ends (vectors from MUMPS and SLEPc solves).
+struct DistributedVecsRelease {
+  std::vector<Vec>& vectors;
+  ~DistributedVecsRelease() {
+    for (Vec& v : vectors) VecDestroy(&v);
+  }
+};
+
 // The start vector of every SLEPc solve here, fixed (as the serial power iteration's) so that
 // every run gives the same answer: 1 + sin(i + 1) / 2 for global row i.
 void set_fixed_start(EPS eps, Mat h, OwnedVec& start) {
@@ -236,6 +243,7 @@ void set_fixed_start(EPS eps, Mat h, OwnedVec& start) {
   KINESTAT_PETSC_CHECK(EPSSetInitialSpace(eps, 1, initial));
 }
 
+// y = (MUMPS's solve with H)·x: the shell operator whose largest eigenvalues are 1/σ_r.
 PetscErrorCode apply_solve(Mat shell, Vec x, Vec y) {
   Mat* factor = nullptr;
   PetscCall(MatShellGetContext(shell, &factor));
@@ -366,7 +374,6 @@ std::vector<DistributedWindowPair> window_pairs(Mat h, Mat factor, double shift,
     PetscReal r = 0.0;
     KINESTAT_PETSC_CHECK(VecNorm(residual, NORM_2, &r));
     pairs.push_back({lambda, r / largest, w});
-
   }
   return pairs;
 }
@@ -459,12 +466,7 @@ DistributedRank distributed_rank(const Eigen::SparseMatrix<double>* a, const lin
   // been searched whole. The rank at t is the inertia's count plus the window's.
   clock = MPI_Wtime();
   std::vector<Vec> window_owned;  // every vector SLEPc returned
-  struct ReleaseWindow {
-    std::vector<Vec>& vectors;
-    ~ReleaseWindow() {
-      for (Vec& v : vectors) VecDestroy(&v);
-    }
-  } release_window{window_owned};
+  const DistributedVecsRelease release_window{window_owned};
   double window_smallest = 0.0;
   if (options.window && d.rank < std::min<Eigen::Index>(m, n)) {
     for (PetscInt count = kDistributedWindowBatch;; count *= 4) {
@@ -507,12 +509,7 @@ DistributedRank distributed_rank(const Eigen::SparseMatrix<double>* a, const lin
   Eigen::MatrixXd stress_basis, mechanism_basis;
   Eigen::Index stress_used = 0, mechanism_used = 0;
   std::vector<Vec> null_space;  // the vectors computed, kept for SLEPc's deflation when whole
-  struct Release {
-    std::vector<Vec>& vectors;
-    ~Release() {
-      for (Vec& v : vectors) VecDestroy(&v);
-    }
-  } release{null_space};
+  const DistributedVecsRelease release{null_space};
   int block = rank == 0 ? (mechanism_used < want_mechanisms ? 1 : stress_used < want_stresses ? 2 : 0) : 0;
   MPI_Bcast(&block, 1, MPI_INT, 0, PETSC_COMM_WORLD);
   OwnedVec x, gathered;
@@ -665,12 +662,7 @@ DistributedRank distributed_rank(const Eigen::SparseMatrix<double>* a, const lin
     // The null space is not whole: the most negative eigenvalue of the window operator,
     // s/(s − σ) − 1 for the smallest σ above s (eigenvalue −σ of H), checked on H.
     std::vector<Vec> owned;
-    struct ReleaseOwned {
-      std::vector<Vec>& vectors;
-      ~ReleaseOwned() {
-        for (Vec& v : vectors) VecDestroy(&v);
-      }
-    } release_owned{owned};
+    const DistributedVecsRelease release_owned{owned};
     double best = 0.0, best_residual = 0.0;
     for (const DistributedWindowPair& pair : window_pairs(h, factor, t, EPS_SMALLEST_REAL, 1, d.largest, owned)) {
       const double sigma = -pair.lambda;

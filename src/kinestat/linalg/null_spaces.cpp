@@ -18,15 +18,8 @@ namespace kinestat::linalg {
 
 namespace {
 
-// Probe vectors of the QR route's check (as svd_analysis's: deterministic, generic).
+// Probe vectors of the QR route's check.
 constexpr Eigen::Index kNullSpaceProbes = 4;
-
-Eigen::MatrixXd null_space_probes(Eigen::Index rows) {
-  Eigen::MatrixXd x(rows, kNullSpaceProbes);
-  for (Eigen::Index j = 0; j < kNullSpaceProbes; ++j)
-    for (Eigen::Index i = 0; i < rows; ++i) x(i, j) = std::sin(1.0 + 0.7 * static_cast<double>(i) + 2.3 * static_cast<double>(j));
-  return x;
-}
 
 // A = Q R in place (dgeqrf): R in the upper triangle, the reflectors below it, their factors in `tau`.
 bool lapack_householder_qr(Eigen::MatrixXd& qr, Eigen::VectorXd& tau) {
@@ -60,7 +53,7 @@ bool lapack_trailing_q(const Eigen::MatrixXd& qr, const Eigen::VectorXd& tau, Ei
 // The left null basis `left` on probe vectors: aᵀ (left x) vanishes relative to |a| |x|, and
 // leftᵀ left y = y (the same tolerances as the SVD's check).
 bool left_null_space_check(const Eigen::MatrixXd& a, const Eigen::MatrixXd& left) {
-  const Eigen::MatrixXd x = null_space_probes(left.cols());
+  const Eigen::MatrixXd x = probe_vectors(left.cols(), kNullSpaceProbes);
   const double scale = std::max(1.0, a.norm());
   const double residual = (a.transpose() * (left * x)).norm() / x.norm();
   const double orthogonality = (left.transpose() * (left * x) - x).norm() / x.norm();

@@ -28,14 +28,6 @@ struct ThinFactors {
   bool used_jacobi = false;
 };
 
-// A few fixed probe vectors (deterministic pseudo-random entries in [-1, 1]).
-Eigen::MatrixXd probes(Eigen::Index rows, Eigen::Index count) {
-  Eigen::MatrixXd x(rows, count);
-  for (Eigen::Index j = 0; j < count; ++j)
-    for (Eigen::Index i = 0; i < rows; ++i) x(i, j) = std::sin(1.0 + 0.7 * static_cast<double>(i) + 2.3 * static_cast<double>(j));
-  return x;
-}
-
 // The check of the factors, on probe vectors rather than whole products so that it costs
 // O((m + n) p) per probe instead of O(m n p): A X = U S Vᵀ X and UᵀU Y = Y, VᵀV Y = Y for
 // kSvdProbes generic X, Y. A wrong factor (BDCSVD's failure: |A − U S Vᵀ| = 0.76) shows on
@@ -43,11 +35,11 @@ Eigen::MatrixXd probes(Eigen::Index rows, Eigen::Index count) {
 bool factors_check(const Eigen::MatrixXd& a, const ThinFactors& f) {
   const double scale = std::max(1.0, a.norm());
   const auto p = f.s.size();
-  const Eigen::MatrixXd x = probes(a.cols(), kSvdProbes);
+  const Eigen::MatrixXd x = probe_vectors(a.cols(), kSvdProbes);
   const double residual =
       (a * x - f.u.leftCols(p) * (f.s.asDiagonal() * (f.v.leftCols(p).transpose() * x))).norm() / x.norm();
   auto orthogonality = [](const Eigen::MatrixXd& q) {
-    const Eigen::MatrixXd y = probes(q.cols(), kSvdProbes);
+    const Eigen::MatrixXd y = probe_vectors(q.cols(), kSvdProbes);
     return (q.transpose() * (q * y) - y).norm() / y.norm();
   };
   const double limit = kSvdResidualTolerance * std::max<double>(1.0, static_cast<double>(std::max(f.u.cols(), f.v.cols())));
@@ -132,6 +124,13 @@ Eigen::MatrixXd completed_basis(const Eigen::MatrixXd& q) {
 }
 
 }  // namespace
+
+Eigen::MatrixXd probe_vectors(Eigen::Index rows, Eigen::Index count) {
+  Eigen::MatrixXd x(rows, count);
+  for (Eigen::Index j = 0; j < count; ++j)
+    for (Eigen::Index i = 0; i < rows; ++i) x(i, j) = std::sin(1.0 + 0.7 * static_cast<double>(i) + 2.3 * static_cast<double>(j));
+  return x;
+}
 
 SvdAnalysis analyse_svd(const Eigen::MatrixXd& a, const RankTolerance& tolerance, SvdVectors vectors) {
   SvdAnalysis result;

@@ -35,6 +35,10 @@ struct SvdAnalysis {
 /// Which singular vectors to return, completed to full orthonormal bases.
 enum class SvdVectors { both, right_only };
 
+/// `count` fixed probe vectors of length `rows` (entries sin(1 + 0.7 i + 2.3 j) in [−1, 1]):
+/// generic and deterministic, for the checks of factorisations on a few products.
+Eigen::MatrixXd probe_vectors(Eigen::Index rows, Eigen::Index count);
+
 /// Checked full SVD of `a` and its numerical rank.
 SvdAnalysis analyse_svd(const Eigen::MatrixXd& a, const RankTolerance& tolerance = {},
                         SvdVectors vectors = SvdVectors::both);
