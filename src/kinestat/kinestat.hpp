@@ -43,6 +43,7 @@
 #include "kinestat/io/text_file.hpp"
 #include "kinestat/io/urdf_reader.hpp"
 #include "kinestat/kinematics/position_solver.hpp"
+#include "kinestat/linalg/blas_kernels.hpp"
 #include "kinestat/linalg/blas_threads.hpp"
 #include "kinestat/linalg/cause_split.hpp"
 #include "kinestat/linalg/definite_combination.hpp"

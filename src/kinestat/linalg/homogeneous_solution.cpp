@@ -1,5 +1,6 @@
 #include "kinestat/linalg/homogeneous_solution.hpp"
 
+#include "kinestat/linalg/blas_kernels.hpp"
 #include "kinestat/linalg/svd_analysis.hpp"
 
 #include <Eigen/LU>
@@ -9,6 +10,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <optional>
+#include <utility>
 
 namespace kinestat::linalg {
 
@@ -120,10 +123,7 @@ std::vector<Eigen::Index> greedy_independent_rows(const Eigen::MatrixXd& vectors
     const Eigen::Index width = std::min(kGreedyBlock, candidates - start);
     Eigen::MatrixXd block(vectors.cols(), width);
     for (Eigen::Index c = 0; c < width; ++c) block.col(c) = vectors.row(order[static_cast<std::size_t>(start + c)]).transpose();
-    if (kept > 0) {
-      const auto before = basis.leftCols(kept);
-      for (int pass = 0; pass < 2; ++pass) block.noalias() -= before * (before.transpose() * block);
-    }
+    for (int pass = 0; pass < 2; ++pass) blas_subtract_projection(basis, kept, block);
     const Eigen::Index block_start = kept;
     for (Eigen::Index c = 0; c < width && kept < wanted; ++c) {
       Eigen::VectorXd residual = block.col(c);
@@ -239,9 +239,9 @@ Eigen::MatrixXd echelon_null_basis(const Eigen::MatrixXd& null_basis, std::vecto
   const auto found = static_cast<Eigen::Index>(free_variables.size());
   Eigen::MatrixXd at_free(found, nullity);
   for (Eigen::Index j = 0; j < found; ++j) at_free.row(j) = null_basis.row(free_variables[static_cast<std::size_t>(j)]);
-  Eigen::MatrixXd coefficients = at_free.size() > 0 && found == nullity ? Eigen::MatrixXd(null_basis * at_free.inverse())
-                                                                        : Eigen::MatrixXd(cols, found);
-  if (found != nullity) coefficients.setZero();
+  std::optional<Eigen::MatrixXd> divided;
+  if (at_free.size() > 0 && found == nullity) divided = lapack_right_divide(null_basis, at_free);
+  Eigen::MatrixXd coefficients = divided ? std::move(*divided) : Eigen::MatrixXd::Zero(cols, found);
   clean_small(coefficients);
   for (Eigen::Index j = 0; j < found; ++j)  // exactly one on the free variables themselves
     coefficients.row(free_variables[static_cast<std::size_t>(j)]) = Eigen::RowVectorXd::Unit(found, j);
