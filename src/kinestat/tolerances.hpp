@@ -53,6 +53,12 @@ inline constexpr double kDistributedSingularResidual = 0x1p26 * kEpsilon;
 /// (a model moved, turned or rescaled) cannot pick among equally good rows to release or
 /// coordinates to constrain (2^26 ε ≈ 1.5e-8: far above rounding, far below a real difference).
 inline constexpr double kPivotTie = 0x1p26 * kEpsilon;
+/// Verdict participants (design::rank_participants): shares (0 to 1) within this of the largest
+/// share of their group rank alike, in model order — half the unit of the four decimals the
+/// reports print, so parts a designer sees as equal (legs of a symmetric robot given to a few
+/// decimals) keep their model order, and rounding noise (a parallel run's, or another kernel's)
+/// can neither reorder them nor change the change set chosen from them.
+inline constexpr double kParticipationTie = 5e-5;
 /// A variable can be chosen free in floating point when its row of the orthonormal null-space
 /// basis keeps this much norm after removing earlier choices (2^22 ε ≈ 9.3e-10).
 inline constexpr double kFreeVariableResidual = 0x1p22 * kEpsilon;

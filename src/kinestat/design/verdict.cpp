@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numeric>
 
 #include <fmt/format.h>
 
@@ -39,11 +40,23 @@ void note_near_rank_change(Verdict& verdict, std::optional<double> distance, boo
 }
 
 void rank_participants(std::vector<Participant>& list) {
-  // As the reports print them (report::verdict_report's share).
-  const auto printed = [](double share) { return std::round(share * kParticipationScale); };
-  std::stable_sort(list.begin(), list.end(), [&printed](const Participant& a, const Participant& b) {
-    return printed(a.participation) > printed(b.participation);
-  });
+  std::vector<std::size_t> by_share(list.size());
+  std::iota(by_share.begin(), by_share.end(), std::size_t{0});
+  const auto share = [&list](std::size_t i) { return list[i].participation; };
+  std::stable_sort(by_share.begin(), by_share.end(), [&share](std::size_t a, std::size_t b) { return share(a) > share(b); });
+  // Groups that start at their largest share and take every share within the tie of it; each
+  // group back in model order. (A group is measured from its first member, not chained, so it
+  // spans at most kParticipationTie.)
+  for (auto first = by_share.begin(); first != by_share.end();) {
+    const double leader = share(*first);
+    auto last = std::find_if(first, by_share.end(), [&](std::size_t i) { return share(i) < leader - kParticipationTie; });
+    std::sort(first, last);
+    first = last;
+  }
+  std::vector<Participant> ranked;
+  ranked.reserve(list.size());
+  for (std::size_t i : by_share) ranked.push_back(std::move(list[i]));
+  list = std::move(ranked);
 }
 
 std::vector<Participant> strongest(const std::vector<VerdictState>& states, const std::string& kind) {

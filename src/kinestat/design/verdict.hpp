@@ -62,13 +62,14 @@ struct Verdict {
   std::optional<double> near_rank_change;
 };
 
-/// Participations are ranked and reported as multiples of 1 / kParticipationScale (four
-/// decimals): shares that print alike rank alike, whatever their last bits.
+/// Participations are reported as multiples of 1 / kParticipationScale (four decimals).
 inline constexpr double kParticipationScale = 1e4;
 
-/// Sorts participants by decreasing participation rounded to a multiple of
-/// 1 / kParticipationScale; equal rounded shares keep their order (the order of the parts in the
-/// model), so that rounding noise (a parallel run's) never reorders them.
+/// Sorts participants by decreasing participation. Shares within kParticipationTie of the
+/// largest share of their group are equal and keep their order in `list` (the order of the
+/// parts in the model), so that rounding noise never reorders them — not even across a
+/// printing boundary such as 0.03125, which noise alone prints as 0.0312 or 0.0313. A group
+/// spans at most kParticipationTie (it is measured from its first member, not chained).
 void rank_participants(std::vector<Participant>& list);
 
 /// The largest share each part of kind `kind` ("extra motion" or "self-stress" states) has in
