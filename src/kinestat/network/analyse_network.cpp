@@ -567,7 +567,7 @@ NetworkBasesStage choose_network_bases_stage(const Model& model, const NetworkTo
 // here, on the user's matrices: the conditioned frame mixes the d rows of each circuit
 // (cutset), so the rows that are redundant there are not the user's.
 NetworkResult network_in_user_frame(const Model& model, NetworkTopologyStage topology, ConditionedNetworkStage c,
-                                    NetworkBasesStage b) {
+                                    NetworkBasesStage b, double pair_relative) {
   NetworkResult r;
   r.model_name = model.name;
   r.d = model.space.dimension();
@@ -639,9 +639,15 @@ NetworkResult network_in_user_frame(const Model& model, NetworkTopologyStage top
   // Body motions and pair systems.
   r.body_motions = body_motions_along_tree(topology.walk, r.circulation.contracted, r.bodies, d, r.FN, r.exact);
   r.pairs = std::move(b.pairs);
+  // In floating point, what the difference of two body motions leaves below the threshold the
+  // pair decisions use (pair_relative of the whole network's forms) is rounding, and is shown
+  // as zero: a welded pair's motions print as 0, not as 1e-16 * s_R1 + ...
+  const double pair_noise = r.exact ? 0.0 : pair_relative * r.circulation.contracted.values.norm();
   for (PairSystem& pair : r.pairs) {
     pair.motion_system = combine(r.body_motions[static_cast<std::size_t>(pair.body_j)],
                                  r.body_motions[static_cast<std::size_t>(pair.body_i)], -1);
+    if (!pair.motion_system.exact)
+      pair.motion_system.values = pair.motion_system.values.unaryExpr([pair_noise](double x) { return std::abs(x) <= pair_noise ? 0.0 : x; });
     pair.action_system = pair.coupling ? block_rows(r.cutset_law.contracted, static_cast<Index>(*pair.coupling) * d, d)
                                        : zero_forms(d, r.CN, r.exact);
   }
@@ -757,7 +763,8 @@ NetworkResult analyse_network(const Model& model, const AnalysisOptions& options
   ConditionedNetworkStage conditioned = condition_network_stage(model, topology, options);
   NetworkRanksStage ranks = decide_network_ranks_stage(conditioned, model.space.dimension(), options.tolerances);
   NetworkBasesStage bases = choose_network_bases_stage(model, topology, conditioned, std::move(ranks), options);
-  NetworkResult r = network_in_user_frame(model, std::move(topology), std::move(conditioned), std::move(bases));
+  NetworkResult r =
+      network_in_user_frame(model, std::move(topology), std::move(conditioned), std::move(bases), options.tolerances.pair_rank);
 
   NetworkValuesStage values = network_values_stage(model, r, options);
   r.motion_values = std::move(values.motion_values);
