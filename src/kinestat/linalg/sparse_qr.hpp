@@ -24,6 +24,11 @@ class SparseQr {
  public:
   /// Factors `a`; `threshold` is absolute (same units as the entries of `a`).
   SparseQr(const Eigen::SparseMatrix<double>& a, double threshold);
+  /// Factors `a` with the caller's fill-reducing order instead of METIS: column_order[k] is the
+  /// column of `a` placed k-th (a permutation of 0 … cols − 1). SuiteSparseQR keeps that order
+  /// apart from its column singletons and the postorder of the column elimination tree; the
+  /// rank rule and permutation() are as above, in the columns of `a`.
+  SparseQr(const Eigen::SparseMatrix<double>& a, double threshold, const std::vector<Eigen::Index>& column_order);
   ~SparseQr();
   SparseQr(const SparseQr&) = delete;
   SparseQr& operator=(const SparseQr&) = delete;
@@ -57,6 +62,8 @@ class SparseQr {
 
  private:
   struct Factor;
+  // Factors `a` with its columns taken in `column_order` (empty: as they are, ordered by METIS).
+  void factor(const Eigen::SparseMatrix<double>& a, double threshold, const std::vector<Eigen::Index>& column_order);
   std::unique_ptr<Factor> factor_;
   Eigen::Index rows_ = 0, cols_ = 0, rank_ = 0;
   std::vector<Eigen::Index> permutation_;
