@@ -62,18 +62,28 @@ void SparseQr::factor(const Eigen::SparseMatrix<double>& a, double threshold, co
   // (with its columns in the given order, if any).
   Eigen::SparseMatrix<double, Eigen::ColMajor, SuiteSparse_long> input;
   if (given) {
-    input.resize(rows_, cols_);
-    Eigen::VectorXi sizes(cols_);
-    for (Eigen::Index k = 0; k < cols_; ++k) {
-      const Eigen::Index j = column_order[static_cast<std::size_t>(k)];
-      if (j < 0 || j >= cols_) throw std::invalid_argument("SparseQr: a column of the order is out of range");
-      sizes(k) = static_cast<int>(a.outerIndexPtr()[j + 1] - a.outerIndexPtr()[j]);
-      if (a.innerNonZeroPtr() != nullptr) sizes(k) = a.innerNonZeroPtr()[j];
+    // Column k of the copy is column column_order[k] of a, copied whole into the compressed
+    // arrays (the values and row indices exactly as in a).
+    std::vector<bool> seen(static_cast<std::size_t>(cols_), false);
+    Eigen::Index entries = 0;
+    for (const Eigen::Index j : column_order) {
+      if (j < 0 || j >= cols_ || seen[static_cast<std::size_t>(j)])
+        throw std::invalid_argument("SparseQr: the column order must list every column once");
+      seen[static_cast<std::size_t>(j)] = true;
+      entries += a.isCompressed() ? a.outerIndexPtr()[j + 1] - a.outerIndexPtr()[j] : a.innerNonZeroPtr()[j];
     }
-    input.reserve(sizes);
-    for (Eigen::Index k = 0; k < cols_; ++k)
-      for (Eigen::SparseMatrix<double>::InnerIterator it(a, column_order[static_cast<std::size_t>(k)]); it; ++it)
-        input.insert(it.row(), k) = it.value();
+    input.resize(rows_, cols_);
+    input.resizeNonZeros(entries);
+    SuiteSparse_long* start = input.outerIndexPtr();
+    SuiteSparse_long at = 0;
+    for (Eigen::Index k = 0; k < cols_; ++k) {
+      start[k] = at;
+      for (Eigen::SparseMatrix<double>::InnerIterator it(a, column_order[static_cast<std::size_t>(k)]); it; ++it, ++at) {
+        input.innerIndexPtr()[at] = static_cast<SuiteSparse_long>(it.row());
+        input.valuePtr()[at] = it.value();
+      }
+    }
+    start[cols_] = at;
   } else {
     input = a.cast<double>();
   }
