@@ -157,6 +157,15 @@ void sparse_vectors(FrameworkResult& result, const Eigen::SparseMatrix<double>& 
   result.vectors = true;
 }
 
+// The node of each column of D(c) (of each dependent coordinate).
+std::vector<Eigen::Index> node_of_columns(const FrameworkResult& result) {
+  std::vector<Eigen::Index> nodes;
+  nodes.reserve(result.partition.dependent_coordinates.size());
+  for (const Eigen::Index coordinate : result.partition.dependent_coordinates)
+    nodes.push_back(static_cast<Eigen::Index>(result.indexing.coordinates[static_cast<std::size_t>(coordinate)].node));
+  return nodes;
+}
+
 // The user's tolerance, or the default rule with the rounding of the coordinates as written:
 // ε × the largest coordinate magnitude over the characteristic length (placement-aware).
 linalg::RankTolerance rank_tolerance(const FrameworkModel& model, double length, const Tolerances& tolerances) {
@@ -203,7 +212,11 @@ FrameworkResult analyse_framework(const FrameworkModel& model, const AnalysisOpt
       result.decision = linalg::sparse_rank_threshold(jacobian, tolerance);
       sparse_vectors(result, jacobian, options.sparse_vectors);
     } else {
-      result.decision = linalg::sparse_numerical_rank(jacobian, tolerance, &result.factor_memory);
+      // Counts only: D(c) ordered node by node (a nested dissection of the node graph) where
+      // that graph keeps most of D(c)'s structure; it costs a fraction of METIS on the columns
+      // of D(c)ᵀD(c). The vector path keeps METIS: its dead columns pick the printed bases and
+      // the release proposal.
+      result.decision = linalg::sparse_numerical_rank(jacobian, tolerance, &result.factor_memory, node_of_columns(result));
     }
   } else if (!options.vectors) {
     // Counts only: singular values without singular vectors.

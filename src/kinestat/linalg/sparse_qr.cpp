@@ -40,14 +40,53 @@ struct SparseQr::Factor {
 
 SparseQr::SparseQr(const Eigen::SparseMatrix<double>& a, double threshold)
     : factor_(std::make_unique<Factor>()), rows_(a.rows()), cols_(a.cols()) {
+  factor(a, threshold, {});
+}
+
+SparseQr::SparseQr(const Eigen::SparseMatrix<double>& a, double threshold, const std::vector<Eigen::Index>& column_order)
+    : factor_(std::make_unique<Factor>()), rows_(a.rows()), cols_(a.cols()) {
+  if (static_cast<Eigen::Index>(column_order.size()) != cols_)
+    throw std::invalid_argument("SparseQr: the column order must list every column once");
+  factor(a, threshold, column_order);
+}
+
+void SparseQr::factor(const Eigen::SparseMatrix<double>& a, double threshold, const std::vector<Eigen::Index>& column_order) {
   pin_blas_threads();
   factor_->cols = cols_;
   if (rows_ == 0 || cols_ == 0) {
     for (Eigen::Index j = 0; j < cols_; ++j) permutation_.push_back(j);
     return;
   }
-  // SuiteSparseQR's long-integer interface needs 64-bit indices: the one copy made is of A.
-  Eigen::SparseMatrix<double, Eigen::ColMajor, SuiteSparse_long> input = a.cast<double>();
+  const bool given = !column_order.empty();
+  // SuiteSparseQR's long-integer interface needs 64-bit indices: the one copy made is of A
+  // (with its columns in the given order, if any).
+  Eigen::SparseMatrix<double, Eigen::ColMajor, SuiteSparse_long> input;
+  if (given) {
+    // Column k of the copy is column column_order[k] of a, copied whole into the compressed
+    // arrays (the values and row indices exactly as in a).
+    std::vector<bool> seen(static_cast<std::size_t>(cols_), false);
+    Eigen::Index entries = 0;
+    for (const Eigen::Index j : column_order) {
+      if (j < 0 || j >= cols_ || seen[static_cast<std::size_t>(j)])
+        throw std::invalid_argument("SparseQr: the column order must list every column once");
+      seen[static_cast<std::size_t>(j)] = true;
+      entries += a.isCompressed() ? a.outerIndexPtr()[j + 1] - a.outerIndexPtr()[j] : a.innerNonZeroPtr()[j];
+    }
+    input.resize(rows_, cols_);
+    input.resizeNonZeros(entries);
+    SuiteSparse_long* start = input.outerIndexPtr();
+    SuiteSparse_long at = 0;
+    for (Eigen::Index k = 0; k < cols_; ++k) {
+      start[k] = at;
+      for (Eigen::SparseMatrix<double>::InnerIterator it(a, column_order[static_cast<std::size_t>(k)]); it; ++it, ++at) {
+        input.innerIndexPtr()[at] = static_cast<SuiteSparse_long>(it.row());
+        input.valuePtr()[at] = it.value();
+      }
+    }
+    start[cols_] = at;
+  } else {
+    input = a.cast<double>();
+  }
   input.makeCompressed();
   cholmod_sparse view{};
   view.nrow = static_cast<std::size_t>(rows_);
@@ -65,18 +104,20 @@ SparseQr::SparseQr(const Eigen::SparseMatrix<double>& a, double threshold)
 
   cholmod_common& cc = factor_->common;
   // econ = 0: R has exactly rank rows. Nested dissection by METIS keeps the fill of R near
-  // that of a Cholesky factor of AᵀA on lattice-like frameworks.
-  const SuiteSparse_long rank = SuiteSparseQR<double>(SPQR_ORDERING_METIS, threshold, 0, &view, &factor_->r,
-                                                      &factor_->permutation, &cc);
+  // that of a Cholesky factor of AᵀA on lattice-like frameworks; a given order is kept
+  // (SPQR_ORDERING_NATURAL: singletons first, then the columns as given, etree-postordered).
+  const SuiteSparse_long rank = SuiteSparseQR<double>(given ? SPQR_ORDERING_NATURAL : SPQR_ORDERING_METIS, threshold, 0,
+                                                      &view, &factor_->r, &factor_->permutation, &cc);
   if (cc.status == CHOLMOD_OUT_OF_MEMORY) throw std::bad_alloc();
   if (cc.status < CHOLMOD_OK || rank < 0 || factor_->r == nullptr)
     throw std::runtime_error("SuiteSparseQR failed (status " + std::to_string(cc.status) + ")");
   rank_ = static_cast<Eigen::Index>(rank);
   peak_memory_ = cc.memory_usage;
   permutation_.resize(static_cast<std::size_t>(cols_));
-  for (Eigen::Index j = 0; j < cols_; ++j)
-    permutation_[static_cast<std::size_t>(j)] =
-        factor_->permutation != nullptr ? static_cast<Eigen::Index>(factor_->permutation[j]) : j;
+  for (Eigen::Index j = 0; j < cols_; ++j) {
+    const Eigen::Index column = factor_->permutation != nullptr ? static_cast<Eigen::Index>(factor_->permutation[j]) : j;
+    permutation_[static_cast<std::size_t>(j)] = given ? column_order[static_cast<std::size_t>(column)] : column;
+  }
 }
 
 SparseQr::~SparseQr() = default;

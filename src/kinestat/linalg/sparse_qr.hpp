@@ -1,7 +1,7 @@
 #pragma once
 // Rank-revealing sparse QR by SuiteSparseQR, called through its own C++ interface rather than
-// Eigen's wrapper: a nested-dissection (METIS) fill-reducing ordering, R and the column
-// permutation kept in SuiteSparse's own arrays (never copied), Q never formed.
+// Eigen's wrapper: a nested-dissection (METIS) fill-reducing ordering or the caller's own, R and
+// the column permutation kept in SuiteSparse's own arrays (never copied), Q never formed.
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
@@ -24,6 +24,14 @@ class SparseQr {
  public:
   /// Factors `a`; `threshold` is absolute (same units as the entries of `a`).
   SparseQr(const Eigen::SparseMatrix<double>& a, double threshold);
+  /// Factors `a` with the caller's fill-reducing order instead of METIS: column_order[k] is the
+  /// column of `a` placed k-th (a permutation of 0 … cols − 1). SuiteSparseQR keeps that order
+  /// apart from its column singletons and the postorder of the column elimination tree; the
+  /// rank rule and permutation() are as above, in the columns of `a`. Which columns are dead
+  /// depends on the order (Heath's rule drops a column dependent on those before it), the rank
+  /// only where the gap at the threshold is clear. Throws std::invalid_argument unless
+  /// column_order is a permutation of the columns.
+  SparseQr(const Eigen::SparseMatrix<double>& a, double threshold, const std::vector<Eigen::Index>& column_order);
   ~SparseQr();
   SparseQr(const SparseQr&) = delete;
   SparseQr& operator=(const SparseQr&) = delete;
@@ -57,6 +65,8 @@ class SparseQr {
 
  private:
   struct Factor;
+  // Factors `a` with its columns taken in `column_order` (empty: as they are, ordered by METIS).
+  void factor(const Eigen::SparseMatrix<double>& a, double threshold, const std::vector<Eigen::Index>& column_order);
   std::unique_ptr<Factor> factor_;
   Eigen::Index rows_ = 0, cols_ = 0, rank_ = 0;
   std::vector<Eigen::Index> permutation_;

@@ -4,6 +4,9 @@
 
 #include <Eigen/SparseCore>
 
+#include <cstddef>
+#include <vector>
+
 #include "kinestat/linalg/rank_decision.hpp"
 #include "kinestat/linalg/sparse_qr.hpp"
 #include "kinestat/tolerances.hpp"
@@ -14,8 +17,14 @@ namespace kinestat::linalg {
 /// kSparseToleranceFactor·(rows + cols)·eps) times an estimate of σ_max (Lanczos). The evidence reported is the R diagonal: `smallest_kept` is the smallest kept
 /// |R_ii|; `largest_dropped` is 0 because SPQR drops columns without reporting them.
 /// `peak_memory`, when given, receives the factorisation's peak memory in bytes.
+/// `column_groups`, when not empty, names a group ≥ 0 for every column of `a` (for a framework's
+/// D(c), the node of each coordinate): a matrix at least as tall as wide is then factored in the
+/// grouped_nested_dissection_order of those groups instead of METIS on the columns of AᵀA,
+/// provided the group graph keeps at least 0.4 of the column couplings (see that function; the
+/// same rank wherever the gap at the threshold is clear, a cheaper ordering of a graph with a
+/// fraction of the vertices). Otherwise, and for a wider matrix (factored as Aᵀ), METIS.
 RankDecision sparse_numerical_rank(const Eigen::SparseMatrix<double>& a, const RankTolerance& tolerance = {},
-                                   std::size_t* peak_memory = nullptr);
+                                   std::size_t* peak_memory = nullptr, const std::vector<Eigen::Index>& column_groups = {});
 
 
 /// The absolute threshold of the rank rule for `a`, with σ_max estimated: `decision.largest`,
