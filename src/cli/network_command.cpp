@@ -101,6 +101,11 @@ void register_network_options(CLI::App& analyze) {
                                 "--coupled-pairs adds every coupled pair); the dense path lists every pair")};
 }
 
+PairRequest requested_pairs(const network::Model& model) {
+  const NetworkOptions& o = network_options();
+  return PairRequest{parse_pairs(o.pairs, model), o.coupled_pairs_only};
+}
+
 std::vector<std::string> given_network_options() {
   std::vector<std::string> names;
   for (const CLI::Option* option : network_options().given)
