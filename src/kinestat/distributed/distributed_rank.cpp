@@ -194,10 +194,12 @@ double distributed_power_of_ten(int exponent) {
 // absolute error the value is known to): a singular value from an eigenpair of H whose residual
 // is at most `error` lies within `error` of one of H's eigenvalues, so these are the digits the
 // computation guarantees, and the last-bit noise of P ≥ 2 (about ε σ_max) changes them only on
-// a rounding boundary.
+// a rounding boundary. At least one significant digit is kept (a value is never rounded to 0,
+// which the report reads as "not computed"), even when `error` exceeds it.
 double distributed_round_to(double value, double error) {
   if (value == 0.0 || !std::isfinite(value) || !(error > 0.0) || !std::isfinite(error)) return value;
-  const int exponent = static_cast<int>(std::ceil(std::log10(error)));
+  const int exponent = std::min(static_cast<int>(std::ceil(std::log10(error))),
+                                static_cast<int>(std::floor(std::log10(std::abs(value)))));
   if (exponent >= 0) {
     const double unit = std::pow(10.0, exponent);
     return std::round(value / unit) * unit;
