@@ -6,8 +6,8 @@
 # residual guarantees (docs/scaling.md, "Repeatability"): the generated 1 000-coupling ladder
 # (bench/ladder_network.py; smallest_kept_residual 1e-12 in one run of four, 1e-13 in the
 # others) and examples/delta-robot.yaml (smallest_kept, largest_dropped, gap and
-# smallest_kept_residual differed in one run of six). About 12 s unloaded, 25 s with two builds
-# running on the two cores.
+# smallest_kept_residual differed in one run of six). 5.7 s at load average 4 to 7 on two
+# cores, 28 to 50 s with two builds running on them.
 # Usage: check_repeatable.sh MPIRUN KINESTAT SOURCE_DIR WORK_DIR
 set -eu
 mpirun=$1 kinestat=$2 source=$3 work=$4
