@@ -75,6 +75,15 @@ void register_framework_options(CLI::App& analyze);
 int run_network_analysis(const CommonOptions& options, const io::LoadedNetwork& model, const std::string& path);
 /// Names of the kind-specific options given on the command line (e.g. "--primary").
 std::vector<std::string> given_network_options();
+/// `analyze --pair BODY1:BODY2` (as body indices of `model`, in the order given) and
+/// `--coupled-pairs`: the pairs whose freedoms the sparse paths report. Throws io::InputError
+/// (exit 2) for a name that is no body of `model` or a pair of one body.
+struct PairRequest {
+  std::vector<std::pair<int, int>> pairs;
+  bool coupled = false;
+  bool any() const { return !pairs.empty() || coupled; }
+};
+PairRequest requested_pairs(const network::Model& model);
 std::vector<std::string> given_framework_options();
 /// The value of `analyze --vectors` (0 when not given).
 long long requested_vectors();

@@ -97,8 +97,13 @@ void register_network_options(CLI::App& analyze) {
              analyze.add_option("--primary", o.primary, "Networks: primary variables, e.g. --primary sa,ta,vc,Ub,We")->delimiter(','),
              analyze.add_option("--value", o.values, "Networks: numeric value of a primary variable, NAME=NUMBER (repeatable)"),
              analyze.add_option("--pair", o.pairs,
-                                "Networks, sparse path: fij and cij of the pair of bodies BODY1:BODY2 (repeatable; "
+                                "Networks, sparse path and --backend petsc: fij and cij of the pair of bodies BODY1:BODY2 (repeatable; "
                                 "--coupled-pairs adds every coupled pair); the dense path lists every pair")};
+}
+
+PairRequest requested_pairs(const network::Model& model) {
+  const NetworkOptions& o = network_options();
+  return PairRequest{parse_pairs(o.pairs, model), o.coupled_pairs_only};
 }
 
 std::vector<std::string> given_network_options() {

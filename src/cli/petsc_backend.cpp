@@ -21,6 +21,7 @@
 #include "kinestat/distributed/network_rank.hpp"
 #include "kinestat/distributed/petsc_session.hpp"
 #include "kinestat/io/network_reader.hpp"
+#include "kinestat/network/sparse_pair_freedoms.hpp"
 #include "kinestat/report/framework_report.hpp"
 #include "kinestat/report/json_text.hpp"
 #include "kinestat/report/network_report.hpp"
@@ -46,13 +47,21 @@ struct PetscModel {
   std::optional<framework::FrameworkModel> framework;
   std::optional<io::LoadedNetwork> network;
   network::SparseNetworkResult system;  ///< network::build_body_twist_system of the network
+  PairRequest pairs;                    ///< a network's --pair and --coupled-pairs
 };
+
+// The pair options, which the backend answers for networks only.
+bool petsc_pair_option(const std::string& name) { return name == "--pair" || name == "--coupled-pairs"; }
 
 void read_petsc_model(const CommonOptions& options, PetscModel& out) {
   const InputFormat format = input_format(options.model_path);
   std::string path = options.model_path;
+  std::vector<std::string> pair_options;
+  for (const std::string& name : given_network_options())
+    if (petsc_pair_option(name)) pair_options.push_back(name);
   if (format == InputFormat::spacar) {
     out.framework = read_spacar_model(options.model_path);
+    reject_options(pair_options, "a framework", options.model_path);
     return;
   }
   if (format != InputFormat::kinestat) {
@@ -63,6 +72,7 @@ void read_petsc_model(const CommonOptions& options, PetscModel& out) {
     path = model->path();
     if (kind == "framework") {
       out.framework = io::read_framework_model(*model);
+      reject_options(pair_options, "a framework", path);
       return;
     }
     if (kind != "network")
@@ -70,6 +80,7 @@ void read_petsc_model(const CommonOptions& options, PetscModel& out) {
                            "--backend petsc analyses frameworks and coupling networks; this model is of kind '" + kind + "'");
     out.network = io::read_network_model(*model);
   }
+  out.pairs = requested_pairs(out.network->model);
   try {
     out.system = network::build_body_twist_system(out.network->model, Tolerances::with_rank(options.tolerance));
   } catch (const network::ModelError& error) {
@@ -180,7 +191,7 @@ void petsc_report_framework(const CommonOptions& options, const framework::Frame
 }
 
 void petsc_report_network(const CommonOptions& options, const io::LoadedNetwork& loaded,
-                    const distributed::DistributedNetworkResult& result) {
+                    const distributed::DistributedNetworkResult& result, const std::vector<network::SparsePairFreedom>* pairs) {
   design::Verdict verdict = design::sparse_network_verdict(loaded.model, result.analysis, Tolerances::with_rank(options.tolerance));
   // The states' basis vectors are the backend's null vectors, not the sparse QR's.
   for (design::VerdictState& state : verdict.states) {
@@ -188,13 +199,13 @@ void petsc_report_network(const CommonOptions& options, const io::LoadedNetwork&
     petsc_replace_first(state.description, "basis vectors of the sparse QR of K", "null vectors of K from MUMPS");
   }
   if (options.json) {
-    nlohmann::ordered_json j = report::sparse_network_report_json(loaded.model, result.analysis, &verdict, nullptr);
+    nlohmann::ordered_json j = report::sparse_network_report_json(loaded.model, result.analysis, &verdict, pairs);
     j["method"] = "petsc_mumps";
     j["backend"] = backend_json(result.backend, options.timings, "motions", "self_stresses", "K");
     emit(options, report::json_text(j));
     return;
   }
-  std::string text = report::sparse_network_report_text(loaded.model, result.analysis, &verdict, nullptr);
+  std::string text = report::sparse_network_report_text(loaded.model, result.analysis, &verdict, pairs);
   petsc_replace_first(text, "sparse body-twist form, floating point",
                 fmt::format("body-twist form, floating point, MUMPS inertia on {} process(es)", result.backend.processes));
   petsc_replace_first(text, "from the QR of K (", "from MUMPS (inverse iteration; ");
@@ -205,7 +216,9 @@ void petsc_report_network(const CommonOptions& options, const io::LoadedNetwork&
 }  // namespace
 
 int run_petsc_analysis(const CommonOptions& options) {
-  std::vector<std::string> refused = given_network_options();
+  std::vector<std::string> refused;
+  for (const std::string& name : given_network_options())
+    if (!petsc_pair_option(name)) refused.push_back(name);
   for (const std::string& name : given_framework_options())
     if (name != "--vectors") refused.push_back(name);
   const distributed::PetscSession session;
@@ -217,8 +230,8 @@ int run_petsc_analysis(const CommonOptions& options) {
     try {
       if (!refused.empty())
         throw io::InputError({options.model_path, 1, 1},
-                             fmt::format("{} not used with --backend petsc (it decides counts, supports and the first "
-                                         "--vectors null vectors); remove {}",
+                             fmt::format("{} not used with --backend petsc (it decides counts, supports, the first "
+                                         "--vectors null vectors and a network's --pair / --coupled-pairs); remove {}",
                                          fmt::join(refused, ", "), refused.size() == 1 ? "it" : "them"));
       read_petsc_model(options, model);
       kind = model.network ? 1 : 0;
@@ -239,6 +252,7 @@ int run_petsc_analysis(const CommonOptions& options) {
     return static_cast<int>(code);
   }
   kind = session.broadcast(kind);
+  const long long listed = session.broadcast(static_cast<long long>(model.pairs.any() ? 1 : 0));
   const Tolerances tolerances = Tolerances::with_rank(options.tolerance);
   distributed::DistributedRankOptions rank_options;
   rank_options.vectors = static_cast<Eigen::Index>(requested_vectors());
@@ -252,7 +266,7 @@ int run_petsc_analysis(const CommonOptions& options) {
     else
       network_result = distributed::analyse_network_distributed(model.network ? &model.network->model : nullptr,
                                                                 session.rank() == 0 ? &model.system : nullptr, tolerances,
-                                                                rank_options);
+                                                                rank_options, listed == 1);
   } catch (const Error& error) {
     std::cerr << "kinestat: error: " << error.what() << '\n';
     distributed::PetscSession::abort(error.exit_code());
@@ -263,7 +277,20 @@ int run_petsc_analysis(const CommonOptions& options) {
   }
   if (session.rank() != 0) return 0;
   if (kind == 0) petsc_report_framework(options, *model.framework, framework_result);
-  else petsc_report_network(options, *model.network, network_result);
+  else {
+    // fij and cij of the pairs asked for, from d generic vectors of each null space, as the
+    // serial sparse path (network::sparse_pair_freedoms).
+    std::vector<network::SparsePairFreedom> pairs;
+    if (listed == 1) {
+      try {
+        pairs = network::sparse_pair_freedoms(model.network->model, network_result.analysis, model.pairs.pairs,
+                                              model.pairs.coupled, tolerances);
+      } catch (const network::ModelError& error) {
+        throw io::locate(error, *model.network, options.model_path);
+      }
+    }
+    petsc_report_network(options, *model.network, network_result, listed == 1 ? &pairs : nullptr);
+  }
   return 0;
 }
 

@@ -92,7 +92,7 @@ residuals = petsc["backend"]["vector_residuals"]
 bound = serial["rank_evidence"]["body_twist"]["threshold"] / serial["rank_evidence"]["body_twist"]["largest_singular_value"]
 assert len(residuals["motions"]) == 8 and len(residuals["self_stresses"]) == 8, residuals
 assert all(r < bound for r in residuals["motions"] + residuals["self_stresses"]), (residuals, bound)
-assert petsc["null_space_residual"] < 1e-11, petsc["null_space_residual"]
+assert petsc["null_space_residual"] <= bound, (petsc["null_space_residual"], bound)  # an upper bound, at most the floor
 # No singular value in (t, 100 t] (the window searched whole and empty): the decision is not
 # close, as the serial path's is not (no "close decision" warning on either).
 assert petsc["backend"]["window_searched"] and petsc["backend"]["window_kept"] == 0, petsc["backend"]

@@ -96,9 +96,10 @@ void check_vector_spans(const framework::FrameworkModel& model, const Distribute
   const framework::FrameworkResult serial = framework::analyse_framework(model, sparse);
   ASSERT_TRUE(r.analysis.vectors) << name;
   const double bound = r.analysis.decision.threshold / r.analysis.decision.largest;
-  for (double residual : r.backend.mechanism_residuals) EXPECT_LT(residual, bound) << name;
-  for (double residual : r.backend.self_stress_residuals) EXPECT_LT(residual, bound) << name;
-  EXPECT_LT(r.analysis.null_space_residual, bound) << name;
+  // Upper bounds at the report floor (a power of ten at or below the bound) when below it.
+  for (double residual : r.backend.mechanism_residuals) EXPECT_LE(residual, bound) << name;
+  for (double residual : r.backend.self_stress_residuals) EXPECT_LE(residual, bound) << name;
+  EXPECT_LE(r.analysis.null_space_residual, bound) << name;
   EXPECT_EQ(r.analysis.modes.size(), r.backend.mechanism_residuals.size()) << name;
   EXPECT_EQ(r.analysis.stresses.size(), r.backend.self_stress_residuals.size()) << name;
   EXPECT_LT(kinestat::testing::distance_to_span(framework_vector_columns(r.analysis, true), framework_vector_columns(serial, true)), 1e-8)
@@ -120,7 +121,7 @@ TEST(DistributedRank, SquareGridEvidenceMatchesTheDenseSvd) {
     check_vector_spans(model, r, n - 1, "square 16");
     EXPECT_EQ(r.analysis.modes.size(), static_cast<std::size_t>(n - 1));
     EXPECT_TRUE(r.backend.dropped_bounded);
-    EXPECT_LT(r.analysis.decision.largest_dropped, r.analysis.decision.threshold);
+    EXPECT_LE(r.analysis.decision.largest_dropped, r.analysis.decision.threshold);
     EXPECT_GT(r.analysis.decision.gap(), 1e3);
     framework::FrameworkResult scratch;
     const Eigen::MatrixXd dense(framework::prepare_analysis(model, scratch));

@@ -23,23 +23,6 @@ namespace {
 // Exit code of a failure of the numerical libraries (as for internal errors).
 constexpr int kExitLibrary = 3;
 
-// Refinement steps x ← x − (H + s·I)⁻¹ H x after the two inverse-iteration steps of each null
-// vector: each shrinks the kept part by s/(σ + s) and keeps the factorisation's backward error
-// out of the vector. A fixed count: the size of a correction is no test of convergence (the
-// rounding of H x along the null space comes back multiplied by 1/s). Eight suffice for the
-// generated ladders of up to 3 000 couplings, whose smallest kept σ is within 100 s.
-constexpr int kDistributedRefinementSteps = 8;
-
-// The search for singular values in the window (t, s] (distributed_rank below): SLEPc's absolute
-// tolerance on the window operator (eigenvalues of order 1; the pairs are then checked on H
-// itself), its iteration limit, the first number of pairs asked for and the most (asked for in
-// batches 4 times larger while every pair found lies in the window). Solver settings, not
-// decision tolerances: the decision is σ > t on the pairs' Rayleigh quotients.
-constexpr double kDistributedWindowTolerance = 1e-12;
-constexpr PetscInt kDistributedWindowIterations = 1000;
-constexpr PetscInt kDistributedWindowBatch = 2;
-constexpr PetscInt kDistributedWindowMostPairs = 128;
-
 void check(PetscErrorCode code, const char* what) {
   if (code == 0) return;
   if (code == PETSC_ERR_MEM) throw std::bad_alloc();
@@ -190,25 +173,39 @@ PetscInt factor_shifted(Mat h, double shift, Mat* factor, DistributedRank& resul
 
 // MUMPS's parallel factorisation and solves sum in the order messages arrive, so that with
 // P ≥ 2 the null vectors differ from run to run in their last bits. What rank 0 reports is made
-// repeatable where it can be: every entry of a vector is rounded to a multiple of 2⁻⁴⁴ of the
+// repeatable: every entry of a vector is rounded to a multiple of kDistributedVectorGrid of the
 // vector's largest (entries equal but for that noise, as in a symmetric model, become equal,
-// so ties are broken alike; the residual this adds, about 10⁻¹³ σ_max, stays far below the
-// threshold), and residuals are given to two significant digits. A value on a rounding
-// boundary can still come out either way.
+// so ties are broken alike; the residual this adds, about 10⁻¹³ σ_max, stays below the
+// threshold); residuals are upper bounds at the report floor (distributed_report_bound), and
+// singular values are rounded to the digits their residual guarantees (distributed_round_to).
 void distributed_round_entries(Eigen::Ref<Eigen::VectorXd> v) {
   const double largest = v.cwiseAbs().maxCoeff();
   if (largest == 0.0) return;
-  const double unit = std::ldexp(largest, -44);
+  const double unit = largest * kDistributedVectorGrid;
   for (Eigen::Index i = 0; i < v.size(); ++i) v(i) = std::round(v(i) / unit) * unit;
 }
 
-// A residual rounded up to a power of ten: an upper bound that the last-bit noise of a run on
-// P ≥ 2 processes (entries of a vector on a 2⁻⁴⁴ rounding boundary, SLEPc's sums) changes only
-// when it straddles a power of ten, where two significant digits changed in most runs (the
-// 1 000-coupling ladder at P = 2: 4.3 · 10⁻¹⁴ in one run, 4.7 · 10⁻¹⁴ in the next).
-double distributed_decade_above(double value) {
-  if (!(value > 0.0) || !std::isfinite(value)) return value;
-  return std::pow(10.0, std::ceil(std::log10(value)));
+// A power of ten as the nearest double (10^k for k < 0 as 1 / 10^−k, which prints as "1e-13").
+double distributed_power_of_ten(int exponent) {
+  return exponent >= 0 ? std::pow(10.0, exponent) : 1.0 / std::pow(10.0, -exponent);
+}
+
+// `value` rounded to the nearest multiple of the power of ten at or above `error` (> 0, the
+// absolute error the value is known to): a singular value from an eigenpair of H whose residual
+// is at most `error` lies within `error` of one of H's eigenvalues, so these are the digits the
+// computation guarantees, and the last-bit noise of P ≥ 2 (about ε σ_max) changes them only on
+// a rounding boundary. At least one significant digit is kept (a value is never rounded to 0,
+// which the report reads as "not computed"), even when `error` exceeds it.
+double distributed_round_to(double value, double error) {
+  if (value == 0.0 || !std::isfinite(value) || !(error > 0.0) || !std::isfinite(error)) return value;
+  const int exponent = std::min(static_cast<int>(std::ceil(std::log10(error))),
+                                static_cast<int>(std::floor(std::log10(std::abs(value)))));
+  if (exponent >= 0) {
+    const double unit = std::pow(10.0, exponent);
+    return std::round(value / unit) * unit;
+  }
+  const double scale = std::pow(10.0, -exponent);
+  return std::round(value * scale) / scale;
 }
 
 // A pseudo-random number in [−1, 1) for entry `index` of draw `draw` (splitmix64): the same
@@ -272,7 +269,7 @@ void smallest_kept(Mat h, Mat factor, double shift, std::vector<Vec>& null_space
   KINESTAT_PETSC_CHECK(EPSSetType(eps, EPSKRYLOVSCHUR));
   KINESTAT_PETSC_CHECK(EPSSetWhichEigenpairs(eps, EPS_LARGEST_MAGNITUDE));
   KINESTAT_PETSC_CHECK(EPSSetDimensions(eps, 2, PETSC_DEFAULT, PETSC_DEFAULT));
-  KINESTAT_PETSC_CHECK(EPSSetTolerances(eps, 1e-10, 500));
+  KINESTAT_PETSC_CHECK(EPSSetTolerances(eps, kDistributedSmallestTolerance, kDistributedSmallestIterations));
   OwnedVec start, w, u, residual;
   set_fixed_start(eps, h, start);
   KINESTAT_PETSC_CHECK(EPSSolve(eps));
@@ -301,8 +298,10 @@ void smallest_kept(Mat h, Mat factor, double shift, std::vector<Vec>& null_space
     }
   }
   result.smallest_kept_verified = best > 0.0;
-  result.smallest_kept_residual = distributed_decade_above(best_residual);
-  result.decision.smallest_kept = best;
+  if (best > 0.0) {
+    result.smallest_kept_residual = distributed_report_bound(best_residual, result.report_floor);
+    result.decision.smallest_kept = distributed_round_to(best, result.smallest_kept_residual * largest);
+  }
 }
 
 // y = (s·(H + s·I)⁻¹ − I)·x through MUMPS's solve: the operator whose positive eigenvalues are
@@ -378,14 +377,13 @@ std::vector<DistributedWindowPair> window_pairs(Mat h, Mat factor, double shift,
   return pairs;
 }
 
-// Six significant digits: SLEPc's values at P ≥ 2 differ from run to run in their last bits.
-double distributed_six_digits(double value) {
-  if (value == 0.0 || !std::isfinite(value)) return value;
-  const double unit = std::pow(10.0, std::floor(std::log10(std::abs(value))) - 5.0);
-  return std::round(value / unit) * unit;
-}
-
 }  // namespace
+
+double distributed_report_bound(double relative, double floor) {
+  if (!std::isfinite(relative) || relative < 0.0) return relative;
+  const double above = relative > 0.0 ? distributed_power_of_ten(static_cast<int>(std::ceil(std::log10(relative)))) : 0.0;
+  return std::max(above, floor);
+}
 
 DistributedRank distributed_rank(const Eigen::SparseMatrix<double>* a, const linalg::RankDecision& threshold,
                                  const DistributedRankOptions& options) {
@@ -418,6 +416,9 @@ DistributedRank distributed_rank(const Eigen::SparseMatrix<double>* a, const lin
   d.threshold = values[1];
   d.rounding_level = values[2];
   d.input_rounding = values[3];
+  if (d.largest > 0.0 && d.threshold > 0.0)
+    result.report_floor =
+        distributed_power_of_ten(static_cast<int>(std::floor(std::log10(kDistributedReportFloor * d.threshold / d.largest))));
   auto gather_memory = [&] {
     unsigned long long mine = peak_resident_bytes();
     std::vector<unsigned long long> all(static_cast<std::size_t>(size));
@@ -490,7 +491,7 @@ DistributedRank distributed_rank(const Eigen::SparseMatrix<double>* a, const lin
       if (result.window_searched || count >= kDistributedWindowMostPairs) break;
     }
     d.rank += result.window_kept;
-    result.window_residual = distributed_decade_above(result.window_residual);
+    if (result.window_kept > 0) result.window_residual = distributed_report_bound(result.window_residual, result.report_floor);
   }
   result.window_seconds = MPI_Wtime() - clock;
   result.null_pivots = static_cast<Eigen::Index>(m) + n - 2 * d.rank;
@@ -503,14 +504,24 @@ DistributedRank distributed_rank(const Eigen::SparseMatrix<double>* a, const lin
   clock = MPI_Wtime();
   const bool whole = null_pivots <= options.full_basis_limit;
   const Eigen::Index mechanisms = n - d.rank, stresses = m - d.rank;
-  const Eigen::Index least = options.generic_vectors ? 1 : 0;
-  const Eigen::Index want_mechanisms = whole ? mechanisms : std::min(std::max(options.vectors, least), mechanisms);
-  const Eigen::Index want_stresses = whole ? stresses : std::min(std::max(options.vectors, least), stresses);
+  const Eigen::Index want_mechanisms = whole ? mechanisms : std::min(options.vectors, mechanisms);
+  const Eigen::Index want_stresses = whole ? stresses : std::min(options.vectors, stresses);
+  // Generic vectors: the first `generic_vectors` draws in each block whose null space is not empty.
+  const Eigen::Index want_generic = std::max<Eigen::Index>(options.generic_vectors, 0);
   Eigen::MatrixXd stress_basis, mechanism_basis;
-  Eigen::Index stress_used = 0, mechanism_used = 0;
+  Eigen::Index stress_used = 0, mechanism_used = 0, generic_mechanisms = 0, generic_stresses = 0;
+  if (rank == 0 && want_generic > 0) {
+    result.generic_mechanisms.resize(n, mechanisms > 0 ? want_generic : 0);
+    result.generic_self_stresses.resize(m, stresses > 0 ? want_generic : 0);
+  }
+  // Whether a draw in block 1 (A's columns: mechanisms) or 2 (its rows: self-stresses) is still wanted.
+  auto need_mechanism = [&] {
+    return mechanism_used < want_mechanisms || generic_mechanisms < result.generic_mechanisms.cols();
+  };
+  auto need_stress = [&] { return stress_used < want_stresses || generic_stresses < result.generic_self_stresses.cols(); };
   std::vector<Vec> null_space;  // the vectors computed, kept for SLEPc's deflation when whole
   const DistributedVecsRelease release{null_space};
-  int block = rank == 0 ? (mechanism_used < want_mechanisms ? 1 : stress_used < want_stresses ? 2 : 0) : 0;
+  int block = rank == 0 ? (need_mechanism() ? 1 : need_stress() ? 2 : 0) : 0;
   MPI_Bcast(&block, 1, MPI_INT, 0, PETSC_COMM_WORLD);
   OwnedVec x, gathered;
   OwnedScatter to_root;
@@ -536,7 +547,7 @@ DistributedRank distributed_rank(const Eigen::SparseMatrix<double>* a, const lin
     KINESTAT_PETSC_CHECK(VecDuplicate(x, hz.out()));
     PetscInt lo = 0, hi = 0;
     KINESTAT_PETSC_CHECK(VecGetOwnershipRange(z, &lo, &hi));
-    const long long attempts = 2LL * (want_mechanisms + want_stresses) + 8;
+    const long long attempts = 2LL * (want_mechanisms + want_stresses + 2 * want_generic) + 8;
     for (long long draw = 0; draw < attempts && block != 0; ++draw) {
       PetscScalar* entries = nullptr;
       KINESTAT_PETSC_CHECK(VecGetArray(z, &entries));
@@ -575,19 +586,16 @@ DistributedRank distributed_rank(const Eigen::SparseMatrix<double>* a, const lin
         const Eigen::Map<const Eigen::VectorXd> v(values_read, m + n);
         // A part below kTangentKept of the vector is rounding of the other part, not a direction.
         const double kept = kTangentKept * v.norm();
-        // The first vector from a start in each block, as it is: generic in that null space.
-        if (options.generic_vectors && block == 1 && result.generic_mechanism.size() == 0 && v.tail(n).norm() > kept)
-          result.generic_mechanism = v.tail(n).normalized();
-        if (options.generic_vectors && block == 2 && result.generic_self_stress.size() == 0 && v.head(m).norm() > kept)
-          result.generic_self_stress = v.head(m).normalized();
+        // The first vectors from a start in each block, as they are: generic in that null space.
+        if (block == 1 && generic_mechanisms < result.generic_mechanisms.cols() && v.tail(n).norm() > kept)
+          result.generic_mechanisms.col(generic_mechanisms++) = v.tail(n).normalized();
+        if (block == 2 && generic_stresses < result.generic_self_stresses.cols() && v.head(m).norm() > kept)
+          result.generic_self_stresses.col(generic_stresses++) = v.head(m).normalized();
         if (stress_used < want_stresses && v.head(m).norm() > kept) extend_basis(stress_basis, stress_used, v.head(m));
         if (mechanism_used < want_mechanisms && v.tail(n).norm() > kept)
           extend_basis(mechanism_basis, mechanism_used, v.tail(n));
         KINESTAT_PETSC_CHECK(VecRestoreArrayRead(gathered, &values_read));
-        block = mechanism_used < want_mechanisms && (draw % 2 == 1 || stress_used >= want_stresses) ? 1
-                : stress_used < want_stresses                                                  ? 2
-                : mechanism_used < want_mechanisms                                            ? 1
-                                                                                               : 0;
+        block = need_mechanism() && (draw % 2 == 1 || !need_stress()) ? 1 : need_stress() ? 2 : need_mechanism() ? 1 : 0;
       }
       MPI_Bcast(&block, 1, MPI_INT, 0, PETSC_COMM_WORLD);
     }
@@ -601,7 +609,8 @@ DistributedRank distributed_rank(const Eigen::SparseMatrix<double>* a, const lin
       double squared = 0.0;
       for (Eigen::Index j = 0; j < mechanism_used; ++j) squared += ((*a) * mechanism_basis.col(j)).squaredNorm();
       for (Eigen::Index j = 0; j < stress_used; ++j) squared += (a->transpose() * stress_basis.col(j)).squaredNorm();
-      d.largest_dropped = std::sqrt(squared);
+      // Reported as an upper bound at the report floor, as the residuals: its value is rounding.
+      d.largest_dropped = distributed_report_bound(std::sqrt(squared) / d.largest, result.report_floor) * d.largest;
       result.dropped_bounded = true;
     }
     result.mechanisms = mechanism_basis.leftCols(std::min(options.vectors, mechanism_used));
@@ -609,17 +618,22 @@ DistributedRank distributed_rank(const Eigen::SparseMatrix<double>* a, const lin
     for (Eigen::Index j = 0; j < result.mechanisms.cols(); ++j) {
       distributed_round_entries(result.mechanisms.col(j));
       const double norm = result.mechanisms.col(j).norm();
-      result.mechanism_residuals.push_back(distributed_decade_above(((*a) * result.mechanisms.col(j)).norm() / (d.largest * norm)));
+      result.mechanism_residuals.push_back(
+          distributed_report_bound(((*a) * result.mechanisms.col(j)).norm() / (d.largest * norm), result.report_floor));
     }
     for (Eigen::Index j = 0; j < result.self_stresses.cols(); ++j) {
       distributed_round_entries(result.self_stresses.col(j));
       const double norm = result.self_stresses.col(j).norm();
       result.self_stress_residuals.push_back(
-          distributed_decade_above((a->transpose() * result.self_stresses.col(j)).norm() / (d.largest * norm)));
+          distributed_report_bound((a->transpose() * result.self_stresses.col(j)).norm() / (d.largest * norm), result.report_floor));
     }
-    if (result.generic_mechanism.size() > 0) distributed_round_entries(result.generic_mechanism);
-    if (result.generic_self_stress.size() > 0) distributed_round_entries(result.generic_self_stress);
-    result.null_vector_residual = distributed_decade_above(result.null_vector_residual);
+    // Draws that left no vector (attempts ran out) leave no column.
+    result.generic_mechanisms.conservativeResize(n, generic_mechanisms);
+    result.generic_self_stresses.conservativeResize(m, generic_stresses);
+    for (Eigen::Index j = 0; j < generic_mechanisms; ++j) distributed_round_entries(result.generic_mechanisms.col(j));
+    for (Eigen::Index j = 0; j < generic_stresses; ++j) distributed_round_entries(result.generic_self_stresses.col(j));
+    if (result.null_vectors_computed > 0)
+      result.null_vector_residual = distributed_report_bound(result.null_vector_residual, result.report_floor);
   }
   result.vector_seconds = MPI_Wtime() - clock;
 
@@ -628,9 +642,9 @@ DistributedRank distributed_rank(const Eigen::SparseMatrix<double>* a, const lin
   MPI_Bcast(&complete, 1, MPI_INT, 0, PETSC_COMM_WORLD);
   // A value kept in the window is the smallest kept one (every other kept value exceeds s).
   if (result.window_kept > 0) {
-    d.smallest_kept = distributed_six_digits(window_smallest);
     result.smallest_kept_verified = true;
-    result.smallest_kept_residual = distributed_decade_above(result.window_residual);
+    result.smallest_kept_residual = result.window_residual;  // already the reported bound
+    d.smallest_kept = distributed_round_to(window_smallest, result.smallest_kept_residual * d.largest);
   }
   const bool search_kept = options.smallest_kept && d.rank > 0 && result.window_kept == 0;
   if (complete == 1 && search_kept) {
@@ -673,8 +687,10 @@ DistributedRank distributed_rank(const Eigen::SparseMatrix<double>* a, const lin
       }
     }
     result.smallest_kept_verified = best > 0.0;
-    result.smallest_kept_residual = distributed_decade_above(best_residual);
-    d.smallest_kept = distributed_six_digits(best);
+    if (best > 0.0) {
+      result.smallest_kept_residual = distributed_report_bound(best_residual, result.report_floor);
+      d.smallest_kept = distributed_round_to(best, result.smallest_kept_residual * d.largest);
+    }
   }
   result.evidence_seconds = MPI_Wtime() - clock;
   gather_memory();

@@ -39,21 +39,22 @@ struct DistributedRankOptions {
   /// s·(H + s·I)⁻¹ − I, whose positive eigenvalues are σ/(s − σ) for σ < s) and count those
   /// above t in the rank, as the serial rule at t does; false: the rank is the inertia's count at s.
   bool window = true;
-  /// Also keep one generic null vector of A and one of Aᵀ (generic_mechanism,
-  /// generic_self_stress): the first vector inverse iteration gives from a pseudo-random start
-  /// in that block, before orthogonalisation, so that it vanishes only where every null vector
-  /// does (the supports of network::record_motion_support and record_stress_support).
-  bool generic_vectors = false;
+  /// Also keep this many generic null vectors of A and of Aᵀ (generic_mechanisms,
+  /// generic_self_stresses): the first vectors inverse iteration gives from pseudo-random starts
+  /// in that block, before orthogonalisation, so that a combination vanishes only where every
+  /// null vector does (the first: the supports of network::record_motion_support and
+  /// record_stress_support; d of them: network::sparse_pair_freedoms).
+  Eigen::Index generic_vectors = 0;
 };
 
 /// Outcome of a distributed rank decision. Counts are the same on every process; vectors and
 /// matrices are filled on rank 0 only.
 struct DistributedRank {
   /// The decision in the serial form: rank (at t: the inertia's count at s plus window_kept),
-  /// threshold, largest (σ_max, from the caller), smallest_kept (σ_r from SLEPc to six
-  /// significant digits, 0 when not computed or not verified), largest_dropped (the
-  /// bound above, 0 when not computed); `sparse` is true, so its status is close or unproven
-  /// as for the serial sparse QR.
+  /// threshold, largest (σ_max, from the caller), smallest_kept (σ_r from SLEPc, rounded to the
+  /// digits its residual guarantees, 0 when not computed or not verified), largest_dropped (the
+  /// bound above as an upper bound at the report floor, 0 when not computed); `sparse` is true,
+  /// so its status is close or unproven as for the serial sparse QR.
   linalg::RankDecision decision;
   /// H's eigenvalues below the threshold in magnitude, m + n − 2·rank (rank = the negative
   /// eigenvalues of H + s·I from the inertia of its LDLᵀ factorisation, plus window_kept).
@@ -71,27 +72,34 @@ struct DistributedRank {
   /// s is already min(m, n), or DistributedRankOptions::window is false) or when
   /// kDistributedWindowMostPairs pairs were all in the window.
   bool window_searched = false;
-  /// Largest ‖H w − λ w‖ / σ_max of the window's pairs, rounded up to a power of ten (0 when none).
+  /// Largest ‖H w − λ w‖ / σ_max of the window's pairs, as reported (distributed_report_bound;
+  /// 0 when none was kept).
   double window_residual = 0.0;
   /// The same count at kCertainMargin·s: equal to the rank when no singular value lies in
   /// (s, kCertainMargin·s], the evidence the counts give without singular values.
   Eigen::Index rank_above_margin = 0;
   bool smallest_kept_verified = false;  ///< SLEPc's σ_r passed its residual check
-  double smallest_kept_residual = 0.0;  ///< ‖H u − σ_r u‖ / (σ_max ‖u‖) of its pair u, rounded up to a power of ten
+  /// ‖H u − σ_r u‖ / (σ_max ‖u‖) of its pair u as reported (distributed_report_bound; 0 when not
+  /// verified). decision.smallest_kept is rounded to the power of ten at or above this × σ_max.
+  double smallest_kept_residual = 0.0;
+  /// The floor of every reported residual and of the bound on the largest dropped value,
+  /// relative to σ_max: the largest power of ten at or below kDistributedReportFloor × t / σ_max.
+  double report_floor = 0.0;
   bool dropped_bounded = false;         ///< largest_dropped is the bound of the whole null space
   /// Orthonormal bases (rank 0): the first `vectors` null vectors of A (n rows) and of Aᵀ (m rows).
   Eigen::MatrixXd mechanisms, self_stresses;
   /// ‖A q‖ / (σ_max ‖q‖) of each column q of `mechanisms` and ‖Aᵀ q‖ / (σ_max ‖q‖) of each of
-  /// `self_stresses` (rank 0; A as passed in), rounded up to a power of ten. The vectors' entries
-  /// are rounded to 2⁻⁴⁴ of their largest, so that a run on P ≥ 2 processes (whose MUMPS sums
-  /// in message order) reports the same vectors and residuals but for values on a rounding
-  /// boundary (distributed_rank.cpp).
+  /// `self_stresses` (rank 0; A as passed in), as reported (distributed_report_bound). The
+  /// vectors' entries are rounded to kDistributedVectorGrid of their largest, so that a run on
+  /// P ≥ 2 processes (whose MUMPS sums in message order) reports the same vectors and residuals
+  /// but for entries on a rounding boundary (distributed_rank.cpp).
   std::vector<double> mechanism_residuals, self_stress_residuals;
-  /// With DistributedRankOptions::generic_vectors (rank 0): a generic null vector of A (n rows)
-  /// and of Aᵀ (m rows), unit norm; empty when that null space is empty.
-  Eigen::VectorXd generic_mechanism, generic_self_stress;
-  /// Largest ‖H v‖ / (σ_max ‖v‖) over the null vectors of H computed (0 when none): the rounding
-  /// level when the decision is sound.
+  /// With DistributedRankOptions::generic_vectors = k (rank 0): k generic null vectors of A
+  /// (n × k) and of Aᵀ (m × k), unit norm, entries rounded as the reported vectors'; no columns
+  /// when that null space is empty.
+  Eigen::MatrixXd generic_mechanisms, generic_self_stresses;
+  /// Largest ‖H v‖ / (σ_max ‖v‖) over the null vectors of H computed, as reported
+  /// (distributed_report_bound; 0 when none): the rounding level when the decision is sound.
   double null_vector_residual = 0.0;
   Eigen::Index null_vectors_computed = 0;  ///< null vectors of H computed by MUMPS
   /// The null vectors came from a third factorisation, of H + t·I (t the threshold), because a
@@ -109,6 +117,11 @@ struct DistributedRank {
   /// Peak resident memory of each process, bytes (rank 0 only; index = MPI rank).
   std::vector<std::size_t> peak_memory;
 };
+
+/// A residual or bound `relative` to σ_max as the backend reports it, repeatable from run to run
+/// at P ≥ 2: rounded up to a power of ten, and at least `floor` (DistributedRank::report_floor;
+/// a residual of exactly 0 is reported as the floor too). An upper bound.
+double distributed_report_bound(double relative, double floor);
 
 /// Decides the rank of `a` on all processes of PETSC_COMM_WORLD (collective; a PetscSession
 /// must be alive). `a` (non-dimensional and scaled as the serial path scales it) and

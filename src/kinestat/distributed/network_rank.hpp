@@ -26,7 +26,11 @@ struct DistributedNetworkResult {
 /// network::build_body_twist_system returned for it (built by the caller, so that a bad model
 /// is refused before any collective call; moved from); both may be null elsewhere. `options`
 /// vectors: how many basis vectors of each null space to return (0: counts and supports only).
+/// With `pair_vectors`, also analysis.generic_motions and generic_stresses (d generic null
+/// vectors of K and of Kᵀ from the backend, unit norm; zero when that space is empty), for
+/// network::sparse_pair_freedoms, as analyse_network_sparse gives them with its `pair_vectors`.
 DistributedNetworkResult analyse_network_distributed(const network::Model* model, network::SparseNetworkResult* system,
-                                                     const Tolerances& tolerances, DistributedRankOptions options = {});
+                                                     const Tolerances& tolerances, DistributedRankOptions options = {},
+                                                     bool pair_vectors = false);
 
 }  // namespace kinestat::distributed
