@@ -7,6 +7,7 @@
 
 #include "kinestat/linalg/null_spaces.hpp"
 #include "kinestat/linalg/svd_analysis.hpp"
+#include "support/givens_mixing.hpp"
 #include "support/subspace_angles.hpp"
 
 namespace kinestat::linalg {
@@ -30,15 +31,7 @@ TallCase tall_case(Eigen::Index n, Eigen::Index zeros) {
   left.topLeftCorner(n, n) = -Eigen::MatrixXd(b.asDiagonal());
   left.block(n, 0, n, n).setIdentity();
   left.bottomRightCorner(zeros, zeros).setIdentity();
-  Eigen::MatrixXd p = Eigen::MatrixXd::Identity(m, m);
-  for (Eigen::Index i = 0; i + 1 < m; ++i) {
-    const double angle = 0.3 + 0.11 * static_cast<double>(i);
-    Eigen::MatrixXd g = Eigen::MatrixXd::Identity(m, m);
-    g(i, i) = g(i + 1, i + 1) = std::cos(angle);
-    g(i, i + 1) = -std::sin(angle);
-    g(i + 1, i) = std::sin(angle);
-    p = g * p;
-  }
+  const Eigen::MatrixXd p = testing::givens_mixing(m);
   Eigen::VectorXd s = (1.0 + b.array().square()).sqrt();
   std::sort(s.data(), s.data() + s.size(), [](double x, double y) { return x > y; });
   return {p * a, p * left, s};

@@ -5,29 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cmath>
 #include <numeric>
 #include <vector>
 
 #include "kinestat/linalg/pivoted_qr.hpp"
+#include "support/givens_mixing.hpp"
 
 namespace kinestat::linalg {
 namespace {
-
-// A fixed orthogonal m × m matrix (a product of Givens rotations of adjacent rows): a pivoted
-// QR's choices are unchanged by it, and no entry of the mixed matrix is zero.
-Eigen::MatrixXd mixing(Eigen::Index m) {
-  Eigen::MatrixXd p = Eigen::MatrixXd::Identity(m, m);
-  for (Eigen::Index i = 0; i + 1 < m; ++i) {
-    const double angle = 0.3 + 0.11 * static_cast<double>(i);
-    Eigen::MatrixXd g = Eigen::MatrixXd::Identity(m, m);
-    g(i, i) = g(i + 1, i + 1) = std::cos(angle);
-    g(i, i + 1) = -std::sin(angle);
-    g(i + 1, i) = std::sin(angle);
-    p = g * p;
-  }
-  return p;
-}
 
 std::vector<Eigen::Index> indices(std::initializer_list<Eigen::Index> list) { return list; }
 
@@ -46,7 +31,7 @@ TEST(PivotedColumnOrder, OrthogonalColumnsComeByDecreasingNorm) {
   std::iota(expected.begin(), expected.end(), Eigen::Index{0});
   std::sort(expected.begin(), expected.end(),
             [&d](Eigen::Index x, Eigen::Index y) { return d[static_cast<std::size_t>(x)] > d[static_cast<std::size_t>(y)]; });
-  EXPECT_EQ(pivoted_column_order(mixing(m) * a), expected);
+  EXPECT_EQ(pivoted_column_order(testing::givens_mixing(m) * a), expected);
 }
 
 TEST(PivotedColumnOrder, EqualNormsGoToTheEarlierColumn) {
@@ -57,7 +42,7 @@ TEST(PivotedColumnOrder, EqualNormsGoToTheEarlierColumn) {
   for (Eigen::Index j = 0; j < n; ++j) a(j, j) = 1.0;
   a(2, 2) += 1e-12;
   a(4, 4) += 1e-6;
-  EXPECT_EQ(pivoted_column_order(mixing(m) * a), indices({4, 0, 1, 2, 3, 5}));
+  EXPECT_EQ(pivoted_column_order(testing::givens_mixing(m) * a), indices({4, 0, 1, 2, 3, 5}));
 }
 
 TEST(PivotedColumnOrder, DependentColumnIsTakenFirstWhenLongestAndTheRestTie) {
@@ -92,7 +77,7 @@ TEST(PivotedColumnOrder, NearParallelColumnsAreRecomputedAfterCancellation) {
     return epsilon[static_cast<std::size_t>(x)] > epsilon[static_cast<std::size_t>(y)];
   });
   for (Eigen::Index i : twins) expected.push_back(half + i);
-  EXPECT_EQ(pivoted_column_order(mixing(m) * a), expected);
+  EXPECT_EQ(pivoted_column_order(testing::givens_mixing(m) * a), expected);
 }
 
 TEST(PivotedColumnOrder, WideMatrixStopsAfterItsRowsAndKeepsTheRestInOrder) {
@@ -102,7 +87,7 @@ TEST(PivotedColumnOrder, WideMatrixStopsAfterItsRowsAndKeepsTheRestInOrder) {
   for (Eigen::Index j = 0; j < 40; ++j) a(j % 3, j) = static_cast<double>(j + 1);
   std::vector<Eigen::Index> expected = {39, 38, 37};
   for (Eigen::Index j = 0; j < 37; ++j) expected.push_back(j);
-  EXPECT_EQ(pivoted_column_order(mixing(3) * a), expected);
+  EXPECT_EQ(pivoted_column_order(testing::givens_mixing(3) * a), expected);
 }
 
 TEST(PivotedColumnOrder, ZeroRemainderStopsEarly) {
