@@ -51,6 +51,7 @@
 #include "kinestat/linalg/gmp_allocation.hpp"
 #include "kinestat/linalg/homogeneous_solution.hpp"
 #include "kinestat/linalg/modular_rank.hpp"
+#include "kinestat/linalg/nested_dissection.hpp"
 #include "kinestat/linalg/null_spaces.hpp"
 #include "kinestat/linalg/pivoted_qr.hpp"
 #include "kinestat/linalg/rank_decision.hpp"
