@@ -225,6 +225,8 @@ py::dict rank_evidence(const linalg::RankDecision& d) {
   const auto distance = d.distance();
   evidence["distance"] = distance ? py::object(py::float_(*distance)) : py::object(py::none());
   evidence["error_bound"] = d.error_bound;
+  // Sparse factors: σ_min of the kept block R11 (None when not estimated).
+  evidence["r11_smallest_singular_value"] = d.factor_estimated ? py::object(py::float_(d.factor_smallest)) : py::object(py::none());
   return evidence;
 }
 

@@ -115,5 +115,20 @@ TEST(RankStatus, SparseDecisionsAreNeverCertain) {
   EXPECT_EQ(d.status(), RankStatus::close);
 }
 
+TEST(RankStatus, SparseDecisionWithANearlySingularLiveBlockIsClose) {
+  RankDecision d;
+  d.sparse = true;
+  d.rank = 3;
+  d.largest = 1;
+  d.threshold = 1e-13;
+  d.smallest_kept = 0.5;  // the pivots alone: clear
+  d.factor_smallest = 1e-14;
+  EXPECT_EQ(d.status(), RankStatus::unproven);  // not marked as estimated: ignored
+  d.factor_estimated = true;
+  EXPECT_EQ(d.status(), RankStatus::close);
+  d.factor_smallest = 1e-10;  // above 100 × the threshold
+  EXPECT_EQ(d.status(), RankStatus::unproven);
+}
+
 }  // namespace
 }  // namespace kinestat::linalg

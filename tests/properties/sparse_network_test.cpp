@@ -4,6 +4,8 @@
 // fij, cij of every pair of bodies (dense: ranks of the pair systems in the primaries).
 #include <gtest/gtest.h>
 
+#include <Eigen/SVD>
+
 #include <filesystem>
 #include <set>
 
@@ -14,6 +16,7 @@
 #include "kinestat/network/analyse_network.hpp"
 #include "kinestat/network/sparse_network.hpp"
 #include "kinestat/network/sparse_pair_freedoms.hpp"
+#include "kinestat/tolerances.hpp"
 #include "random_network.hpp"
 
 namespace kinestat::network {
@@ -125,6 +128,47 @@ TEST(SparseNetwork, SameAnswersAsDaviesOnRandomPlanarNetworks) {
     std::mt19937 rng(static_cast<unsigned>(7000 + seed));
     expect_same_answers(testing::random_network(rng, 3 + seed % 7, 1 + seed % 4, true), "planar seed " + std::to_string(seed));
   }
+}
+
+// σ_min(R11) of each factor, as estimated, against the dense SVD of K (independent): R11 is a
+// block of R, whose singular values are K's, so σ_min(R11) ≤ σ_rank(K); the estimate approaches
+// σ_min(R11) from above and settles to 10⁻³ (5 % allowed for slow convergence), and it is at
+// most the smallest kept |R_ii|. The supports are decided at support_zero of each factor.
+TEST(SparseNetwork, FactorEstimatesAreBoundedByTheSingularValuesOfK) {
+  for (int seed = 0; seed < 30; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    std::mt19937 rng(static_cast<unsigned>(5000 + seed));
+    const Model model = testing::random_network(rng, 2 + seed % 7, 1 + seed % 4, seed % 2 == 1);
+    const SparseNetworkResult sparse = analyse_network_sparse(model);
+    if (sparse.rank.rank == 0) continue;
+    const Eigen::JacobiSVD<Eigen::MatrixXd> svd{Eigen::MatrixXd(sparse.K)};
+    const double sigma_rank = svd.singularValues()(sparse.rank.rank - 1);
+    for (const linalg::RankDecision* factor : {&sparse.rank, &sparse.motion_factor_rank}) {
+      ASSERT_TRUE(factor->factor_estimated);
+      EXPECT_GT(factor->factor_smallest, 0.0);
+      EXPECT_LE(factor->factor_smallest, sigma_rank * 1.05);
+      EXPECT_LE(factor->factor_smallest, factor->smallest_kept * (1.0 + 1e-12));
+    }
+    EXPECT_EQ(sparse.motion_support_zero, support_zero(sparse.rank));
+    EXPECT_EQ(sparse.stress_support_zero, support_zero(sparse.motion_factor_rank));
+  }
+}
+
+TEST(SparseNetwork, SupportZeroIsTheFactorsAttainableAccuracy) {
+  linalg::RankDecision factor;
+  factor.sparse = true;
+  factor.rank = 5;
+  factor.largest = 4.0;
+  EXPECT_EQ(support_zero(factor), kSupportZero);  // not estimated
+  factor.factor_estimated = true;
+  factor.factor_smallest = 0.5;  // ε·8 is far below 2²²ε
+  EXPECT_EQ(support_zero(factor), kSupportZero);
+  factor.factor_smallest = 1e-9;  // ε·4·10⁹ ≈ 8.9·10⁻⁷
+  EXPECT_DOUBLE_EQ(support_zero(factor), kEpsilon * 4e9);
+  factor.factor_smallest = 1e-18;  // no accuracy left: nothing is told from zero
+  EXPECT_EQ(support_zero(factor), 1.0);
+  factor.factor_smallest = 0.0;  // R11 singular in floating point
+  EXPECT_EQ(support_zero(factor), 1.0);
 }
 
 // The sparse verdict screens each body's own actions in floating point before the exact

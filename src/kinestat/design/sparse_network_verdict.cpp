@@ -201,6 +201,9 @@ Verdict sparse_network_verdict(const Model& model, const SparseNetworkResult& r,
   v.redundant_constraints = r.CN + lost;  // inputs beyond the motions fight each other
   v.exactly_constrained = v.extra_motions == 0 && v.redundant_constraints == 0;
   v.summary = summary_sentence(v.extra_motions, v.redundant_constraints, intended);
+  // As the dense path says it; here the distance is the sparse factors' indicator (σ_min of the
+  // better-conditioned kept block over σ_max), not a bound.
+  note_near_rank_change(v, r.rank.distance(), r.FN > 0);
 
   // Extra motions: the idle spins (the first kSparseVerdictStates as states, every one under
   // `where`), then the motions beyond the declared inputs.

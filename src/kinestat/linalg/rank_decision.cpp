@@ -38,7 +38,10 @@ double RankDecision::gap() const {
 
 RankStatus RankDecision::status() const {
   if (exact) return RankStatus::exact;
-  if (sparse) return rank > 0 && smallest_kept < kCertainMargin * threshold ? RankStatus::close : RankStatus::unproven;
+  if (sparse) {
+    const double kept = factor_estimated ? std::min(smallest_kept, factor_smallest) : smallest_kept;
+    return rank > 0 && kept < kCertainMargin * threshold ? RankStatus::close : RankStatus::unproven;
+  }
   // A zero matrix has zero computed singular values: nothing to decide.
   if (largest <= 0.0) return RankStatus::certain;
   const bool kept_clear = rank == 0 || smallest_kept >= kCertainMargin * error_bound;
@@ -52,6 +55,8 @@ std::optional<double> RankDecision::distance() const {
   // A kept singular value is positive: 0 means it was not computed (the distributed backend
   // computes it only for small null spaces), and "0 from a mechanism" would be a false claim.
   if (rank == 0 || !(largest > 0.0) || !(smallest_kept > 0.0)) return std::nullopt;
+  // σ_min(R11), when estimated, is the nearer rank-deficient block (at most the smallest pivot).
+  if (factor_estimated) return std::min(smallest_kept, factor_smallest) / largest;
   return smallest_kept / largest;
 }
 

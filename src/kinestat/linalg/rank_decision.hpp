@@ -64,19 +64,26 @@ struct RankDecision {
   Eigen::Index rows = 0, cols = 0; ///< size of the matrix ranked
   bool sparse = false;             ///< decided by a sparse QR: smallest_kept is the smallest kept |R_ii|
   double error_bound = 0.0;        ///< singular_value_error_bound of the floating-point values (0: none)
+  /// Sparse decisions, when `factor_estimated`: σ_min(R11) of the factor's live block
+  /// (SparseQr::smallest_singular_estimate), at most smallest_kept. Below the threshold it shows
+  /// that the kept columns are nearly dependent, so the rank may be too high.
+  double factor_smallest = 0.0;
+  bool factor_estimated = false;
 
   /// Ratio smallest_kept / largest_dropped: large means a clear decision; infinite for exact
   /// decisions or when nothing was dropped.
   double gap() const;
   /// exact; certain when the smallest kept value is at least kCertainMargin × error_bound and
   /// every dropped value is within error_bound; unproven for a sparse decision whose smallest
-  /// kept |R_ii| is kCertainMargin × the threshold; close otherwise.
+  /// kept |R_ii| (and factor_smallest, when estimated) is at least kCertainMargin × the
+  /// threshold; close otherwise.
   RankStatus status() const;
   /// True when status() is close: rounding or the tolerance decides between two answers.
   bool close() const;
   /// smallest_kept / largest: the relative size of the smallest change of the matrix that lowers
-  /// the rank (Eckart–Young), of the floating-point copy for exact decisions. Empty when the rank
-  /// is 0 or no singular values are known.
+  /// the rank (Eckart–Young), of the floating-point copy for exact decisions; for a sparse
+  /// decision with factor_estimated, min(smallest_kept, factor_smallest) / largest. Empty when the
+  /// rank is 0 or no singular values are known.
   std::optional<double> distance() const;
   /// largest_dropped / largest: how far the matrix is from one of the rank decided. Empty when no
   /// singular values are known.

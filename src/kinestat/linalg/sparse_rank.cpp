@@ -91,6 +91,11 @@ void record_rank(RankDecision& decision, const SparseQr& qr) {
   decision.smallest_kept = decision.rank > 0 ? std::min(decision.largest, qr.smallest_pivot()) : 0.0;
 }
 
+void record_factor_smallest(RankDecision& decision, const SparseQr& qr) {
+  decision.factor_smallest = qr.smallest_singular_estimate();
+  decision.factor_estimated = decision.rank > 0;
+}
+
 RankDecision sparse_numerical_rank(const Eigen::SparseMatrix<double>& a, const RankTolerance& tolerance,
                                    std::size_t* peak_memory, const std::vector<Eigen::Index>& column_groups) {
   RankDecision decision = sparse_rank_threshold(a, tolerance);

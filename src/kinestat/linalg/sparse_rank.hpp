@@ -34,6 +34,10 @@ RankDecision sparse_rank_threshold(const Eigen::SparseMatrix<double>& a, const R
 
 /// Fills the rank and its evidence (smallest kept |R_ii|) of `decision` from `qr`.
 void record_rank(RankDecision& decision, const SparseQr& qr);
+/// Adds σ_min(R11) of `qr` (SparseQr::smallest_singular_estimate, 0 when the rank is 0) to
+/// `decision` as `factor_smallest`: a few more triangular solves, for decisions whose factor is
+/// also used to solve (null vectors, least-squares residuals), whose accuracy it bounds.
+void record_factor_smallest(RankDecision& decision, const SparseQr& qr);
 
 /// Estimate of the largest singular value of `a`, from below: Lanczos on aᵀa (at most 60
 /// steps, each one product with a and one with aᵀ; stops when the estimate settles to ~10⁻¹⁰).

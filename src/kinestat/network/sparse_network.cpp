@@ -156,12 +156,18 @@ SparseNetworkResult build_body_twist_system(const Model& model, const Tolerances
   return r;
 }
 
+double support_zero(const linalg::RankDecision& factor) {
+  if (!factor.factor_estimated || !(factor.largest > 0.0)) return kSupportZero;
+  if (!(factor.factor_smallest > 0.0)) return 1.0;
+  return std::clamp(kEpsilon * factor.largest / factor.factor_smallest, kSupportZero, 1.0);
+}
+
 void record_motion_support(const Model& model, const Eigen::SparseMatrix<double>& k, const Eigen::VectorXd& twists,
-                           SparseNetworkResult& r, std::vector<bool>& moving) {
+                           SparseNetworkResult& r, std::vector<bool>& moving, double relative_zero) {
   const Index d = r.d;
   auto block = [&r, d](int body) -> Index { return body == r.ground ? -1 : (body < r.ground ? body : body - 1) * d; };
   r.residual = std::max(r.residual, (k * twists).norm() / (r.rank.largest * twists.norm()));
-  const double zero = kSupportZero * twists.cwiseAbs().maxCoeff();
+  const double zero = relative_zero * twists.cwiseAbs().maxCoeff();
   for (std::size_t i = 0; i < model.couplings.size(); ++i) {
     const Coupling& c = model.couplings[i];
     const Index to = block(c.to), from = block(c.from);
@@ -175,9 +181,9 @@ void record_motion_support(const Model& model, const Eigen::SparseMatrix<double>
 }
 
 void record_stress_support(const Eigen::SparseMatrix<double>& kt, const Eigen::VectorXd& actions, SparseNetworkResult& r,
-                           std::vector<bool>& stressed) {
+                           std::vector<bool>& stressed, double relative_zero) {
   r.residual = std::max(r.residual, (kt * actions).norm() / (r.rank.largest * actions.norm()));
-  const double zero = kSupportZero * actions.cwiseAbs().maxCoeff();
+  const double zero = relative_zero * actions.cwiseAbs().maxCoeff();
   for (Index row = 0; row < actions.size(); ++row)
     if (std::abs(actions(row)) > zero) stressed[static_cast<std::size_t>(r.row_coupling[static_cast<std::size_t>(row)])] = true;
 }
@@ -209,12 +215,14 @@ SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances&
       // of Kᵀ); a coupling moves when T_to ≠ T_from.
       const linalg::SparseQr qr(kt, r.rank.threshold);
       linalg::record_rank(r.rank, qr);
+      linalg::record_factor_smallest(r.rank, qr);
+      r.motion_support_zero = support_zero(r.rank);
       if (vectors > 0)
         r.basis_residual = std::max(r.basis_residual, basis_of(kt, qr, vectors, r.rank.largest, r.stress_basis, r.stress_primaries));
       const Eigen::VectorXd twists = generic_left_null_vector(kt, qr);
       if (pair_vectors && k.cols() > r.rank.rank) r.generic_motions = generic_left_null_vectors(kt, qr, d);
       // Only when there are motions: otherwise the residual is rounding noise.
-      if (k.cols() > r.rank.rank && twists.norm() > 0) record_motion_support(model, k, twists, r, moving);
+      if (k.cols() > r.rank.rank && twists.norm() > 0) record_motion_support(model, k, twists, r, moving, r.motion_support_zero);
     }
     {
       // Self-stresses: generic action magnitudes λ with Kᵀ λ = 0 (every body in equilibrium),
@@ -222,11 +230,20 @@ SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances&
       const linalg::SparseQr qr(k, r.rank.threshold);
       r.motion_factor_rank = r.rank;
       linalg::record_rank(r.motion_factor_rank, qr);
+      linalg::record_factor_smallest(r.motion_factor_rank, qr);
+      r.stress_support_zero = support_zero(r.motion_factor_rank);
       if (vectors > 0)
         r.basis_residual = std::max(r.basis_residual, basis_of(k, qr, vectors, r.rank.largest, r.motion_basis, r.motion_primaries));
       const Eigen::VectorXd actions = generic_left_null_vector(k, qr);
       if (pair_vectors && k.rows() > qr.rank()) r.generic_stresses = generic_left_null_vectors(k, qr, d);
-      if (k.rows() > qr.rank() && actions.norm() > 0) record_stress_support(kt, actions, r, stressed);
+      if (k.rows() > qr.rank() && actions.norm() > 0) record_stress_support(kt, actions, r, stressed, r.stress_support_zero);
+    }
+    // The rank is Kᵀ's factor's; when K's factor agrees and its live block is better
+    // conditioned, its evidence stands for the decision.
+    const auto kept = [](const linalg::RankDecision& decision) { return std::min(decision.smallest_kept, decision.factor_smallest); };
+    if (r.motion_factor_rank.rank == r.rank.rank && kept(r.motion_factor_rank) > kept(r.rank)) {
+      r.rank.smallest_kept = r.motion_factor_rank.smallest_kept;
+      r.rank.factor_smallest = r.motion_factor_rank.factor_smallest;
     }
   } else if (k.cols() > 0) {
     // No actions at all: every coupling and body moves freely.

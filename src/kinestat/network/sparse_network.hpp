@@ -27,12 +27,18 @@ struct SparseNetworkResult {
   int F = 0, C = 0, FN = 0, CN = 0;
   int ground = 0;
   NetworkClass classification = NetworkClass::simply_stiff;
-  linalg::RankDecision rank;  ///< of K (C × d(n − 1))
+  /// Of K (C × d(n − 1)), decided by the QR of Kᵀ. When the QR of K gives the same rank and
+  /// its live block is better conditioned (larger factor_smallest), the evidence (smallest kept
+  /// |R_ii| and σ_min(R11)) is that factor's: either factor's kept columns span the range.
+  linalg::RankDecision rank;
   /// Couplings that carry some self-stress (redundant couplings: each lies on a self-stress
   /// and could be relaxed) and couplings that move in some motion of the network, by index.
   std::vector<int> stressed, moving;
   /// Largest ‖K x‖ / (σ_max ‖x‖) of the two combined null vectors used for the supports.
   double residual = 0.0;
+  /// Entries of the generic motion (self-stress) at or below this fraction of its largest do not
+  /// count for the supports: support_zero of the factor that gave the vector.
+  double motion_support_zero = kSupportZero, stress_support_zero = kSupportZero;
   /// Bodies (indices, the ground never) that move in some motion of the network.
   std::vector<int> moving_bodies;
   /// Coupling of each row of K (each unit action, in the order of the coupling's action basis).
@@ -79,25 +85,36 @@ inline constexpr int kDenseNetworkLimit = 300;
 /// couplings, bodies not connected, a coupling's geometry).
 SparseNetworkResult build_body_twist_system(const Model& model, const Tolerances& tolerances = {});
 
+/// The fraction of its largest entry below which an entry of a vector solved with a sparse
+/// factor is not told from zero: kSupportZero, or the factor's attainable relative accuracy
+/// ε·σ_max / σ_min(R11) when that is larger (at most 1; `factor` with factor_estimated, else
+/// kSupportZero). A least-squares residual or null vector computed through R11 carries errors of
+/// about that size relative to its largest entry, and so does the null space itself under
+/// rounding of K when σ_min(R11) is the gap: smaller entries may come from another ordering of
+/// the same matrix, so they decide nothing.
+double support_zero(const linalg::RankDecision& factor);
+
 /// Marks the couplings (`moving`, one flag per coupling) and bodies (`r.moving_bodies`) that move
 /// in the motion `twists` (body twists, the columns of `k` = K), and raises `r.residual` to
-/// ‖K x‖ / (σ_max ‖x‖): entries above kSupportZero of the largest count. `twists` should be a
+/// ‖K x‖ / (σ_max ‖x‖): entries above `relative_zero` of the largest count. `twists` should be a
 /// generic null vector of K (a generic combination vanishes only where every null vector does).
 void record_motion_support(const Model& model, const Eigen::SparseMatrix<double>& k, const Eigen::VectorXd& twists,
-                           SparseNetworkResult& r, std::vector<bool>& moving);
+                           SparseNetworkResult& r, std::vector<bool>& moving, double relative_zero = kSupportZero);
 /// Marks the couplings (`stressed`, one flag per coupling) with an entry of the self-stress
-/// `actions` (one magnitude per row of K, a generic null vector of `kt` = Kᵀ) above kSupportZero
-/// of the largest, and raises `r.residual` to ‖Kᵀ λ‖ / (σ_max ‖λ‖).
+/// `actions` (one magnitude per row of K, a generic null vector of `kt` = Kᵀ) above
+/// `relative_zero` of the largest, and raises `r.residual` to ‖Kᵀ λ‖ / (σ_max ‖λ‖).
 void record_stress_support(const Eigen::SparseMatrix<double>& kt, const Eigen::VectorXd& actions, SparseNetworkResult& r,
-                           std::vector<bool>& stressed);
+                           std::vector<bool>& stressed, double relative_zero = kSupportZero);
 /// FN = d(n − 1) − rank K and CN = C − rank K (from `r.K`'s size and `r.rank.rank`), the class,
 /// and the lists `stressed` and `moving` from the flags.
 void finish_sparse_network(SparseNetworkResult& r, const std::vector<bool>& stressed, const std::vector<bool>& moving);
 
 /// FN, CN and the couplings that carry self-stress and that move, from two sparse QR
 /// factorisations (K and Kᵀ). A coupling belongs to a support when its entries in a fixed
-/// pseudo-random combination of the null vectors exceed kSupportZero of the largest: a
-/// generic combination vanishes only where every null vector does. Throws ModelError.
+/// pseudo-random combination of the null vectors exceed support_zero of the factor (kSupportZero
+/// unless the factor's live block is ill-conditioned) of the largest: a generic combination
+/// vanishes only where every null vector does. Both factors' σ_min(R11) are estimated
+/// (`rank.factor_smallest`, `motion_factor_rank.factor_smallest`). Throws ModelError.
 /// With `vectors` > 0 also the first `vectors` basis vectors of the motions and of the
 /// self-stresses (motion_basis, stress_basis), at the cost of one triangular solve each. With
 /// `pair_vectors` also generic_motions and generic_stresses (2d least-squares solves).

@@ -54,8 +54,10 @@ std::vector<std::string> coordinate_letters(const NetworkResult& r, bool motion)
 
 std::string rank_text(const char* symbol, const linalg::RankDecision& rank) {
   if (rank.exact) return fmt::format("{} = {} (exact)", symbol, rank.rank);
-  return fmt::format("{} = {} (smallest kept singular value {}, largest dropped {}, gap {})", symbol, rank.rank,
-                     number_text(rank.smallest_kept), number_text(rank.largest_dropped),
+  const std::string factor =
+      rank.factor_estimated ? fmt::format(", sigma_min of the kept block R11 about {}", number_text(rank.factor_smallest)) : "";
+  return fmt::format("{} = {} (smallest kept singular value {}{}, largest dropped {}, gap {})", symbol, rank.rank,
+                     number_text(rank.smallest_kept), factor, number_text(rank.largest_dropped),
                      std::isinf(rank.gap()) ? "infinite" : number_text(rank.gap()));
 }
 
@@ -102,6 +104,7 @@ Json rank_json(const linalg::RankDecision& rank) {
     j["largest_singular_value"] = rank.largest;
     j["threshold"] = rank.threshold;
     j["smallest_kept"] = rank.smallest_kept;
+    if (rank.factor_estimated) j["r11_smallest_singular_value"] = rank.factor_smallest;
     j["largest_dropped"] = rank.largest_dropped;
     if (rank.input_rounding > 0) j["input_rounding"] = rank.input_rounding;
     j["gap"] = std::isinf(rank.gap()) ? Json(nullptr) : Json(rank.gap());
@@ -629,6 +632,10 @@ std::string sparse_network_report_text(const network::Model& model, const networ
   t += fmt::format("  class: {}\n", network::class_description(r.classification));
   t += fmt::format("Couplings that carry a self-stress ({}): {}\n", r.stressed.size(), joined_or_dash(printable_names(coupling_names(model, r.stressed))));
   t += fmt::format("Couplings that move ({}): {}\n", r.moving.size(), joined_or_dash(printable_names(coupling_names(model, r.moving))));
+  if (r.stress_support_zero > kSupportZero || r.motion_support_zero > kSupportZero)
+    t += fmt::format("  (entries below {} of the largest (self-stress) and {} (motion) are not told from zero: the factors' "
+                     "attainable accuracy)\n",
+                     number_text(r.stress_support_zero), number_text(r.motion_support_zero));
   if (r.motion_basis.cols() > 0 || r.stress_basis.cols() > 0) {
     t += fmt::format("Basis vectors of the verdict: {} motion(s) from the QR of K ({}), {} self-stress(es) from the QR of K^T; "
                      "largest residual |K x| / (sigma_max |x|) = {}\n",
@@ -644,6 +651,10 @@ std::string sparse_network_report_text(const network::Model& model, const networ
   }
   t += fmt::format("Not computed on the sparse path (use the dense path for these): {}\n", fmt::join(sparse_left_out(r, pairs), "; "));
   if (r.rank.close()) t += "Warning: the rank of K is a close decision: the geometry is near one with a different FN and CN\n";
+  if (r.rank.factor_estimated && r.rank.factor_smallest <= r.rank.threshold)
+    t += fmt::format("Warning: the kept columns of the sparse factors are nearly dependent (sigma_min of R11 about {}, at or below "
+                     "the threshold {}): rank K may be too high, so FN and CN too low, by the number of such values\n",
+                     number_text(r.rank.factor_smallest), number_text(r.rank.threshold));
   return t;
 }
 
@@ -667,6 +678,7 @@ nlohmann::ordered_json sparse_network_report_json(const network::Model& model, c
   j["stressed_couplings"] = coupling_names(model, r.stressed);
   j["moving_couplings"] = coupling_names(model, r.moving);
   j["null_space_residual"] = r.residual;
+  j["support_zero"] = {{"self_stresses", r.stress_support_zero}, {"motions", r.motion_support_zero}};
   if (r.motion_basis.cols() > 0 || r.stress_basis.cols() > 0) {
     j["basis_vectors"] = {{"motions", r.motion_basis.cols()},
                           {"self_stresses", r.stress_basis.cols()},

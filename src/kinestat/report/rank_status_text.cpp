@@ -30,7 +30,9 @@ std::string rank_status_text(const linalg::RankDecision& d) {
   const auto distance = d.distance();
   if (distance) {
     text += fmt::format("; {} from rank {} ({})", three_digits(*distance), d.rank - 1,
-                        d.sparse  ? "smallest kept |R_ii| / estimated largest singular value: an indicator, not a bound"
+                        d.sparse && d.factor_estimated
+                            ? "estimated smallest singular value of the kept block R11 / estimated largest: an indicator, not a bound"
+                        : d.sparse ? "smallest kept |R_ii| / estimated largest singular value: an indicator, not a bound"
                         : d.exact ? "smallest kept / largest singular value of a floating-point copy"
                                   : "smallest kept / largest singular value");
   }
