@@ -68,6 +68,15 @@ TEST(SparseVectors, SameSpacesAndAnExactProposalOnEveryExample) {
     ASSERT_EQ(static_cast<Eigen::Index>(sparse.modes.size()), dense.mechanisms) << name;
     ASSERT_EQ(static_cast<Eigen::Index>(sparse.stresses.size()), dense.self_stresses) << name;
     EXPECT_LT(sparse.null_space_residual, 1e-10) << name;
+    // σ_min of the kept block R11 is estimated: at most the smallest kept |R_ii|, and at most
+    // σ_rank of D(c) (R11 is a block of R, whose singular values are D(c)'s; the dense path's
+    // smallest kept value), up to the estimate's convergence from above.
+    if (sparse.rank > 0) {
+      EXPECT_TRUE(sparse.decision.factor_estimated) << name;
+      EXPECT_LE(sparse.decision.factor_smallest, sparse.decision.smallest_kept * (1.0 + 1e-12)) << name;
+      EXPECT_LE(sparse.decision.factor_smallest, dense.decision.smallest_kept * 1.05) << name;
+      EXPECT_GT(sparse.decision.factor_smallest, 0.0) << name;
+    }
     expect_same_span(mode_matrix(sparse), mode_matrix(dense), std::string(name) + " modes");
     expect_same_span(stress_matrix(sparse), stress_matrix(dense), std::string(name) + " stresses");
     // The proposal may differ from the dense one (another pivoting), but applied it must give

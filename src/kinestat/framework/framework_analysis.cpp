@@ -112,6 +112,8 @@ void sparse_vectors(FrameworkResult& result, const Eigen::SparseMatrix<double>& 
   {
     const linalg::SparseQr qr(jacobian, threshold);
     linalg::record_rank(result.decision, qr);
+    // The modes are solved through R11: its σ_min is the evidence that matters for them.
+    linalg::record_factor_smallest(result.decision, qr);
     result.factor_memory = std::max(result.factor_memory, qr.peak_memory());
     Eigen::MatrixXd modes = qr.null_vectors(0, limit);
     result.null_space_residual = std::max(result.null_space_residual, relative_residual(jacobian, modes, largest));

@@ -268,6 +268,7 @@ nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const 
   decision["largest"] = significant(d.largest);
   decision["threshold"] = significant(d.threshold);
   decision["smallest_kept"] = significant(d.smallest_kept);
+  if (d.factor_estimated) decision["r11_smallest_singular_value"] = significant(d.factor_smallest);
   decision["largest_dropped"] = significant(d.largest_dropped);
   // ε × largest coordinate / size: how precisely the written coordinates fix the geometry.
   decision["input_rounding"] = significant(d.input_rounding);
@@ -391,8 +392,11 @@ std::string framework_report_text(const FrameworkModel& model, const FrameworkRe
     line(fmt::format("scaled by element lengths before the rank decision: row factors {} to {}, column factors {} to {}",
                      evidence(rows[0]), evidence(rows[1]), evidence(cols[0]), evidence(cols[1])));
   }
-  line(fmt::format("rank decision: threshold {}, smallest kept {}, largest dropped {}", evidence(a.decision.threshold),
-                   evidence(a.decision.smallest_kept), evidence(a.decision.largest_dropped)));
+  line(fmt::format("rank decision: threshold {}, smallest kept {}{}, largest dropped {}", evidence(a.decision.threshold),
+                   evidence(a.decision.smallest_kept),
+                   a.decision.factor_estimated ? fmt::format(" (sigma_min of the kept block R11 about {})", evidence(a.decision.factor_smallest))
+                                               : std::string(),
+                   evidence(a.decision.largest_dropped)));
   line(fmt::format("  {}", rank_status_text(a.decision)));
   if (a.decision.threshold == a.decision.rounding_level && kInputRoundingFactor * a.decision.input_rounding > kEpsilon)
     line(fmt::format("threshold raised to the rounding of the input: the coordinates, far from the origin against the "
