@@ -103,25 +103,26 @@ TEST(RankStatus, ExactDecisionsKeepTheirStatusAndGainADistance) {
   EXPECT_DOUBLE_EQ(*d.relative_dropped(), 0.5e-17);
 }
 
-TEST(RankStatus, SparseDecisionsAreNeverCertain) {
+// A sparse decision of rank 3 whose smallest kept |R_ii| (0.5) is far above its threshold.
+RankDecision clear_sparse_decision() {
   RankDecision d;
   d.sparse = true;
   d.rank = 3;
   d.largest = 1;
   d.threshold = 1e-13;
   d.smallest_kept = 0.5;
+  return d;
+}
+
+TEST(RankStatus, SparseDecisionsAreNeverCertain) {
+  RankDecision d = clear_sparse_decision();
   EXPECT_EQ(d.status(), RankStatus::unproven);
   d.smallest_kept = 1e-12;  // within 100 × the threshold
   EXPECT_EQ(d.status(), RankStatus::close);
 }
 
 TEST(RankStatus, SparseDecisionWithANearlySingularLiveBlockIsClose) {
-  RankDecision d;
-  d.sparse = true;
-  d.rank = 3;
-  d.largest = 1;
-  d.threshold = 1e-13;
-  d.smallest_kept = 0.5;  // the pivots alone: clear
+  RankDecision d = clear_sparse_decision();  // the pivots alone: clear
   d.factor_smallest = 1e-14;
   EXPECT_EQ(d.status(), RankStatus::unproven);  // not marked as estimated: ignored
   d.factor_estimated = true;
