@@ -34,6 +34,8 @@ NetworkBuilder::NetworkBuilder(std::string path, std::string name, std::string u
 int NetworkBuilder::body(const std::string& name) {
   const auto found = bodies_.find(name);
   if (found != bodies_.end()) return found->second;
+  // A body needs a name that kinestat YAML can write and read back.
+  if (name.empty()) throw InputError({path_, 0, 0}, "a link (or the ground) has an empty name; every link needs a name");
   require_printable("link", name, {path_, 0, 0});
   const int index = static_cast<int>(loaded_.model.bodies.size());
   bodies_[name] = index;

@@ -36,7 +36,8 @@ class NetworkBuilder {
   /// `units` names the length unit of the file format ("m" for URDF and SDFormat), or "".
   NetworkBuilder(std::string path, std::string name, std::string units);
 
-  /// Adds a body (a link) if it is not there yet; returns its index.
+  /// Adds a body (a link) if it is not there yet; returns its index. Throws InputError (at the
+  /// file) for an empty name or one that is not printable text.
   int body(const std::string& name);
   /// Makes `name` the ground (the world or root link).
   void set_ground(const std::string& name);

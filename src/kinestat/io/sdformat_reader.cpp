@@ -123,6 +123,9 @@ class SdformatReader {
   void read_model(NetworkBuilder& builder, const sdf::Model& model, const SdfFrame& placed, const std::string& scope) {
     for (std::uint64_t l = 0; l < model.LinkCount(); ++l) builder.body(scope + model.LinkByIndex(l)->Name());
     if (ground_candidate_.empty() && !model.CanonicalLinkName().empty()) ground_candidate_ = scope + model.CanonicalLinkName();
+    // SDFormat's default canonical link is the first one; libsdformat leaves the name empty for
+    // some documents it converted from old versions.
+    if (ground_candidate_.empty() && model.LinkCount() > 0) ground_candidate_ = scope + model.LinkByIndex(0)->Name();
     for (std::uint64_t j = 0; j < model.JointCount(); ++j) read_joint(builder, *model.JointByIndex(j), placed, scope);
     for (std::uint64_t m = 0; m < model.ModelCount(); ++m) {
       const sdf::Model* nested = model.ModelByIndex(m);
