@@ -14,6 +14,7 @@
 
 #include "kinestat/design/sparse_network_verdict.hpp"
 #include "kinestat/network/sparse_network.hpp"
+#include "kinestat/tolerances.hpp"
 #include "support/cli_run.hpp"
 
 namespace kinestat::design {
@@ -254,6 +255,14 @@ TEST(SparseNetworkVerdictCli, LargeNetworkTakesTheSparsePathWithTheVerdictFirst)
   EXPECT_EQ(where_names(v, "redundant_constraints").size(), static_cast<std::size_t>(n));
   EXPECT_EQ(j["basis_vectors"]["self_stresses"], 3);
   EXPECT_LT(j["basis_vectors"]["residual"].get<double>(), 1e-10);
+  // The rank evidence of the kept block: σ_min(R11) at most the smallest kept |R_ii|, and the
+  // supports decided at no less than 2²²ε of the largest entry.
+  const auto& evidence = j["rank_evidence"]["body_twist"];
+  ASSERT_TRUE(evidence.contains("r11_smallest_singular_value"));
+  EXPECT_GT(evidence["r11_smallest_singular_value"].get<double>(), 0.0);
+  EXPECT_LE(evidence["r11_smallest_singular_value"].get<double>(), evidence["smallest_kept"].get<double>() * (1 + 1e-12));
+  EXPECT_GE(j["support_zero"]["self_stresses"].get<double>(), kSupportZero);
+  EXPECT_GE(j["support_zero"]["motions"].get<double>(), kSupportZero);
   // The text report leads with the same verdict.
   const auto text = testing::run_cli("analyze " + file);
   EXPECT_EQ(text.out.rfind("Verdict: Not exactly constrained: 3 redundant constraints (397 intended motions).\n", 0), 0U) << text.out.substr(0, 200);

@@ -239,9 +239,8 @@ SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances&
       if (k.rows() > qr.rank() && actions.norm() > 0) record_stress_support(kt, actions, r, stressed, r.stress_support_zero);
     }
     // The rank is Kᵀ's factor's; when K's factor agrees and its live block is better
-    // conditioned, its evidence stands for the decision.
-    const auto kept = [](const linalg::RankDecision& decision) { return std::min(decision.smallest_kept, decision.factor_smallest); };
-    if (r.motion_factor_rank.rank == r.rank.rank && kept(r.motion_factor_rank) > kept(r.rank)) {
+    // conditioned (the two share σ_max, so the larger distance), its evidence stands for it.
+    if (r.motion_factor_rank.rank == r.rank.rank && r.motion_factor_rank.distance() > r.rank.distance()) {
       r.rank.smallest_kept = r.motion_factor_rank.smallest_kept;
       r.rank.factor_smallest = r.motion_factor_rank.factor_smallest;
     }
