@@ -116,6 +116,46 @@ TEST(SparseNetwork, PairFreedomsOfDaviesTwoCircuit) {
   EXPECT_THROW((void)sparse_pair_freedoms(model, without, {{0, 1}}, false), ModelError);
 }
 
+// A pair rank counts only what the generic vectors resolve: hand-made generic vectors in which
+// the pair of coupling 0 has one clear relative twist (1) and one of 10⁻⁸ of the whole, and
+// coupling 0 one clear action magnitude and one of 10⁻⁸ (the largest entry being 1). At the
+// default level (kSupportZero ≈ 9.3·10⁻¹⁰ of the largest entry, above 2¹⁹ε ≈ 1.2·10⁻¹⁰ of the
+// whole) both count: fij = cij = 2. When the factors are accurate only to 10⁻⁶ (support_zero of
+// an ill-conditioned kept block) the 10⁻⁸ is rounding: fij = cij = 1.
+TEST(SparseNetwork, PairRanksCountOnlyWhatTheFactorsResolve) {
+  const auto file = io::YamlFile::load(std::string(KINESTAT_SOURCE_DIR) + "/examples/davies-2-circuit.yaml");
+  const Model model = io::read_network_model(file).model;
+  SparseNetworkResult r = analyse_network_sparse(model, {}, 0, true);
+  const Coupling& coupling = model.couplings.front();
+  const int moving = coupling.to != r.ground ? coupling.to : coupling.from;
+  const Eigen::Index column = (moving < r.ground ? moving : moving - 1) * r.d;
+  r.generic_motions.setZero();
+  r.generic_motions(column, 0) = 1.0;
+  r.generic_motions(column + 1, 1) = 1e-8;
+  r.generic_stresses.setZero();
+  std::vector<Eigen::Index> rows;
+  for (std::size_t row = 0; row < r.row_coupling.size(); ++row)
+    if (r.row_coupling[row] == 0) rows.push_back(static_cast<Eigen::Index>(row));
+  ASSERT_EQ(rows.size(), 3U);  // coupling A is spherical: three unit actions
+  r.generic_stresses(rows[0], 0) = 1.0;
+  r.generic_stresses(rows[1], 1) = 1e-8;
+  auto row_of_coupling_0 = [&model](const SparseNetworkResult& result) {
+    const auto table = sparse_pair_freedoms(model, result, {{model.couplings.front().from, model.couplings.front().to}}, false);
+    for (const auto& row : table)
+      if (row.coupling == 0) return row;
+    ADD_FAILURE() << "no row for coupling 0";
+    return SparsePairFreedom{};
+  };
+  r.motion_support_zero = r.stress_support_zero = kSupportZero;
+  const SparsePairFreedom fine = row_of_coupling_0(r);
+  EXPECT_EQ(fine.fij, 2);
+  EXPECT_EQ(fine.cij, 2);
+  r.motion_support_zero = r.stress_support_zero = 1e-6;
+  const SparsePairFreedom coarse = row_of_coupling_0(r);
+  EXPECT_EQ(coarse.fij, 1);
+  EXPECT_EQ(coarse.cij, 1);
+}
+
 TEST(SparseNetwork, SameAnswersAsDaviesOnRandomSpatialNetworks) {
   for (int seed = 0; seed < 60; ++seed) {
     std::mt19937 rng(static_cast<unsigned>(5000 + seed));

@@ -15,19 +15,27 @@ namespace {
 
 using Index = Eigen::Index;
 
-// The rank of `block` relative to `reference` (the size of the whole generic matrix), as
-// forms_rank decides pair ranks on the dense path.
-linalg::RankDecision block_rank(const Eigen::MatrixXd& block, double reference, double relative) {
+// The rank of `block` with singular values at or below `level` (absolute) dropped.
+linalg::RankDecision block_rank(const Eigen::MatrixXd& block, double level) {
   linalg::RankDecision d;
   const double largest = block.norm();
-  if (block.size() == 0 || largest <= relative * reference) {
-    d.threshold = d.rounding_level = relative * reference;
+  if (block.size() == 0 || largest <= level) {
+    d.threshold = d.rounding_level = level;
     d.largest = d.largest_dropped = largest;
     return d;
   }
   linalg::RankTolerance tolerance;
-  tolerance.relative = relative * reference / largest;
+  tolerance.relative = level / largest;
   return linalg::numerical_rank(block, tolerance);
+}
+
+// The level below which a pair block of the generic vectors `generic` decides nothing:
+// `relative` of the whole matrix's size (as forms_rank decides pair ranks on the dense path), or
+// the factor's attainable accuracy `support_zero` of its largest entry when that is larger (the
+// level at which the supports of the same factor are decided; smaller entries are rounding).
+double pair_level(const Eigen::MatrixXd& generic, double relative, double support_zero) {
+  if (generic.size() == 0) return 0.0;
+  return std::max(relative * generic.norm(), support_zero * generic.cwiseAbs().maxCoeff());
 }
 
 }  // namespace
@@ -71,13 +79,14 @@ std::vector<SparsePairFreedom> sparse_pair_freedoms(const Model& model, const Sp
     }
     if (it != direct.end()) it->second.push_back(static_cast<int>(e));
   }
-  const double motion_reference = r.generic_motions.norm(), action_reference = r.generic_stresses.norm();
+  const double motion_level = pair_level(r.generic_motions, tolerances.pair_rank, r.motion_support_zero);
+  const double action_level = pair_level(r.generic_stresses, tolerances.pair_rank, r.stress_support_zero);
   std::vector<SparsePairFreedom> rows;
   for (const auto& p : order) {
     SparsePairFreedom pair;
     pair.body_i = p.first;
     pair.body_j = p.second;
-    pair.motion_rank = block_rank(relative_twists(p.first, p.second), motion_reference, tolerances.pair_rank);
+    pair.motion_rank = block_rank(relative_twists(p.first, p.second), motion_level);
     pair.fij = static_cast<int>(pair.motion_rank.rank);
     const auto& couplings = direct[p];
     if (couplings.empty()) {
@@ -91,7 +100,7 @@ std::vector<SparsePairFreedom> sparse_pair_freedoms(const Model& model, const Sp
       const Index first = first_row[static_cast<std::size_t>(e)], count = first_row[static_cast<std::size_t>(e) + 1] - first;
       row.c = static_cast<int>(count);
       row.f = static_cast<int>(d - count);
-      row.action_rank = block_rank(r.generic_stresses.middleRows(first, count), action_reference, tolerances.pair_rank);
+      row.action_rank = block_rank(r.generic_stresses.middleRows(first, count), action_level);
       row.cij = static_cast<int>(row.action_rank.rank);
       rows.push_back(row);
     }

@@ -32,7 +32,10 @@ struct SparsePairFreedom {
 /// the order given, then, with `coupled` set, one row for every coupling (its pair) not already
 /// listed, in coupling order. Needs `result` from analyse_network_sparse with `pair_vectors`
 /// set. Ranks relative to the size of the whole generic matrix (tolerances.pair_rank), as the
-/// dense path relates pair ranks to the whole network's forms. Throws ModelError.
+/// dense path relates pair ranks to the whole network's forms, or at the factor's attainable
+/// accuracy (`result.motion_support_zero`, `result.stress_support_zero`) of the largest entry
+/// when that is higher: the level at which the supports are decided, below which entries of the
+/// generic vectors are rounding, not freedom. Throws ModelError.
 std::vector<SparsePairFreedom> sparse_pair_freedoms(const Model& model, const SparseNetworkResult& result,
                                                     const std::vector<std::pair<int, int>>& pairs, bool coupled,
                                                     const Tolerances& tolerances = {});
