@@ -353,8 +353,6 @@ TEST(SdformatReader, ErrorsComeWithTheLine) {
   }
 }
 
-// libsdformat's version parser throws where the exception cannot be caught (std::terminate;
-// found by fuzz_sdformat_file with "1.M-Q"): such versions are refused before it runs.
 // Found by the long fuzz run of session 10: an old-version document for which libsdformat
 // reports no canonical link. The ground was then a body named "", which the YAML writer wrote
 // and the YAML reader refused. SDFormat's default canonical link is the first: 'a'.
@@ -377,6 +375,8 @@ TEST(NetworkBuilder, AnEmptyLinkNameIsAnInputError) {
   EXPECT_EQ(builder.body("a"), 0);
 }
 
+// libsdformat's version parser throws where the exception cannot be caught (std::terminate;
+// found by fuzz_sdformat_file with "1.M-Q"): such versions are refused before it runs.
 TEST(SdformatReader, AVersionThatIsNotNumbersIsAnInputErrorNotACrash) {
   if (!sdformat_reader_built_in()) GTEST_SKIP();
   for (const std::string version : {"1.M-Q", "1.9x", "", "1..9", "99999999.1"}) {
