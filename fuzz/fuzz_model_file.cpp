@@ -82,7 +82,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     } else if (kind == "framework") {
       const auto model = kinestat::io::read_framework_model(file);
       if (model.elements.size() <= kMaxAnalysedElements) {
-        const auto analysis = kinestat::framework::analyse_framework(model);
+        kinestat::framework::AnalysisOptions analysis_options;
+        analysis_options.trace_steps = kFuzzTraceSteps;  // as the network traces: same code, fewer steps
+        const auto analysis = kinestat::framework::analyse_framework(model, analysis_options);
         const auto verdict = kinestat::design::framework_verdict(model, analysis);
         (void)kinestat::report::framework_report_text(model, analysis, &verdict);
         (void)kinestat::report::framework_report_json(model, analysis, &verdict).dump();
