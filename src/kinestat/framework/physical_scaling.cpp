@@ -29,6 +29,9 @@ linalg::Equilibration physical_scaling(const FrameworkModel& model, const Framew
     column_position[static_cast<std::size_t>(columns[j])] = static_cast<Eigen::Index>(j);
 
   std::vector<linalg::EntryMagnitude> pattern;
+  // A bar's row has the translations of its two nodes: exact for trusses, a start for beams
+  // (growing it by doubling cost 5 % of a 10^5-bar command).
+  pattern.reserve(rows.size() * 2 * static_cast<std::size_t>(model.dimension));
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const DeformationRef& d = indexing.deformations[static_cast<std::size_t>(rows[i])];
     const Element& element = model.elements[d.element];
