@@ -1,6 +1,6 @@
 # Install rules and the CMake package: `cmake --install build/release --prefix P` gives
 #   P/lib/libkinestat.a, P/include/kinestat/<layer>/*.hpp, P/include/kinestat/kinestat.hpp,
-#   P/bin/kinestat, P/lib/cmake/kinestat/ (kinestatConfig.cmake, version file, targets),
+#   P/bin/kinestat (and P/bin/kinestat-mpi with the distributed backend), P/lib/cmake/kinestat/ (kinestatConfig.cmake, version file, targets),
 # so that a project finds it with find_package(kinestat) and links kinestat::kinestat.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
@@ -13,6 +13,10 @@ install(TARGETS kinestat kinestat_suitesparse EXPORT kinestatTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         FILE_SET HEADERS DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(TARGETS kinestat_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# `kinestat analyze --backend petsc` runs kinestat-mpi from kinestat's own folder.
+if(TARGET kinestat_mpi_cli)
+  install(TARGETS kinestat_mpi_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+endif()
 install(EXPORT kinestatTargets NAMESPACE kinestat:: DESTINATION ${KINESTAT_CMAKE_DIR})
 
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/kinestatConfig.cmake.in

@@ -21,6 +21,18 @@ echo "$out"
 [[ "$out" == *"modes = 1, self-stresses = 1"* ]]
 if "$work/consumer/examples_cpp/analyse" /nonexistent.yaml 2>"$work/err"; then exit 1; fi
 grep -q "/nonexistent.yaml" "$work/err"
+# The distributed backend, when built: the installed kinestat hands `--backend petsc` over to
+# the installed kinestat-mpi beside it (OpenMPI's settings for root and few cores, as in CI).
+if [[ -x "$work/prefix/bin/kinestat-mpi" ]] && command -v mpirun >/dev/null; then
+  OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 \
+    OMPI_MCA_btl_vader_single_copy_mechanism=none OPENBLAS_NUM_THREADS=1 \
+    mpirun -n 1 "$work/prefix/bin/kinestat" analyze --backend petsc examples/davies-2-circuit.yaml --json > "$work/petsc.json"
+  /usr/bin/python3 -c "
+import json, sys
+r = json.load(open(sys.argv[1]))
+assert (r['FN'], r['CN'], r['backend']['processes']) == (3, 2, 1), r
+print('installed kinestat-mpi: FN = 3, CN = 2 on 1 process')" "$work/petsc.json"
+fi
 # The Python package, when built: importable from the prefix with Debian's interpreter.
 for site in "$work"/prefix/lib/python3*/dist-packages; do
   [[ -d "$site/kinestat" ]] || continue

@@ -4,7 +4,9 @@
 # tests/support/lattice_generator.hpp), with --vectors 3 against the serial path's whole null
 # spaces (--vectors 70) by projection; on a generated 1 000-coupling ladder network
 # (bench/ladder_network.py) against the serial sparse path; and its errors: a structure model,
-# --dense-limit and a missing file are refused with exit 2 by every process.
+# --dense-limit and a missing file are refused with exit 2 by every process. `kinestat` hands the
+# command over to the kinestat-mpi beside it, and `kinestat` that has none (copied alone) says so
+# with exit 2; the serial commands of that copy still run.
 # Usage: check_cli.sh MPIRUN KINESTAT SOURCE_DIR WORK_DIR
 set -eu
 mpirun=$1 kinestat=$2 source=$3 work=$4
@@ -113,4 +115,12 @@ status=0
 "$mpirun" -n 2 "$kinestat" analyze --backend petsc "$work/missing.yaml" 2> "$work/err" || status=$?
 [ "$status" -eq 2 ] || { echo "missing file: exit $status, expected 2"; cat "$work/err"; exit 1; }
 grep -q "missing.yaml" "$work/err"
+mkdir -p "$work/alone"
+cp "$kinestat" "$work/alone/kinestat"
+status=0
+"$work/alone/kinestat" analyze --backend petsc "$model" 2> "$work/err" || status=$?
+[ "$status" -eq 2 ] || { echo "no kinestat-mpi: exit $status, expected 2"; cat "$work/err"; exit 1; }
+grep -q "alone/kinestat-mpi.*cannot be started (No such file or directory)" "$work/err"
+"$work/alone/kinestat" analyze "$source/examples/davies-2-circuit.yaml" --json > "$work/alone.json"
+/usr/bin/python3 -c "import json, sys; r = json.load(open(sys.argv[1])); assert (r['FN'], r['CN']) == (3, 2), r" "$work/alone.json"
 echo "ok"

@@ -1,9 +1,10 @@
 // `kinestat analyze --backend petsc FILE` (run under mpirun): a framework's or a coupling
 // network's counts (and with --vectors the first null vectors) decided by the distributed
 // backend (src/kinestat/distributed, docs/scaling.md). Rank 0 reads the model, builds D(c) or K
-// and writes the report; every process takes part in the factorisation. Without the
-// backend built, the option is refused. Nothing here runs, and MPI is never initialised, unless
-// `--backend petsc` is given.
+// and writes the report; every process takes part in the factorisation. Built into
+// `kinestat-mpi` only, to which `kinestat` hands such a command over (petsc_handover.cpp), so
+// that no other command loads PETSc, SLEPc and MPI. Nothing here runs, and MPI is never
+// initialised, unless `--backend petsc` is given.
 
 #include <fmt/format.h>
 
@@ -14,7 +15,6 @@
 #include "kinestat/io/framework_reader.hpp"
 #include "kinestat/io/input_error.hpp"
 
-#if KINESTAT_HAVE_PETSC
 #include "kinestat/design/framework_verdict.hpp"
 #include "kinestat/design/sparse_network_verdict.hpp"
 #include "kinestat/distributed/framework_rank.hpp"
@@ -25,18 +25,8 @@
 #include "kinestat/report/framework_report.hpp"
 #include "kinestat/report/json_text.hpp"
 #include "kinestat/report/network_report.hpp"
-#endif
 
 namespace kinestat::cli {
-
-#if !KINESTAT_HAVE_PETSC
-
-int run_petsc_analysis(const CommonOptions&) {
-  throw Error("--backend petsc needs the distributed backend, and this kinestat was built without it "
-              "(install petsc-dev slepc-dev libopenmpi-dev and configure with -DKINESTAT_PETSC=ON)");
-}
-
-#else
 
 namespace {
 
@@ -293,7 +283,5 @@ int run_petsc_analysis(const CommonOptions& options) {
   }
   return 0;
 }
-
-#endif
 
 }  // namespace kinestat::cli
