@@ -34,6 +34,12 @@ struct CommonOptions {
 /// 2 bad input or usage, 3 internal error or out of memory.
 int run(int argc, const char* const* argv);
 
+/// When an argument names a regular file of 1 MiB or more and GLIBC_TUNABLES does not name
+/// glibc.malloc.hugetlb, starts this program again (execv of /proc/self/exe, same arguments)
+/// with glibc.malloc.hugetlb=1 added, so that its heap is on transparent huge pages
+/// (huge_pages.cpp); otherwise, or when that fails, returns.
+void restart_on_huge_pages_for_large_input(int argc, char** argv);
+
 /// Writes `text` to standard output, or atomically to `output_path` when it is set.
 void emit(const CommonOptions& options, const std::string& text);
 

@@ -1,4 +1,7 @@
 // kinestat: how free and how constrained is a mechanism, a compliant mechanism or a structure?
 #include "cli/commands.hpp"
 
-int main(int argc, char** argv) { return kinestat::cli::run(argc, argv); }
+int main(int argc, char** argv) {
+  kinestat::cli::restart_on_huge_pages_for_large_input(argc, argv);
+  return kinestat::cli::run(argc, argv);
+}

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -37,17 +38,19 @@ std::filesystem::path temp_dir() {
   return dir;
 }
 
-CliRun run(const std::string& arguments) {
+// Runs a whole shell command line (for commands that set the environment).
+CliRun run_shell(const std::string& command_line) {
   const auto dir = temp_dir();
   const auto out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const std::string command = std::string(KINESTAT_CLI) + " " + arguments + " >" + out.string() + " 2>" + err.string();
-  const int status = std::system(command.c_str());
+  const int status = std::system((command_line + " >" + out.string() + " 2>" + err.string()).c_str());
   CliRun result;
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   result.out = slurp(out);
   result.err = slurp(err);
   return result;
 }
+
+CliRun run(const std::string& arguments) { return run_shell(std::string(KINESTAT_CLI) + " " + arguments); }
 
 std::string example(const std::string& name) { return std::string(KINESTAT_SOURCE_DIR) + "/examples/" + name; }
 
@@ -69,6 +72,44 @@ TEST(FrameworkCli, Truss12JsonHasTheRequiredKeysAndValues) {
   EXPECT_EQ(j["stresses"][0]["resultants"].size(), 12u);
   EXPECT_NEAR(std::abs(j["stresses"][0]["resultants"][0]["value"].get<double>()), std::sqrt(3.0) / 6, 1e-9);
   EXPECT_EQ(j["releases"].size(), 1u);
+}
+
+// glibc's dynamic loader prints its statistics once for each program it starts: the count of
+// them tells whether the command started itself again on huge pages (src/cli/huge_pages.cpp).
+int program_starts(const std::string& standard_error) {
+  int starts = 0;
+  for (std::size_t at = standard_error.find("total startup time"); at != std::string::npos;
+       at = standard_error.find("total startup time", at + 1))
+    ++starts;
+  return starts;
+}
+
+TEST(FrameworkCli, LargeInputRestartsOnHugePagesWithTheSameAnswer) {
+  // truss-12 with over 1 MiB of comments: the restart's threshold, and the seed's answer.
+  const auto path = temp_dir() / "truss-12-padded.yaml";
+  {
+    std::ofstream out(path);
+    out << slurp(example("truss-12.yaml")) << '\n';
+    for (int line = 0; line < 1100; ++line) out << "# " << std::string(1000, 'x') << '\n';
+  }
+  ASSERT_GE(std::filesystem::file_size(path), std::uintmax_t{1} << 20);
+  const std::string analyse = " " + std::string(KINESTAT_CLI) + " analyze --json " + path.string();
+  const CliRun restarted = run_shell("env -u GLIBC_TUNABLES LD_DEBUG=statistics" + analyse);
+  const CliRun kept = run_shell("env GLIBC_TUNABLES=glibc.malloc.hugetlb=0 LD_DEBUG=statistics" + analyse);
+  const CliRun other = run_shell("env GLIBC_TUNABLES=glibc.malloc.tcache_count=0 LD_DEBUG=statistics" + analyse);
+  const CliRun small = run_shell("env -u GLIBC_TUNABLES LD_DEBUG=statistics " + std::string(KINESTAT_CLI) +
+                                 " analyze --json " + example("truss-12.yaml"));
+  for (const CliRun* r : {&restarted, &kept, &other, &small}) ASSERT_EQ(r->exit_code, 0) << r->err;
+  EXPECT_EQ(program_starts(restarted.err), 2);
+  EXPECT_EQ(program_starts(kept.err), 1);  // the user's own hugetlb setting is left alone
+  EXPECT_EQ(program_starts(other.err), 2);  // other tunables are kept and the setting added
+  EXPECT_EQ(program_starts(small.err), 1);
+  EXPECT_EQ(restarted.out, kept.out);
+  EXPECT_EQ(other.out, kept.out);
+  const auto j = nlohmann::json::parse(restarted.out);
+  EXPECT_EQ(j["rank"], 11);
+  EXPECT_EQ(j["mechanisms"], 1);
+  EXPECT_EQ(j["self_stresses"], 1);
 }
 
 TEST(FrameworkCli, JsonIsByteIdenticalBetweenRuns) {

@@ -4,6 +4,11 @@
 #include <mutex>
 
 extern "C" void openblas_set_num_threads(int num_threads);
+// OpenBLAS (pthreads build) starts its worker threads when it is loaded, from
+// OPENBLAS_NUM_THREADS or the number of cores, and an idle worker spins before it sleeps;
+// lowering the count later does not stop them. This ends them (with one thread OpenBLAS never
+// dispatches to the server, and it restarts it when a count is set again).
+extern "C" int blas_thread_shutdown_(void);
 
 namespace kinestat::linalg {
 
@@ -16,6 +21,8 @@ void pin_blas_threads() {
       if (requested > 0) threads = requested;
     }
     openblas_set_num_threads(threads);
+    // After the count: setting it restarts a server that was shut down.
+    if (threads == 1) blas_thread_shutdown_();
   });
 }
 
