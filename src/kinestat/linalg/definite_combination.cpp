@@ -70,15 +70,19 @@ std::pair<double, Eigen::VectorXd> most_positive_combination(const std::vector<E
     if (value > best) best = value, best_c = c;
   }
   Eigen::VectorXd c = best_c;
-  for (int iteration = 0; iteration < 300 && s > 1; ++iteration) {
-    const Eigen::VectorXd v = smallest_eigen(forms, c).second;
+  // The eigenpair at c serves twice: its value for the best so far, its vector for the step
+  // from c (one eigensolve a step instead of two).
+  if (s < 2) return {best, best_c};
+  std::pair<double, Eigen::VectorXd> at_c = smallest_eigen(forms, c);
+  for (int iteration = 0; iteration < 300; ++iteration) {
+    const Eigen::VectorXd& v = at_c.second;
     Eigen::VectorXd gradient(s);
     for (Eigen::Index k = 0; k < s; ++k) gradient(k) = v.dot(forms[static_cast<std::size_t>(k)] * v);
     gradient -= c * c.dot(gradient);  // tangent to the sphere
     if (gradient.norm() == 0.0) break;
     c = (c + gradient.normalized() * (0.2 / (1.0 + iteration))).normalized();
-    const double value = smallest_eigen(forms, c).first;
-    if (value > best) best = value, best_c = c;
+    at_c = smallest_eigen(forms, c);
+    if (at_c.first > best) best = at_c.first, best_c = c;
   }
   return {best, best_c};
 }
