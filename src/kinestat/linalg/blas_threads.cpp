@@ -7,8 +7,9 @@ extern "C" void openblas_set_num_threads(int num_threads);
 // OpenBLAS (pthreads build) starts its worker threads when it is loaded, from
 // OPENBLAS_NUM_THREADS or the number of cores, and an idle worker spins before it sleeps;
 // lowering the count later does not stop them. This ends them (with one thread OpenBLAS never
-// dispatches to the server, and it restarts it when a count is set again).
-extern "C" int blas_thread_shutdown_(void);
+// dispatches to the server, and it restarts it when a count is set again). Weak: OpenBLAS's
+// serial and OpenMP builds, which Debian offers as alternatives, may not define it.
+extern "C" int blas_thread_shutdown_(void) __attribute__((weak));
 
 namespace kinestat::linalg {
 
@@ -22,7 +23,7 @@ void pin_blas_threads() {
     }
     openblas_set_num_threads(threads);
     // After the count: setting it restarts a server that was shut down.
-    if (threads == 1) blas_thread_shutdown_();
+    if (threads == 1 && blas_thread_shutdown_ != nullptr) blas_thread_shutdown_();
   });
 }
 
