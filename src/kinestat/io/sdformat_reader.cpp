@@ -8,8 +8,11 @@
 #include <sdf/JointAxis.hh>
 #include <sdf/Link.hh>
 #include <sdf/Model.hh>
+#include <sdf/ParserConfig.hh>
 #include <sdf/Root.hh>
+#include <sdf/SDFImpl.hh>
 #include <sdf/World.hh>
+#include <sdf/parser.hh>
 
 #include <Eigen/Geometry>
 
@@ -257,26 +260,76 @@ void check_xml(const std::string& path, const std::string& text) {
   if (xml_root_name(text) != "sdf") throw InputError({path, 1, 1}, "an SDFormat file has an <sdf> root element");
 }
 
-ImportedNetwork read_sdformat(const std::string& path) {
-  check_xml(path, read_text_file(path));
+namespace {
+
+/// An empty document that knows the SDFormat description (root.sdf and all it includes).
+/// libsdformat's Root::Load and LoadSdfString parse that description again for every document,
+/// and a deep Clone costs as much, which is most of the time a small model takes (and of
+/// fuzz_sdformat_file's). The description is parsed once; each document gets its own root
+/// element that shares the child descriptions, which reading only clones and never changes.
+sdf::SDFPtr described_document() {
+  static const sdf::ElementPtr description = [] {
+    const auto document = std::make_shared<sdf::SDF>();
+    sdf::init(document);
+    return document->Root();
+  }();
+  auto root = std::make_shared<sdf::Element>();
+  root->SetName(description->GetName());
+  root->SetRequired(description->GetRequired());
+  root->SetDescription(description->GetDescription());
+  root->SetCopyChildren(description->GetCopyChildren());
+  root->SetReferenceSDF(description->ReferenceSDF());
+  for (const sdf::ParamPtr& attribute : description->GetAttributes())
+    root->AddAttribute(attribute->GetKey(), attribute->GetTypeName(), attribute->GetDefaultAsString(),
+                       attribute->GetRequired(), attribute->GetDescription());
+  for (std::size_t i = 0; i < description->GetElementDescriptionCount(); ++i)
+    root->AddElementDescription(description->GetElementDescription(static_cast<unsigned>(i)));
+  auto document = std::make_shared<sdf::SDF>();
+  document->Root(root);
+  return document;
+}
+
+/// Reads a document into a described copy with `read_into` (libsdformat's readFile or
+/// readString), then builds the DOM: what Root::Load(path) and Root::LoadSdfString do, with
+/// the same errors in the same order.
+template <class ReadInto>
+ImportedNetwork load(const std::string& path, ReadInto read_into, const sdf::Error& unreadable) {
   sdf::Root root;
   sdf::Errors errors;
   {
     const MutedStandardError muted;
-    errors = root.Load(path);
+    const sdf::ParserConfig& config = sdf::ParserConfig::GlobalConfig();
+    const sdf::SDFPtr document = described_document();
+    if (read_into(config, document, errors)) {
+      const sdf::Errors built = root.Load(document, config);
+      errors.insert(errors.end(), built.begin(), built.end());
+    } else {
+      errors.push_back(unreadable);
+    }
   }
   return SdformatReader(path).read(root, errors);
 }
 
+}  // namespace
+
+ImportedNetwork read_sdformat(const std::string& path) {
+  check_xml(path, read_text_file(path));
+  return load(
+      path,
+      [&](const sdf::ParserConfig& config, const sdf::SDFPtr& document, sdf::Errors& errors) {
+        return sdf::readFile(path, config, document, errors);
+      },
+      sdf::Error(sdf::ErrorCode::FILE_READ, "Unable to read file:" + path));
+}
+
 ImportedNetwork parse_sdformat(const std::string& path, const std::string& text) {
   check_xml(path, text);
-  sdf::Root root;
-  sdf::Errors errors;
-  {
-    const MutedStandardError muted;
-    errors = root.LoadSdfString(text);
-  }
-  return SdformatReader(path).read(root, errors);
+  return load(
+      path,
+      [&](const sdf::ParserConfig& config, const sdf::SDFPtr& document, sdf::Errors& errors) {
+        return sdf::readString(text, config, document, errors);
+      },
+      sdf::Error(sdf::ErrorCode::STRING_READ, "Unable to read SDF string"));
 }
 
 #else
