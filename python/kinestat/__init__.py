@@ -30,6 +30,12 @@ __all__ = [
 ]
 
 
+def formats():
+    """The model file formats this build reads, by name: "kinestat" and "SPACAR" always,
+    "URDF", "SDFormat" and "MJCF" when kinestat was built with their libraries."""
+    return list(_core.formats())
+
+
 def html_built_in():
     """True when the HTML report viewer (three.js) was embedded at build time."""
     return _core.html_built_in()
@@ -51,6 +57,13 @@ class _Result:
     def path(self):
         """The model file (or the name given to a model built in code)."""
         return self._analysed.path
+
+    @property
+    def notices(self):
+        """What the reader of a SPACAR, URDF, SDFormat or MJCF file ignored or assumed, one
+        line each (``kinestat analyze`` prints them to standard error); empty for kinestat's
+        own files."""
+        return list(self._analysed.notices)
 
     def to_dict(self):
         """The command's JSON report (``kinestat analyze --json``, ``kinestat structure --json``)
@@ -253,6 +266,10 @@ def _source(model):
 
 def analyze(model, *, tolerance=None, arithmetic="auto", primary=None):
     """Analyses a model file (path) or a :class:`Framework` / :class:`Network` built in code.
+    Files are read in their format, as ``kinestat analyze`` reads them (docs/formats.md):
+    kinestat YAML / JSON, SPACAR ``.dat`` (a framework), URDF ``.urdf``, SDFormat ``.sdf`` /
+    ``.world`` and MJCF (networks; ``.xml`` by its root element); ``notices`` says what a
+    reader of another program's format ignored.
 
     ``tolerance``: relative rank tolerance (as ``--tolerance``); ``arithmetic`` for networks:
     "auto", "exact" or "float"; ``primary``: the networks' primary variables. A model of kind

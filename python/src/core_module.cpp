@@ -343,6 +343,7 @@ PYBIND11_MODULE(_core, m) {
   py::class_<Analysed, std::shared_ptr<Analysed>>(m, "Analysed")
       .def_property_readonly("kind", [](const Analysed& a) { return std::string(io::kind_name(a.file.kind)); })
       .def_property_readonly("path", [](const Analysed& a) { return a.file.path; })
+      .def_property_readonly("notices", [](const Analysed& a) { return a.file.notices; })
       .def("json", &json_report, "The JSON report of `kinestat analyze --json` (or `structure --json`)")
       .def("html", &html_report, "The self-contained HTML report; empty when the viewer is not built in")
       .def("svg", &svg, py::arg("what"), py::arg("mode") = 1, py::arg("stress") = 1)
@@ -435,4 +436,11 @@ PYBIND11_MODULE(_core, m) {
   m.def("sweep_lines", &sweep_lines, py::arg("spec"), py::arg("index") = 0, py::arg("count") = 1, py::arg("tolerance") = std::nullopt,
         py::arg("full") = false, "The JSON lines of a design sweep (one shard of it) and how many variants failed");
   m.def("html_built_in", &report::html_report_built_in);
+  m.def("formats", [] {
+    std::vector<std::string> names;
+    for (const io::ModelFormat format : {io::ModelFormat::kinestat, io::ModelFormat::spacar, io::ModelFormat::urdf,
+                                         io::ModelFormat::sdformat, io::ModelFormat::mjcf})
+      if (io::format_built_in(format)) names.emplace_back(io::format_name(format));
+    return names;
+  }, "The model file formats this kinestat reads");
 }

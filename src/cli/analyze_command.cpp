@@ -32,10 +32,10 @@ void register_analyze(CLI::App& app, Action& action) {
   command->callback([options, &action] {
     action = [options] {
       if (options->backend == "petsc") return run_petsc_analysis(*options);
-      const InputFormat format = input_format(options->model_path);
-      if (format == InputFormat::spacar) return run_framework_analysis(*options, read_spacar_model(options->model_path), options->model_path);
-      if (format != InputFormat::kinestat)
-        return run_network_analysis(*options, read_imported_network(options->model_path, format), options->model_path);
+      const io::ModelFormat format = io::model_format(options->model_path);
+      if (format == io::ModelFormat::spacar) return run_framework_analysis(*options, read_spacar_model(options->model_path), options->model_path);
+      if (format != io::ModelFormat::kinestat)
+        return run_network_analysis(*options, read_imported_network(options->model_path), options->model_path);
       // The parsed tree is let go once the model is read: it is not needed by the analysis
       // (about 0.2 GB for 10^6 bars).
       std::optional<io::YamlFile> model(io::YamlFile::load(options->model_path));

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "kinestat/framework/framework_model.hpp"
+#include "kinestat/io/model_format.hpp"
 #include "kinestat/io/network_reader.hpp"
 #include "kinestat/io/yaml_support.hpp"
 #include "kinestat/report/scene.hpp"
@@ -52,15 +53,10 @@ void register_convert(CLI::App& app, Action& action);
 void register_move(CLI::App& app, Action& action);
 void register_sweep(CLI::App& app, Action& action);
 
-/// The format of a model file, from its extension (docs/formats.md): `.dat` SPACAR, `.urdf`
-/// URDF, `.sdf` / `.world` SDFormat, `.xml` by its root element (<mujoco> MJCF, <robot> URDF,
-/// <sdf> SDFormat); anything else kinestat YAML / JSON.
-enum class InputFormat { kinestat, spacar, urdf, sdformat, mjcf };
-InputFormat input_format(const std::string& path);
 /// Reads a SPACAR file; its notices (what was ignored) go to standard error, one line each.
 framework::FrameworkModel read_spacar_model(const std::string& path);
 /// Reads a URDF, SDFormat or MJCF file; notices go to standard error, one line each.
-io::LoadedNetwork read_imported_network(const std::string& path, InputFormat format);
+io::LoadedNetwork read_imported_network(const std::string& path);
 
 /// A model of any kind, analysed and turned into a scene for `draw` and `report`.
 struct LoadedScene {

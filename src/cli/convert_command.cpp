@@ -31,7 +31,7 @@ std::string extension(const std::string& path) {
 }
 
 framework::FrameworkModel read_framework_input(const std::string& path) {
-  if (input_format(path) == InputFormat::spacar) return read_spacar_model(path);
+  if (io::model_format(path) == io::ModelFormat::spacar) return read_spacar_model(path);
   const io::YamlFile file = io::YamlFile::load(path);
   const std::string kind = io::model_kind(file);
   if (kind != "framework")
@@ -44,14 +44,14 @@ int run(const ConvertOptions& options) {
   const std::string out = extension(options.output);
   if (out != "dat" && out != "yaml" && out != "yml")
     throw io::InputError({options.output, 0, 0}, "unknown output format: name the output file .dat (SPACAR) or .yaml (kinestat)");
-  const InputFormat format = input_format(options.input);
+  const io::ModelFormat format = io::model_format(options.input);
   const std::vector<std::string> comments = {"converted by kinestat from " + options.input,
                                              "see docs/formats.md for how each element maps"};
-  if (format == InputFormat::urdf || format == InputFormat::sdformat || format == InputFormat::mjcf) {
+  if (format == io::ModelFormat::urdf || format == io::ModelFormat::sdformat || format == io::ModelFormat::mjcf) {
     if (out == "dat")
       throw io::InputError({options.output, 0, 0}, "a robot description is a coupling network; SPACAR output is for frameworks "
                                                    "(write .yaml instead)");
-    io::write_file_atomically(options.output, io::network_yaml(read_imported_network(options.input, format).model, comments));
+    io::write_file_atomically(options.output, io::network_yaml(read_imported_network(options.input).model, comments));
     return 0;
   }
   const framework::FrameworkModel model = read_framework_input(options.input);

@@ -210,8 +210,8 @@ int move_network(const MoveOptions& options, io::LoadedNetwork loaded, const std
 
 int run_move(const MoveOptions& options) {
   const std::string& path = options.common.model_path;
-  if (input_format(path) == InputFormat::spacar) return move_framework(options, read_spacar_model(path), path);
-  if (input_format(path) != InputFormat::kinestat)
+  if (io::model_format(path) == io::ModelFormat::spacar) return move_framework(options, read_spacar_model(path), path);
+  if (io::model_format(path) != io::ModelFormat::kinestat)
     throw io::InputError({path, 1, 1}, "'kinestat move' reads kinestat model files (kind: framework or network)");
   const io::YamlFile file = io::YamlFile::load(path);
   const std::string kind = io::model_kind(file);

@@ -37,18 +37,18 @@ report::Scene framework_scene(const framework::FrameworkModel& model, std::optio
 }  // namespace
 
 LoadedScene load_scene(const std::string& path, std::optional<double> tolerance, bool traced_motion) {
-  const InputFormat format = input_format(path);
-  if (format == InputFormat::spacar) return {"framework", framework_scene(read_spacar_model(path), tolerance, traced_motion), {}, {}};
+  const io::ModelFormat format = io::model_format(path);
+  if (format == io::ModelFormat::spacar) return {"framework", framework_scene(read_spacar_model(path), tolerance, traced_motion), {}, {}};
   std::optional<io::YamlFile> file;
   LoadedScene loaded;
-  if (format == InputFormat::kinestat) {
+  if (format == io::ModelFormat::kinestat) {
     file = io::YamlFile::load(path);
     loaded.kind = io::model_kind(*file);
   } else {
     loaded.kind = "network";
   }
   if (loaded.kind == "network") {
-    const io::LoadedNetwork network = file ? io::read_network_model(*file) : read_imported_network(path, format);
+    const io::LoadedNetwork network = file ? io::read_network_model(*file) : read_imported_network(path);
     network::AnalysisOptions options;
     options.tolerances = Tolerances::with_rank(tolerance);
     try {

@@ -56,10 +56,10 @@ structure::StructureModel read_model(const StructureOptions& options) {
     }
     return io::read_adjacency_text(text, "<stdin>");
   }
-  const InputFormat format = input_format(options.common.model_path);
-  if (format != InputFormat::kinestat && format != InputFormat::spacar)
-    return io::structure_of_network(read_imported_network(options.common.model_path, format), options.common.model_path);
-  if (format == InputFormat::spacar)
+  const io::ModelFormat format = io::model_format(options.common.model_path);
+  if (format != io::ModelFormat::kinestat && format != io::ModelFormat::spacar)
+    return io::structure_of_network(read_imported_network(options.common.model_path), options.common.model_path);
+  if (format == io::ModelFormat::spacar)
     throw io::InputError({options.common.model_path, 1, 1}, "a SPACAR file is a framework of nodes and elements; "
                                                             "'kinestat structure' reads mechanisms (kind: structure or network)");
   const io::YamlFile file = io::YamlFile::load(options.common.model_path);

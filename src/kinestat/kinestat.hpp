@@ -27,6 +27,7 @@
 #include "kinestat/io/loaded_network.hpp"
 #include "kinestat/io/mjcf_reader.hpp"
 #include "kinestat/io/model_file.hpp"
+#include "kinestat/io/model_format.hpp"
 #include "kinestat/io/model_tree.hpp"
 #include "kinestat/io/network_import.hpp"
 #include "kinestat/io/network_structure.hpp"

@@ -44,18 +44,18 @@ struct PetscModel {
 bool petsc_pair_option(const std::string& name) { return name == "--pair" || name == "--coupled-pairs"; }
 
 void read_petsc_model(const CommonOptions& options, PetscModel& out) {
-  const InputFormat format = input_format(options.model_path);
+  const io::ModelFormat format = io::model_format(options.model_path);
   std::string path = options.model_path;
   std::vector<std::string> pair_options;
   for (const std::string& name : given_network_options())
     if (petsc_pair_option(name)) pair_options.push_back(name);
-  if (format == InputFormat::spacar) {
+  if (format == io::ModelFormat::spacar) {
     out.framework = read_spacar_model(options.model_path);
     reject_options(pair_options, "a framework", options.model_path);
     return;
   }
-  if (format != InputFormat::kinestat) {
-    out.network = read_imported_network(options.model_path, format);
+  if (format != io::ModelFormat::kinestat) {
+    out.network = read_imported_network(options.model_path);
   } else {
     std::optional<io::YamlFile> model(io::YamlFile::load(options.model_path));
     const std::string kind = io::model_kind(*model);

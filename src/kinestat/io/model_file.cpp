@@ -1,8 +1,12 @@
 #include "kinestat/io/model_file.hpp"
 
 #include "kinestat/io/framework_reader.hpp"
+#include "kinestat/io/mjcf_reader.hpp"
 #include "kinestat/io/network_reader.hpp"
+#include "kinestat/io/sdformat_reader.hpp"
+#include "kinestat/io/spacar_reader.hpp"
 #include "kinestat/io/structure_reader.hpp"
+#include "kinestat/io/urdf_reader.hpp"
 #include "kinestat/io/yaml_support.hpp"
 
 namespace kinestat::io {
@@ -37,7 +41,27 @@ std::string_view kind_name(ModelKind kind) {
   return "network";
 }
 
-ModelFile read_model_file(const std::string& path) { return read_parsed(YamlFile::load(path)); }
+ModelFile read_model_file(const std::string& path) {
+  const ModelFormat format = model_format(path);
+  if (format == ModelFormat::kinestat) return read_parsed(YamlFile::load(path));
+  ModelFile model;
+  model.path = path;
+  model.format = format;
+  if (format == ModelFormat::spacar) {
+    SpacarImport imported = read_spacar(path);
+    model.kind = ModelKind::framework;
+    model.framework = std::move(imported.model);
+    model.notices = std::move(imported.notices);
+    return model;
+  }
+  ImportedNetwork imported = format == ModelFormat::urdf       ? read_urdf(path)
+                             : format == ModelFormat::sdformat ? read_sdformat(path)
+                                                               : read_mjcf(path);
+  model.kind = ModelKind::network;
+  model.network = std::move(imported.loaded);
+  model.notices = std::move(imported.notices);
+  return model;
+}
 
 ModelFile parse_model_text(const std::string& path, const std::string& text) {
   return read_parsed(YamlFile::parse(path, text));

@@ -6,10 +6,12 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "kinestat/framework/framework_model.hpp"
 #include "kinestat/io/input_error.hpp"
 #include "kinestat/io/loaded_network.hpp"
+#include "kinestat/io/model_format.hpp"
 #include "kinestat/structure/structure_model.hpp"
 
 namespace kinestat::io {
@@ -28,13 +30,20 @@ struct ModelFile {
   std::optional<LoadedNetwork> network;
   std::optional<framework::FrameworkModel> framework;
   std::optional<structure::StructureModel> structure;
+  /// The file's format: SPACAR files are frameworks, URDF, SDFormat and MJCF files networks.
+  ModelFormat format = ModelFormat::kinestat;
+  /// What a reader of another program's format ignored or assumed (one line each; e.g. a
+  /// joint's limits, a SPACAR load): worth showing the user, not errors.
+  std::vector<std::string> notices;
 };
 
-/// Reads the model file at `path`. Throws InputError naming file, line and column for
-/// anything that is not a valid model (the message the command prints before exiting 2).
+/// Reads the model file at `path` in its format (model_format: kinestat YAML / JSON, SPACAR,
+/// URDF, SDFormat or MJCF, the last three when built in). Throws InputError naming file, line
+/// and column for anything that is not a valid model (the message the command prints before
+/// exiting 2).
 ModelFile read_model_file(const std::string& path);
 
-/// Reads a model from `text`; `path` names it in error messages.
+/// Reads a kinestat YAML / JSON model from `text`; `path` names it in error messages.
 ModelFile parse_model_text(const std::string& path, const std::string& text);
 
 /// Analyses a network read from a file; a problem the analysis finds (an unknown primary
