@@ -284,6 +284,20 @@ TEST(SpacarReader, TwoSpacarLightHingesInSeriesAreAUniversalJoint) {
   EXPECT_NEAR(cosines.minCoeff(), 1.0, 1e-12) << cosines.transpose();
 }
 
+TEST(SpacarReader, HingeToABareOrientationTakesItsNumberedPositionNode) {
+  // Orientation node 8 is used only by hinge 3, on the ground's orientation 2, whose pin body
+  // carries node 4 (already turned by node 5): SPACAR Light's numbering gives 8 to node 7.
+  const FrameworkModel m = read_spacar(data("spacar-hinge-to-a-bare-orientation.dat")).model;
+  ASSERT_EQ(m.nodes.size(), 4u);  // 1, 4, 7, 10: no jointed second orientation at node 4
+  EXPECT_TRUE(m.nodes[node(m, "7")].rotational);
+  EXPECT_FALSE(m.nodes[node(m, "10")].rotational);
+  EXPECT_EQ(element(m, "3").nodes, (std::vector<std::size_t>{node(m, "1"), node(m, "7")}));
+  const auto a = framework::analyse_framework(m);
+  expect_counts(a, 9, 15, 9);  // by hand (the file's header): 6 mechanisms, no self-stress
+  EXPECT_EQ(a.mechanisms, 6);
+  EXPECT_EQ(a.self_stresses, 0);
+}
+
 TEST(SpacarReader, HingeBetweenTwoBeamsAboutY) {
   const FrameworkModel m = read_spacar(data("spacar-hinge-between-beams.dat")).model;
   ASSERT_EQ(m.nodes.size(), 4u);

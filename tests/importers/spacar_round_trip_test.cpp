@@ -71,6 +71,7 @@ INSTANTIATE_TEST_SUITE_P(Models, RoundTrip,
                                            "tests/importers/data/spacar-hinged-pendulum.dat",
                                            "tests/importers/data/spacar-hinge-between-beams.dat",
                                            "tests/importers/data/spacar-universal-joint.dat",
+                                           "tests/importers/data/spacar-hinge-to-a-bare-orientation.dat",
                                            "examples/parallel-leaf-spring-guide.yaml", "examples/truss-12.yaml",
                                            "examples/wire-flexure-guide.yaml", "examples/folded-sheet-guide-5-symmetric.yaml",
                                            "examples/folded-sheet-guide-6.yaml", "examples/pellegrino-calladine-two-bar.yaml"));

@@ -351,6 +351,24 @@ class SpacarReader {
     list.push_back(orientation);
   }
 
+  // The carried position node that the second orientation node `rq` of a hinge on `rp` belongs
+  // to, or 0 to leave it to the numbering rule. SPACAR Light's own files have rq − 1 among the
+  // nodes carried by the pin body on rp; a pin body that carries several nodes (or one that a
+  // hinge before already turned) is ambiguous, and a carried node that already has an
+  // orientation would take rq as a second, jointed one: then the numbering decides when a
+  // position node rq − 1 exists (kinestat's SPACAR writer relies on it for the nodes it joins by
+  // a PINBODY; found by fuzz_spacar_file), and the first carried node only when none does.
+  long hinge_carrier(const std::multimap<long, long>& carried_by_body, long rp, long rq) const {
+    if (orientation_owner_.count(rq)) return 0;
+    const auto [first, last] = carried_by_body.equal_range(rp);
+    if (first == last) return 0;
+    for (auto it = first; it != last; ++it)
+      if (it->second == rq - 1) return it->second;
+    for (auto it = first; it != last; ++it)
+      if (!orientations_at_.count(it->second) || orientations_at_.at(it->second).empty()) return it->second;
+    return positions_.count(rq - 1) ? 0 : first->second;
+  }
+
   void build_nodes() {
     using spacar::ElementKind;
     std::multimap<long, long> carried_by_body;  // a pin body's orientation node -> the position node it carries
@@ -370,8 +388,7 @@ class SpacarReader {
     // couples orientations only, so the position chosen never changes what can move.
     for (const PendingElement& h : elements_) {
       if (h.kind != ElementKind::hinge) continue;
-      const auto [first, last] = carried_by_body.equal_range(h.rp);
-      for (auto it = first; it != last && !orientation_owner_.count(h.rq); ++it) attach(it->second, h.rq, h.node_tokens[1]);
+      if (const long carrier = hinge_carrier(carried_by_body, h.rp, h.rq); carrier != 0) attach(carrier, h.rq, h.node_tokens[1]);
       for (std::size_t k = 0; k < 2; ++k) {
         const long r = k == 0 ? h.rp : h.rq;
         if (orientation_owner_.count(r)) continue;
