@@ -351,17 +351,75 @@ def _vector(row):
     return [_number(x) for x in np.asarray(row, dtype=float).ravel()]
 
 
+def _rows(array, what):
+    # Each row of a float array as a list of _number values, without a Python call per value:
+    # the finiteness check runs once on the whole array.
+    array = np.asarray(array, dtype=float)
+    if not np.all(np.isfinite(array)):
+        raise ValueError(f"{what}: not a finite number: {array[~np.isfinite(array)][0]}")
+    integral = (array == np.round(array)) & (np.abs(array) < 2**53)
+    values = array.astype(object)
+    values[integral] = array[integral].astype(np.int64).astype(object)
+    return values.tolist()
+
+
+class _Encoded(list):
+    """The items of a large list (or the entries of a mapping, ``mapping=True``) already encoded
+    as JSON text, one per line of the document: no Python dict per item, no encoder call."""
+
+    def __init__(self, items, mapping=False):
+        super().__init__(items)
+        self.mapping = mapping
+
+
+_quote = json.encoder.encode_basestring_ascii  # as json.dumps quotes strings (C, ASCII-escaped)
+
+
+def _json_lines(document):
+    # JSON with one top-level key per line and one item per line of each list or mapping value,
+    # so that a reader's error line names the item. Items go through the C encoder one by one
+    # (json.dumps with `indent` falls back to the pure-Python encoder, ten times slower on large
+    # models), or come encoded (_Encoded).
+    lines = ["{"]
+    keys = list(document)
+    for position, key in enumerate(keys):
+        value = document[key]
+        comma = "," if position + 1 < len(keys) else ""
+        if isinstance(value, _Encoded) and not value:
+            lines.append(f" {_quote(key)}: {'{}' if value.mapping else '[]'}{comma}")
+        elif isinstance(value, (list, dict)) and value:
+            mapping = value.mapping if isinstance(value, _Encoded) else isinstance(value, dict)
+            if isinstance(value, _Encoded):
+                items = value
+            elif mapping:
+                items = [f"{_quote(str(name))}: {json.dumps(item)}" for name, item in value.items()]
+            else:
+                items = [json.dumps(item) for item in value]
+            lines.append(f" {_quote(key)}: {'{' if mapping else '['}")
+            lines.append("  " + ",\n  ".join(items))
+            lines.append(f" {'}' if mapping else ']'}{comma}")
+        else:
+            lines.append(f" {_quote(key)}: {json.dumps(value)}{comma}")
+    lines.append("}")
+    return "\n".join(lines) + "\n"
+
+
 class _Model:
     """A model document built in code; analysed by the same reader as model files."""
 
     name_for_errors = "<model>"
 
-    def to_dict(self):
+    def _document(self):
         raise NotImplementedError
 
     def to_json(self):
-        """The model as a JSON model file (a valid ``kinestat: 1`` document)."""
-        return json.dumps(self.to_dict(), indent=1)
+        """The model as a JSON model file (a valid ``kinestat: 1`` document): one item (node,
+        element, coupling, ...) per line."""
+        return _json_lines(self._document())
+
+    def to_dict(self):
+        """The model file's document as Python data (``json.loads`` of :meth:`to_json`)."""
+        return json.loads(self.to_json())
 
     def analyze(self, **options):
         return analyze(self, **options)
@@ -408,27 +466,46 @@ class Framework(_Model):
     def _coordinates(value):
         return value if isinstance(value, str) else [str(x) for x in value]
 
-    def to_dict(self):
+    def _document(self):
         dimension = self.nodes.shape[1]
         document = {"kinestat": 1, "kind": "framework"}
         if self.name is not None:
             document["name"] = self.name
         document["dimension"] = "planar" if dimension == 2 else "spatial"
-        document["nodes"] = {name: _vector(p) for name, p in zip(self.node_names, self.nodes)}
+        # Nodes and bars are what large models are made of: encoded here directly (repr of an
+        # int or a float is its JSON text, as json.dumps writes it).
+        quoted = [_quote(name) for name in self.node_names]
+        document["nodes"] = _Encoded([f"{name}: [{', '.join(map(repr, row))}]"
+                                      for name, row in zip(quoted, _rows(self.nodes, "nodes"))], mapping=True)
         if self.supports:
             document["supports"] = {self._node(k): self._coordinates(v) for k, v in self.supports.items()}
         if self.independent:
             document["independent"] = {self._node(k): self._coordinates(v) for k, v in self.independent.items()}
-        elements = [{"type": "truss", "nodes": [self._node(p), self._node(q)]} for p, q in self.bars]
-        for index, (p, q) in enumerate(self.beams):
-            beam = {"type": "beam", "nodes": [self._node(p), self._node(q)]}
-            if self.beam_z is not None:
-                beam["orientation"] = {"z": _vector(self.beam_z[index])}
-            elements.append(beam)
-        elements += [{"type": "rigid_body", "nodes": [self._node(i) for i in body]} for body in self.rigid_bodies]
-        for index, names in self.released.items():
-            elements[int(index)]["released"] = [str(x) for x in names]
-        document["elements"] = elements
+        count = len(self.bars) + len(self.beams) + len(self.rigid_bodies)
+        released = {}
+        for index, deformations in self.released.items():
+            k = int(index) + (count if int(index) < 0 else 0)
+            if not 0 <= k < count:
+                raise IndexError(f"released: no element {index} (there are {count})")
+            released[k] = [str(x) for x in deformations]
+        names = self.node_names
+        elements = []
+        for k, (p, q) in enumerate(self.bars.tolist()):
+            if k in released:
+                elements.append(json.dumps({"type": "truss", "nodes": [names[p], names[q]], "released": released[k]}))
+            else:
+                elements.append(f'{{"type": "truss", "nodes": [{quoted[p]}, {quoted[q]}]}}')
+        beam_z = None if self.beam_z is None else _rows(self.beam_z, "beam_z")
+        bodies = [{"type": "beam", "nodes": [names[p], names[q]]} for p, q in self.beams.tolist()]
+        for index, beam in enumerate(bodies):
+            if beam_z is not None:
+                beam["orientation"] = {"z": beam_z[index]}
+        bodies += [{"type": "rigid_body", "nodes": [self._node(i) for i in body]} for body in self.rigid_bodies]
+        for k, element in enumerate(bodies, start=len(elements)):
+            if k in released:
+                element["released"] = released[k]
+            elements.append(json.dumps(element))
+        document["elements"] = _Encoded(elements)
         return document
 
 
@@ -467,7 +544,7 @@ class Network(_Model):
             return self.bodies[int(key)]
         return str(key)
 
-    def to_dict(self):
+    def _document(self):
         document = {"kinestat": 1, "kind": "network"}
         if self.name is not None:
             document["name"] = self.name

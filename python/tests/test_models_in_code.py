@@ -85,3 +85,31 @@ def test_errors_in_models_built_in_code_name_the_item():
         network.analyze()
     assert raised.value.file == "<network>"
     assert raised.value.line > 0 and "hinge" in raised.value.problem
+
+
+def test_framework_document_holds_every_item_one_per_line():
+    # Nodes and bars are written by a fast path, beams and bodies by the encoder: the document
+    # must hold exactly what was given (written out here by hand), each item on a line of its own.
+    fw = kinestat.Framework([[0, 0, 0], [1, 0, 0], [0.5, 0.8660254037844386, 0], [0, 0, 1e-300]],
+                            bars=[[0, 1], [1, 2]], beams=[[2, 0]], beam_z=[[0, 0, 1]], rigid_bodies=[[0, 1, 3]],
+                            supports={0: "fixed"}, released={2: ["torsion"], -4: ["elongation"]},
+                            node_names=['a "q"', "b\\x", "\u00e7", "d"], name="every item")
+    expected = {
+        "kinestat": 1, "kind": "framework", "name": "every item", "dimension": "spatial",
+        "nodes": {'a "q"': [0, 0, 0], "b\\x": [1, 0, 0], "\u00e7": [0.5, 0.8660254037844386, 0], "d": [0, 0, 1e-300]},
+        "supports": {'a "q"': "fixed"},
+        "elements": [
+            {"type": "truss", "nodes": ['a "q"', "b\\x"], "released": ["elongation"]},
+            {"type": "truss", "nodes": ["b\\x", "\u00e7"]},
+            {"type": "beam", "nodes": ["\u00e7", 'a "q"'], "orientation": {"z": [0, 0, 1]}, "released": ["torsion"]},
+            {"type": "rigid_body", "nodes": ['a "q"', "b\\x", "d"]},
+        ],
+    }
+    assert fw.to_dict() == expected
+    lines = fw.to_json().splitlines()
+    assert '  {"type": "truss", "nodes": ["b\\\\x", "\\u00e7"]},' in lines
+    assert '  "d": [0, 0, 1e-300]' in lines
+    with pytest.raises(ValueError):
+        kinestat.Framework([[0, 0], [1, float("nan")]], bars=[[0, 1]]).to_json()
+    with pytest.raises(IndexError):
+        kinestat.Framework([[0, 0], [1, 0]], bars=[[0, 1]], released={5: ["elongation"]}).to_json()
