@@ -4,14 +4,17 @@
 
 #include <algorithm>
 #include <iostream>
+#include <string>
 #include <string_view>
 
 #include "cli/commands.hpp"
 #include "kinestat/io/input_error.hpp"
+#include "kinestat/io/model_format.hpp"
 #include "kinestat/io/output_file.hpp"
 #include "kinestat/io/printable_text.hpp"
 #include "kinestat/linalg/blas_threads.hpp"
 #include "kinestat/linalg/gmp_allocation.hpp"
+#include "kinestat/report/html_writer.hpp"
 
 namespace kinestat::cli {
 
@@ -38,6 +41,20 @@ void keep_freed_memory_for_reuse() {
   mallopt(M_TRIM_THRESHOLD, 1 << 30);
 }
 
+// What this build is and can do: the version, the model formats it reads (URDF, SDFormat and
+// MJCF need their libraries at build time) and whether the HTML report's viewer is built in.
+std::string version_text() {
+  std::string formats;
+  for (const io::ModelFormat format :
+       {io::ModelFormat::kinestat, io::ModelFormat::spacar, io::ModelFormat::urdf, io::ModelFormat::sdformat, io::ModelFormat::mjcf}) {
+    if (!io::format_built_in(format)) continue;
+    if (!formats.empty()) formats += ", ";
+    formats += io::format_name(format);
+  }
+  return "kinestat 0.1.0\nmodel formats: " + formats +
+         "\nHTML report: " + (report::html_report_built_in() ? "built in" : "not built in (no npm at build time)");
+}
+
 }  // namespace
 
 int run(int argc, const char* const* argv) {
@@ -46,7 +63,7 @@ int run(int argc, const char* const* argv) {
   keep_freed_memory_for_reuse();
   CLI::App app{"kinestat: nett degrees of freedom and of constraint of mechanisms, compliant mechanisms and structures"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "kinestat 0.1.0");
+  app.set_version_flag("--version", version_text);
   // CLI11's messages echo the arguments: their control characters are shown escaped, line by line.
   app.failure_message([](const CLI::App* failed, const CLI::Error& error) {
     const std::string message = CLI::FailureMessage::simple(failed, error);

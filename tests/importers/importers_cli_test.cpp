@@ -149,3 +149,29 @@ TEST(RobotCli, BadFilesExitTwoWithOneLocatedLine) {
 
 }  // namespace
 }  // namespace kinestat::testing
+
+namespace kinestat::testing {
+namespace {
+
+// `--version` names what this build reads; each format it names must then read its example,
+// and each it leaves out must be refused as not built in.
+TEST(ImportersCli, VersionListsTheFormatsThisBuildReads) {
+  const CliRun r = run_cli("--version");
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_EQ(r.out.rfind("kinestat 0.1.0\nmodel formats: kinestat, SPACAR", 0), 0u) << r.out;
+  EXPECT_NE(r.out.find("\nHTML report: "), std::string::npos) << r.out;
+  const std::string formats = r.out.substr(r.out.find("model formats:"), r.out.find("\nHTML") - r.out.find("model formats:"));
+  for (const auto& [name, file] : {std::pair{"URDF", "robots/four-bar.urdf"}, std::pair{"SDFormat", "robots/four-bar.sdf"},
+                                   std::pair{"MJCF", "robots/four-bar.xml"}}) {
+    const CliRun analysed = run_cli("analyze --json " + example_path(file));
+    if (formats.find(name) != std::string::npos) {
+      EXPECT_EQ(analysed.exit_code, 0) << name << ": " << analysed.err;
+    } else {
+      EXPECT_EQ(analysed.exit_code, 2) << name;
+      EXPECT_NE(analysed.err.find("is not built in"), std::string::npos) << analysed.err;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace kinestat::testing
