@@ -122,6 +122,10 @@ class NetworkResult(_Result):
         self.FN, self.CN = counts["FN"], counts["CN"]
         #: whether exact rational arithmetic was used
         self.exact = counts["exact"]
+        #: "dense" (Davies' matrices: every method below) or "sparse" (above 300 couplings: the
+        #: counts, ``rank_evidence()`` and the report's stressed and moving couplings; the
+        #: matrices and bases raise ValueError, ``analyze(..., method="dense")`` gives them)
+        self.method = counts["method"]
 
     def inf_flexes(self):
         """Basis of the network's motions: F x FN, column j the magnitudes of all F coupling
@@ -264,7 +268,7 @@ def _source(model):
     return str(model), None
 
 
-def analyze(model, *, tolerance=None, arithmetic="auto", primary=None):
+def analyze(model, *, tolerance=None, arithmetic="auto", primary=None, method="auto"):
     """Analyses a model file (path) or a :class:`Framework` / :class:`Network` built in code.
     Files are read in their format, as ``kinestat analyze`` reads them (docs/formats.md):
     kinestat YAML / JSON, SPACAR ``.dat`` (a framework), URDF ``.urdf``, SDFormat ``.sdf`` /
@@ -272,10 +276,13 @@ def analyze(model, *, tolerance=None, arithmetic="auto", primary=None):
     reader of another program's format ignored.
 
     ``tolerance``: relative rank tolerance (as ``--tolerance``); ``arithmetic`` for networks:
-    "auto", "exact" or "float"; ``primary``: the networks' primary variables. A model of kind
+    "auto", "exact" or "float"; ``primary``: the networks' primary variables; ``method`` for
+    networks: "auto" (as ``kinestat analyze``: the sparse body-twist path above 300 couplings,
+    unless exact arithmetic or primary variables are asked for), "dense" (Davies' matrices at
+    any size: time and memory grow as the cube of the network) or "sparse". A model of kind
     structure gives its structural groups."""
     path, text = _source(model)
-    analysed = _core.analyse(path, text, tolerance, arithmetic, list(primary or []))
+    analysed = _core.analyse(path, text, tolerance, arithmetic, list(primary or []), method)
     if analysed.kind == "structure":
         return structural_groups(model)
     return _RESULTS[analysed.kind](analysed)

@@ -62,6 +62,9 @@ constexpr std::uint64_t kTransformationLimit = 1000;
 struct Analysed {
   io::ModelFile file;
   std::optional<network::NetworkResult> network;
+  /// Networks on the sparse body-twist path (above network::kDenseNetworkLimit couplings, as
+  /// `kinestat analyze`, or method="sparse"): counts, supports and the verdict, no Davies matrices.
+  std::optional<report::SparseNetworkAnalysis> sparse_network;
   std::optional<framework::FrameworkResult> framework;
   std::optional<structure::StructureModel> structure_model;  ///< networks (from the couplings) and structures
   std::optional<structure::StructureResult> decomposition;
@@ -78,6 +81,9 @@ struct Analysed {
     report::Scene scene;
     if (network) {
       scene = report::network_scene(file.network->model, *network);
+      scene.units = file.network->model.units;
+    } else if (sparse_network) {
+      scene = report::sparse_network_scene(file.network->model, sparse_network->result);
       scene.units = file.network->model.units;
     } else if (framework) {
       std::vector<std::optional<framework::TwoWayTrace>> traces;
@@ -101,15 +107,33 @@ std::shared_ptr<Analysed> read(const std::string& path, const std::optional<std:
 
 std::shared_ptr<Analysed> analyse(const std::string& path, const std::optional<std::string>& text,
                                   std::optional<double> tolerance, const std::string& arithmetic,
-                                  const std::vector<std::string>& primary) {
+                                  const std::vector<std::string>& primary, const std::string& method) {
+  if (method != "auto" && method != "dense" && method != "sparse") throw py::value_error("method is 'auto', 'dense' or 'sparse'");
+  if (arithmetic != "auto" && arithmetic != "exact" && arithmetic != "float")
+    throw py::value_error("arithmetic is 'auto', 'exact' or 'float'");
   std::shared_ptr<Analysed> analysed = read(path, text);
   const io::ModelFile& file = analysed->file;
   if (file.network) {
     network::AnalysisOptions options;
     options.tolerances = Tolerances::with_rank(tolerance);
+    // As `kinestat analyze`: the sparse path above kDenseNetworkLimit couplings unless something
+    // only Davies' dense matrices give is asked for (their memory grows as the cube of the network).
+    const bool dense_request = method == "dense" || arithmetic == "exact" || !primary.empty();
+    if (method == "sparse" && dense_request)
+      throw py::value_error("method='sparse' gives counts and supports in floating point: arithmetic='exact' and primary "
+                            "variables need method='dense'");
+    if (method == "sparse" ||
+        (!dense_request && static_cast<int>(file.network->model.couplings.size()) > network::kDenseNetworkLimit)) {
+      try {
+        analysed->sparse_network = report::analyse_sparse_network_as_reported(file.network->model, options.tolerances);
+      } catch (const network::ModelError& error) {
+        throw io::locate(error, *file.network, file.path);
+      }
+      analysed->verdict = analysed->sparse_network->verdict;
+      return analysed;
+    }
     if (arithmetic == "exact") options.arithmetic = network::Arithmetic::exact;
     else if (arithmetic == "float") options.arithmetic = network::Arithmetic::floating;
-    else if (arithmetic != "auto") throw py::value_error("arithmetic is 'auto', 'exact' or 'float'");
     if (!primary.empty()) options.primary = primary;
     report::NetworkAnalysis analysis;  // as `kinestat analyze`
     try {
@@ -155,6 +179,8 @@ std::shared_ptr<Analysed> decompose(const std::string& path, const std::optional
 
 std::string json_report(const Analysed& a) {
   // As src/cli/network_command.cpp, framework_command.cpp and structure_command.cpp write them.
+  if (a.sparse_network)
+    return report::json_text(report::sparse_network_report_json(a.file.network->model, a.sparse_network->result, &a.verdict, nullptr));
   if (a.network) {
     report::NetworkReportOptions options;
     options.verdict = &a.verdict;
@@ -176,8 +202,9 @@ std::string json_report(const Analysed& a) {
 std::string html_report(const Analysed& a) {
   if (!report::html_report_built_in()) return {};
   const report::Scene scene = a.scene(/*traced_motion=*/true);
-  if (a.network && !scene.large) return report::html_report(scene, report::graph_svg(scene), "Coupling, motion and action graphs");
-  if (!a.network && a.decomposition && !scene.large)
+  const bool network = a.network || a.sparse_network;
+  if (network && !scene.large) return report::html_report(scene, report::graph_svg(scene), "Coupling, motion and action graphs");
+  if (!network && a.decomposition && !scene.large)
     return report::html_report(scene, report::structure_svg(*a.structure_model, *a.decomposition), "Structural diagram");
   return report::html_report(scene);
 }
@@ -195,13 +222,19 @@ std::string svg(const Analysed& a, const std::string& what, int mode, int stress
     return report::graph_svg(scene);
   }
   if (what == "mechanism") {
-    if (!a.network && !a.framework) throw py::value_error("a model of kind 'structure' has no geometry to draw");
+    if (!a.network && !a.sparse_network && !a.framework) throw py::value_error("a model of kind 'structure' has no geometry to draw");
     return report::mechanism_svg(scene, {mode, stress});
   }
   throw py::value_error("what is 'graph', 'mechanism' or 'structure'");
 }
 
 const network::NetworkResult& network_of(const Analysed& a) {
+  if (a.sparse_network)
+    throw py::value_error(fmt::format("this comes from Davies' dense matrices, and this network of {} couplings took the sparse "
+                                      "path (above {} couplings: FN, CN, the stressed and moving couplings, the verdict); "
+                                      "analyze(model, method='dense') builds them, in time and memory that grow as the cube "
+                                      "of the network",
+                                      a.sparse_network->result.e, network::kDenseNetworkLimit));
   if (!a.network) throw py::value_error("not a coupling-network result");
   return *a.network;
 }
@@ -349,8 +382,17 @@ PYBIND11_MODULE(_core, m) {
       .def("svg", &svg, py::arg("what"), py::arg("mode") = 1, py::arg("stress") = 1)
       // Coupling networks (seed 000).
       .def("network_counts", [](const Analysed& a) {
-        const auto& r = network_of(a);
         py::dict counts;
+        if (a.sparse_network) {
+          // Davies' m and a are the ranks of [M^N] and [A^N]: F − FN and C − CN (seed 000, eq. 6).
+          const auto& r = a.sparse_network->result;
+          counts["d"] = r.d, counts["n"] = r.bodies, counts["e"] = r.e, counts["l"] = r.l, counts["k"] = r.bodies - 1;
+          counts["F"] = r.F, counts["C"] = r.C, counts["m"] = r.F - r.FN, counts["a"] = r.C - r.CN;
+          counts["FN"] = r.FN, counts["CN"] = r.CN, counts["exact"] = false, counts["method"] = "sparse";
+          return counts;
+        }
+        const auto& r = network_of(a);
+        counts["method"] = "dense";
         counts["d"] = r.d, counts["n"] = r.bodies, counts["e"] = r.e, counts["l"] = r.l, counts["k"] = r.k;
         counts["F"] = r.F, counts["C"] = r.C, counts["m"] = r.m, counts["a"] = r.a, counts["FN"] = r.FN, counts["CN"] = r.CN;
         counts["exact"] = r.exact;
@@ -366,8 +408,13 @@ PYBIND11_MODULE(_core, m) {
       .def("action_names", [](const Analysed& a) { return all_names(network_of(a).actions); })
       .def("primary_motions", [](const Analysed& a) { return magnitude_names(network_of(a).motions, network_of(a).primary_motion); })
       .def("primary_actions", [](const Analysed& a) { return magnitude_names(network_of(a).actions, network_of(a).primary_action); })
-      .def("motion_rank", [](const Analysed& a) { return rank_evidence(network_of(a).circulation.solution.rank); })
-      .def("action_rank", [](const Analysed& a) { return rank_evidence(network_of(a).cutset_law.solution.rank); })
+      // The sparse path decides one rank, of K, from which both FN and CN follow.
+      .def("motion_rank", [](const Analysed& a) {
+        return a.sparse_network ? rank_evidence(a.sparse_network->result.rank) : rank_evidence(network_of(a).circulation.solution.rank);
+      })
+      .def("action_rank", [](const Analysed& a) {
+        return a.sparse_network ? rank_evidence(a.sparse_network->result.rank) : rank_evidence(network_of(a).cutset_law.solution.rank);
+      })
       // Frameworks (seed 002).
       .def("framework_counts", [](const Analysed& a) {
         const auto& r = framework_of(a);
@@ -428,7 +475,7 @@ PYBIND11_MODULE(_core, m) {
       .def("positions", &positions_json, py::arg("inputs"), py::arg("sweep") = std::nullopt);
 
   m.def("analyse", &analyse, py::arg("path"), py::arg("text") = std::nullopt, py::arg("tolerance") = std::nullopt,
-        py::arg("arithmetic") = "auto", py::arg("primary") = std::vector<std::string>{},
+        py::arg("arithmetic") = "auto", py::arg("primary") = std::vector<std::string>{}, py::arg("method") = "auto",
         "Reads a model file (or `text` named `path`) and runs the analysis of its kind");
   m.def("read", [](const std::string& path, const std::optional<std::string>& text) { return read(path, text); }, py::arg("path"), py::arg("text") = std::nullopt, "Reads a model file (or `text` named `path`), no analysis");
   m.def("decompose", &decompose, py::arg("path"), py::arg("text") = std::nullopt,
