@@ -23,11 +23,16 @@ using network::Model;
 using network::SparseNetworkResult;
 using Index = Eigen::Index;
 
-// True unless body b's actions in K (the rows of its own couplings in its column block, the
-// conditioned frame) clearly span all d twists (kIdleSpinScreen): a floating-point screen that
-// keeps the exact small-model analysis below for the bodies that might spin; most bodies of a
-// network cannot, and the screen costs one SVD of at most a few dozen rows.
-bool may_spin(const SparseNetworkResult& r, int b, const Tolerances& tolerances) {
+// True unless body b's actions in K (the rows of its own couplings `couplings` in its column
+// block) clearly span all d twists (kIdleSpinScreen): a floating-point screen that keeps the
+// exact small-model analysis below for the bodies that might spin; most bodies of a network
+// cannot, and the screen costs one SVD of at most a few dozen rows. The actions are taken
+// about the centre of the body's own coupling points, lengths over their extent: whether a
+// body can spin is a property of its couplings alone, and in K's frame (the whole network's
+// centroid and extent) the couplings of one small body look nearly concurrent, so that a ring
+// of 3·10⁴ revolutes sent every body to the exact analysis (GMP, half the command).
+bool may_spin(const Model& model, const SparseNetworkResult& r, int b, const std::vector<std::size_t>& couplings,
+              const Tolerances& tolerances) {
   if (r.K.cols() == 0) return true;
   const Index d = r.d, first = (b < r.ground ? b : b - 1) * d;
   std::map<Index, Index> local;  // row of K -> row of the block
@@ -37,6 +42,26 @@ bool may_spin(const SparseNetworkResult& r, int b, const Tolerances& tolerances)
   Eigen::MatrixXd block = Eigen::MatrixXd::Zero(static_cast<Index>(local.size()), d);
   for (Index k = 0; k < d; ++k)
     for (Eigen::SparseMatrix<double>::InnerIterator it(r.K, first + k); it; ++it) block(local[it.row()], k) = it.value();
+  // The centre and extent of the body's coupling points, in K's frame ((p − origin) / scale).
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  std::vector<Eigen::Vector3d> points;
+  for (const std::size_t i : couplings) {
+    const auto& p = model.couplings[i].geometry.point;
+    points.emplace_back((Eigen::Vector3d(p[0].get_d(), p[1].get_d(), p[2].get_d()) - r.frame_origin) / r.frame_scale);
+    centre += points.back();
+  }
+  centre /= static_cast<double>(points.size());
+  double extent = 0.0;
+  for (const auto& p : points) extent = std::max(extent, (p - centre).norm());
+  if (!(extent > 0.0)) extent = 1.0;
+  const std::vector<int>& components = model.space.components;
+  for (Index row = 0; row < block.rows(); ++row) {
+    // (m; f) about K's origin -> ((m − c × f) / extent; f) about the centre.
+    Screw6 action = Screw6::Zero();
+    for (Index k = 0; k < d; ++k) action(components[static_cast<std::size_t>(k)]) = block(row, k);
+    action.head<3>() = (Eigen::Vector3d(action.head<3>()) - centre.cross(Eigen::Vector3d(action.tail<3>()))) / extent;
+    for (Index k = 0; k < d; ++k) block(row, k) = action(components[static_cast<std::size_t>(k)]);
+  }
   const Eigen::VectorXd sigma = Eigen::JacobiSVD<Eigen::MatrixXd>(block).singularValues();
   const double relative = tolerances.rank.value_or(linalg::default_relative_tolerance(block.rows(), d, r.rank.input_rounding));
   return !(sigma(d - 1) > std::max(kIdleSpinScreen, kIdleSpinScreenMargin * relative) * sigma(0));
@@ -54,7 +79,8 @@ std::vector<IdleMotion> idle_spins(const Model& model, const SparseNetworkResult
   }
   std::vector<IdleMotion> spins;
   for (std::size_t b = 0; b < model.bodies.size(); ++b) {
-    if (static_cast<int>(b) == ground || touching[b].size() < 2 || !may_spin(r, static_cast<int>(b), tolerances)) continue;
+    if (static_cast<int>(b) == ground || touching[b].size() < 2 || !may_spin(model, r, static_cast<int>(b), touching[b], tolerances))
+      continue;
     Model star;
     star.space = model.space;
     star.bodies = {model.bodies[b], "the rest"};
