@@ -2,8 +2,12 @@
 // both sets are independent; planar projections; the standard bases of seed 000 Table 3/4.
 #include <gtest/gtest.h>
 
+#include <string>
+#include <vector>
+
 #include "kinestat/linalg/homogeneous_solution.hpp"
 #include "kinestat/screw/coupling_basis.hpp"
+#include "kinestat/screw/coupling_type.hpp"
 
 namespace kinestat::screw {
 namespace {
@@ -114,6 +118,57 @@ TEST(CouplingBasis, DegenerateUniversal) {
   g.axis = Vec3{0, 0, 1};
   g.axis2 = Vec3{0, 0, -2};
   EXPECT_THROW(coupling_basis(CouplingType::universal, g, ScrewSpace::spatial()), GeometryError);
+}
+
+// The readers' check refuses exactly what coupling_basis refuses, with the same message: every
+// type against geometries that are fine, missing, zero, parallel or out of the plane.
+TEST(CouplingBasis, GeometryCheckRefusesExactlyWhatTheBasisRefuses) {
+  std::vector<CouplingGeometry> geometries;
+  CouplingGeometry g;
+  g.point = Vec3{1, 2, 3};
+  geometries.push_back(g);  // nothing but a point
+  g.axis = Vec3{0, 0, 1};
+  geometries.push_back(g);
+  g.axis2 = Vec3{0, 0, -2};  // parallel to axis
+  geometries.push_back(g);
+  g.axis2 = Vec3{1, 0, 0};
+  geometries.push_back(g);
+  g.normal = Vec3{0, 0, 0};  // zero
+  geometries.push_back(g);
+  g.normal = Vec3{0, 1, 1};  // out of the xy-plane
+  geometries.push_back(g);
+  g.normal = Vec3{3, 4, 0};
+  geometries.push_back(g);
+  g.axis = Vec3{0, 0, 0};  // zero
+  geometries.push_back(g);
+  CouplingGeometry custom;
+  custom.custom_motions = {{0, 0, 1, 0, 0, 0}, {0, 0, 2, 0, 0, 0}};  // dependent
+  geometries.push_back(custom);
+  custom.custom_motions = {{0, 0, 1}};
+  geometries.push_back(custom);
+  int refused = 0, accepted = 0;
+  for (const std::string_view name : coupling_type_names()) {
+    const CouplingType type = *parse_coupling_type(name);
+    for (const ScrewSpace& space : {ScrewSpace::spatial(), ScrewSpace::planar()}) {
+      for (std::size_t k = 0; k < geometries.size(); ++k) {
+        std::string built, checked;
+        try {
+          (void)coupling_basis(type, geometries[k], space);
+        } catch (const GeometryError& error) {
+          built = error.what();
+        }
+        try {
+          check_coupling_geometry(type, geometries[k], space);
+        } catch (const GeometryError& error) {
+          checked = error.what();
+        }
+        EXPECT_EQ(checked, built) << name << ", geometry " << k << (space.is_planar() ? ", planar" : ", spatial");
+        (built.empty() ? accepted : refused)++;
+      }
+    }
+  }
+  EXPECT_GT(refused, 20);  // the table does exercise the refusals ...
+  EXPECT_GT(accepted, 20);  // ... and the geometries that are fine
 }
 
 }  // namespace

@@ -8,7 +8,7 @@
 #include <unordered_set>
 
 #include "kinestat/io/model_vocabulary.hpp"
-#include "kinestat/screw/rounded_coupling_basis.hpp"
+#include "kinestat/screw/coupling_basis.hpp"
 
 namespace kinestat::io {
 
@@ -203,9 +203,10 @@ class NetworkReader {
     if (planar && *type == CouplingType::prismatic && sgn((*g.axis)[2]) != 0)
       file_.fail(file_.optional(node, "axis"), "in a planar model a prismatic axis must lie in the xy-plane");
     try {
-      // The check costs no GMP arithmetic for short numbers (small_coupling_basis); it throws
-      // exactly when coupling_basis would.
-      (void)screw::rounded_coupling_basis(coupling.type, g, loaded_.model.space);
+      // Refused here, where the coupling is written, exactly when the analysis's coupling_basis
+      // would refuse it; the check builds no basis (with full-precision coordinates that takes
+      // GMP, and the analysis builds it anyway).
+      screw::check_coupling_geometry(coupling.type, g, loaded_.model.space);
     } catch (const screw::GeometryError& error) {
       file_.fail(node, fmt::format("coupling '{}': {}", coupling.name, error.what()));
     }

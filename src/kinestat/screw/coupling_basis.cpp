@@ -54,7 +54,39 @@ struct SpatialBasis {
   std::vector<SpatialScrew> motions, actions;
 };
 
+// The geometry each type needs, checked in the order spatial_basis reads it (spatial_basis calls
+// this first, so a check and a build cannot disagree on what is refused).
+void check_spatial_geometry(CouplingType type, const CouplingGeometry& g, bool planar_model) {
+  switch (type) {
+    case CouplingType::revolute:
+      if (g.axis) require(g.axis, "axis");
+      break;
+    case CouplingType::prismatic:
+    case CouplingType::helical:
+    case CouplingType::cylindrical: require(g.axis, "axis"); break;
+    case CouplingType::universal: {
+      const Vec3& a1 = require(g.axis, "axis");
+      const Vec3& a2 = require(g.axis2, "axis2");
+      if (is_zero(cross(a1, a2))) throw GeometryError("axis and axis2 of a universal coupling must not be parallel");
+      break;
+    }
+    case CouplingType::planar:
+    case CouplingType::point_on_plane: require(g.normal, "normal"); break;
+    case CouplingType::point_on_line: {
+      const Vec3& n = require(g.normal, "normal");
+      if (!planar_model) throw GeometryError("point_on_line is a planar coupling; use point_on_plane or custom in space");
+      if (sgn(n[2]) != 0) throw GeometryError("the contact normal must lie in the xy-plane");
+      break;
+    }
+    case CouplingType::spherical:
+    case CouplingType::rigid:
+    case CouplingType::free:
+    case CouplingType::custom: break;
+  }
+}
+
 SpatialBasis spatial_basis(CouplingType type, const CouplingGeometry& g, bool planar_model) {
+  check_spatial_geometry(type, g, planar_model);
   const Vec3& p = g.point;
   const Vec3 z_axis{0, 0, 1};
   SpatialBasis b;
@@ -234,6 +266,11 @@ std::vector<std::vector<Rational>> reciprocal_complement(const std::vector<std::
     complement.push_back(action);
   }
   return complement;
+}
+
+void check_coupling_geometry(CouplingType type, const CouplingGeometry& geometry, const ScrewSpace& space) {
+  if (type == CouplingType::custom) (void)coupling_basis(type, geometry, space);
+  else check_spatial_geometry(type, geometry, space.is_planar());
 }
 
 CouplingBasis coupling_basis(CouplingType type, const CouplingGeometry& geometry, const ScrewSpace& space) {

@@ -59,6 +59,12 @@ class GeometryError : public Error {
 /// are given directly in the space's coordinates. Throws GeometryError.
 CouplingBasis coupling_basis(CouplingType type, const CouplingGeometry& geometry, const ScrewSpace& space);
 
+/// Throws the GeometryError that coupling_basis(type, geometry, space) would throw, and nothing
+/// otherwise, without building the basis (custom couplings excepted: their checks are the
+/// basis). For readers that check each coupling where it is written: with full-precision
+/// coordinates the basis is built in GMP rationals, which the check need not do twice.
+void check_coupling_geometry(CouplingType type, const CouplingGeometry& geometry, const ScrewSpace& space);
+
 /// A basis of the actions reciprocal to `motions` (each of `d` coordinates), exactly.
 std::vector<std::vector<Rational>> reciprocal_complement(const std::vector<std::vector<Rational>>& motions, int d);
 
