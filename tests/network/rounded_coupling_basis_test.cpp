@@ -7,6 +7,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <random>
 
 #include "kinestat/screw/rounded_coupling_basis.hpp"
@@ -113,8 +114,9 @@ TEST(RoundedCouplingBasis, RefusesWhatTheExactBasisRefuses) {
 
 TEST(SmallRational, RoundsTowardZeroLikeGmp) {
   std::mt19937_64 rng(7);
-  for (int trial = 0; trial < 100000; ++trial) {
-    const auto bits = 1 + static_cast<int>(rng() % 53);
+  // Up to 62-bit numerators and denominators: beyond 2^53 the conversion divides by hand.
+  for (int trial = 0; trial < 200000; ++trial) {
+    const auto bits = 1 + static_cast<int>(rng() % 62);
     const std::int64_t limit = (std::int64_t{1} << bits) - 1;
     auto draw = [&] { return static_cast<std::int64_t>(rng() % static_cast<std::uint64_t>(limit)) + 1; };
     const std::int64_t num = (rng() & 1U) != 0 ? draw() : -draw(), den = draw();
@@ -131,6 +133,12 @@ TEST(SmallRational, RoundsTowardZeroLikeGmp) {
   EXPECT_EQ((SmallRational(1) / 3).to_double(), 1.0 / 3.0);
   EXPECT_EQ((SmallRational(6) / 4).to_double(), 1.5);
   EXPECT_EQ((SmallRational(6) / 4).den(), 2);
+  // numpy's 17 digits: 999.9999506519511 = 9999999506519511 / 10^13, above 2^53.
+  const Rational seventeen = ratio(9999999506519511L, 10000000000000L);
+  EXPECT_EQ(std::bit_cast<std::uint64_t>(SmallRational::from(seventeen)->to_double()),
+            std::bit_cast<std::uint64_t>(seventeen.get_d()));
+  const Rational largest = ratio(std::numeric_limits<long>::max(), std::numeric_limits<long>::max() - 1);
+  EXPECT_EQ(SmallRational::from(largest)->to_double(), largest.get_d());
 }
 
 }  // namespace

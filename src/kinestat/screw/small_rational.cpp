@@ -1,5 +1,8 @@
 #include "kinestat/screw/small_rational.hpp"
 
+#include <bit>
+#include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numeric>
 
@@ -83,8 +86,39 @@ bool abs_less(const SmallRational& a, const SmallRational& b) {
   return checked_mul(magnitude(a.num_), b.den_) < checked_mul(magnitude(b.num_), a.den_);
 }
 
+namespace {
+
+// n / d rounded toward zero to a double, for 0 < n, d < 2^63: the quotient's leading 53 bits by
+// long division, the fraction and lower bits dropped (what mpq_get_d computes). Numbers from
+// numpy carry 17 digits, beyond the 2^53 that the division in doubles below handles.
+double truncated_quotient(std::uint64_t n, std::uint64_t d) {
+  std::uint64_t whole = n / d, rest = n % d, mantissa = 0;
+  int exponent = 0;
+  constexpr std::uint64_t kTop = std::uint64_t{1} << 52;
+  if (whole >= 2 * kTop) {
+    exponent = std::bit_width(whole) - 53;
+    mantissa = whole >> exponent;
+  } else {
+    mantissa = whole;
+    while (mantissa < kTop) {  // the next bit of the fraction
+      rest <<= 1;  // rest < d < 2^63: no overflow
+      const bool bit = rest >= d;
+      if (bit) rest -= d;
+      mantissa = (mantissa << 1) | static_cast<std::uint64_t>(bit);
+      --exponent;
+    }
+  }
+  return std::ldexp(static_cast<double>(mantissa), exponent);  // exact: mantissa < 2^53
+}
+
+}  // namespace
+
 double SmallRational::to_double() const {
-  if (magnitude(num_) > kExactDouble || den_ > kExactDouble) throw Overflow{};
+  if (num_ == 0) return 0.0;
+  if (magnitude(num_) > kExactDouble || den_ > kExactDouble) {
+    const double q = truncated_quotient(static_cast<std::uint64_t>(magnitude(num_)), static_cast<std::uint64_t>(den_));
+    return num_ < 0 ? -q : q;
+  }
   const auto n = static_cast<double>(num_), d = static_cast<double>(den_);
   double q = n / d;  // rounded to nearest
   // n − q d is exact in one fused operation; its sign says whether the rounding went away from

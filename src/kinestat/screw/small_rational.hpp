@@ -39,8 +39,7 @@ class SmallRational {
   friend bool abs_less(const SmallRational& a, const SmallRational& b);
 
   /// The double nearest the value in the direction of zero (rounded toward zero), as
-  /// GMP's mpq_get_d rounds, so both paths give the same bits. Throws Overflow when the
-  /// numerator or denominator exceeds 2^53 (not exactly representable as a double).
+  /// GMP's mpq_get_d rounds, so both paths give the same bits. Never throws.
   double to_double() const;
 
   /// The exact square root when the value is the square of a rational, else empty (also for
