@@ -560,17 +560,27 @@ class Network(_Model):
             document["ground"] = self._body(self.ground)
         if self.bodies:
             document["bodies"] = list(self.bodies)
+        # Each coupling written straight to its line, as the framework's nodes and bars: a row of
+        # NaN leaves its key out, any other row must be finite.
+        e = len(self.types)
+        between = [_quote(self._body(b)) for b in self.between.ravel().tolist()]
+        columns = []
+        arrays = list(self.geometry.items())
+        if self.pitches is not None:
+            arrays.append(("pitch", self.pitches.reshape(e, 1)))
+        for key, array in arrays:
+            texts = [None] * e
+            present = np.flatnonzero(~np.isnan(array).all(axis=1))
+            for i, row in zip(present.tolist(), _rows(array[present], key)):
+                texts[i] = f'"{key}": {repr(row[0]) if key == "pitch" else "[" + ", ".join(map(repr, row)) + "]"}'
+            columns.append(texts)
         couplings = []
         for i, coupling_type in enumerate(self.types):
-            coupling = {"name": self.coupling_names[i], "type": coupling_type,
-                        "between": [self._body(b) for b in self.between[i]]}
-            for key, array in self.geometry.items():
-                if not np.all(np.isnan(array[i])):
-                    coupling[key] = _vector(array[i])
-            if self.pitches is not None and not np.isnan(self.pitches[i]):
-                coupling["pitch"] = _number(self.pitches[i])
-            couplings.append(coupling)
-        document["couplings"] = couplings
+            parts = [f'"name": {_quote(self.coupling_names[i])}', f'"type": {_quote(coupling_type)}',
+                     f'"between": [{between[2 * i]}, {between[2 * i + 1]}]']
+            parts += [texts[i] for texts in columns if texts[i] is not None]
+            couplings.append("{" + ", ".join(parts) + "}")
+        document["couplings"] = _Encoded(couplings)
         for key in ("chords", "primary", "inputs"):
             value = getattr(self, key)
             if value:

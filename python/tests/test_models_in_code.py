@@ -113,3 +113,24 @@ def test_framework_document_holds_every_item_one_per_line():
         kinestat.Framework([[0, 0], [1, float("nan")]], bars=[[0, 1]]).to_json()
     with pytest.raises(IndexError):
         kinestat.Framework([[0, 0], [1, 0]], bars=[[0, 1]], released={5: ["elongation"]}).to_json()
+
+
+def test_network_document_holds_every_coupling_one_per_line():
+    nan = float("nan")
+    network = kinestat.Network(["revolute", "helical", "spherical"], [["g", "a"], ["a", "b"], ["b", "g"]],
+                               points=[[0, 0, 0], [1.5, 0, 0], [0, 2, 0]], axes=[[0, 0, 1], [1, 0, 0], [nan, nan, nan]],
+                               pitches=[nan, 0.25, nan], bodies=["g", "a", "b"], coupling_names=['R "1"', "H", "S"],
+                               ground="g", name="loop")
+    expected = {
+        "kinestat": 1, "kind": "network", "name": "loop", "dimension": "spatial", "ground": "g", "bodies": ["g", "a", "b"],
+        "couplings": [
+            {"name": 'R "1"', "type": "revolute", "between": ["g", "a"], "point": [0, 0, 0], "axis": [0, 0, 1]},
+            {"name": "H", "type": "helical", "between": ["a", "b"], "point": [1.5, 0, 0], "axis": [1, 0, 0], "pitch": 0.25},
+            {"name": "S", "type": "spherical", "between": ["b", "g"], "point": [0, 2, 0]},
+        ],
+    }
+    assert network.to_dict() == expected
+    assert '  {"name": "H", "type": "helical", "between": ["a", "b"], "point": [1.5, 0, 0], "axis": [1, 0, 0], ' \
+           '"pitch": 0.25},' in network.to_json().splitlines()
+    with pytest.raises(ValueError):
+        kinestat.Network(["revolute"], [[0, 1]], points=[[0, nan, 0]], axes=[[0, 0, 1]]).to_json()
