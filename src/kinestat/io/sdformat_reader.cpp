@@ -279,6 +279,11 @@ sdf::SDFPtr described_document() {
   root->SetDescription(description->GetDescription());
   root->SetCopyChildren(description->GetCopyChildren());
   root->SetReferenceSDF(description->ReferenceSDF());
+  root->SetFilePath(description->FilePath());  // the rest of what Element::Clone copies
+  root->SetXmlPath(description->XmlPath());
+  root->SetOriginalVersion(description->OriginalVersion());
+  root->SetExplicitlySetInFile(description->GetExplicitlySetInFile());
+  if (const auto line = description->LineNumber()) root->SetLineNumber(*line);
   for (const sdf::ParamPtr& attribute : description->GetAttributes())
     root->AddAttribute(attribute->GetKey(), attribute->GetTypeName(), attribute->GetDefaultAsString(),
                        attribute->GetRequired(), attribute->GetDescription());
