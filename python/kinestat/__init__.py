@@ -17,7 +17,6 @@ Bad input raises :class:`InputError` with ``file``, ``line``, ``column`` and ``p
 """
 
 import json
-import math
 
 import numpy as np
 
@@ -345,22 +344,11 @@ def solve_positions(model, inputs=None, *, sweep=None):
     return json.loads(_core.read(path, text).positions(pairs, sweep))
 
 
-def _number(value):
-    # Integral values are written as integers, others as the shortest decimal that reads back
-    # as the same double: a model built in code and its file give the same exact numbers.
-    value = float(value)
-    if not math.isfinite(value):
-        raise ValueError(f"not a finite number: {value}")
-    return int(value) if value.is_integer() and abs(value) < 2**53 else value
-
-
-def _vector(row):
-    return [_number(x) for x in np.asarray(row, dtype=float).ravel()]
-
-
 def _rows(array, what):
-    # Each row of a float array as a list of _number values, without a Python call per value:
-    # the finiteness check runs once on the whole array.
+    # Each row of a float array as a list of numbers: integral values as integers, others as
+    # floats, whose repr is the shortest decimal that reads back as the same double, so a model
+    # built in code and its file give the same exact numbers. No Python call per value: the
+    # finiteness check runs once on the whole array.
     array = np.asarray(array, dtype=float)
     if not np.all(np.isfinite(array)):
         raise ValueError(f"{what}: not a finite number: {array[~np.isfinite(array)][0]}")
