@@ -483,11 +483,5 @@ PYBIND11_MODULE(_core, m) {
   m.def("sweep_lines", &sweep_lines, py::arg("spec"), py::arg("index") = 0, py::arg("count") = 1, py::arg("tolerance") = std::nullopt,
         py::arg("full") = false, "The JSON lines of a design sweep (one shard of it) and how many variants failed");
   m.def("html_built_in", &report::html_report_built_in);
-  m.def("formats", [] {
-    std::vector<std::string> names;
-    for (const io::ModelFormat format : {io::ModelFormat::kinestat, io::ModelFormat::spacar, io::ModelFormat::urdf,
-                                         io::ModelFormat::sdformat, io::ModelFormat::mjcf})
-      if (io::format_built_in(format)) names.emplace_back(io::format_name(format));
-    return names;
-  }, "The model file formats this kinestat reads");
+  m.def("formats", &io::readable_format_names, "The model file formats this kinestat reads");
 }

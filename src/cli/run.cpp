@@ -45,12 +45,7 @@ void keep_freed_memory_for_reuse() {
 // MJCF need their libraries at build time) and whether the HTML report's viewer is built in.
 std::string version_text() {
   std::string formats;
-  for (const io::ModelFormat format :
-       {io::ModelFormat::kinestat, io::ModelFormat::spacar, io::ModelFormat::urdf, io::ModelFormat::sdformat, io::ModelFormat::mjcf}) {
-    if (!io::format_built_in(format)) continue;
-    if (!formats.empty()) formats += ", ";
-    formats += io::format_name(format);
-  }
+  for (const std::string& name : io::readable_format_names()) formats += (formats.empty() ? "" : ", ") + name;
   return "kinestat 0.1.0\nmodel formats: " + formats +
          "\nHTML report: " + (report::html_report_built_in() ? "built in" : "not built in (no npm at build time)");
 }

@@ -32,26 +32,12 @@ ModelFormat model_format(const std::string& path) {
   return ModelFormat::kinestat;
 }
 
-const char* format_name(ModelFormat format) {
-  switch (format) {
-    case ModelFormat::kinestat: return "kinestat";
-    case ModelFormat::spacar: return "SPACAR";
-    case ModelFormat::urdf: return "URDF";
-    case ModelFormat::sdformat: return "SDFormat";
-    case ModelFormat::mjcf: return "MJCF";
-  }
-  return "kinestat";
-}
-
-bool format_built_in(ModelFormat format) {
-  switch (format) {
-    case ModelFormat::urdf: return urdf_reader_built_in();
-    case ModelFormat::sdformat: return sdformat_reader_built_in();
-    case ModelFormat::mjcf: return mjcf_reader_built_in();
-    case ModelFormat::kinestat:
-    case ModelFormat::spacar: return true;
-  }
-  return false;
+std::vector<std::string> readable_format_names() {
+  std::vector<std::string> names{"kinestat", "SPACAR"};
+  if (urdf_reader_built_in()) names.emplace_back("URDF");
+  if (sdformat_reader_built_in()) names.emplace_back("SDFormat");
+  if (mjcf_reader_built_in()) names.emplace_back("MJCF");
+  return names;
 }
 
 }  // namespace kinestat::io

@@ -3,6 +3,7 @@
 // program's format told by the file's extension (and, for .xml, its root element).
 
 #include <string>
+#include <vector>
 
 namespace kinestat::io {
 
@@ -14,11 +15,9 @@ enum class ModelFormat { kinestat, spacar, urdf, sdformat, mjcf };
 /// JSON. Throws InputError for an .xml file with another root or none.
 ModelFormat model_format(const std::string& path);
 
-/// The format's name as users know it: "kinestat", "SPACAR", "URDF", "SDFormat" or "MJCF".
-const char* format_name(ModelFormat format);
-
-/// True when this kinestat reads the format: URDF, SDFormat and MJCF need their libraries at
-/// build time (urdfdom, libsdformat, libmujoco); the others are always read.
-bool format_built_in(ModelFormat format);
+/// The names of the formats this build reads, as users know them: "kinestat" and "SPACAR"
+/// always, then "URDF", "SDFormat" and "MJCF" where their libraries were found at build time
+/// (tinyxml2, libsdformat, libmujoco).
+std::vector<std::string> readable_format_names();
 
 }  // namespace kinestat::io
