@@ -4,10 +4,20 @@
 
 #include <SuiteSparseQR.hpp>
 
+// SuiteSparseQR's factorisation without the conversion of R to a sparse matrix, and its release
+// (exported by libspqr, declared in its internal header spqr.hpp, which defines macros of its own).
+template <typename Entry>
+SuiteSparseQR_factorization<Entry>* spqr_1factor(int ordering, double tol, SuiteSparse_long bncols, int keepH,
+                                                 cholmod_sparse* A, SuiteSparse_long ldb, SuiteSparse_long* Bp,
+                                                 SuiteSparse_long* Bi, Entry* Bx, cholmod_common* cc);
+template <typename Entry>
+void spqr_freefac(SuiteSparseQR_factorization<Entry>** QR_handle, cholmod_common* cc);
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <new>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -24,6 +34,97 @@ constexpr Eigen::Index kNullVectorBlock = 32;
 // smallest singular values are close.
 constexpr int kSigmaMinSteps = 8;
 constexpr double kSigmaMinSettled = 1e-3;
+
+// SuiteSparseQR's long-integer interface needs 64-bit indices: the one copy made is of A
+// (with its columns in the given order, if any), and `view` describes it to CHOLMOD.
+struct SpqrInput {
+  Eigen::SparseMatrix<double, Eigen::ColMajor, SuiteSparse_long> matrix;
+  cholmod_sparse view{};
+
+  SpqrInput(const Eigen::SparseMatrix<double>& a, const std::vector<Eigen::Index>& column_order) {
+    const Eigen::Index cols = a.cols();
+    if (!column_order.empty()) {
+      // Column k of the copy is column column_order[k] of a, copied whole into the compressed
+      // arrays (the values and row indices exactly as in a).
+      std::vector<bool> seen(static_cast<std::size_t>(cols), false);
+      Eigen::Index entries = 0;
+      for (const Eigen::Index j : column_order) {
+        if (j < 0 || j >= cols || seen[static_cast<std::size_t>(j)])
+          throw std::invalid_argument("SparseQr: the column order must list every column once");
+        seen[static_cast<std::size_t>(j)] = true;
+        entries += a.isCompressed() ? a.outerIndexPtr()[j + 1] - a.outerIndexPtr()[j] : a.innerNonZeroPtr()[j];
+      }
+      matrix.resize(a.rows(), cols);
+      matrix.resizeNonZeros(entries);
+      SuiteSparse_long* start = matrix.outerIndexPtr();
+      SuiteSparse_long at = 0;
+      for (Eigen::Index k = 0; k < cols; ++k) {
+        start[k] = at;
+        for (Eigen::SparseMatrix<double>::InnerIterator it(a, column_order[static_cast<std::size_t>(k)]); it; ++it, ++at) {
+          matrix.innerIndexPtr()[at] = static_cast<SuiteSparse_long>(it.row());
+          matrix.valuePtr()[at] = it.value();
+        }
+      }
+      start[cols] = at;
+    } else {
+      matrix = a.cast<double>();
+    }
+    matrix.makeCompressed();
+    view.nrow = static_cast<std::size_t>(a.rows());
+    view.ncol = static_cast<std::size_t>(cols);
+    view.nzmax = static_cast<std::size_t>(matrix.nonZeros());
+    view.p = matrix.outerIndexPtr();
+    view.i = matrix.innerIndexPtr();
+    view.x = matrix.valuePtr();
+    view.stype = 0;
+    view.itype = CHOLMOD_LONG;
+    view.xtype = CHOLMOD_REAL;
+    view.dtype = CHOLMOD_DOUBLE;
+    view.sorted = 1;
+    view.packed = 1;
+  }
+  SpqrInput(const SpqrInput&) = delete;
+  SpqrInput& operator=(const SpqrInput&) = delete;
+};
+
+// The smallest |R_kk| over the live columns of a factorisation, read where SuiteSparseQR keeps R
+// before it assembles it (spqr_rconvert of SuiteSparse 5.12 reads the same layout): the column
+// singletons' rows R1 (each row's singleton is live, its pivot the row's first entry: no
+// earlier column reaches a later singleton's row; an empty column counts as a singleton column
+// without a row, so rows and columns need not pair up by index), then each front's block,
+// column by column, every column holding as many entries as the front has live pivot rows so
+// far, a live pivotal column's own pivot last. Empty if the live pivots counted there disagree
+// with the factorisation's rank (a layout this code does not know).
+std::optional<double> smallest_live_pivot(const SuiteSparseQR_factorization<double>& qr) {
+  double smallest = std::numeric_limits<double>::infinity();
+  SuiteSparse_long live = 0;
+  for (SuiteSparse_long row = 0; row < qr.n1rows; ++row)
+    if (qr.R1p[row] < qr.R1p[row + 1]) {
+      smallest = std::min(smallest, std::abs(qr.R1x[qr.R1p[row]]));
+      ++live;
+    }
+  const spqr_symbolic* symbolic = qr.QRsym;
+  const spqr_numeric<double>* numeric = qr.QRnum;
+  if (symbolic != nullptr && numeric != nullptr) {
+    for (SuiteSparse_long f = 0; f < symbolic->nf; ++f) {
+      const double* block = numeric->Rblock[f];
+      const SuiteSparse_long first = symbolic->Super[f];
+      const SuiteSparse_long pivots = symbolic->Super[f + 1] - first;
+      const SuiteSparse_long columns = symbolic->Rp[f + 1] - symbolic->Rp[f];
+      SuiteSparse_long rows = 0;
+      for (SuiteSparse_long k = 0; k < columns; ++k) {
+        if (k < pivots && (numeric->Rdead == nullptr || numeric->Rdead[first + k] == 0)) {
+          ++rows;
+          smallest = std::min(smallest, std::abs(block[rows - 1]));
+          ++live;
+        }
+        block += rows;
+      }
+    }
+  }
+  if (live != qr.rank) return std::nullopt;
+  return smallest;
+}
 
 }  // namespace
 
@@ -64,56 +165,13 @@ void SparseQr::factor(const Eigen::SparseMatrix<double>& a, double threshold, co
     return;
   }
   const bool given = !column_order.empty();
-  // SuiteSparseQR's long-integer interface needs 64-bit indices: the one copy made is of A
-  // (with its columns in the given order, if any).
-  Eigen::SparseMatrix<double, Eigen::ColMajor, SuiteSparse_long> input;
-  if (given) {
-    // Column k of the copy is column column_order[k] of a, copied whole into the compressed
-    // arrays (the values and row indices exactly as in a).
-    std::vector<bool> seen(static_cast<std::size_t>(cols_), false);
-    Eigen::Index entries = 0;
-    for (const Eigen::Index j : column_order) {
-      if (j < 0 || j >= cols_ || seen[static_cast<std::size_t>(j)])
-        throw std::invalid_argument("SparseQr: the column order must list every column once");
-      seen[static_cast<std::size_t>(j)] = true;
-      entries += a.isCompressed() ? a.outerIndexPtr()[j + 1] - a.outerIndexPtr()[j] : a.innerNonZeroPtr()[j];
-    }
-    input.resize(rows_, cols_);
-    input.resizeNonZeros(entries);
-    SuiteSparse_long* start = input.outerIndexPtr();
-    SuiteSparse_long at = 0;
-    for (Eigen::Index k = 0; k < cols_; ++k) {
-      start[k] = at;
-      for (Eigen::SparseMatrix<double>::InnerIterator it(a, column_order[static_cast<std::size_t>(k)]); it; ++it, ++at) {
-        input.innerIndexPtr()[at] = static_cast<SuiteSparse_long>(it.row());
-        input.valuePtr()[at] = it.value();
-      }
-    }
-    start[cols_] = at;
-  } else {
-    input = a.cast<double>();
-  }
-  input.makeCompressed();
-  cholmod_sparse view{};
-  view.nrow = static_cast<std::size_t>(rows_);
-  view.ncol = static_cast<std::size_t>(cols_);
-  view.nzmax = static_cast<std::size_t>(input.nonZeros());
-  view.p = input.outerIndexPtr();
-  view.i = input.innerIndexPtr();
-  view.x = input.valuePtr();
-  view.stype = 0;
-  view.itype = CHOLMOD_LONG;
-  view.xtype = CHOLMOD_REAL;
-  view.dtype = CHOLMOD_DOUBLE;
-  view.sorted = 1;
-  view.packed = 1;
-
+  SpqrInput input(a, column_order);
   cholmod_common& cc = factor_->common;
   // econ = 0: R has exactly rank rows. Nested dissection by METIS keeps the fill of R near
   // that of a Cholesky factor of AᵀA on lattice-like frameworks; a given order is kept
   // (SPQR_ORDERING_NATURAL: singletons first, then the columns as given, etree-postordered).
   const SuiteSparse_long rank = SuiteSparseQR<double>(given ? SPQR_ORDERING_NATURAL : SPQR_ORDERING_METIS, threshold, 0,
-                                                      &view, &factor_->r, &factor_->permutation, &cc);
+                                                      &input.view, &factor_->r, &factor_->permutation, &cc);
   if (cc.status == CHOLMOD_OUT_OF_MEMORY) throw std::bad_alloc();
   if (cc.status < CHOLMOD_OK || rank < 0 || factor_->r == nullptr)
     throw std::runtime_error("SuiteSparseQR failed (status " + std::to_string(cc.status) + ")");
@@ -124,6 +182,37 @@ void SparseQr::factor(const Eigen::SparseMatrix<double>& a, double threshold, co
     const Eigen::Index column = factor_->permutation != nullptr ? static_cast<Eigen::Index>(factor_->permutation[j]) : j;
     permutation_[static_cast<std::size_t>(j)] = given ? column_order[static_cast<std::size_t>(column)] : column;
   }
+}
+
+SparseRankCount sparse_qr_rank(const Eigen::SparseMatrix<double>& a, double threshold, const std::vector<Eigen::Index>& column_order) {
+  if (!column_order.empty() && static_cast<Eigen::Index>(column_order.size()) != a.cols())
+    throw std::invalid_argument("SparseQr: the column order must list every column once");
+  SparseRankCount count;
+  if (a.rows() == 0 || a.cols() == 0) return count;
+  pin_blas_threads();
+  SpqrInput input(a, column_order);
+  cholmod_common cc{};
+  cholmod_l_start(&cc);
+  // keepH = false: the Householder vectors are discarded front by front, as SuiteSparseQR does
+  // when Q is not asked for; the same factorisation, so the same rank and pivots.
+  SuiteSparseQR_factorization<double>* qr =
+      spqr_1factor<double>(column_order.empty() ? SPQR_ORDERING_METIS : SPQR_ORDERING_NATURAL, threshold, 0, 0,
+                           &input.view, 0, nullptr, nullptr, nullptr, &cc);
+  const int status = cc.status;
+  if (qr == nullptr || status < CHOLMOD_OK) {
+    if (qr != nullptr) spqr_freefac<double>(&qr, &cc);
+    cholmod_l_finish(&cc);
+    if (status == CHOLMOD_OUT_OF_MEMORY) throw std::bad_alloc();
+    throw std::runtime_error("SuiteSparseQR failed (status " + std::to_string(status) + ")");
+  }
+  count.rank = static_cast<Eigen::Index>(qr->rank);
+  count.peak_memory = cc.memory_usage;
+  const std::optional<double> smallest = smallest_live_pivot(*qr);
+  spqr_freefac<double>(&qr, &cc);
+  cholmod_l_finish(&cc);
+  if (!smallest) throw std::logic_error("sparse_qr_rank: SuiteSparseQR's frontal R blocks do not match its rank");
+  count.smallest_pivot = count.rank > 0 ? *smallest : 0.0;
+  return count;
 }
 
 SparseQr::~SparseQr() = default;

@@ -86,9 +86,13 @@ RankDecision sparse_rank_threshold(const Eigen::SparseMatrix<double>& a, const R
   return decision;
 }
 
+void record_rank(RankDecision& decision, const SparseRankCount& count) {
+  decision.rank = count.rank;
+  decision.smallest_kept = decision.rank > 0 ? std::min(decision.largest, count.smallest_pivot) : 0.0;
+}
+
 void record_rank(RankDecision& decision, const SparseQr& qr) {
-  decision.rank = qr.rank();
-  decision.smallest_kept = decision.rank > 0 ? std::min(decision.largest, qr.smallest_pivot()) : 0.0;
+  record_rank(decision, SparseRankCount{qr.rank(), qr.rank() > 0 ? qr.smallest_pivot() : 0.0, qr.peak_memory()});
 }
 
 void record_factor_smallest(RankDecision& decision, const SparseQr& qr) {
@@ -105,11 +109,11 @@ RankDecision sparse_numerical_rank(const Eigen::SparseMatrix<double>& a, const R
   const std::vector<Eigen::Index> order =
       tall && !column_groups.empty() ? grouped_nested_dissection_order(a, column_groups, kGroupedOrderMinShare)
                                      : std::vector<Eigen::Index>{};
-  const SparseQr qr = !tall           ? SparseQr(Eigen::SparseMatrix<double>(a.transpose()), decision.threshold)
-                      : order.empty() ? SparseQr(a, decision.threshold)
-                                      : SparseQr(a, decision.threshold, order);
-  record_rank(decision, qr);
-  if (peak_memory != nullptr) *peak_memory = qr.peak_memory();
+  // Counts only: R is not needed beyond its pivots (sparse_qr_rank).
+  const SparseRankCount count = tall ? sparse_qr_rank(a, decision.threshold, order)
+                                     : sparse_qr_rank(Eigen::SparseMatrix<double>(a.transpose()), decision.threshold);
+  record_rank(decision, count);
+  if (peak_memory != nullptr) *peak_memory = count.peak_memory;
   return decision;
 }
 

@@ -34,6 +34,8 @@ RankDecision sparse_rank_threshold(const Eigen::SparseMatrix<double>& a, const R
 
 /// Fills the rank and its evidence (smallest kept |R_ii|) of `decision` from `qr`.
 void record_rank(RankDecision& decision, const SparseQr& qr);
+/// The same from a factorisation that kept only its counts (sparse_qr_rank).
+void record_rank(RankDecision& decision, const SparseRankCount& count);
 /// Adds σ_min(R11) of `qr` (SparseQr::smallest_singular_estimate, 0 when the rank is 0) to
 /// `decision` as `factor_smallest`: a few more triangular solves, for decisions whose factor is
 /// also used to solve (null vectors, least-squares residuals), whose accuracy it bounds.
