@@ -174,16 +174,20 @@ Standing screen(const Model& model, BasisCache& cache, bool exact, const Toleran
     const auto rows = static_cast<Eigen::Index>(actions.size());
     if (rows == 0) {
       s.idle += d;
-    } else if (exact) {
-      linalg::RationalMatrix a(rows, d);
-      for (Eigen::Index r = 0; r < rows; ++r)
-        for (int k = 0; k < d; ++k) a(r, k) = (*actions[static_cast<std::size_t>(r)])[static_cast<std::size_t>(k)];
-      s.idle += d - static_cast<int>(linalg::exact_rank(a));
-    } else {
-      Eigen::MatrixXd a(rows, d);
-      for (Eigen::Index r = 0; r < rows; ++r)
-        for (int k = 0; k < d; ++k) a(r, k) = (*actions[static_cast<std::size_t>(r)])[static_cast<std::size_t>(k)].get_d();
+      continue;
+    }
+    Eigen::MatrixXd a(rows, exact ? 0 : d);
+    for (Eigen::Index r = 0; !exact && r < rows; ++r)
+      for (int k = 0; k < d; ++k) a(r, k) = (*actions[static_cast<std::size_t>(r)])[static_cast<std::size_t>(k)].get_d();
+    if (!exact && a.allFinite()) {
       s.idle += d - static_cast<int>(linalg::numerical_rank(a, {tolerances.rank, cache.input_rounding()}).rank);
+    } else {
+      // Exact arithmetic, or actions beyond the range of doubles (a candidate's integral
+      // directions from a 120-digit coordinate reached 1e309; fuzz_model_file): decided exactly.
+      linalg::RationalMatrix exact_actions(rows, d);
+      for (Eigen::Index r = 0; r < rows; ++r)
+        for (int k = 0; k < d; ++k) exact_actions(r, k) = (*actions[static_cast<std::size_t>(r)])[static_cast<std::size_t>(k)];
+      s.idle += d - static_cast<int>(linalg::exact_rank(exact_actions));
     }
   }
   return s;

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "kinestat/linalg/blas_threads.hpp"
+#include "kinestat/linalg/non_finite_matrix.hpp"
 #include "kinestat/linalg/svd_analysis.hpp"
 
 // LAPACK (Fortran interface; trailing arguments are the hidden lengths of character arguments).
@@ -66,6 +67,7 @@ bool left_null_space_check(const Eigen::MatrixXd& a, const Eigen::MatrixXd& left
 NullSpaces analyse_null_spaces(const Eigen::MatrixXd& a, const RankTolerance& tolerance) {
   const Eigen::Index m = a.rows(), n = a.cols();
   if (m > n && n > 0) {
+    require_finite(a);
     pin_blas_threads();
     Eigen::MatrixXd qr = a;
     Eigen::VectorXd tau;

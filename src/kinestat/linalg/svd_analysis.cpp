@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "kinestat/linalg/blas_threads.hpp"
+#include "kinestat/linalg/non_finite_matrix.hpp"
 
 // LAPACK (Fortran interface; the trailing argument is the hidden length of `jobz`).
 extern "C" void dgesdd_(const char* jobz, const int* m, const int* n, double* a, const int* lda, double* s, double* u,
@@ -98,6 +99,7 @@ bool lapack_singular_values(const Eigen::MatrixXd& a, Eigen::VectorXd& s) {
 // Checked SVD: LAPACK first, the one-sided Jacobi SVD when LAPACK fails or its factors fail the
 // check. `full`: U and V completed to square orthonormal matrices.
 ThinFactors checked_svd(const Eigen::MatrixXd& a, bool full) {
+  require_finite(a);
   pin_blas_threads();
   ThinFactors f;
   if (lapack_svd(a, full, f) && factors_check(a, f)) return f;
@@ -155,6 +157,7 @@ SvdAnalysis analyse_svd(const Eigen::MatrixXd& a, const RankTolerance& tolerance
 
 Eigen::VectorXd singular_values(const Eigen::MatrixXd& a) {
   if (a.rows() == 0 || a.cols() == 0) return {};
+  require_finite(a);
   pin_blas_threads();
   Eigen::VectorXd s;
   if (lapack_singular_values(a, s)) return s;

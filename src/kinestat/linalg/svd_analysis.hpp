@@ -39,7 +39,8 @@ enum class SvdVectors { both, right_only };
 /// generic and deterministic, for the checks of factorisations on a few products.
 Eigen::MatrixXd probe_vectors(Eigen::Index rows, Eigen::Index count);
 
-/// Checked full SVD of `a` and its numerical rank.
+/// Checked full SVD of `a` and its numerical rank. Each function here throws NonFiniteMatrix
+/// (non_finite_matrix.hpp) when `a` has an infinite or NaN entry.
 SvdAnalysis analyse_svd(const Eigen::MatrixXd& a, const RankTolerance& tolerance = {},
                         SvdVectors vectors = SvdVectors::both);
 
