@@ -17,7 +17,7 @@ void spqr_freefac(SuiteSparseQR_factorization<Entry>** QR_handle, cholmod_common
 #include <cmath>
 #include <limits>
 #include <new>
-#include <optional>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 
@@ -87,62 +87,103 @@ struct SpqrInput {
   SpqrInput& operator=(const SpqrInput&) = delete;
 };
 
-// The smallest |R_kk| over the live columns of a factorisation, read where SuiteSparseQR keeps R
-// before it assembles it (spqr_rconvert of SuiteSparse 5.12 reads the same layout): the column
-// singletons' rows R1 (each row's singleton is live, its pivot the row's first entry: no
-// earlier column reaches a later singleton's row; an empty column counts as a singleton column
-// without a row, so rows and columns need not pair up by index), then each front's block,
-// column by column, every column holding as many entries as the front has live pivot rows so
-// far, a live pivotal column's own pivot last. Empty if the live pivots counted there disagree
-// with the factorisation's rank (a layout this code does not know).
-std::optional<double> smallest_live_pivot(const SuiteSparseQR_factorization<double>& qr) {
-  double smallest = std::numeric_limits<double>::infinity();
-  SuiteSparse_long live = 0;
-  for (SuiteSparse_long row = 0; row < qr.n1rows; ++row)
-    if (qr.R1p[row] < qr.R1p[row + 1]) {
-      smallest = std::min(smallest, std::abs(qr.R1x[qr.R1p[row]]));
-      ++live;
-    }
-  const spqr_symbolic* symbolic = qr.QRsym;
-  const spqr_numeric<double>* numeric = qr.QRnum;
-  if (symbolic != nullptr && numeric != nullptr) {
-    for (SuiteSparse_long f = 0; f < symbolic->nf; ++f) {
-      const double* block = numeric->Rblock[f];
-      const SuiteSparse_long first = symbolic->Super[f];
-      const SuiteSparse_long pivots = symbolic->Super[f + 1] - first;
-      const SuiteSparse_long columns = symbolic->Rp[f + 1] - symbolic->Rp[f];
-      SuiteSparse_long rows = 0;
-      for (SuiteSparse_long k = 0; k < columns; ++k) {
-        if (k < pivots && (numeric->Rdead == nullptr || numeric->Rdead[first + k] == 0)) {
-          ++rows;
-          smallest = std::min(smallest, std::abs(block[rows - 1]));
-          ++live;
-        }
-        block += rows;
-      }
+// SuiteSparseQR's factorisation of a matrix (spqr_1factor: singletons, the fill-reducing order,
+// the multifrontal QR with Heath's rank rule), Householder vectors discarded front by front as
+// SuiteSparseQR does when Q is not asked for, so the same factorisation, rank and R.
+class FrontalFactorisation {
+ public:
+  FrontalFactorisation(SpqrInput& input, bool given_order, double threshold) {
+    cholmod_l_start(&cc_);
+    // Nested dissection by METIS keeps the fill of R near that of a Cholesky factor of AᵀA on
+    // lattice-like frameworks; a given order is kept (SPQR_ORDERING_NATURAL: singletons first,
+    // then the columns as given, etree-postordered).
+    qr_ = spqr_1factor<double>(given_order ? SPQR_ORDERING_NATURAL : SPQR_ORDERING_METIS, threshold, 0, 0, &input.view, 0,
+                               nullptr, nullptr, nullptr, &cc_);
+    const int status = cc_.status;
+    if (qr_ == nullptr || status < CHOLMOD_OK) {
+      release();
+      if (status == CHOLMOD_OUT_OF_MEMORY) throw std::bad_alloc();
+      throw std::runtime_error("SuiteSparseQR failed (status " + std::to_string(status) + ")");
     }
   }
-  if (live != qr.rank) return std::nullopt;
-  return smallest;
-}
+  ~FrontalFactorisation() { release(); }
+  FrontalFactorisation(const FrontalFactorisation&) = delete;
+  FrontalFactorisation& operator=(const FrontalFactorisation&) = delete;
+
+  const SuiteSparseQR_factorization<double>& factor() const { return *qr_; }
+  /// SuiteSparse's own count of its peak memory, in bytes.
+  std::size_t peak_memory() const { return cc_.memory_usage; }
+
+  /// Visits R where SuiteSparseQR keeps it before assembling it (the layout spqr_rconvert of
+  /// SuiteSparse 5.12 reads). Columns are numbered in the factorisation's order (column singletons
+  /// first, then the fill order), rows are R's (squeezed: the k-th live column's pivot is row
+  /// k). First the column singletons' rows R1: each row's singleton is live and its pivot is the
+  /// row's first entry (no earlier column reaches a later singleton's row; an empty column counts
+  /// as a singleton column without a row, so rows and columns need not pair up by index). Then
+  /// each front's packed block, column by column, every column holding as many entries as the
+  /// front has live pivot rows so far, a live pivotal column's own pivot last.
+  /// live(column, pivot) is called for every live column in order; with `Entries`,
+  /// entry(row, column, value) for every stored entry (exact zeros of the fronts skipped, as
+  /// spqr_rconvert skips them), the rows of each column increasing. Throws std::logic_error if
+  /// the live columns found disagree with the factorisation's rank (a layout this code does not
+  /// know).
+  template <bool Entries, typename Live, typename Entry>
+  void visit_r(Live&& live, Entry&& entry) const {
+    const SuiteSparseQR_factorization<double>& qr = *qr_;
+    SuiteSparse_long found = 0;
+    for (SuiteSparse_long row = 0; row < qr.n1rows; ++row) {
+      const SuiteSparse_long begin = qr.R1p[row], end = qr.R1p[row + 1];
+      if (begin < end) {
+        live(qr.R1j[begin], qr.R1x[begin]);
+        ++found;
+      }
+      if constexpr (Entries)
+        for (SuiteSparse_long p = begin; p < end; ++p) entry(row, qr.R1j[p], qr.R1x[p]);
+    }
+    const spqr_symbolic* symbolic = qr.QRsym;
+    const spqr_numeric<double>* numeric = qr.QRnum;
+    if (symbolic != nullptr && numeric != nullptr) {
+      SuiteSparse_long first_row = qr.n1rows;
+      for (SuiteSparse_long f = 0; f < symbolic->nf; ++f) {
+        const double* block = numeric->Rblock[f];
+        const SuiteSparse_long first = symbolic->Super[f];
+        const SuiteSparse_long pivots = symbolic->Super[f + 1] - first;
+        const SuiteSparse_long* front_columns = symbolic->Rj + symbolic->Rp[f];
+        const SuiteSparse_long columns = symbolic->Rp[f + 1] - symbolic->Rp[f];
+        SuiteSparse_long rows = 0;
+        for (SuiteSparse_long k = 0; k < columns; ++k) {
+          const SuiteSparse_long column = qr.n1cols + front_columns[k];
+          if (k < pivots && (numeric->Rdead == nullptr || numeric->Rdead[first + k] == 0)) {
+            ++rows;
+            live(column, block[rows - 1]);
+            ++found;
+          }
+          if constexpr (Entries)
+            for (SuiteSparse_long t = 0; t < rows; ++t)
+              if (block[t] != 0.0) entry(first_row + t, column, block[t]);
+          block += rows;
+        }
+        first_row += rows;
+      }
+    }
+    if (found != qr.rank) throw std::logic_error("SparseQr: SuiteSparseQR's frontal R blocks do not match its rank");
+  }
+
+ private:
+  void release() {
+    if (qr_ != nullptr) spqr_freefac<double>(&qr_, &cc_);
+    cholmod_l_finish(&cc_);
+  }
+  cholmod_common cc_{};
+  SuiteSparseQR_factorization<double>* qr_ = nullptr;
+};
 
 }  // namespace
 
+// R (rank × n) in compressed columns, in the order of permutation(): the live columns first.
 struct SparseQr::Factor {
-  cholmod_common common{};
-  cholmod_sparse* r = nullptr;
-  SuiteSparse_long* permutation = nullptr;
-  Eigen::Index cols = 0;
-
-  Factor() { cholmod_l_start(&common); }
-  ~Factor() {
-    if (r != nullptr) cholmod_l_free_sparse(&r, &common);
-    if (permutation != nullptr)
-      cholmod_l_free(static_cast<std::size_t>(cols), sizeof(SuiteSparse_long), permutation, &common);
-    cholmod_l_finish(&common);
-  }
-  Factor(const Factor&) = delete;
-  Factor& operator=(const Factor&) = delete;
+  std::vector<std::int64_t> starts, rows;
+  std::vector<double> values;
 };
 
 SparseQr::SparseQr(const Eigen::SparseMatrix<double>& a, double threshold)
@@ -159,28 +200,46 @@ SparseQr::SparseQr(const Eigen::SparseMatrix<double>& a, double threshold, const
 
 void SparseQr::factor(const Eigen::SparseMatrix<double>& a, double threshold, const std::vector<Eigen::Index>& column_order) {
   pin_blas_threads();
-  factor_->cols = cols_;
   if (rows_ == 0 || cols_ == 0) {
     for (Eigen::Index j = 0; j < cols_; ++j) permutation_.push_back(j);
+    factor_->starts.assign(static_cast<std::size_t>(cols_) + 1, 0);
     return;
   }
   const bool given = !column_order.empty();
   SpqrInput input(a, column_order);
-  cholmod_common& cc = factor_->common;
-  // econ = 0: R has exactly rank rows. Nested dissection by METIS keeps the fill of R near
-  // that of a Cholesky factor of AᵀA on lattice-like frameworks; a given order is kept
-  // (SPQR_ORDERING_NATURAL: singletons first, then the columns as given, etree-postordered).
-  const SuiteSparse_long rank = SuiteSparseQR<double>(given ? SPQR_ORDERING_NATURAL : SPQR_ORDERING_METIS, threshold, 0,
-                                                      &input.view, &factor_->r, &factor_->permutation, &cc);
-  if (cc.status == CHOLMOD_OUT_OF_MEMORY) throw std::bad_alloc();
-  if (cc.status < CHOLMOD_OK || rank < 0 || factor_->r == nullptr)
-    throw std::runtime_error("SuiteSparseQR failed (status " + std::to_string(cc.status) + ")");
-  rank_ = static_cast<Eigen::Index>(rank);
-  peak_memory_ = cc.memory_usage;
-  permutation_.resize(static_cast<std::size_t>(cols_));
-  for (Eigen::Index j = 0; j < cols_; ++j) {
-    const Eigen::Index column = factor_->permutation != nullptr ? static_cast<Eigen::Index>(factor_->permutation[j]) : j;
-    permutation_[static_cast<std::size_t>(j)] = given ? column_order[static_cast<std::size_t>(column)] : column;
+  const FrontalFactorisation qr(input, given, threshold);
+  rank_ = static_cast<Eigen::Index>(qr.factor().rank);
+  // R assembled once, straight into trapezoidal form: the live columns first, each group in
+  // the factorisation's order, every entry in its row of the squeezed R. SuiteSparseQR makes
+  // the same matrix in two copies (spqr_rconvert, then spqr_trapezoidal), with the same entries
+  // in the same order.
+  const auto n = static_cast<std::size_t>(cols_);
+  std::vector<std::int64_t> position(n, -1), count(n, 0);
+  std::int64_t live = 0;
+  qr.visit_r<true>([&](SuiteSparse_long column, double) { position[static_cast<std::size_t>(column)] = live++; },
+                   [&](SuiteSparse_long, SuiteSparse_long column, double) { ++count[static_cast<std::size_t>(column)]; });
+  std::int64_t dead = live;
+  for (std::int64_t& p : position)
+    if (p < 0) p = dead++;
+  std::vector<std::int64_t>& starts = factor_->starts;
+  starts.assign(n + 1, 0);
+  for (std::size_t k = 0; k < n; ++k) starts[static_cast<std::size_t>(position[k]) + 1] = count[k];
+  for (std::size_t k = 0; k < n; ++k) starts[k + 1] += starts[k];
+  factor_->rows.resize(static_cast<std::size_t>(starts[n]));
+  factor_->values.resize(static_cast<std::size_t>(starts[n]));
+  std::vector<std::int64_t> next(starts.begin(), starts.end() - 1);
+  qr.visit_r<true>([](SuiteSparse_long, double) {},
+                   [&](SuiteSparse_long row, SuiteSparse_long column, double value) {
+                     const auto at = static_cast<std::size_t>(next[static_cast<std::size_t>(position[static_cast<std::size_t>(column)])]++);
+                     factor_->rows[at] = row;
+                     factor_->values[at] = value;
+                   });
+  peak_memory_ = qr.peak_memory() + factor_->rows.size() * (sizeof(std::int64_t) + sizeof(double));
+  permutation_.resize(n);
+  const SuiteSparse_long* fill = qr.factor().Q1fill;
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto column = static_cast<std::size_t>(fill != nullptr ? fill[k] : static_cast<SuiteSparse_long>(k));
+    permutation_[static_cast<std::size_t>(position[k])] = given ? column_order[column] : static_cast<Eigen::Index>(column);
   }
 }
 
@@ -191,27 +250,13 @@ SparseRankCount sparse_qr_rank(const Eigen::SparseMatrix<double>& a, double thre
   if (a.rows() == 0 || a.cols() == 0) return count;
   pin_blas_threads();
   SpqrInput input(a, column_order);
-  cholmod_common cc{};
-  cholmod_l_start(&cc);
-  // keepH = false: the Householder vectors are discarded front by front, as SuiteSparseQR does
-  // when Q is not asked for; the same factorisation, so the same rank and pivots.
-  SuiteSparseQR_factorization<double>* qr =
-      spqr_1factor<double>(column_order.empty() ? SPQR_ORDERING_METIS : SPQR_ORDERING_NATURAL, threshold, 0, 0,
-                           &input.view, 0, nullptr, nullptr, nullptr, &cc);
-  const int status = cc.status;
-  if (qr == nullptr || status < CHOLMOD_OK) {
-    if (qr != nullptr) spqr_freefac<double>(&qr, &cc);
-    cholmod_l_finish(&cc);
-    if (status == CHOLMOD_OUT_OF_MEMORY) throw std::bad_alloc();
-    throw std::runtime_error("SuiteSparseQR failed (status " + std::to_string(status) + ")");
-  }
-  count.rank = static_cast<Eigen::Index>(qr->rank);
-  count.peak_memory = cc.memory_usage;
-  const std::optional<double> smallest = smallest_live_pivot(*qr);
-  spqr_freefac<double>(&qr, &cc);
-  cholmod_l_finish(&cc);
-  if (!smallest) throw std::logic_error("sparse_qr_rank: SuiteSparseQR's frontal R blocks do not match its rank");
-  count.smallest_pivot = count.rank > 0 ? *smallest : 0.0;
+  const FrontalFactorisation qr(input, !column_order.empty(), threshold);
+  count.rank = static_cast<Eigen::Index>(qr.factor().rank);
+  count.peak_memory = qr.peak_memory();
+  double smallest = std::numeric_limits<double>::infinity();
+  qr.visit_r<false>([&](SuiteSparse_long, double pivot) { smallest = std::min(smallest, std::abs(pivot)); },
+                    [](SuiteSparse_long, SuiteSparse_long, double) {});
+  count.smallest_pivot = count.rank > 0 ? smallest : 0.0;
   return count;
 }
 
@@ -220,14 +265,8 @@ SparseQr::SparseQr(SparseQr&&) noexcept = default;
 SparseQr& SparseQr::operator=(SparseQr&&) noexcept = default;
 
 SparseFactorView SparseQr::r() const {
-  const cholmod_sparse* r = factor_->r;
-  if (r == nullptr) return {0, cols_, 0, nullptr, nullptr, nullptr};
-  return {static_cast<Eigen::Index>(r->nrow),
-          static_cast<Eigen::Index>(r->ncol),
-          static_cast<Eigen::Index>(static_cast<const std::int64_t*>(r->p)[r->ncol]),
-          static_cast<const std::int64_t*>(r->p),
-          static_cast<const std::int64_t*>(r->i),
-          static_cast<const double*>(r->x)};
+  const Factor& f = *factor_;
+  return {rank_, cols_, static_cast<Eigen::Index>(f.rows.size()), f.starts.data(), f.rows.data(), f.values.data()};
 }
 
 double SparseQr::smallest_pivot() const {

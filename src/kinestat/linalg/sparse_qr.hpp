@@ -1,7 +1,8 @@
 #pragma once
 // Rank-revealing sparse QR by SuiteSparseQR, called through its own C++ interface rather than
-// Eigen's wrapper: a nested-dissection (METIS) fill-reducing ordering or the caller's own, R and
-// the column permutation kept in SuiteSparse's own arrays (never copied), Q never formed.
+// Eigen's wrapper: a nested-dissection (METIS) fill-reducing ordering or the caller's own, R
+// assembled once from SuiteSparseQR's frontal blocks (SuiteSparseQR itself copies it twice when
+// the rank is below n), Q never formed.
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
@@ -13,7 +14,7 @@
 
 namespace kinestat::linalg {
 
-/// The R factor as SuiteSparse stores it: compressed columns with 64-bit indices.
+/// The R factor: compressed columns with 64-bit indices, as SuiteSparse stores sparse matrices.
 using SparseFactorView = Eigen::Map<const Eigen::SparseMatrix<double, Eigen::ColMajor, std::int64_t>>;
 
 /// A·P = Q·R of an m × n sparse matrix A, Q discarded. Columns whose remaining 2-norm falls to
@@ -43,7 +44,7 @@ class SparseQr {
   Eigen::Index rank() const { return rank_; }
   /// Column k of R is column permutation()[k] of A: the first rank() are the live columns.
   const std::vector<Eigen::Index>& permutation() const { return permutation_; }
-  /// R (rank × n) in SuiteSparse's arrays; valid as long as this object lives.
+  /// R (rank × n); valid as long as this object lives.
   SparseFactorView r() const;
   /// Smallest |R_kk| over the live columns (0 when the rank is 0): the rank decision's evidence.
   double smallest_pivot() const;
@@ -56,7 +57,7 @@ class SparseQr {
   /// smallest |R_kk| always, often by decades. 0 when the rank is 0 or R11 is singular in
   /// floating point. Same units as the entries.
   double smallest_singular_estimate() const;
-  /// Peak memory of the factorisation in bytes, as counted by SuiteSparse itself.
+  /// Peak memory of the factorisation in bytes: SuiteSparse's own count plus R.
   std::size_t peak_memory() const { return peak_memory_; }
   /// Live columns of A (a basis of its column space) and dead ones, each in increasing order.
   std::pair<std::vector<Eigen::Index>, std::vector<Eigen::Index>> live_and_dead_columns() const;

@@ -1,9 +1,10 @@
-// sparse_qr_rank: the rank and smallest live pivot read from SuiteSparseQR's frontal blocks,
-// without R assembled. Checked against a hand derivation (orthogonal columns, where every
-// pivot is a column norm whatever the order), against the rank known by construction (random
-// banded factors, confirmed by a dense SVD), and against the R that SuiteSparseQR itself
-// assembles (SparseQr: spqr_rconvert, SuiteSparse's own reading of the same blocks), on tall
-// and wide matrices, with and without column singletons, in METIS's order and in a given one.
+// R read from SuiteSparseQR's frontal blocks: sparse_qr_rank (the rank and smallest live pivot,
+// R never assembled) and SparseQr (R assembled once, in trapezoidal form). Checked against a hand
+// derivation (orthogonal columns, where every pivot is a column norm whatever the order), against
+// the rank known by construction (random banded factors, confirmed by a dense SVD), and against
+// the R and column permutation that SuiteSparseQR itself returns (its spqr_rconvert and
+// spqr_trapezoidal, called here directly), on tall and wide matrices, with and without column
+// singletons and empty columns, in METIS's order and in a given one.
 #include <gtest/gtest.h>
 
 #include <Eigen/SVD>
@@ -18,6 +19,8 @@
 #include <vector>
 
 #include "kinestat/linalg/sparse_qr.hpp"
+
+#include <SuiteSparseQR.hpp>
 
 namespace kinestat::linalg {
 namespace {
@@ -48,13 +51,64 @@ Eigen::SparseMatrix<double> with_singletons(const Eigen::SparseMatrix<double>& a
   return result;
 }
 
+// SparseQr's R and permutation are exactly SuiteSparseQR's own: the same entries in the same
+// places (SuiteSparseQR called directly on the columns in `order`, as SparseQr factors them).
+void expect_suitesparse_r(const Eigen::SparseMatrix<double>& a, const std::vector<Eigen::Index>& order, const SparseQr& qr) {
+  Eigen::SparseMatrix<double, Eigen::ColMajor, SuiteSparse_long> input(a.rows(), a.cols());
+  std::vector<Eigen::Triplet<double, SuiteSparse_long>> entries;
+  for (Eigen::Index k = 0; k < a.cols(); ++k)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(a, order.empty() ? k : order[static_cast<std::size_t>(k)]); it; ++it)
+      entries.emplace_back(it.row(), k, it.value());
+  input.setFromTriplets(entries.begin(), entries.end());
+  input.makeCompressed();
+  cholmod_sparse view{};
+  view.nrow = static_cast<std::size_t>(a.rows());
+  view.ncol = static_cast<std::size_t>(a.cols());
+  view.nzmax = static_cast<std::size_t>(input.nonZeros());
+  view.p = input.outerIndexPtr();
+  view.i = input.innerIndexPtr();
+  view.x = input.valuePtr();
+  view.itype = CHOLMOD_LONG;
+  view.xtype = CHOLMOD_REAL;
+  view.dtype = CHOLMOD_DOUBLE;
+  view.sorted = 1;
+  view.packed = 1;
+  cholmod_common cc{};
+  cholmod_l_start(&cc);
+  cholmod_sparse* r = nullptr;
+  SuiteSparse_long* e = nullptr;
+  const SuiteSparse_long rank =
+      SuiteSparseQR<double>(order.empty() ? SPQR_ORDERING_METIS : SPQR_ORDERING_NATURAL, 1e-9, 0, &view, &r, &e, &cc);
+  ASSERT_NE(r, nullptr);
+  EXPECT_EQ(rank, qr.rank());
+  const SparseFactorView mine = qr.r();
+  ASSERT_EQ(static_cast<Eigen::Index>(r->nrow), mine.rows());
+  ASSERT_EQ(static_cast<Eigen::Index>(r->ncol), mine.cols());
+  const auto* p = static_cast<const SuiteSparse_long*>(r->p);
+  const auto* i = static_cast<const SuiteSparse_long*>(r->i);
+  const auto* x = static_cast<const double*>(r->x);
+  ASSERT_EQ(p[r->ncol], mine.nonZeros());
+  for (Eigen::Index k = 0; k <= mine.cols(); ++k) EXPECT_EQ(p[k], mine.outerIndexPtr()[k]) << "column start " << k;
+  for (Eigen::Index t = 0; t < mine.nonZeros(); ++t) {
+    EXPECT_EQ(i[t], mine.innerIndexPtr()[t]) << "entry " << t;
+    EXPECT_EQ(x[t], mine.valuePtr()[t]) << "entry " << t;
+  }
+  for (Eigen::Index k = 0; k < a.cols(); ++k) {
+    const Eigen::Index column = e != nullptr ? static_cast<Eigen::Index>(e[k]) : k;
+    EXPECT_EQ(qr.permutation()[static_cast<std::size_t>(k)], order.empty() ? column : order[static_cast<std::size_t>(column)]);
+  }
+  cholmod_l_free_sparse(&r, &cc);
+  if (e != nullptr) cholmod_l_free(static_cast<std::size_t>(a.cols()), sizeof(SuiteSparse_long), e, &cc);
+  cholmod_l_finish(&cc);
+}
+
 int dense_rank(const Eigen::SparseMatrix<double>& a) {
   const Eigen::JacobiSVD<Eigen::MatrixXd> svd{Eigen::MatrixXd(a)};
   const Eigen::VectorXd s = svd.singularValues();
   return static_cast<int>((s.array() > 1e-9 * s(0)).count());
 }
 
-TEST(CountsOnlyQr, OrthogonalColumnsGiveTheirNormsByHand) {
+TEST(FrontalBlocksQr, OrthogonalColumnsGiveTheirNormsByHand) {
   // Directions on disjoint pairs of rows, so all columns of different directions are
   // orthogonal. Direction d (rows 2d, 2d + 1) holds (3, 4)·scale_d; directions 0-3 hold it once,
   // 4-6 also hold 2× and −1× its multiple (dead whichever comes first: the live one's pivot is
@@ -90,7 +144,7 @@ TEST(CountsOnlyQr, OrthogonalColumnsGiveTheirNormsByHand) {
   }
 }
 
-TEST(CountsOnlyQr, RankByConstructionAndSuiteSparsesOwnR) {
+TEST(FrontalBlocksQr, RankByConstructionAndSuiteSparsesOwnR) {
   for (int seed = 0; seed < 16; ++seed) {
     SCOPED_TRACE("seed " + std::to_string(seed));
     std::mt19937 rng(static_cast<unsigned>(4100 + seed));
@@ -113,11 +167,12 @@ TEST(CountsOnlyQr, RankByConstructionAndSuiteSparsesOwnR) {
       EXPECT_GT(count.smallest_pivot, 1e-9);
       // Without R assembled the factorisation needs less memory at its peak.
       EXPECT_LE(count.peak_memory, qr.peak_memory());
+      expect_suitesparse_r(a, order, qr);
     }
   }
 }
 
-TEST(CountsOnlyQr, EmptyMatricesAndBadOrders) {
+TEST(FrontalBlocksQr, EmptyMatricesAndBadOrders) {
   EXPECT_EQ(sparse_qr_rank(Eigen::SparseMatrix<double>(0, 3), 1e-9).rank, 0);
   EXPECT_EQ(sparse_qr_rank(Eigen::SparseMatrix<double>(4, 0), 1e-9).rank, 0);
   const SparseRankCount zero = sparse_qr_rank(Eigen::SparseMatrix<double>(5, 4), 1e-9);
