@@ -17,6 +17,7 @@
 #include "kinestat/io/framework_reader.hpp"
 #include "kinestat/io/yaml_support.hpp"
 #include "kinestat/linalg/blas_threads.hpp"
+#include "kinestat/linalg/cholmod_view.hpp"
 #include "kinestat/linalg/sparse_rank.hpp"
 
 namespace {
@@ -81,20 +82,8 @@ void cholmod_normal_equations(benchmark::State& state, const FrameworkModel& mod
     cc.nmethods = 1;
     cc.method[0].ordering = CHOLMOD_NESDIS;
     // Unsymmetric A = Dᵀ (n × m): CHOLMOD factorises A Aᵀ = DᵀD.
-    Eigen::SparseMatrix<double, Eigen::ColMajor, SuiteSparse_long> at = d.transpose();
-    at.makeCompressed();
-    cholmod_sparse view{};
-    view.nrow = static_cast<std::size_t>(at.rows());
-    view.ncol = static_cast<std::size_t>(at.cols());
-    view.nzmax = static_cast<std::size_t>(at.nonZeros());
-    view.p = at.outerIndexPtr();
-    view.i = at.innerIndexPtr();
-    view.x = at.valuePtr();
-    view.itype = CHOLMOD_LONG;
-    view.xtype = CHOLMOD_REAL;
-    view.dtype = CHOLMOD_DOUBLE;
-    view.sorted = 1;
-    view.packed = 1;
+    kinestat::linalg::CholmodMatrix at = d.transpose();
+    cholmod_sparse view = kinestat::linalg::cholmod_view(at);
     cholmod_factor* l = cholmod_l_analyze(&view, &cc);
     double beta[2] = {1e-10 * sigma * sigma, 0.0};
     cholmod_l_factorize_p(&view, beta, nullptr, 0, l, &cc);

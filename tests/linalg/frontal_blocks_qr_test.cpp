@@ -18,25 +18,14 @@
 #include <string>
 #include <vector>
 
+#include "kinestat/linalg/cholmod_view.hpp"
 #include "kinestat/linalg/sparse_qr.hpp"
+#include "support/random_matrices.hpp"
 
 #include <SuiteSparseQR.hpp>
 
 namespace kinestat::linalg {
 namespace {
-
-// rows × cols of rank `rank`: the product of two random banded factors of inner size `rank`.
-Eigen::SparseMatrix<double> banded_product(std::mt19937& rng, int rows, int cols, int rank) {
-  std::uniform_real_distribution<double> value(-1.0, 1.0);
-  Eigen::MatrixXd left = Eigen::MatrixXd::Zero(rows, rank), right = Eigen::MatrixXd::Zero(rank, cols);
-  for (int i = 0; i < rows; ++i)
-    for (int k = 0; k < rank; ++k)
-      if (std::abs(i * rank / rows - k) <= 1) left(i, k) = value(rng);
-  for (int k = 0; k < rank; ++k)
-    for (int j = 0; j < cols; ++j)
-      if (std::abs(j * rank / cols - k) <= 1) right(k, j) = value(rng);
-  return (left * right).sparseView();
-}
 
 // `a` with `extra` column singletons appended (each a new column with one entry in a new row),
 // then `empty` columns without entries (SuiteSparseQR counts them as singleton columns without
@@ -54,25 +43,13 @@ Eigen::SparseMatrix<double> with_singletons(const Eigen::SparseMatrix<double>& a
 // SparseQr's R and permutation are exactly SuiteSparseQR's own: the same entries in the same
 // places (SuiteSparseQR called directly on the columns in `order`, as SparseQr factors them).
 void expect_suitesparse_r(const Eigen::SparseMatrix<double>& a, const std::vector<Eigen::Index>& order, const SparseQr& qr) {
-  Eigen::SparseMatrix<double, Eigen::ColMajor, SuiteSparse_long> input(a.rows(), a.cols());
+  CholmodMatrix input(a.rows(), a.cols());
   std::vector<Eigen::Triplet<double, SuiteSparse_long>> entries;
   for (Eigen::Index k = 0; k < a.cols(); ++k)
     for (Eigen::SparseMatrix<double>::InnerIterator it(a, order.empty() ? k : order[static_cast<std::size_t>(k)]); it; ++it)
       entries.emplace_back(it.row(), k, it.value());
   input.setFromTriplets(entries.begin(), entries.end());
-  input.makeCompressed();
-  cholmod_sparse view{};
-  view.nrow = static_cast<std::size_t>(a.rows());
-  view.ncol = static_cast<std::size_t>(a.cols());
-  view.nzmax = static_cast<std::size_t>(input.nonZeros());
-  view.p = input.outerIndexPtr();
-  view.i = input.innerIndexPtr();
-  view.x = input.valuePtr();
-  view.itype = CHOLMOD_LONG;
-  view.xtype = CHOLMOD_REAL;
-  view.dtype = CHOLMOD_DOUBLE;
-  view.sorted = 1;
-  view.packed = 1;
+  cholmod_sparse view = cholmod_view(input);
   cholmod_common cc{};
   cholmod_l_start(&cc);
   cholmod_sparse* r = nullptr;
@@ -151,7 +128,7 @@ TEST(FrontalBlocksQr, RankByConstructionAndSuiteSparsesOwnR) {
     const bool wide = seed % 4 == 3;
     const int rows = wide ? 40 + seed : 70 + 5 * seed, cols = wide ? 90 : 50 + 3 * seed, rank = 25 + seed;
     const int singletons = seed % 2 == 0 ? 0 : 1 + seed % 5;
-    const Eigen::SparseMatrix<double> a = with_singletons(banded_product(rng, rows, cols, rank), singletons, seed % 3);
+    const Eigen::SparseMatrix<double> a = with_singletons(testing::banded_of_rank(rng, rows, cols, rank), singletons, seed % 3);
     ASSERT_EQ(dense_rank(a), rank + singletons);
     std::vector<Eigen::Index> shuffled(static_cast<std::size_t>(a.cols()));
     std::iota(shuffled.begin(), shuffled.end(), Eigen::Index{0});

@@ -19,30 +19,17 @@
 
 #include "kinestat/linalg/nested_dissection.hpp"
 #include "kinestat/linalg/sparse_qr.hpp"
+#include "support/random_matrices.hpp"
 
 namespace kinestat::linalg {
 namespace {
-
-// A banded rows × cols matrix of rank `rank` (a product of two random banded factors of inner
-// size `rank`), so its rank is known by construction.
-Eigen::SparseMatrix<double> banded_of_rank(std::mt19937& rng, int rows, int cols, int rank) {
-  std::uniform_real_distribution<double> value(-1.0, 1.0);
-  Eigen::MatrixXd left = Eigen::MatrixXd::Zero(rows, rank), right = Eigen::MatrixXd::Zero(rank, cols);
-  for (int i = 0; i < rows; ++i)
-    for (int k = 0; k < rank; ++k)
-      if (std::abs(i * rank / rows - k) <= 1) left(i, k) = value(rng);
-  for (int k = 0; k < rank; ++k)
-    for (int j = 0; j < cols; ++j)
-      if (std::abs(j * rank / cols - k) <= 1) right(k, j) = value(rng);
-  return (left * right).sparseView();
-}
 
 TEST(GivenOrderQr, RankAndNullVectorsMatchTheDenseSvd) {
   for (int seed = 0; seed < 12; ++seed) {
     SCOPED_TRACE("seed " + std::to_string(seed));
     std::mt19937 rng(static_cast<unsigned>(7300 + seed));
     const int rows = 60 + 5 * seed, cols = 50 + 3 * seed, rank = 30 + seed;
-    const Eigen::SparseMatrix<double> a = banded_of_rank(rng, rows, cols, rank);
+    const Eigen::SparseMatrix<double> a = testing::banded_of_rank(rng, rows, cols, rank);
     const Eigen::MatrixXd dense(a);
     const Eigen::JacobiSVD<Eigen::MatrixXd> svd(dense);
     ASSERT_GT(svd.singularValues()(rank - 1), 1e-6);  // rank exactly `rank` by construction
@@ -83,7 +70,7 @@ TEST(GivenOrderQr, GroupedOrderGivesTheRankByConstruction) {
     SCOPED_TRACE("seed " + std::to_string(seed));
     std::mt19937 rng(static_cast<unsigned>(9100 + seed));
     const int rows = 90 + 4 * seed, cols = 72, rank = 40 + seed, group_size = 1 + seed % 3;
-    const Eigen::SparseMatrix<double> a = banded_of_rank(rng, rows, cols, rank);
+    const Eigen::SparseMatrix<double> a = testing::banded_of_rank(rng, rows, cols, rank);
     std::vector<Eigen::Index> groups(static_cast<std::size_t>(cols));
     for (int j = 0; j < cols; ++j) groups[static_cast<std::size_t>(j)] = j / group_size;
     const std::vector<Eigen::Index> order = grouped_nested_dissection_order(a, groups);

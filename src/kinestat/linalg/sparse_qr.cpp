@@ -1,6 +1,7 @@
 #include "kinestat/linalg/sparse_qr.hpp"
 
 #include "kinestat/linalg/blas_threads.hpp"
+#include "kinestat/linalg/cholmod_view.hpp"
 
 #include <SuiteSparseQR.hpp>
 
@@ -38,7 +39,7 @@ constexpr double kSigmaMinSettled = 1e-3;
 // SuiteSparseQR's long-integer interface needs 64-bit indices: the one copy made is of A
 // (with its columns in the given order, if any), and `view` describes it to CHOLMOD.
 struct SpqrInput {
-  Eigen::SparseMatrix<double, Eigen::ColMajor, SuiteSparse_long> matrix;
+  CholmodMatrix matrix;
   cholmod_sparse view{};
 
   SpqrInput(const Eigen::SparseMatrix<double>& a, const std::vector<Eigen::Index>& column_order) {
@@ -69,19 +70,7 @@ struct SpqrInput {
     } else {
       matrix = a.cast<double>();
     }
-    matrix.makeCompressed();
-    view.nrow = static_cast<std::size_t>(a.rows());
-    view.ncol = static_cast<std::size_t>(cols);
-    view.nzmax = static_cast<std::size_t>(matrix.nonZeros());
-    view.p = matrix.outerIndexPtr();
-    view.i = matrix.innerIndexPtr();
-    view.x = matrix.valuePtr();
-    view.stype = 0;
-    view.itype = CHOLMOD_LONG;
-    view.xtype = CHOLMOD_REAL;
-    view.dtype = CHOLMOD_DOUBLE;
-    view.sorted = 1;
-    view.packed = 1;
+    view = cholmod_view(matrix);
   }
   SpqrInput(const SpqrInput&) = delete;
   SpqrInput& operator=(const SpqrInput&) = delete;
