@@ -9,17 +9,29 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include "cli/commands.hpp"
 
 namespace {
 
+// The scratch folder of this process, removed when the fuzzer exits.
+struct ScratchFolder {
+  std::filesystem::path path = std::filesystem::temp_directory_path() / ("kinestat-fuzz-cli-" + std::to_string(::getpid()));
+  ScratchFolder() { std::filesystem::create_directories(path); }
+  ScratchFolder(const ScratchFolder&) = delete;
+  ScratchFolder& operator=(const ScratchFolder&) = delete;
+  ~ScratchFolder() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path, ignored);
+  }
+};
+
 const std::string& scratch_model() {
+  static const ScratchFolder folder;
   static const std::string path = [] {
-    const auto folder = std::filesystem::temp_directory_path() / ("kinestat-fuzz-cli-" + std::to_string(::getpid()));
-    std::filesystem::create_directories(folder);
-    const auto model = folder / "model.yaml";
+    const auto model = folder.path / "model.yaml";
     std::ofstream(model) << "kinestat: 1\nname: fuzz\ncouplings:\n"
                             "  - {name: A, type: spherical, between: [1, 2]}\n"
                             "  - {name: B, type: spherical, between: [1, 2], point: [0, 0, 1]}\n";

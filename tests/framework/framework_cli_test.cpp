@@ -16,6 +16,8 @@
 #include <sstream>
 #include <string>
 
+#include "support/scratch_folder.hpp"
+
 namespace {
 
 struct CliRun {
@@ -31,11 +33,7 @@ std::string slurp(const std::filesystem::path& path) {
 }
 
 std::filesystem::path temp_dir() {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("kinestat-framework-cli-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "-" +
-                    ::testing::UnitTest::GetInstance()->current_test_info()->name());
-  std::filesystem::create_directories(dir);
-  return dir;
+  return kinestat::testing::scratch_subfolder(::testing::UnitTest::GetInstance()->current_test_info()->name());
 }
 
 // Runs a whole shell command line (for commands that set the environment).

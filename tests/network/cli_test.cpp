@@ -70,7 +70,7 @@ TEST(NetworkCli, PrimaryAndValuesOnTheCommandLine) {
 }
 
 TEST(NetworkCli, OutputFileIsWrittenWhole) {
-  const auto path = std::filesystem::temp_directory_path() / ("kinestat_out_" + std::to_string(::getpid()) + ".json");
+  const auto path = kinestat::testing::scratch_folder() / "out.json";
   const CliRun r = run("analyze --json -o " + path.string() + " " + example("davies-2-circuit.yaml"));
   EXPECT_EQ(r.exit_code, 0) << r.err;
   std::ifstream in(path);

@@ -24,7 +24,7 @@ std::string read_text(const std::string& path) {
 }
 
 std::string temp(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("kinestat_" + std::to_string(::getpid()) + "_" + name)).string();
+  return (kinestat::testing::scratch_folder() / name).string();
 }
 
 TEST(HtmlReport, SelfContainedFileForTheTruss) {

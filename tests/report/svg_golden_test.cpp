@@ -91,7 +91,7 @@ TEST(DrawCli, UnwritableOutputIsExitTwoWithMessage) {
 }
 
 TEST(DrawCli, WritesTheFileGiven) {
-  const auto path = std::filesystem::temp_directory_path() / ("kinestat_draw_" + std::to_string(::getpid()) + ".svg");
+  const auto path = kinestat::testing::scratch_folder() / "draw.svg";
   const auto run = run_cli("draw " + example_path("davies-2-circuit.yaml") + " -o " + path.string());
   EXPECT_EQ(run.exit_code, 0) << run.err;
   EXPECT_NE(read(path).find("coupling graph"), std::string::npos);

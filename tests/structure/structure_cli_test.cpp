@@ -8,6 +8,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "support/scratch_folder.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -26,11 +28,7 @@ std::string slurp(const fs::path& path) {
 }
 
 fs::path temp_dir() {
-  const fs::path dir = fs::temp_directory_path() /
-                       ("kinestat_structure_cli_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
-                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-  fs::create_directories(dir);
-  return dir;
+  return kinestat::testing::scratch_subfolder(::testing::UnitTest::GetInstance()->current_test_info()->name());
 }
 
 // Runs the CLI with `args`, optionally feeding `input` on standard input.

@@ -11,6 +11,8 @@
 #include <sstream>
 #include <string>
 
+#include "support/scratch_folder.hpp"
+
 namespace kinestat::testing {
 
 struct CliRun {
@@ -20,13 +22,12 @@ struct CliRun {
 
 /// Runs `kinestat <arguments>` (arguments are passed to the shell as written).
 inline CliRun run_cli(const std::string& arguments, const std::string& standard_input = {}) {
-  const auto dir = std::filesystem::temp_directory_path();
-  const std::string tag = std::to_string(::getpid());
-  const std::string err_path = (dir / ("kinestat_cli_err_" + tag)).string();
+  const auto& dir = scratch_folder();
+  const std::string err_path = (dir / "kinestat_cli_stderr").string();
   std::string command = std::string(KINESTAT_CLI) + " " + arguments + " 2>" + err_path;
   std::string in_path;
   if (!standard_input.empty()) {
-    in_path = (dir / ("kinestat_cli_in_" + tag)).string();
+    in_path = (dir / "kinestat_cli_stdin").string();
     std::ofstream(in_path) << standard_input;
     command += " <" + in_path;
   }
@@ -50,9 +51,9 @@ inline CliRun run_cli(const std::string& arguments, const std::string& standard_
 /// Path of a shipped example.
 inline std::string example_path(const std::string& name) { return std::string(KINESTAT_SOURCE_DIR) + "/examples/" + name; }
 
-/// Writes `text` to a temporary file and returns its path.
+/// Writes `text` to a file of this name in the process's scratch folder and returns its path.
 inline std::string write_temp_file(const std::string& name, const std::string& text) {
-  const auto path = std::filesystem::temp_directory_path() / ("kinestat_" + std::to_string(::getpid()) + "_" + name);
+  const auto path = scratch_folder() / name;
   std::ofstream(path) << text;
   return path.string();
 }

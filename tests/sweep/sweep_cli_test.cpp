@@ -26,7 +26,7 @@ namespace fs = std::filesystem;
 
 // A fresh folder for one test's files.
 fs::path test_folder(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("kinestat_sweep_" + std::to_string(::getpid()) + "_" + name);
+  const fs::path dir = kinestat::testing::scratch_folder() / name;
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
