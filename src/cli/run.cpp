@@ -32,12 +32,15 @@ namespace {
 // glibc maps every block above 128 KiB (raised by frees, up to 32 MiB) separately and unmaps it
 // when freed, and trims the heap top above 128 KiB, so each analysis stage touched fresh pages
 // for buffers that the stage before had just given back. Kept in the heap instead, they are
-// reused: page faults of `analyze` on a 10^5-bar cubic lattice 37,600 -> 30,600, on a 10^6-bar
-// triangular one 762,000 -> 712,000 (peak RSS +1 %); page faults are much of the system time on
-// virtual machines. (Both settings together: a trim threshold alone freezes the mmap threshold
-// at 128 KiB, and doubled the faults.)
+// reused; page faults are much of the system time on virtual machines (bench/README.md). Keeping
+// blocks of up to 32 MiB took the page faults of `analyze` on a 10^5-bar cubic lattice 37,600 ->
+// 30,600, on a 10^6-bar triangular one 762,000 -> 712,000. No separate mappings at all keeps the
+// largest blocks too (a sparse QR's stack of hundreds of MB): a network analysis factors Kᵀ,
+// frees it and factors K in the same pages (ladder of 10^5 couplings: system time 0.9-1.8 s ->
+// 1.0 s, peak RSS 810 -> 775 MB). (A trim threshold alone, with mappings allowed, freezes the
+// mmap threshold at 128 KiB and doubled the faults.)
 void keep_freed_memory_for_reuse() {
-  mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  mallopt(M_MMAP_MAX, 0);
   mallopt(M_TRIM_THRESHOLD, 1 << 30);
 }
 
