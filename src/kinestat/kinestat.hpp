@@ -47,6 +47,7 @@
 #include "kinestat/linalg/blas_kernels.hpp"
 #include "kinestat/linalg/blas_threads.hpp"
 #include "kinestat/linalg/cause_split.hpp"
+#include "kinestat/linalg/concurrent_orderings.hpp"
 #include "kinestat/linalg/definite_combination.hpp"
 #include "kinestat/linalg/equilibration.hpp"
 #include "kinestat/linalg/gmp_allocation.hpp"

@@ -7,8 +7,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <future>
 #include <numeric>
+#include <thread>
 
+#include "kinestat/linalg/concurrent_orderings.hpp"
 #include "kinestat/linalg/sparse_qr.hpp"
 #include "kinestat/linalg/sparse_rank.hpp"
 #include "kinestat/network/analyse_network.hpp"
@@ -85,6 +88,19 @@ double basis_of(const Eigen::SparseMatrix<double>& a, const linalg::SparseQr& qr
   }
   return residual;
 }
+
+// What the factor of K gives: its rank decision (from the threshold and σ_max of the system)
+// and support level, the motion basis on request, and the generic self-stresses.
+struct StressSide {
+  linalg::RankDecision rank;
+  double support_zero = kSupportZero;
+  double basis_residual = 0.0;
+  Eigen::MatrixXd basis;
+  std::vector<Index> primaries;
+  Eigen::VectorXd actions;
+  Eigen::MatrixXd generic;
+  bool has_null_space = false;
+};
 
 }  // namespace
 
@@ -210,6 +226,31 @@ SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances&
   std::vector<bool> stressed(static_cast<std::size_t>(r.e), false), moving(static_cast<std::size_t>(r.e), false);
   if (k.rows() > 0 && k.cols() > 0) {
     const Eigen::SparseMatrix<double> kt = k.transpose();
+    // The self-stresses' factor (of K) runs beside the motions' (of Kᵀ) on large networks where
+    // the process allows it (linalg::concurrent_orderings_allowed: METIS's rand()): the two are
+    // independent, each with its own SuiteSparse workspace, and their results are merged below
+    // in a fixed order, so the answer is the same as one after the other.
+    const linalg::RankDecision undecided = r.rank;
+    const double largest = r.rank.largest;
+    auto stress_side = [&k, &undecided, largest, vectors, pair_vectors, d]() {
+      // Self-stresses: generic action magnitudes λ with Kᵀ λ = 0 (every body in equilibrium),
+      // from the QR of K.
+      StressSide side;
+      const linalg::SparseQr qr(k, undecided.threshold);
+      side.rank = undecided;
+      linalg::record_rank(side.rank, qr);
+      linalg::record_factor_smallest(side.rank, qr);
+      side.support_zero = support_zero(side.rank);
+      if (vectors > 0) side.basis_residual = basis_of(k, qr, vectors, largest, side.basis, side.primaries);
+      side.actions = generic_left_null_vector(k, qr);
+      side.has_null_space = k.rows() > qr.rank();
+      if (pair_vectors && side.has_null_space) side.generic = generic_left_null_vectors(k, qr, d);
+      return side;
+    };
+    const bool concurrent = k.nonZeros() >= kConcurrentFactorNonZeros && linalg::concurrent_orderings_allowed() &&
+                            std::thread::hardware_concurrency() >= 2;
+    std::future<StressSide> stress_future;
+    if (concurrent) stress_future = std::async(std::launch::async, stress_side);
     {
       // Motions: a generic body-twist vector with K T = 0 (the null space of (Kᵀ)ᵀ, from the QR
       // of Kᵀ); a coupling moves when T_to ≠ T_from.
@@ -225,18 +266,16 @@ SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances&
       if (k.cols() > r.rank.rank && twists.norm() > 0) record_motion_support(model, k, twists, r, moving, r.motion_support_zero);
     }
     {
-      // Self-stresses: generic action magnitudes λ with Kᵀ λ = 0 (every body in equilibrium),
-      // from the QR of K.
-      const linalg::SparseQr qr(k, r.rank.threshold);
-      r.motion_factor_rank = r.rank;
-      linalg::record_rank(r.motion_factor_rank, qr);
-      linalg::record_factor_smallest(r.motion_factor_rank, qr);
-      r.stress_support_zero = support_zero(r.motion_factor_rank);
-      if (vectors > 0)
-        r.basis_residual = std::max(r.basis_residual, basis_of(k, qr, vectors, r.rank.largest, r.motion_basis, r.motion_primaries));
-      const Eigen::VectorXd actions = generic_left_null_vector(k, qr);
-      if (pair_vectors && k.rows() > qr.rank()) r.generic_stresses = generic_left_null_vectors(k, qr, d);
-      if (k.rows() > qr.rank() && actions.norm() > 0) record_stress_support(kt, actions, r, stressed, r.stress_support_zero);
+      StressSide side = concurrent ? stress_future.get() : stress_side();
+      r.motion_factor_rank = side.rank;
+      r.stress_support_zero = side.support_zero;
+      if (vectors > 0) {
+        r.basis_residual = std::max(r.basis_residual, side.basis_residual);
+        r.motion_basis = std::move(side.basis);
+        r.motion_primaries = std::move(side.primaries);
+      }
+      if (pair_vectors && side.has_null_space) r.generic_stresses = std::move(side.generic);
+      if (side.has_null_space && side.actions.norm() > 0) record_stress_support(kt, side.actions, r, stressed, r.stress_support_zero);
     }
     // The rank is Kᵀ's factor's; when K's factor agrees and its live block is better
     // conditioned (the two share σ_max, so the larger distance), its evidence stands for it.

@@ -78,6 +78,12 @@ struct SparseNetworkResult {
 /// Couplings above which the `analyze` command takes the sparse path.
 inline constexpr int kDenseNetworkLimit = 300;
 
+/// Nonzeros of K from which analyse_network_sparse factors K and Kᵀ on two threads, where the
+/// process allows it (linalg::concurrent_orderings_allowed) and has two cores: below it (a few
+/// thousand couplings) a factorisation takes tens of milliseconds, less than a thread's start
+/// and a second SuiteSparse workspace are worth. The answer is the same either way.
+inline constexpr Eigen::Index kConcurrentFactorNonZeros = 200000;
+
 /// The first stage of analyse_network_sparse, without factoring: K (C × d(n − 1), conditioned
 /// analysis frame, in `K`), the coupling and unit action of each row, d, n, e, l, F, C, the
 /// ground, the frame, and the rank rule's threshold and σ_max in `rank` (rank itself 0; the
@@ -115,6 +121,8 @@ void finish_sparse_network(SparseNetworkResult& r, const std::vector<bool>& stre
 /// unless the factor's live block is ill-conditioned) of the largest: a generic combination
 /// vanishes only where every null vector does. Both factors' σ_min(R11) are estimated
 /// (`rank.factor_smallest`, `motion_factor_rank.factor_smallest`). Throws ModelError.
+/// The two factorisations run side by side from kConcurrentFactorNonZeros nonzeros of K (twice
+/// the peak memory of one, the same answer).
 /// With `vectors` > 0 also the first `vectors` basis vectors of the motions and of the
 /// self-stresses (motion_basis, stress_basis), at the cost of one triangular solve each. With
 /// `pair_vectors` also generic_motions and generic_stresses (2d least-squares solves).
