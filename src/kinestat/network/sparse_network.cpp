@@ -9,6 +9,7 @@
 #include <cmath>
 #include <future>
 #include <numeric>
+#include <system_error>
 #include <thread>
 
 #include "kinestat/linalg/concurrent_orderings.hpp"
@@ -247,10 +248,16 @@ SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances&
       if (pair_vectors && side.has_null_space) side.generic = generic_left_null_vectors(k, qr, d);
       return side;
     };
-    const bool concurrent = k.nonZeros() >= kConcurrentFactorNonZeros && linalg::concurrent_orderings_allowed() &&
-                            std::thread::hardware_concurrency() >= 2;
+    bool concurrent = k.nonZeros() >= kConcurrentFactorNonZeros && linalg::concurrent_orderings_allowed() &&
+                      std::thread::hardware_concurrency() >= 2;
     std::future<StressSide> stress_future;
-    if (concurrent) stress_future = std::async(std::launch::async, stress_side);
+    if (concurrent) {
+      try {
+        stress_future = std::async(std::launch::async, stress_side);
+      } catch (const std::system_error&) {
+        concurrent = false;  // no thread to be had (a process limit): one after the other
+      }
+    }
     {
       // Motions: a generic body-twist vector with K T = 0 (the null space of (Kᵀ)ᵀ, from the QR
       // of Kᵀ); a coupling moves when T_to ≠ T_from.
