@@ -121,8 +121,9 @@ void finish_sparse_network(SparseNetworkResult& r, const std::vector<bool>& stre
 /// unless the factor's live block is ill-conditioned) of the largest: a generic combination
 /// vanishes only where every null vector does. Both factors' σ_min(R11) are estimated
 /// (`rank.factor_smallest`, `motion_factor_rank.factor_smallest`). Throws ModelError.
-/// The two factorisations run side by side from kConcurrentFactorNonZeros nonzeros of K (twice
-/// the peak memory of one, the same answer).
+/// The two factorisations run side by side from kConcurrentFactorNonZeros nonzeros of K where
+/// the process allows it (linalg::concurrent_orderings_allowed; twice the peak memory of one,
+/// the same answer).
 /// With `vectors` > 0 also the first `vectors` basis vectors of the motions and of the
 /// self-stresses (motion_basis, stress_basis), at the cost of one triangular solve each. With
 /// `pair_vectors` also generic_motions and generic_stresses (2d least-squares solves).
