@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -207,6 +208,45 @@ TEST(SparseNetworkVerdict, RingOfSphericalJointsHasAnIdleSpinPerLink) {
       EXPECT_NEAR(pz, 0.0, 1e-9);
     }
   EXPECT_TRUE(found);
+}
+
+TEST(SparseNetworkVerdict, IdleSpinsFoundAlongsideTheFactorisationsAreTheVerdictsOwn) {
+  // The same ring of spherical joints, its idle spins found from the body-twist system while the
+  // factors are computed (analyse_network_sparse's `alongside`, as the command does): one call,
+  // on the system before any factor (rank 0, nothing solved), one spin per link but the ground
+  // (n - 1, each of dimension 1), b1's along the line through its joints, and the verdict built
+  // from them the same as the one that finds them itself.
+  const int n = 40;
+  const Model model = ring(n, false, CouplingType::spherical);
+  int calls = 0;
+  std::vector<IdleMotion> spins;
+  const network::SparseNetworkResult r =
+      network::analyse_network_sparse(model, {}, kSparseVerdictStates, false, [&](const network::SparseNetworkResult& system) {
+        ++calls;
+        EXPECT_EQ(system.rank.rank, 0);
+        EXPECT_TRUE(system.stressed.empty() && system.moving.empty());
+        EXPECT_EQ(system.K.rows(), 3 * n);
+        EXPECT_EQ(system.K.cols(), 6 * (n - 1));
+        spins = sparse_idle_spins(model, system);
+      });
+  EXPECT_EQ(calls, 1);
+  ASSERT_EQ(spins.size(), static_cast<std::size_t>(n - 1));
+  for (const auto& spin : spins) EXPECT_EQ(spin.count, 1) << model.bodies[static_cast<std::size_t>(spin.body)];
+  const auto b1 = std::find_if(spins.begin(), spins.end(), [](const IdleMotion& m) { return m.body == 1; });
+  ASSERT_NE(b1, spins.end());
+  // Axis formation (ω; v): ω parallel to the line from ring_point(0) to ring_point(1).
+  const Vec3 a = ring_point(0, n), b = ring_point(1, n);
+  const double dx = Rational(b[0] - a[0]).get_d(), dy = Rational(b[1] - a[1]).get_d();
+  const std::vector<double>& w = b1->screws.at(0);
+  EXPECT_NEAR(w[0] * dy - w[1] * dx, 0.0, 1e-9 * std::hypot(w[0], w[1]) * std::hypot(dx, dy));
+  EXPECT_NEAR(w[2], 0.0, 1e-12 * std::hypot(w[0], w[1]));
+
+  const Verdict given = sparse_network_verdict(model, r, spins), found = sparse_network_verdict(model, r);
+  EXPECT_EQ(given.summary, found.summary);
+  EXPECT_EQ(given.extra_motions, n - 1);
+  EXPECT_EQ(found.extra_motions, n - 1);
+  ASSERT_EQ(given.states.size(), found.states.size());
+  for (std::size_t i = 0; i < given.states.size(); ++i) EXPECT_EQ(given.states[i].description, found.states[i].description);
 }
 
 // ---- through the command ----------------------------------------------------------------------

@@ -67,10 +67,12 @@ bool may_spin(const Model& model, const SparseNetworkResult& r, int b, const std
   return !(sigma(d - 1) > std::max(kIdleSpinScreen, kIdleSpinScreenMargin * relative) * sigma(0));
 }
 
+}  // namespace
+
 // Idle spins body by body: each body that may spin (may_spin) with its own couplings, all ending
 // at one stand-in for the rest of the network (the ground of the small model), so the cost is
 // linear in the couplings.
-std::vector<IdleMotion> idle_spins(const Model& model, const SparseNetworkResult& r, const Tolerances& tolerances) {
+std::vector<IdleMotion> sparse_idle_spins(const Model& model, const SparseNetworkResult& r, const Tolerances& tolerances) {
   const int ground = r.ground;
   std::vector<std::vector<std::size_t>> touching(model.bodies.size());
   for (std::size_t i = 0; i < model.couplings.size(); ++i) {
@@ -98,6 +100,8 @@ std::vector<IdleMotion> idle_spins(const Model& model, const SparseNetworkResult
   }
   return spins;
 }
+
+namespace {
 
 // Twists and wrenches of the conditioned analysis frame (origin o, lengths over s) in the
 // user's frame, and their sizes in the conditioned frame (placement- and unit-free).
@@ -211,9 +215,12 @@ void add_unlisted(std::vector<Participant>& listed, const std::string& kind, con
 }  // namespace
 
 Verdict sparse_network_verdict(const Model& model, const SparseNetworkResult& r, const Tolerances& tolerances) {
+  return sparse_network_verdict(model, r, sparse_idle_spins(model, r, tolerances));
+}
+
+Verdict sparse_network_verdict(const Model& model, const SparseNetworkResult& r, const std::vector<IdleMotion>& idle) {
   Verdict v;
   const Conditioning frame{r.frame_origin, r.frame_scale};
-  const std::vector<IdleMotion> idle = idle_spins(model, r, tolerances);
   int idle_count = 0;
   for (const auto& i : idle) idle_count += i.count;
   const int moving = r.FN - idle_count;  // motions that are not idle spins

@@ -8,6 +8,9 @@
 
 #include <Eigen/Core>
 
+#include <vector>
+
+#include "kinestat/design/network_verdict.hpp"
 #include "kinestat/design/verdict.hpp"
 #include "kinestat/linalg/rank_decision.hpp"
 #include "kinestat/network/model.hpp"
@@ -27,5 +30,17 @@ inline constexpr Eigen::Index kSparseVerdictStates = 8;
 /// `tolerances`, as on the dense path. `changes` stays empty; `note` says why and how to get one.
 Verdict sparse_network_verdict(const network::Model& model, const network::SparseNetworkResult& result,
                                const Tolerances& tolerances = {});
+/// The same with the idle spins already found (sparse_idle_spins of the same model and system,
+/// with the tolerances of the analysis).
+Verdict sparse_network_verdict(const network::Model& model, const network::SparseNetworkResult& result,
+                               const std::vector<IdleMotion>& idle_spins);
+
+/// The idle spins of the sparse verdict, body by body (axis formation, the user's frame and
+/// length unit): each body whose own actions in K may leave a twist free is analysed alone with
+/// its couplings, exactly as on the dense path with `tolerances`. Needs only what
+/// network::build_body_twist_system sets (K, d, the ground, the frame, the rank rule's input
+/// rounding), so it can run while K is factored (analyse_network_sparse's `alongside`).
+std::vector<IdleMotion> sparse_idle_spins(const network::Model& model, const network::SparseNetworkResult& system,
+                                          const Tolerances& tolerances = {});
 
 }  // namespace kinestat::design

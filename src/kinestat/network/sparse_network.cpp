@@ -90,18 +90,35 @@ double basis_of(const Eigen::SparseMatrix<double>& a, const linalg::SparseQr& qr
   return residual;
 }
 
-// What the factor of K gives: its rank decision (from the threshold and σ_max of the system)
-// and support level, the motion basis on request, and the generic self-stresses.
-struct StressSide {
+// What one factor gives (of K: the self-stresses' side; of Kᵀ: the motions'): its rank
+// decision (from the threshold and σ_max of the system) and support level, the basis of the
+// factored matrix's null space on request, and the generic vector(s) of the other null space.
+struct FactorSide {
   linalg::RankDecision rank;
   double support_zero = kSupportZero;
   double basis_residual = 0.0;
   Eigen::MatrixXd basis;
   std::vector<Index> primaries;
-  Eigen::VectorXd actions;
-  Eigen::MatrixXd generic;
-  bool has_null_space = false;
+  Eigen::VectorXd generic_one;  // one generic left null vector of the factored matrix
+  Eigen::MatrixXd generic;      // d of them, on request
+  bool has_null_space = false;  // the factored matrix has more rows than its rank
 };
+
+// Factors `a` (K or Kᵀ) with the rank rule of `undecided` and fills a FactorSide.
+FactorSide factor_side(const Eigen::SparseMatrix<double>& a, const linalg::RankDecision& undecided, Index vectors,
+                       bool pair_vectors, Index d) {
+  FactorSide side;
+  const linalg::SparseQr qr(a, undecided.threshold);
+  side.rank = undecided;
+  linalg::record_rank(side.rank, qr);
+  linalg::record_factor_smallest(side.rank, qr);
+  side.support_zero = support_zero(side.rank);
+  if (vectors > 0) side.basis_residual = basis_of(a, qr, vectors, undecided.largest, side.basis, side.primaries);
+  side.generic_one = generic_left_null_vector(a, qr);
+  side.has_null_space = a.rows() > qr.rank();
+  if (pair_vectors && side.has_null_space) side.generic = generic_left_null_vectors(a, qr, d);
+  return side;
+}
 
 }  // namespace
 
@@ -215,42 +232,26 @@ void finish_sparse_network(SparseNetworkResult& r, const std::vector<bool>& stre
   }
 }
 
-SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances& tolerances, Index vectors, bool pair_vectors) {
+SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances& tolerances, Index vectors, bool pair_vectors,
+                                           const std::function<void(const SparseNetworkResult&)>& alongside) {
   SparseNetworkResult r = build_body_twist_system(model, tolerances);
-  Eigen::SparseMatrix<double> k = std::move(r.K);
-  r.K = Eigen::SparseMatrix<double>();
+  const Eigen::SparseMatrix<double>& k = r.K;
   const Index d = r.d;
-  if (pair_vectors) {
-    r.generic_motions = Eigen::MatrixXd::Zero(k.cols(), d);
-    r.generic_stresses = Eigen::MatrixXd::Zero(k.rows(), d);
-  }
   std::vector<bool> stressed(static_cast<std::size_t>(r.e), false), moving(static_cast<std::size_t>(r.e), false);
   if (k.rows() > 0 && k.cols() > 0) {
     const Eigen::SparseMatrix<double> kt = k.transpose();
     // The self-stresses' factor (of K) runs beside the motions' (of Kᵀ) on large networks where
     // the process allows it (linalg::concurrent_orderings_allowed: METIS's rand()): the two are
     // independent, each with its own SuiteSparse workspace, and their results are merged below
-    // in a fixed order, so the answer is the same as one after the other.
+    // in a fixed order, so the answer is the same as one after the other. Until then `r` stays
+    // as build_body_twist_system left it, for `alongside`.
     const linalg::RankDecision undecided = r.rank;
-    const double largest = r.rank.largest;
-    auto stress_side = [&k, &undecided, largest, vectors, pair_vectors, d]() {
-      // Self-stresses: generic action magnitudes λ with Kᵀ λ = 0 (every body in equilibrium),
-      // from the QR of K.
-      StressSide side;
-      const linalg::SparseQr qr(k, undecided.threshold);
-      side.rank = undecided;
-      linalg::record_rank(side.rank, qr);
-      linalg::record_factor_smallest(side.rank, qr);
-      side.support_zero = support_zero(side.rank);
-      if (vectors > 0) side.basis_residual = basis_of(k, qr, vectors, largest, side.basis, side.primaries);
-      side.actions = generic_left_null_vector(k, qr);
-      side.has_null_space = k.rows() > qr.rank();
-      if (pair_vectors && side.has_null_space) side.generic = generic_left_null_vectors(k, qr, d);
-      return side;
-    };
+    // Self-stresses: generic action magnitudes λ with Kᵀ λ = 0 (every body in equilibrium),
+    // from the QR of K; its null vectors are motions.
+    auto stress_side = [&k, &undecided, vectors, pair_vectors, d]() { return factor_side(k, undecided, vectors, pair_vectors, d); };
     bool concurrent = k.nonZeros() >= kConcurrentFactorNonZeros && linalg::concurrent_orderings_allowed() &&
                       std::thread::hardware_concurrency() >= 2;
-    std::future<StressSide> stress_future;
+    std::future<FactorSide> stress_future;
     if (concurrent) {
       try {
         stress_future = std::async(std::launch::async, stress_side);
@@ -258,53 +259,59 @@ SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances&
         concurrent = false;  // no thread to be had (a process limit): one after the other
       }
     }
-    {
-      // Motions: a generic body-twist vector with K T = 0 (the null space of (Kᵀ)ᵀ, from the QR
-      // of Kᵀ); a coupling moves when T_to ≠ T_from.
-      const linalg::SparseQr qr(kt, r.rank.threshold);
-      linalg::record_rank(r.rank, qr);
-      linalg::record_factor_smallest(r.rank, qr);
-      r.motion_support_zero = support_zero(r.rank);
-      if (vectors > 0)
-        r.basis_residual = std::max(r.basis_residual, basis_of(kt, qr, vectors, r.rank.largest, r.stress_basis, r.stress_primaries));
-      const Eigen::VectorXd twists = generic_left_null_vector(kt, qr);
-      if (pair_vectors && k.cols() > r.rank.rank) r.generic_motions = generic_left_null_vectors(kt, qr, d);
-      // Only when there are motions: otherwise the residual is rounding noise.
-      if (k.cols() > r.rank.rank && twists.norm() > 0) record_motion_support(model, k, twists, r, moving, r.motion_support_zero);
+    // Motions: a generic body-twist vector with K T = 0 (the null space of (Kᵀ)ᵀ, from the QR
+    // of Kᵀ; its null vectors are self-stresses); a coupling moves when T_to ≠ T_from.
+    FactorSide motions = factor_side(kt, undecided, vectors, pair_vectors, d);
+    if (alongside) alongside(r);
+    FactorSide stresses = concurrent ? stress_future.get() : stress_side();
+
+    r.rank = motions.rank;
+    r.motion_support_zero = motions.support_zero;
+    if (vectors > 0) {
+      r.basis_residual = std::max(motions.basis_residual, stresses.basis_residual);
+      r.stress_basis = std::move(motions.basis);
+      r.stress_primaries = std::move(motions.primaries);
+      r.motion_basis = std::move(stresses.basis);
+      r.motion_primaries = std::move(stresses.primaries);
     }
-    {
-      StressSide side = concurrent ? stress_future.get() : stress_side();
-      r.motion_factor_rank = side.rank;
-      r.stress_support_zero = side.support_zero;
-      if (vectors > 0) {
-        r.basis_residual = std::max(r.basis_residual, side.basis_residual);
-        r.motion_basis = std::move(side.basis);
-        r.motion_primaries = std::move(side.primaries);
-      }
-      if (pair_vectors && side.has_null_space) r.generic_stresses = std::move(side.generic);
-      if (side.has_null_space && side.actions.norm() > 0) record_stress_support(kt, side.actions, r, stressed, r.stress_support_zero);
+    if (pair_vectors) {
+      r.generic_motions = motions.has_null_space ? std::move(motions.generic) : Eigen::MatrixXd::Zero(k.cols(), d);
+      r.generic_stresses = stresses.has_null_space ? std::move(stresses.generic) : Eigen::MatrixXd::Zero(k.rows(), d);
     }
+    // Only when there are motions (stresses): otherwise the residual is rounding noise.
+    if (motions.has_null_space && motions.generic_one.norm() > 0)
+      record_motion_support(model, k, motions.generic_one, r, moving, r.motion_support_zero);
+    r.motion_factor_rank = stresses.rank;
+    r.stress_support_zero = stresses.support_zero;
+    if (stresses.has_null_space && stresses.generic_one.norm() > 0)
+      record_stress_support(kt, stresses.generic_one, r, stressed, r.stress_support_zero);
     // The rank is Kᵀ's factor's; when K's factor agrees and its live block is better
     // conditioned (the two share σ_max, so the larger distance), its evidence stands for it.
     if (r.motion_factor_rank.rank == r.rank.rank && r.motion_factor_rank.distance() > r.rank.distance()) {
       r.rank.smallest_kept = r.motion_factor_rank.smallest_kept;
       r.rank.factor_smallest = r.motion_factor_rank.factor_smallest;
     }
-  } else if (k.cols() > 0) {
-    // No actions at all: every coupling and body moves freely.
-    std::fill(moving.begin(), moving.end(), true);
-    for (int body = 0; body < r.bodies; ++body)
-      if (body != r.ground) r.moving_bodies.push_back(body);
-    if (pair_vectors)  // every twist is a motion
-      for (Index j = 0; j < d; ++j)
-        for (Index i = 0; i < k.cols(); ++i) r.generic_motions(i, j) = weight(i * (d + 1) + j + 1);
-    if (vectors > 0) {
-      const Index count = std::min<Index>(vectors, k.cols());
-      r.motion_basis = Eigen::MatrixXd::Identity(k.cols(), count);
-      for (Index j = 0; j < count; ++j) r.motion_primaries.push_back(j);
+  } else {
+    if (alongside) alongside(r);
+    if (pair_vectors) {
+      r.generic_motions = Eigen::MatrixXd::Zero(k.cols(), d);
+      r.generic_stresses = Eigen::MatrixXd::Zero(k.rows(), d);
+    }
+    if (k.cols() > 0) {
+      // No actions at all: every coupling and body moves freely.
+      std::fill(moving.begin(), moving.end(), true);
+      for (int body = 0; body < r.bodies; ++body)
+        if (body != r.ground) r.moving_bodies.push_back(body);
+      if (pair_vectors)  // every twist is a motion
+        for (Index j = 0; j < d; ++j)
+          for (Index i = 0; i < k.cols(); ++i) r.generic_motions(i, j) = weight(i * (d + 1) + j + 1);
+      if (vectors > 0) {
+        const Index count = std::min<Index>(vectors, k.cols());
+        r.motion_basis = Eigen::MatrixXd::Identity(k.cols(), count);
+        for (Index j = 0; j < count; ++j) r.motion_primaries.push_back(j);
+      }
     }
   }
-  r.K = std::move(k);
   finish_sparse_network(r, stressed, moving);
   return r;
 }

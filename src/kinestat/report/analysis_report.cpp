@@ -76,9 +76,14 @@ SparseNetworkAnalysis analyse_sparse_network_as_reported(const network::Model& m
                                                          bool coupled_pairs) {
   SparseNetworkAnalysis a;
   a.listed_pairs = !chosen.empty() || coupled_pairs;
-  a.result = network::analyse_network_sparse(model, tolerances, design::kSparseVerdictStates, a.listed_pairs);
+  // The idle spins need only K: they are found while K's factor may still be running.
+  std::vector<design::IdleMotion> idle_spins;
+  a.result = network::analyse_network_sparse(model, tolerances, design::kSparseVerdictStates, a.listed_pairs,
+                                              [&](const network::SparseNetworkResult& system) {
+                                                idle_spins = design::sparse_idle_spins(model, system, tolerances);
+                                              });
   if (a.listed_pairs) a.pairs = network::sparse_pair_freedoms(model, a.result, chosen, coupled_pairs, tolerances);
-  a.verdict = design::sparse_network_verdict(model, a.result, tolerances);
+  a.verdict = design::sparse_network_verdict(model, a.result, idle_spins);
   return a;
 }
 
