@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <map>
 #include <set>
 #include <unordered_map>
 #include <unordered_set>
@@ -116,13 +117,13 @@ class NetworkReader {
   // A 3-vector; planar models also accept [x, y] and require z = 0 for points.
   Vec3 vector(const TreeNode& node, std::string_view what, bool nonzero, bool in_plane) {
     const bool planar = loaded_.model.space.is_planar();
-    if (planar) {
-      file_.numbers(node, what, {2, 3});  // checks shape and finiteness
-    } else {
-      file_.numbers(node, what, {3});
-    }
+    // Checks shape and finiteness and reads each number once.
+    std::vector<ExactNumber> values = planar ? file_.numbers(node, what, {2, 3}) : file_.numbers(node, what, {3});
     Vec3 v{0, 0, 0};
-    for (std::size_t i = 0; i < node.size(); ++i) v[i] = number(node[i], what);
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      max_digits_ = std::max(max_digits_, significant_digits(node[i].scalar()));
+      v[i] = std::move(*values[i].exact);
+    }
     if (nonzero && screw::is_zero(v)) file_.fail(node, fmt::format("{} must not be the zero vector", what));
     if (planar && in_plane && sgn(v[2]) != 0) file_.fail(node, fmt::format("{} must lie in the xy-plane of a planar model", what));
     return v;
@@ -141,6 +142,24 @@ class NetworkReader {
     return screws;
   }
 
+  // What read_coupling checks a coupling of one type against, built once per type.
+  struct TypeKeys {
+    std::string what;                     // "a revolute coupling", for messages
+    std::vector<std::string> allowed;     // its keys
+    std::vector<std::string_view> required;  // its required geometry keys
+  };
+  const TypeKeys& keys_of(CouplingType type) {
+    auto [it, inserted] = type_keys_.try_emplace(type);
+    if (inserted) {
+      TypeKeys& keys = it->second;
+      keys.what = fmt::format("a {} coupling", screw::coupling_type_name(type));
+      keys.allowed = {"name", "type", "between", "point"};
+      for (auto key : screw::geometry_keys(type)) keys.allowed.emplace_back(key);
+      keys.required = screw::required_geometry_keys(type);
+    }
+    return it->second;
+  }
+
   void read_coupling(const TreeNode& node) {
     file_.expect_map(node, "a coupling");
     const TreeNode type_node = file_.required(node, "type", "a coupling");
@@ -150,17 +169,16 @@ class NetworkReader {
       file_.fail(type_node, fmt::format("unknown coupling type '{}'; expected one of: {}", type_name,
                                         fmt::join(screw::coupling_type_names(), ", ")));
     }
-    std::vector<std::string> allowed{"name", "type", "between", "point"};
-    for (auto key : screw::geometry_keys(*type)) allowed.emplace_back(key);
-    file_.check_keys(node, fmt::format("a {} coupling", type_name), allowed);
-    for (auto key : screw::required_geometry_keys(*type)) {
+    const TypeKeys& keys = keys_of(*type);
+    file_.check_keys(node, keys.what, keys.allowed);
+    for (auto key : keys.required) {
       if (key == "point" && !file_.optional(node, key).defined()) {
         const TreeNode name = file_.optional(node, "name");
         file_.fail(node, fmt::format("{} coupling{} needs a 'point' (on its axis, or its centre or contact point): its "
                                      "motions depend on where it is; write point: [0, 0, 0] if it is at the origin",
                                      type_name, name.is_scalar() ? fmt::format(" '{}'", name.scalar()) : ""));
       }
-      file_.required(node, key, fmt::format("a {} coupling", type_name));
+      file_.required(node, key, keys.what);
     }
 
     network::Coupling coupling;
@@ -259,6 +277,7 @@ class NetworkReader {
   LoadedNetwork loaded_;
   std::unordered_map<std::string, int> body_indices_;  // body name -> index, while couplings are read
   std::unordered_set<std::string> coupling_names_;
+  std::map<CouplingType, TypeKeys> type_keys_;
   int max_digits_ = 0;
 };
 
