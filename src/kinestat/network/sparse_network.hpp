@@ -128,11 +128,11 @@ void finish_sparse_network(SparseNetworkResult& r, const std::vector<bool>& stre
 /// With `vectors` > 0 also the first `vectors` basis vectors of the motions and of the
 /// self-stresses (motion_basis, stress_basis), at the cost of one triangular solve each. With
 /// `pair_vectors` also generic_motions and generic_stresses (2d least-squares solves).
-/// `alongside`, when given, is called once on the calling thread with the system as
-/// build_body_twist_system leaves it (K in `K`, the frame, the threshold; nothing factored yet
-/// in its other fields, which it must not read), after the factor of Kᵀ and while the factor of
-/// K may still run on the other thread: work that needs only the system (the verdict's idle
-/// spins, design::sparse_idle_spins) then fills the wait instead of following it.
+/// `alongside`, when given, is called once on the calling thread with the system exactly as
+/// build_body_twist_system leaves it (K in `K`, the frame, the threshold; nothing factored: rank
+/// 0, no supports), after the factor of Kᵀ and while the factor of K may still run on the other
+/// thread: work that needs only the system (the verdict's idle spins,
+/// design::sparse_idle_spins) then fills the wait instead of following it.
 SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances& tolerances = {},
                                            Eigen::Index vectors = 0, bool pair_vectors = false,
                                            const std::function<void(const SparseNetworkResult&)>& alongside = {});
