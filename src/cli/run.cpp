@@ -41,9 +41,9 @@ namespace {
 // mmap threshold at 128 KiB and doubled the faults.) One arena for every thread: the second
 // thread of a network's two factorisations (network::analyse_network_sparse) otherwise gets an
 // arena of its own, in fresh mappings that neither reuse what the first factorisation frees nor
-// lie on the huge pages of the main heap (ladder of 10^5 couplings: 44,000 -> 2,400 page faults,
-// system time 1.9-2.9 -> 1.0-1.4 s, peak RSS 1.18 -> 0.93-1.0 GB); the factorisations allocate
-// in large blocks, so the shared lock costs nothing measurable.
+// lie on the huge pages of the main heap (ladder of 10^5 couplings: 44,100 -> 2,500 page faults,
+// peak RSS 1.17 -> 0.92 GB, CPU time down too; bench/README.md, session 17): the factorisations
+// allocate in large blocks, so the shared lock costs nothing measurable.
 void keep_freed_memory_for_reuse() {
   mallopt(M_MMAP_MAX, 0);
   mallopt(M_TRIM_THRESHOLD, 1 << 30);
