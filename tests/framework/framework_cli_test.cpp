@@ -82,8 +82,9 @@ int program_starts(const std::string& standard_error) {
   return starts;
 }
 
-TEST(FrameworkCli, LargeInputRestartsOnHugePagesWithTheSameAnswer) {
-  // truss-12 with over 1 MiB of comments: the restart's threshold, and the seed's answer.
+TEST(FrameworkCli, LargeInputRestartsOnHugePagesAndPrefaultsWithTheSameAnswer) {
+  // truss-12 with over 1 MiB of comments: the threshold of the restart and of the heap's prefault
+  // (src/cli/heap_prefault.cpp), and the seed's answer.
   const auto path = temp_dir() / "truss-12-padded.yaml";
   {
     std::ofstream out(path);
@@ -92,18 +93,20 @@ TEST(FrameworkCli, LargeInputRestartsOnHugePagesWithTheSameAnswer) {
   }
   ASSERT_GE(std::filesystem::file_size(path), std::uintmax_t{1} << 20);
   const std::string analyse = " " + std::string(KINESTAT_CLI) + " analyze --json " + path.string();
-  const CliRun restarted = run_shell("env -u GLIBC_TUNABLES LD_DEBUG=statistics" + analyse);
+  const CliRun restarted = run_shell("env -u GLIBC_TUNABLES -u KINESTAT_PREFAULT LD_DEBUG=statistics" + analyse);
   const CliRun kept = run_shell("env GLIBC_TUNABLES=glibc.malloc.hugetlb=0 LD_DEBUG=statistics" + analyse);
   const CliRun other = run_shell("env GLIBC_TUNABLES=glibc.malloc.tcache_count=0 LD_DEBUG=statistics" + analyse);
   const CliRun small = run_shell("env -u GLIBC_TUNABLES LD_DEBUG=statistics " + std::string(KINESTAT_CLI) +
                                  " analyze --json " + example("truss-12.yaml"));
-  for (const CliRun* r : {&restarted, &kept, &other, &small}) ASSERT_EQ(r->exit_code, 0) << r->err;
+  const CliRun not_prefaulted = run_shell("env -u GLIBC_TUNABLES KINESTAT_PREFAULT=0" + analyse);
+  for (const CliRun* r : {&restarted, &kept, &other, &small, &not_prefaulted}) ASSERT_EQ(r->exit_code, 0) << r->err;
   EXPECT_EQ(program_starts(restarted.err), 2);
   EXPECT_EQ(program_starts(kept.err), 1);  // the user's own hugetlb setting is left alone
   EXPECT_EQ(program_starts(other.err), 2);  // other tunables are kept and the setting added
   EXPECT_EQ(program_starts(small.err), 1);
   EXPECT_EQ(restarted.out, kept.out);
   EXPECT_EQ(other.out, kept.out);
+  EXPECT_EQ(not_prefaulted.out, restarted.out);
   const auto j = nlohmann::json::parse(restarted.out);
   EXPECT_EQ(j["rank"], 11);
   EXPECT_EQ(j["mechanisms"], 1);
