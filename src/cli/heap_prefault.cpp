@@ -22,6 +22,7 @@
 #include <thread>
 
 #include "cli/commands.hpp"
+#include "kinestat/address_sanitizer.hpp"
 
 namespace kinestat::cli {
 
@@ -43,22 +44,10 @@ std::uintmax_t available_memory_bytes() {
   return pages > 0 && page_size > 0 ? static_cast<std::uintmax_t>(pages) * static_cast<std::uintmax_t>(page_size) : 0;
 }
 
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kAddressSanitizer = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kAddressSanitizer = true;
-#else
-constexpr bool kAddressSanitizer = false;
-#endif
-#else
-constexpr bool kAddressSanitizer = false;
-#endif
-
 // Extends the heap by `bytes` (capped), frees them again and faults their pages in on a
 // background thread.
 void prefault_heap(std::uintmax_t bytes) {
-  if (kAddressSanitizer) return;  // its allocator keeps freed blocks in quarantine, not in the heap
+  if (kBuiltWithAddressSanitizer) return;  // its allocator keeps freed blocks in quarantine, not in the heap
   const char* disabled = std::getenv("KINESTAT_PREFAULT");
   if (disabled != nullptr && disabled[0] == '0') return;
   const auto length = static_cast<std::size_t>(

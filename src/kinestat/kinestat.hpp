@@ -2,6 +2,7 @@
 // kinestat: every public header. Layers: screw, graph, linalg -> network, framework, structure,
 // kinematics, design -> io -> report (docs/architecture.md). The installed-package check
 // (tests/consumer) fails when a public header is missing here.
+#include "kinestat/address_sanitizer.hpp"
 #include "kinestat/error.hpp"
 #include "kinestat/design/framework_verdict.hpp"
 #include "kinestat/design/network_verdict.hpp"

@@ -9,23 +9,10 @@
 #include <cstdlib>
 #include <new>
 
+#include "kinestat/address_sanitizer.hpp"
 #include "kinestat/linalg/gmp_allocation.hpp"
 
 namespace {
-
-// AddressSanitizer reserves terabytes of address space for its shadow memory, so a process with
-// RLIMIT_AS capped at 256 MB is killed before main; the capped case runs only without it.
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kAddressSanitizer = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kAddressSanitizer = true;
-#else
-constexpr bool kAddressSanitizer = false;
-#endif
-#else
-constexpr bool kAddressSanitizer = false;
-#endif
 
 // In a child process: address space capped at 256 MB, then a 1 GB integer is asked for.
 // With GMP's own functions this aborts (SIGABRT); with kinestat's it throws std::bad_alloc.
@@ -47,7 +34,9 @@ void allocate_beyond_the_limit() {
 }
 
 TEST(GmpAllocationDeathTest, FailureIsACatchableBadAlloc) {
-  if (kAddressSanitizer) GTEST_SKIP() << "RLIMIT_AS cannot be capped under AddressSanitizer";
+  // AddressSanitizer reserves terabytes of address space for its shadow memory, so a process with
+  // RLIMIT_AS capped at 256 MB is killed before main; the capped case runs only without it.
+  if (kinestat::kBuiltWithAddressSanitizer) GTEST_SKIP() << "RLIMIT_AS cannot be capped under AddressSanitizer";
   GTEST_FLAG_SET(death_test_style, "threadsafe");
   EXPECT_EXIT(allocate_beyond_the_limit(), ::testing::ExitedWithCode(3), "");
 }
