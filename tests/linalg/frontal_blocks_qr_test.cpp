@@ -11,6 +11,7 @@
 #include <Eigen/SparseCore>
 
 #include <algorithm>
+#include <new>
 #include <cmath>
 #include <numeric>
 #include <random>
@@ -147,6 +148,45 @@ TEST(FrontalBlocksQr, RankByConstructionAndSuiteSparsesOwnR) {
       expect_suitesparse_r(a, order, qr);
     }
   }
+}
+
+TEST(FrontalBlocksQr, AThresholdAskedForAfterTheOrderGivesSuiteSparsesOwnFactorisation) {
+  // SparseQr(a, threshold function) orders and analyses `a` before it asks for the threshold
+  // when every column has two or more entries (no column singletons whatever the threshold),
+  // else asks first; either way R, the permutation and the rank are SuiteSparseQR's own with
+  // that threshold (METIS order), and the function is asked once.
+  for (int seed = 0; seed < 8; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    std::mt19937 rng(static_cast<unsigned>(4300 + seed));
+    const bool wide = seed % 4 == 3;
+    const int rows = wide ? 40 + seed : 70 + 5 * seed, cols = wide ? 90 : 50 + 3 * seed, rank = 25 + seed;
+    // Seeds 0-3: every column holds several entries (the product of two banded factors); 4-7:
+    // with column singletons or an empty column, where the threshold decides the singletons.
+    const Eigen::SparseMatrix<double> a =
+        seed < 4 ? testing::banded_of_rank(rng, rows, cols, rank)
+                 : with_singletons(testing::banded_of_rank(rng, rows, cols, rank), seed % 2 == 0 ? 2 : 0, seed % 2);
+    ASSERT_EQ(dense_rank(a), rank + (seed >= 4 && seed % 2 == 0 ? 2 : 0));
+    int asked = 0;
+    const SparseQr late(a, [&asked] {
+      ++asked;
+      return 1e-9;
+    });
+    EXPECT_EQ(asked, 1);
+    EXPECT_EQ(late.rank(), dense_rank(a));
+    expect_suitesparse_r(a, {}, late);
+  }
+}
+
+TEST(FrontalBlocksQr, AThresholdThatCannotBeHadEndsTheFactorisation) {
+  // The caller's computation of the threshold failed (e.g. out of memory on another thread):
+  // its exception comes out of SparseQr, and what SuiteSparse made is released (the ASan build
+  // checks for leaks).
+  std::mt19937 rng(4400);
+  const Eigen::SparseMatrix<double> a = testing::banded_of_rank(rng, 60, 40, 20);
+  EXPECT_THROW(SparseQr(a, []() -> double { throw std::bad_alloc(); }), std::bad_alloc);
+  EXPECT_THROW(SparseQr(with_singletons(a, 1, 1), []() -> double { throw std::runtime_error("no threshold"); }),
+               std::runtime_error);
+  EXPECT_THROW(SparseQr(a, [] { return -1.0; }), std::invalid_argument);
 }
 
 TEST(FrontalBlocksQr, EmptyMatricesAndBadOrders) {

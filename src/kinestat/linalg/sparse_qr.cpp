@@ -13,6 +13,15 @@ SuiteSparseQR_factorization<Entry>* spqr_1factor(int ordering, double tol, Suite
                                                  SuiteSparse_long* Bi, Entry* Bx, cholmod_common* cc);
 template <typename Entry>
 void spqr_freefac(SuiteSparseQR_factorization<Entry>** QR_handle, cholmod_common* cc);
+// The two phases spqr_1factor runs when there are no column singletons, and its mapping of the
+// squeezed R (same origin).
+spqr_symbolic* spqr_analyze(cholmod_sparse* A, int ordering, SuiteSparse_long* Quser, int do_rank_detection, int keepH,
+                            cholmod_common* cc);
+template <typename Entry>
+spqr_numeric<Entry>* spqr_factorize(cholmod_sparse** Ahandle, SuiteSparse_long freeA, double tol, SuiteSparse_long ntol,
+                                    spqr_symbolic* QRsym, cholmod_common* cc);
+template <typename Entry>
+int spqr_rmap(SuiteSparseQR_factorization<Entry>* QR, cholmod_common* cc);
 
 #include <algorithm>
 #include <cmath>
@@ -83,17 +92,52 @@ class FrontalFactorisation {
  public:
   FrontalFactorisation(SpqrInput& input, bool given_order, double threshold) {
     cholmod_l_start(&cc_);
-    // Nested dissection by METIS keeps the fill of R near that of a Cholesky factor of AᵀA on
-    // lattice-like frameworks; a given order is kept (SPQR_ORDERING_NATURAL: singletons first,
-    // then the columns as given, etree-postordered).
-    qr_ = spqr_1factor<double>(given_order ? SPQR_ORDERING_NATURAL : SPQR_ORDERING_METIS, threshold, 0, 0, &input.view, 0,
-                               nullptr, nullptr, nullptr, &cc_);
-    const int status = cc_.status;
-    if (qr_ == nullptr || status < CHOLMOD_OK) {
-      release();
-      if (status == CHOLMOD_OUT_OF_MEMORY) throw std::bad_alloc();
-      throw std::runtime_error("SuiteSparseQR failed (status " + std::to_string(status) + ")");
+    factor_whole(input, given_order, threshold);
+  }
+
+  // The same factorisation (METIS order), the threshold asked for after the order and the
+  // symbolic analysis where they do not depend on it: with every column holding two or more
+  // entries spqr_1factor finds no column singletons, whatever the threshold, and factors A
+  // itself in the order of spqr_1colamd, which is METIS on the pattern of Aᵀ, postordered. The
+  // calls below are spqr_1factor's and spqr_1colamd's in that case, in their order, with their
+  // arguments (SuiteSparse 5.12, SPQR/Source/spqr_1factor.cpp and spqr_1colamd.cpp).
+  FrontalFactorisation(SpqrInput& input, bool given_order, const std::function<double()>& threshold) {
+    cholmod_l_start(&cc_);
+    if (given_order || !every_column_has_two_entries(input.view)) {
+      factor_whole(input, given_order, ask(threshold));
+      return;
     }
+    cholmod_sparse* a = &input.view;
+    const auto n = static_cast<SuiteSparse_long>(a->ncol);
+    qr_ = static_cast<SuiteSparseQR_factorization<double>*>(
+        cholmod_l_malloc(1, sizeof(SuiteSparseQR_factorization<double>), &cc_));
+    check(qr_ != nullptr);
+    *qr_ = SuiteSparseQR_factorization<double>{};  // every pointer null, no singletons, no B
+    qr_->narows = static_cast<SuiteSparse_long>(a->nrow);
+    qr_->nacols = n;
+    qr_->Q1fill = static_cast<SuiteSparse_long*>(cholmod_l_malloc(static_cast<std::size_t>(n), sizeof(SuiteSparse_long), &cc_));
+    check(qr_->Q1fill != nullptr);
+    cholmod_sparse* pattern_transposed = cholmod_l_transpose(a, 0, &cc_);
+    check(pattern_transposed != nullptr);
+    const int postorder = cc_.postorder;
+    cc_.postorder = 1;
+    cholmod_l_metis(pattern_transposed, nullptr, 0, /*postorder*/ 1, qr_->Q1fill, &cc_);
+    cc_.postorder = postorder;
+    cholmod_l_free_sparse(&pattern_transposed, &cc_);
+    check(true);
+    qr_->QRsym = spqr_analyze(a, SPQR_ORDERING_GIVEN, qr_->Q1fill, /*do_rank_detection*/ 1, /*keepH*/ 0, &cc_);
+    check(qr_->QRsym != nullptr);
+    const double tol = ask(threshold);
+    if (!(tol >= 0.0)) {  // spqr_1factor would skip the rank rule, which the analysis above assumed
+      release();
+      throw std::invalid_argument("SparseQr: a threshold asked for after the analysis must be a number >= 0");
+    }
+    qr_->tol = tol;
+    qr_->allow_tol = 1;
+    qr_->QRnum = spqr_factorize<double>(&a, /*freeA*/ 0, tol, n, qr_->QRsym, &cc_);
+    check(qr_->QRnum != nullptr);
+    qr_->rank = qr_->QRnum->rank1;
+    if (qr_->rank < n) check(spqr_rmap<double>(qr_, &cc_) != 0);
   }
   ~FrontalFactorisation() { release(); }
   FrontalFactorisation(const FrontalFactorisation&) = delete;
@@ -159,6 +203,37 @@ class FrontalFactorisation {
   }
 
  private:
+  void factor_whole(SpqrInput& input, bool given_order, double threshold) {
+    // Nested dissection by METIS keeps the fill of R near that of a Cholesky factor of AᵀA on
+    // lattice-like frameworks; a given order is kept (SPQR_ORDERING_NATURAL: singletons first,
+    // then the columns as given, etree-postordered).
+    qr_ = spqr_1factor<double>(given_order ? SPQR_ORDERING_NATURAL : SPQR_ORDERING_METIS, threshold, 0, 0, &input.view, 0,
+                               nullptr, nullptr, nullptr, &cc_);
+    check(qr_ != nullptr);
+  }
+  // The caller's threshold; what was made is released if asking throws.
+  double ask(const std::function<double()>& threshold) {
+    try {
+      return threshold();
+    } catch (...) {
+      release();
+      throw;
+    }
+  }
+  static bool every_column_has_two_entries(const cholmod_sparse& a) {
+    const auto* starts = static_cast<const SuiteSparse_long*>(a.p);
+    for (std::size_t j = 0; j < a.ncol; ++j)
+      if (starts[j + 1] - starts[j] < 2) return false;
+    return true;
+  }
+  // Throws, releasing what was made, if SuiteSparse failed or `made` is false.
+  void check(bool made) {
+    const int status = cc_.status;
+    if (made && status >= CHOLMOD_OK) return;
+    release();
+    if (status == CHOLMOD_OUT_OF_MEMORY) throw std::bad_alloc();
+    throw std::runtime_error("SuiteSparseQR failed (status " + std::to_string(status) + ")");
+  }
   void release() {
     if (qr_ != nullptr) spqr_freefac<double>(&qr_, &cc_);
     cholmod_l_finish(&cc_);
@@ -177,26 +252,34 @@ struct SparseQr::Factor {
 
 SparseQr::SparseQr(const Eigen::SparseMatrix<double>& a, double threshold)
     : factor_(std::make_unique<Factor>()), rows_(a.rows()), cols_(a.cols()) {
-  factor(a, threshold, {});
+  factor(a, [threshold] { return threshold; }, {}, false);
+}
+
+SparseQr::SparseQr(const Eigen::SparseMatrix<double>& a, const std::function<double()>& threshold)
+    : factor_(std::make_unique<Factor>()), rows_(a.rows()), cols_(a.cols()) {
+  factor(a, threshold, {}, true);
 }
 
 SparseQr::SparseQr(const Eigen::SparseMatrix<double>& a, double threshold, const std::vector<Eigen::Index>& column_order)
     : factor_(std::make_unique<Factor>()), rows_(a.rows()), cols_(a.cols()) {
   if (static_cast<Eigen::Index>(column_order.size()) != cols_)
     throw std::invalid_argument("SparseQr: the column order must list every column once");
-  factor(a, threshold, column_order);
+  factor(a, [threshold] { return threshold; }, column_order, false);
 }
 
-void SparseQr::factor(const Eigen::SparseMatrix<double>& a, double threshold, const std::vector<Eigen::Index>& column_order) {
+void SparseQr::factor(const Eigen::SparseMatrix<double>& a, const std::function<double()>& threshold,
+                      const std::vector<Eigen::Index>& column_order, bool threshold_late) {
   pin_blas_threads();
   if (rows_ == 0 || cols_ == 0) {
+    threshold();  // asked for in every case, so that a caller's promise is always collected
     for (Eigen::Index j = 0; j < cols_; ++j) permutation_.push_back(j);
     factor_->starts.assign(static_cast<std::size_t>(cols_) + 1, 0);
     return;
   }
   const bool given = !column_order.empty();
   SpqrInput input(a, column_order);
-  const FrontalFactorisation qr(input, given, threshold);
+  const FrontalFactorisation qr = threshold_late ? FrontalFactorisation(input, given, threshold)
+                                                 : FrontalFactorisation(input, given, threshold());
   rank_ = static_cast<Eigen::Index>(qr.factor().rank);
   // R assembled once, straight into trapezoidal form: the live columns first, each group in
   // the factorisation's order, every entry in its row of the squeezed R. SuiteSparseQR makes

@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -33,6 +34,14 @@ class SparseQr {
   /// only where the gap at the threshold is clear. Throws std::invalid_argument unless
   /// column_order is a permutation of the columns.
   SparseQr(const Eigen::SparseMatrix<double>& a, double threshold, const std::vector<Eigen::Index>& column_order);
+  /// Factors `a` as SparseQr(a, threshold()) does, the same factorisation, but calls
+  /// `threshold` (which may block, e.g. on a future) only once METIS has ordered the columns
+  /// and SuiteSparseQR has analysed the structure, so that the caller can compute the threshold
+  /// meanwhile. That is possible when every column of `a` has two or more stored entries: the
+  /// threshold then changes nothing before the numeric factorisation (SuiteSparseQR's column
+  /// singletons are the columns with one entry above it, or none). Otherwise `threshold` is
+  /// called first.
+  SparseQr(const Eigen::SparseMatrix<double>& a, const std::function<double()>& threshold);
   ~SparseQr();
   SparseQr(const SparseQr&) = delete;
   SparseQr& operator=(const SparseQr&) = delete;
@@ -75,8 +84,11 @@ class SparseQr {
 
  private:
   struct Factor;
-  // Factors `a` with its columns taken in `column_order` (empty: as they are, ordered by METIS).
-  void factor(const Eigen::SparseMatrix<double>& a, double threshold, const std::vector<Eigen::Index>& column_order);
+  // Factors `a` with its columns taken in `column_order` (empty: as they are, ordered by METIS);
+  // with `threshold_late`, the threshold is asked for as late as the factorisation allows (see
+  // the constructor), else first.
+  void factor(const Eigen::SparseMatrix<double>& a, const std::function<double()>& threshold,
+              const std::vector<Eigen::Index>& column_order, bool threshold_late);
   // In place: w ← R11⁻ᵀ w and w ← R11⁻¹ w (w has rank() entries, in the order of P).
   void solve_transposed_live(Eigen::VectorXd& w) const;
   void solve_live(Eigen::VectorXd& w) const;

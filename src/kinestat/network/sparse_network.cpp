@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
+#include <functional>
 #include <future>
 #include <numeric>
 #include <system_error>
@@ -104,25 +106,28 @@ struct FactorSide {
   bool has_null_space = false;  // the factored matrix has more rows than its rank
 };
 
-// Factors `a` (K or Kᵀ) with the rank rule of `undecided` and fills a FactorSide.
-FactorSide factor_side(const Eigen::SparseMatrix<double>& a, const linalg::RankDecision& undecided, Index vectors,
-                       bool pair_vectors, Index d) {
+// Factors `a` (K or Kᵀ) with the rank rule `undecided()` gives, asked for once METIS has ordered
+// `a` (linalg::SparseQr), and fills a FactorSide.
+FactorSide factor_side(const Eigen::SparseMatrix<double>& a, const std::function<linalg::RankDecision()>& undecided,
+                       Index vectors, bool pair_vectors, Index d) {
   FactorSide side;
-  const linalg::SparseQr qr(a, undecided.threshold);
-  side.rank = undecided;
+  const linalg::SparseQr qr(a, [&side, &undecided] {
+    side.rank = undecided();
+    return side.rank.threshold;
+  });
   linalg::record_rank(side.rank, qr);
   linalg::record_factor_smallest(side.rank, qr);
   side.support_zero = support_zero(side.rank);
-  if (vectors > 0) side.basis_residual = basis_of(a, qr, vectors, undecided.largest, side.basis, side.primaries);
+  if (vectors > 0) side.basis_residual = basis_of(a, qr, vectors, side.rank.largest, side.basis, side.primaries);
   side.generic_one = generic_left_null_vector(a, qr);
   side.has_null_space = a.rows() > qr.rank();
   if (pair_vectors && side.has_null_space) side.generic = generic_left_null_vectors(a, qr, d);
   return side;
 }
 
-}  // namespace
-
-SparseNetworkResult build_body_twist_system(const Model& model, const Tolerances& tolerances) {
+// K and the frame of build_body_twist_system, without the rank rule: the input's rounding
+// level, which the rule needs, in `input_rounding`.
+SparseNetworkResult build_body_twist_matrix(const Model& model, double& input_rounding) {
   if (model.couplings.empty()) throw ModelError("couplings", -1, "the model has no couplings");
   SparseNetworkResult r;
   r.d = model.space.dimension();
@@ -184,9 +189,17 @@ SparseNetworkResult build_body_twist_system(const Model& model, const Tolerances
   k.setFromTriplets(entries.begin(), entries.end());  // duplicates (a coupling of a body to itself) add up to zero
   entries.clear();
   entries.shrink_to_fit();
+  input_rounding = frame.input_rounding(model);
+  return r;
+}
 
+}  // namespace
+
+SparseNetworkResult build_body_twist_system(const Model& model, const Tolerances& tolerances) {
+  double input_rounding = 0.0;
+  SparseNetworkResult r = build_body_twist_matrix(model, input_rounding);
   // The threshold rises with the rounding of the coordinates as written (the dense rule).
-  r.rank = linalg::sparse_rank_threshold(k, {tolerances.rank, frame.input_rounding(model)});
+  r.rank = linalg::sparse_rank_threshold(r.K, {tolerances.rank, input_rounding});
   return r;
 }
 
@@ -234,21 +247,29 @@ void finish_sparse_network(SparseNetworkResult& r, const std::vector<bool>& stre
 
 SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances& tolerances, Index vectors, bool pair_vectors,
                                            const std::function<void(const SparseNetworkResult&)>& alongside) {
-  SparseNetworkResult r = build_body_twist_system(model, tolerances);
+  double input_rounding = 0.0;
+  SparseNetworkResult r = build_body_twist_matrix(model, input_rounding);
+  // The rank rule of build_body_twist_system (the threshold rises with the rounding of the
+  // coordinates as written, the dense rule).
+  const linalg::RankTolerance rank_tolerance{tolerances.rank, input_rounding};
   const Eigen::SparseMatrix<double>& k = r.K;
   const Index d = r.d;
   std::vector<bool> stressed(static_cast<std::size_t>(r.e), false), moving(static_cast<std::size_t>(r.e), false);
   if (k.rows() > 0 && k.cols() > 0) {
-    const Eigen::SparseMatrix<double> kt = k.transpose();
     // The self-stresses' factor (of K) runs beside the motions' (of Kᵀ) on large networks where
     // the process allows it (linalg::concurrent_orderings_allowed: METIS's rand()): the two are
     // independent, each with its own SuiteSparse workspace, and their results are merged below
-    // in a fixed order, so the answer is the same as one after the other. Until then `r` stays
-    // as build_body_twist_system left it, for `alongside`.
-    const linalg::RankDecision undecided = r.rank;
+    // in a fixed order, so the answer is the same as one after the other. K's starts first: it
+    // orders K while this thread finds σ_max for the threshold, which K's factor asks for only
+    // once its order and symbolic analysis are done (linalg::SparseQr). Until the merge `r`
+    // stays as build_body_twist_system leaves it, for `alongside`.
+    std::promise<linalg::RankDecision> threshold;
+    std::future<linalg::RankDecision> threshold_for_stresses = threshold.get_future();
     // Self-stresses: generic action magnitudes λ with Kᵀ λ = 0 (every body in equilibrium),
     // from the QR of K; its null vectors are motions.
-    auto stress_side = [&k, &undecided, vectors, pair_vectors, d]() { return factor_side(k, undecided, vectors, pair_vectors, d); };
+    auto stress_side = [&k, &threshold_for_stresses, vectors, pair_vectors, d]() {
+      return factor_side(k, [&threshold_for_stresses] { return threshold_for_stresses.get(); }, vectors, pair_vectors, d);
+    };
     bool concurrent = k.nonZeros() >= kConcurrentFactorNonZeros && linalg::concurrent_orderings_allowed() &&
                       std::thread::hardware_concurrency() >= 2;
     std::future<FactorSide> stress_future;
@@ -259,9 +280,18 @@ SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances&
         concurrent = false;  // no thread to be had (a process limit): one after the other
       }
     }
+    try {
+      r.rank = linalg::sparse_rank_threshold(k, rank_tolerance);
+    } catch (...) {
+      threshold.set_exception(std::current_exception());  // K's factor, waiting for it, ends too
+      throw;
+    }
+    threshold.set_value(r.rank);
+    const linalg::RankDecision undecided = r.rank;
+    const Eigen::SparseMatrix<double> kt = k.transpose();
     // Motions: a generic body-twist vector with K T = 0 (the null space of (Kᵀ)ᵀ, from the QR
     // of Kᵀ; its null vectors are self-stresses); a coupling moves when T_to ≠ T_from.
-    FactorSide motions = factor_side(kt, undecided, vectors, pair_vectors, d);
+    FactorSide motions = factor_side(kt, [&undecided] { return undecided; }, vectors, pair_vectors, d);
     if (alongside) alongside(r);
     FactorSide stresses = concurrent ? stress_future.get() : stress_side();
 
@@ -292,6 +322,7 @@ SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances&
       r.rank.factor_smallest = r.motion_factor_rank.factor_smallest;
     }
   } else {
+    r.rank = linalg::sparse_rank_threshold(k, rank_tolerance);
     if (alongside) alongside(r);
     if (pair_vectors) {
       r.generic_motions = Eigen::MatrixXd::Zero(k.cols(), d);
