@@ -80,6 +80,12 @@ void expect_suitesparse_r(const Eigen::SparseMatrix<double>& a, const std::vecto
   cholmod_l_finish(&cc);
 }
 
+// A banded matrix of rank 25 + seed (random banded factors), tall, or wide for every fourth seed.
+Eigen::SparseMatrix<double> banded_for_seed(std::mt19937& rng, int seed) {
+  const bool wide = seed % 4 == 3;
+  return testing::banded_of_rank(rng, wide ? 40 + seed : 70 + 5 * seed, wide ? 90 : 50 + 3 * seed, 25 + seed);
+}
+
 int dense_rank(const Eigen::SparseMatrix<double>& a) {
   const Eigen::JacobiSVD<Eigen::MatrixXd> svd{Eigen::MatrixXd(a)};
   const Eigen::VectorXd s = svd.singularValues();
@@ -126,10 +132,8 @@ TEST(FrontalBlocksQr, RankByConstructionAndSuiteSparsesOwnR) {
   for (int seed = 0; seed < 16; ++seed) {
     SCOPED_TRACE("seed " + std::to_string(seed));
     std::mt19937 rng(static_cast<unsigned>(4100 + seed));
-    const bool wide = seed % 4 == 3;
-    const int rows = wide ? 40 + seed : 70 + 5 * seed, cols = wide ? 90 : 50 + 3 * seed, rank = 25 + seed;
-    const int singletons = seed % 2 == 0 ? 0 : 1 + seed % 5;
-    const Eigen::SparseMatrix<double> a = with_singletons(testing::banded_of_rank(rng, rows, cols, rank), singletons, seed % 3);
+    const int rank = 25 + seed, singletons = seed % 2 == 0 ? 0 : 1 + seed % 5;
+    const Eigen::SparseMatrix<double> a = with_singletons(banded_for_seed(rng, seed), singletons, seed % 3);
     ASSERT_EQ(dense_rank(a), rank + singletons);
     std::vector<Eigen::Index> shuffled(static_cast<std::size_t>(a.cols()));
     std::iota(shuffled.begin(), shuffled.end(), Eigen::Index{0});
@@ -158,14 +162,12 @@ TEST(FrontalBlocksQr, AThresholdAskedForAfterTheOrderGivesSuiteSparsesOwnFactori
   for (int seed = 0; seed < 8; ++seed) {
     SCOPED_TRACE("seed " + std::to_string(seed));
     std::mt19937 rng(static_cast<unsigned>(4300 + seed));
-    const bool wide = seed % 4 == 3;
-    const int rows = wide ? 40 + seed : 70 + 5 * seed, cols = wide ? 90 : 50 + 3 * seed, rank = 25 + seed;
     // Seeds 0-3: every column holds several entries (the product of two banded factors); 4-7:
     // with column singletons or an empty column, where the threshold decides the singletons.
+    const int singletons = seed >= 4 && seed % 2 == 0 ? 2 : 0;
     const Eigen::SparseMatrix<double> a =
-        seed < 4 ? testing::banded_of_rank(rng, rows, cols, rank)
-                 : with_singletons(testing::banded_of_rank(rng, rows, cols, rank), seed % 2 == 0 ? 2 : 0, seed % 2);
-    ASSERT_EQ(dense_rank(a), rank + (seed >= 4 && seed % 2 == 0 ? 2 : 0));
+        seed < 4 ? banded_for_seed(rng, seed) : with_singletons(banded_for_seed(rng, seed), singletons, seed % 2);
+    ASSERT_EQ(dense_rank(a), 25 + seed + singletons);
     int asked = 0;
     const SparseQr late(a, [&asked] {
       ++asked;
