@@ -62,10 +62,14 @@ void prefault_heap(std::uintmax_t bytes) {
   const std::uintptr_t first = (reinterpret_cast<std::uintptr_t>(block) + page - 1) / page * page;
   const std::uintptr_t last = (reinterpret_cast<std::uintptr_t>(block) + length) / page * page;
   std::free(block);
-  std::thread([start = reinterpret_cast<char*>(first), pages_length = static_cast<std::size_t>(last - first)] {
-    for (std::size_t offset = 0; offset < pages_length; offset += kPopulateStep)
-      if (::madvise(start + offset, std::min(kPopulateStep, pages_length - offset), MADV_POPULATE_WRITE) != 0) return;
-  }).detach();
+  try {
+    std::thread([start = reinterpret_cast<char*>(first), pages_length = static_cast<std::size_t>(last - first)] {
+      for (std::size_t offset = 0; offset < pages_length; offset += kPopulateStep)
+        if (::madvise(start + offset, std::min(kPopulateStep, pages_length - offset), MADV_POPULATE_WRITE) != 0) return;
+    }).detach();
+  } catch (const std::system_error&) {
+    // no thread to be had (a process limit): the analysis faults its pages in itself, as before
+  }
 }
 
 // Below this the heap a command uses is small enough that clearing its pages does not matter.
