@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <string>
@@ -41,6 +42,9 @@ int run(int argc, const char* const* argv);
 /// with glibc.malloc.hugetlb=1 added, so that its heap is on transparent huge pages
 /// (huge_pages.cpp); otherwise, or when that fails, returns.
 void restart_on_huge_pages_for_large_input(int argc, char** argv);
+
+/// The size in bytes of the regular file at `path`; 0 if it is not one (or cannot be read).
+std::uintmax_t regular_file_bytes(const std::string& path);
 
 /// Before the model file at `model_path` is parsed: extends the heap by an estimate of what the
 /// parsed tree will take (at most a quarter of the available memory and below run()'s trim

@@ -15,7 +15,6 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
-#include <filesystem>
 #include <string>
 #include <string_view>
 #include <system_error>
@@ -83,13 +82,6 @@ constexpr std::uintmax_t kPrefaultInputBytes = std::uintmax_t{1} << 20;
 // changed a ladder of 10^5 couplings' time by 1-2 %, within the noise.
 constexpr std::uintmax_t kTreeBytesPerInputByte = 5;
 constexpr std::uintmax_t kFrameworkBytesPerInputByte = 10;
-
-std::uintmax_t regular_file_bytes(const std::string& path) {
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error)) return 0;
-  const std::uintmax_t bytes = std::filesystem::file_size(path, error);
-  return error ? 0 : bytes;
-}
 
 }  // namespace
 

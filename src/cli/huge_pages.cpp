@@ -31,17 +31,19 @@ constexpr std::string_view kHugePageTunable = "glibc.malloc.hugetlb";
 constexpr const char* kBlasThreadsVariable = "OPENBLAS_NUM_THREADS";
 
 bool names_large_file(int argc, char** argv) {
-  for (int i = 1; i < argc; ++i) {
-    std::error_code error;
-    const std::filesystem::path path(argv[i]);
-    if (std::filesystem::is_regular_file(path, error) && std::filesystem::file_size(path, error) >= kHugePageInputBytes &&
-        !error)
-      return true;
-  }
+  for (int i = 1; i < argc; ++i)
+    if (regular_file_bytes(argv[i]) >= kHugePageInputBytes) return true;
   return false;
 }
 
 }  // namespace
+
+std::uintmax_t regular_file_bytes(const std::string& path) {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) return 0;
+  const std::uintmax_t bytes = std::filesystem::file_size(path, error);
+  return error ? 0 : bytes;
+}
 
 void restart_on_huge_pages_for_large_input(int argc, char** argv) {
   const char* tunables = std::getenv("GLIBC_TUNABLES");
