@@ -20,6 +20,27 @@ using SmallScrew = std::array<Small, 6>;
 // Geometry this mirror does not handle: the caller falls back to coupling_basis.
 struct Unsupported {};
 
+// A list of at most six screws (a coupling has at most d ≤ 6 motions and as many actions) kept
+// in place: the sparse path builds 10^5 or more bases, on two threads that share one heap, and
+// a std::vector's allocations were most of a basis's cost.
+template <typename Item>
+class SixAtMost {
+ public:
+  void push_back(const Item& item) {
+    if (size_ == items_.size()) throw Unsupported{};  // not reached: no coupling has more
+    items_[size_++] = item;
+  }
+  std::size_t size() const { return size_; }
+  const Item* begin() const { return items_.data(); }
+  const Item* end() const { return items_.data() + size_; }
+  Item& operator[](std::size_t i) { return items_[i]; }
+  const Item& operator[](std::size_t i) const { return items_[i]; }
+
+ private:
+  std::array<Item, 6> items_{};
+  std::size_t size_ = 0;
+};
+
 SmallVec cross(const SmallVec& a, const SmallVec& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
@@ -106,7 +127,7 @@ SmallVec require(const std::optional<Vec3>& v) {
 }
 
 struct SpatialBasis {
-  std::vector<Spatial> motions, actions;
+  SixAtMost<Spatial> motions, actions;
 };
 
 const SmallVec kAxes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
@@ -223,10 +244,10 @@ struct Projected {
 
 // The screws that add to the span of the earlier ones, in order (zero screws dropped), by exact
 // elimination against the rows kept so far.
-std::vector<Projected> independent_subset(const std::vector<Projected>& screws, std::size_t d) {
-  std::vector<Projected> kept;
-  std::vector<std::array<Small, 6>> reduced;  // echelon rows of the kept screws
-  std::vector<std::size_t> pivots;
+SixAtMost<Projected> independent_subset(const SixAtMost<Projected>& screws, std::size_t d) {
+  SixAtMost<Projected> kept;
+  SixAtMost<std::array<Small, 6>> reduced;  // echelon rows of the kept screws
+  SixAtMost<std::size_t> pivots;
   for (const Projected& s : screws) {
     std::array<Small, 6> row = s.coordinates;
     for (std::size_t k = 0; k < reduced.size(); ++k) {
@@ -261,7 +282,7 @@ RoundedCouplingBasis small_basis(CouplingType type, const CouplingGeometry& geom
     for (std::size_t k = 0; k < space.components.size(); ++k) p.coordinates[k] = s.coordinates[static_cast<std::size_t>(space.components[k])];
     return p;
   };
-  std::vector<Projected> motions, actions;
+  SixAtMost<Projected> motions, actions;
   for (const Spatial& s : spatial.motions) {
     bool inside = true;
     for (int c = 0; c < 6; ++c)
@@ -281,6 +302,8 @@ RoundedCouplingBasis small_basis(CouplingType type, const CouplingGeometry& geom
       if (power.sign() != 0) throw Unsupported{};
     }
   RoundedCouplingBasis basis;
+  basis.motions.reserve(motions.size());
+  basis.actions.reserve(actions.size());
   for (const Projected& m : motions) basis.motions.push_back(rounded_screw(m, d));
   for (const Projected& a : actions) basis.actions.push_back(rounded_screw(a, d));
   return basis;
