@@ -65,6 +65,7 @@ SmallRational SmallRational::operator-() const { return {-num_, den_, true}; }
 SmallRational operator+(const SmallRational& a, const SmallRational& b) {
   if (a.num_ == 0) return b;
   if (b.num_ == 0) return a;
+  if (a.den_ == 1 && b.den_ == 1) return {checked_add(a.num_, b.num_), 1, true};  // integers: no gcd needed
   const Int g = std::gcd(a.den_, b.den_);
   const Int num = checked_add(checked_mul(a.num_, b.den_ / g), checked_mul(b.num_, a.den_ / g));
   return SmallRational::reduced(num, checked_mul(a.den_, b.den_ / g));
@@ -72,6 +73,7 @@ SmallRational operator+(const SmallRational& a, const SmallRational& b) {
 
 SmallRational operator*(const SmallRational& a, const SmallRational& b) {
   if (a.num_ == 0 || b.num_ == 0) return {};
+  if (a.den_ == 1 && b.den_ == 1) return {checked_mul(a.num_, b.num_), 1, true};
   const Int g1 = std::gcd(magnitude(a.num_), b.den_), g2 = std::gcd(magnitude(b.num_), a.den_);
   return {checked_mul(a.num_ / g1, b.num_ / g2), checked_mul(a.den_ / g2, b.den_ / g1), true};
 }
