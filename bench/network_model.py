@@ -8,6 +8,10 @@
   lattice N  planar lattice (as BM_SparsePlanarLattice): a side x side grid of bodies, each joined
              to its right and upper neighbour by a revolute at a slightly perturbed midpoint.
              Overconstrained: FN - CN = 3(n - 1) - 2e < 0.
+  random N   random graph (as BM_SparseRandomGraph): a random spanning tree on 0.6 N bodies, then
+             random pairs of distinct bodies until N couplings; each a revolute, cylindrical or
+             spherical joint at a random integer point. An expander: no ordering splits it by small
+             separators, so a direct factorisation fills in (bench/README.md).
 Joints at random integer (rss) or tenth (lattice) points, Python's fixed-seed random (not the
 same networks as the C++ benchmarks, the same shapes). The ladder: bench/ladder_network.py.
 Usage: bench/network_model.py rss 3000 > rss.yaml
@@ -68,9 +72,38 @@ def lattice(couplings):
     return out
 
 
+def random_graph(couplings):
+    bodies = max(2, couplings * 3 // 5)
+    rng = random.Random(777)
+    out = ["kinestat: 1", "kind: network", f"name: random graph of {couplings} couplings", "dimension: spatial",
+           "ground: b0", "couplings:"]
+    count = 0
+
+    def add(a, b):
+        nonlocal count
+        point = [rng.randint(-20, 20) for _ in range(3)]
+        kind = rng.choice(["revolute", "cylindrical", "spherical"])
+        if kind == "spherical":
+            out.append(f"  - {{name: J{count}, type: spherical, between: [b{a}, b{b}], point: {point}}}")
+        else:
+            axis = [0, 0, 0]
+            while axis == [0, 0, 0]:
+                axis = [rng.randint(-5, 5) for _ in range(3)]
+            out.append(f"  - {{name: J{count}, type: {kind}, between: [b{a}, b{b}], point: {point}, axis: {axis}}}")
+        count += 1
+
+    for i in range(1, bodies):
+        add(rng.randrange(i), i)
+    while count < couplings:
+        a, b = rng.randrange(bodies), rng.randrange(bodies)
+        if a != b:
+            add(a, b)
+    return out
+
+
 def main():
     kind, couplings = sys.argv[1], int(sys.argv[2])
-    print("\n".join({"rss": rss, "lattice": lattice}[kind](couplings)))
+    print("\n".join({"rss": rss, "lattice": lattice, "random": random_graph}[kind](couplings)))
 
 
 if __name__ == "__main__":

@@ -29,6 +29,7 @@
 #include "kinestat/framework/generic_framework.hpp"
 #include "kinestat/framework/two_way_trace.hpp"
 #include "kinestat/kinematics/position_solver.hpp"
+#include "kinestat/linalg/factorisation_memory.hpp"
 #include "kinestat/io/model_file.hpp"
 #include "kinestat/io/network_structure.hpp"
 #include "kinestat/network/analyse_network.hpp"
@@ -362,6 +363,8 @@ PYBIND11_MODULE(_core, m) {
       instance.attr("column") = error.where().column;
       instance.attr("problem") = error.problem();
       PyErr_SetObject(input_error.ptr(), instance.ptr());
+    } catch (const linalg::FactorisationTooLarge& error) {  // needs more memory than the machine has
+      PyErr_SetString(PyExc_MemoryError, error.what());
     } catch (const kinestat::Error& error) {  // the root of the library's other errors: no position
       const auto type = py::reinterpret_borrow<py::object>(input_error.ptr());
       py::object instance = type(error.what());

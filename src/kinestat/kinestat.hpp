@@ -55,6 +55,7 @@
 #include "kinestat/linalg/homogeneous_solution.hpp"
 #include "kinestat/linalg/modular_rank.hpp"
 #include "kinestat/linalg/nested_dissection.hpp"
+#include "kinestat/linalg/factorisation_memory.hpp"
 #include "kinestat/linalg/non_finite_matrix.hpp"
 #include "kinestat/linalg/null_spaces.hpp"
 #include "kinestat/linalg/pivoted_qr.hpp"

@@ -2,6 +2,7 @@
 
 #include "kinestat/linalg/blas_threads.hpp"
 #include "kinestat/linalg/cholmod_view.hpp"
+#include "kinestat/linalg/factorisation_memory.hpp"
 
 #include <SuiteSparseQR.hpp>
 
@@ -127,6 +128,13 @@ class FrontalFactorisation {
     check(true);
     qr_->QRsym = spqr_analyze(a, SPQR_ORDERING_GIVEN, qr_->Q1fill, /*do_rank_detection*/ 1, /*keepH*/ 0, &cc_);
     check(qr_->QRsym != nullptr);
+    // spqr_factorize allocates this stack of doubles (the fronts, and R in place of each) at once.
+    const double stack_bytes = static_cast<double>(sizeof(double)) * static_cast<double>(qr_->QRsym->maxstack);
+    if (const auto limit = static_cast<double>(factorisation_memory_limit()); stack_bytes > limit) {
+      const double flops = cc_.SPQR_flopcount_bound;
+      release();
+      throw FactorisationTooLarge(stack_bytes, /*at_least*/ false, flops, limit);
+    }
     const double tol = ask(threshold);
     if (!(tol >= 0.0)) {  // spqr_1factor would skip the rank rule, which the analysis above assumed
       release();
@@ -230,7 +238,14 @@ class FrontalFactorisation {
   void check(bool made) {
     const int status = cc_.status;
     if (made && status >= CHOLMOD_OK) return;
+    // Out of memory after SuiteSparseQR's analysis (spqr_1factor allocates the stack of fronts at
+    // once): its R alone, SPQR_istat[0] entries, is a lower bound on what was asked for, and
+    // when that is a large part of the machine's memory, the fill is why.
+    const double r_bytes = static_cast<double>(sizeof(double)) * static_cast<double>(cc_.SPQR_istat[0]);
+    const double flops = cc_.SPQR_flopcount_bound;
     release();
+    if (status == CHOLMOD_OUT_OF_MEMORY && r_bytes > static_cast<double>(factorisation_memory_limit()) / 8)
+      throw FactorisationTooLarge(r_bytes, /*at_least*/ true, flops, 0.0);
     if (status == CHOLMOD_OUT_OF_MEMORY) throw std::bad_alloc();
     throw std::runtime_error("SuiteSparseQR failed (status " + std::to_string(status) + ")");
   }
