@@ -10,6 +10,20 @@ import random
 import sys
 
 
+def random_joint(rng, name, a, b):
+    """The line of a random revolute, cylindrical or spherical joint named `name` between bodies
+    a and b, at a random integer point (with a random non-zero integer axis)."""
+    kind = rng.choice(["revolute", "cylindrical", "spherical"])
+    point = [rng.randint(-20, 20) for _ in range(3)]
+    text = f"  - {{name: {name}, type: {kind}, between: [{a}, {b}], point: {point}"
+    if kind != "spherical":
+        axis = [0, 0, 0]
+        while axis == [0, 0, 0]:
+            axis = [rng.randint(-5, 5) for _ in range(3)]
+        text += f", axis: {axis}"
+    return text + "}"
+
+
 def main():
     couplings = int(sys.argv[1])
     loops = max(1, (couplings - 1) // 3)
@@ -20,15 +34,7 @@ def main():
 
     def joint(a, b):
         nonlocal count
-        kind = rng.choice(["revolute", "cylindrical", "spherical"])
-        point = [rng.randint(-20, 20) for _ in range(3)]
-        text = f"  - {{name: J{count}, type: {kind}, between: [{a}, {b}], point: {point}"
-        if kind != "spherical":
-            axis = [0, 0, 0]
-            while axis == [0, 0, 0]:
-                axis = [rng.randint(-5, 5) for _ in range(3)]
-            text += f", axis: {axis}"
-        out.append(text + "}")
+        out.append(random_joint(rng, f"J{count}", a, b))
         count += 1
 
     joint("u0", "v0")

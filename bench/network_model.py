@@ -20,6 +20,8 @@ import math
 import random
 import sys
 
+from ladder_network import random_joint  # the ladder's joints, in the same directory
+
 
 def rss(couplings):
     units = max(1, couplings // 3)
@@ -77,24 +79,14 @@ def random_graph(couplings):
     rng = random.Random(777)
     out = ["kinestat: 1", "kind: network", f"name: random graph of {couplings} couplings", "dimension: spatial",
            "ground: b0", "couplings:"]
-    count = 0
+    header = len(out)
 
     def add(a, b):
-        nonlocal count
-        point = [rng.randint(-20, 20) for _ in range(3)]
-        kind = rng.choice(["revolute", "cylindrical", "spherical"])
-        if kind == "spherical":
-            out.append(f"  - {{name: J{count}, type: spherical, between: [b{a}, b{b}], point: {point}}}")
-        else:
-            axis = [0, 0, 0]
-            while axis == [0, 0, 0]:
-                axis = [rng.randint(-5, 5) for _ in range(3)]
-            out.append(f"  - {{name: J{count}, type: {kind}, between: [b{a}, b{b}], point: {point}, axis: {axis}}}")
-        count += 1
+        out.append(random_joint(rng, f"J{len(out) - header}", f"b{a}", f"b{b}"))
 
     for i in range(1, bodies):
         add(rng.randrange(i), i)
-    while count < couplings:
+    while len(out) - header < couplings:
         a, b = rng.randrange(bodies), rng.randrange(bodies)
         if a != b:
             add(a, b)
