@@ -92,7 +92,7 @@ struct SpqrInput {
 class FrontalFactorisation {
  public:
   FrontalFactorisation(SpqrInput& input, bool given_order, double threshold) {
-    cholmod_l_start(&cc_);
+    start();
     factor_whole(input, given_order, threshold);
   }
 
@@ -103,7 +103,7 @@ class FrontalFactorisation {
   // calls below are spqr_1factor's and spqr_1colamd's in that case, in their order, with their
   // arguments (SuiteSparse 5.12, SPQR/Source/spqr_1factor.cpp and spqr_1colamd.cpp).
   FrontalFactorisation(SpqrInput& input, bool given_order, const std::function<double()>& threshold) {
-    cholmod_l_start(&cc_);
+    start();
     if (given_order || !every_column_has_two_entries(input.view)) {
       factor_whole(input, given_order, ask(threshold));
       return;
@@ -218,6 +218,12 @@ class FrontalFactorisation {
     qr_ = spqr_1factor<double>(given_order ? SPQR_ORDERING_NATURAL : SPQR_ORDERING_METIS, threshold, 0, 0, &input.view, 0,
                                nullptr, nullptr, nullptr, &cc_);
     check(qr_ != nullptr);
+  }
+  // CHOLMOD prints its errors (an allocation that failed) to standard error by default; they
+  // reach the caller as exceptions instead, so that a command's error stays one line.
+  void start() {
+    cholmod_l_start(&cc_);
+    cc_.print = 0;
   }
   // The caller's threshold; what was made is released if asking throws.
   double ask(const std::function<double()>& threshold) {
