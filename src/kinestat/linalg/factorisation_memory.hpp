@@ -3,7 +3,7 @@
 // SuiteSparseQR's symbolic analysis knows, before any numeric work, the size of the stack of
 // frontal matrices that will hold the fronts and R. On graphs without small separators (a random
 // network is an expander: every ordering leaves separators proportional to the graph) that
-// stack grows with the square of the model: a random network of 3·10⁴ couplings took 12.8 GB and
+// stack grows with the square of the model: a random network of 3·10⁴ couplings took 11 GB and
 // 6 minutes, one of 10⁵ would need far more than a workstation has. Such a factorisation is
 // refused after the analysis with what it would need, instead of failing in an allocation
 // (or, memory being overcommitted, being killed by the system) later.

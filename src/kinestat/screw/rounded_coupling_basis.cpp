@@ -21,8 +21,8 @@ using SmallScrew = std::array<Small, 6>;
 struct Unsupported {};
 
 // A list of at most six screws (a coupling has at most d ≤ 6 motions and as many actions) kept
-// in place: the sparse path builds 10^5 or more bases, on two threads that share one heap, and
-// a std::vector's allocations were most of a basis's cost.
+// in place: the sparse path builds 10^5 or more bases, and a std::vector's allocations (about 25
+// per coupling) were much of a basis's cost.
 template <typename Item>
 class SixAtMost {
  public:
