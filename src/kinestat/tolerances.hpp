@@ -129,6 +129,11 @@ inline constexpr double kSupportZero = 0x1p22 * kEpsilon;
 /// the screen never hides a spin; doubtful bodies get the exact analysis.
 inline constexpr double kIdleSpinScreen = 1e-4;
 inline constexpr double kIdleSpinScreenMargin = 100.0;
+/// The design search keeps a change only when every unit motion of the bodies carrying the
+/// intended motion (conditioned about the model's centroid, lengths over its size) lies within
+/// this distance of the changed design's motions: far above the rounding of a null space
+/// (~1e-13), far below a lost motion (of order 1).
+inline constexpr double kMotionSpaceResidual = 1e-6;
 /// Lengths and arrows in a drawing below this fraction of the drawing's extent are not drawn,
 /// and two segments closer than this do not cross (2^22 ε ≈ 9.3e-10).
 inline constexpr double kDrawnZero = 0x1p22 * kEpsilon;
