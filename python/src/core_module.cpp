@@ -3,6 +3,10 @@
 // (the JSON report is written by the command's own report functions from the same analysis and
 // verdict; python/tests checks `to_dict()` against `--json` for every example).
 // The Python classes users meet are in python/kinestat/__init__.py.
+//
+// Everything that may take long (reading, analysing, reports, traces, sweeps) runs without the
+// GIL on a worker thread and stops on Ctrl-C (python/src/interruptible_call.hpp); Python objects
+// are made only after it, with the GIL.
 
 #include <pybind11/eigen.h>
 #include <pybind11/pybind11.h>
@@ -49,9 +53,11 @@
 #include "kinestat/report/sweep_run.hpp"
 #include "kinestat/structure/decomposition.hpp"
 #include "kinestat/structure/transformations.hpp"
+#include "interruptible_call.hpp"
 
 namespace py = pybind11;
 using namespace kinestat;
+using kinestat::python::call_interruptibly;
 
 namespace {
 
@@ -74,7 +80,8 @@ struct Analysed {
   std::optional<network::NetworkSecondOrder> network_second_order;  ///< as `kinestat analyze`
   std::optional<network::GenericNetwork> network_generic;        ///< the generic answer, as `kinestat analyze`
   std::optional<framework::GenericFramework> framework_generic;
-  framework::AnalysisOptions framework_options;  ///< frameworks: the options of the analysis
+  /// Frameworks: the options of the analysis (without its stop request, which belonged to the call).
+  framework::AnalysisOptions framework_options;
 
   /// The scene of `kinestat draw` and `kinestat report` (src/cli/scene_loading.cpp); with
   /// `traced_motion`, frameworks carry their finite modes traced both ways, as the report does.
@@ -106,13 +113,13 @@ std::shared_ptr<Analysed> read(const std::string& path, const std::optional<std:
   return analysed;
 }
 
-std::shared_ptr<Analysed> analyse(const std::string& path, const std::optional<std::string>& text,
-                                  std::optional<double> tolerance, const std::string& arithmetic,
-                                  const std::vector<std::string>& primary, const std::string& method) {
-  if (method != "auto" && method != "dense" && method != "sparse") throw py::value_error("method is 'auto', 'dense' or 'sparse'");
-  if (arithmetic != "auto" && arithmetic != "exact" && arithmetic != "float")
-    throw py::value_error("arithmetic is 'auto', 'exact' or 'float'");
+/// Runs without the GIL: checks `stop` between its stages.
+std::shared_ptr<Analysed> analyse_model(const std::string& path, const std::optional<std::string>& text,
+                                        std::optional<double> tolerance, const std::string& arithmetic,
+                                        const std::vector<std::string>& primary, const std::string& method,
+                                        const StopRequest& stop) {
   std::shared_ptr<Analysed> analysed = read(path, text);
+  stop.throw_if_requested();
   const io::ModelFile& file = analysed->file;
   if (file.network) {
     network::AnalysisOptions options;
@@ -130,6 +137,7 @@ std::shared_ptr<Analysed> analyse(const std::string& path, const std::optional<s
       } catch (const network::ModelError& error) {
         throw io::locate(error, *file.network, file.path);
       }
+      stop.throw_if_requested();
       analysed->verdict = analysed->sparse_network->verdict;
       return analysed;
     }
@@ -142,6 +150,7 @@ std::shared_ptr<Analysed> analyse(const std::string& path, const std::optional<s
     } catch (const network::ModelError& error) {
       throw io::locate(error, *file.network, file.path);
     }
+    stop.throw_if_requested();
     analysed->network = std::move(analysis.result);
     analysed->verdict = std::move(analysis.verdict);
     analysed->network_generic = std::move(analysis.generic);
@@ -152,20 +161,36 @@ std::shared_ptr<Analysed> analyse(const std::string& path, const std::optional<s
     analysed->framework_options = options;
     // As src/cli/framework_command.cpp: the generic answer may re-choose the basis first.
     analysed->framework = framework::analyse_framework_as_reported(*file.framework, options, &analysed->framework_generic);
+    stop.throw_if_requested();
     analysed->verdict = design::framework_verdict(*file.framework, *analysed->framework, options);
+    stop.throw_if_requested();
     if (analysed->framework_generic)
       analysed->verdict.generic = report::framework_generic_sentences(*file.framework, *analysed->framework, *analysed->framework_generic);
   } else {
     analysed->structure_model = *file.structure;
     analysed->decomposition = structure::analyse_structure(*file.structure);
+    stop.throw_if_requested();
     analysed->verdict = design::structure_verdict(*analysed->structure_model, *analysed->decomposition);
   }
   return analysed;
 }
 
+std::shared_ptr<Analysed> analyse(const std::string& path, std::optional<std::string> text, std::optional<double> tolerance,
+                                  const std::string& arithmetic, const std::vector<std::string>& primary, const std::string& method) {
+  if (method != "auto" && method != "dense" && method != "sparse") throw py::value_error("method is 'auto', 'dense' or 'sparse'");
+  if (arithmetic != "auto" && arithmetic != "exact" && arithmetic != "float")
+    throw py::value_error("arithmetic is 'auto', 'exact' or 'float'");
+  return call_interruptibly<std::shared_ptr<Analysed>>(
+      [path, text = std::move(text), tolerance, arithmetic, primary, method](const StopRequest& stop) {
+        return analyse_model(path, text, tolerance, arithmetic, primary, method, stop);
+      });
+}
+
 /// The structural groups of a network or structure model (seed 004), as `kinestat structure`.
-std::shared_ptr<Analysed> decompose(const std::string& path, const std::optional<std::string>& text) {
+/// Runs without the GIL: checks `stop` between its stages.
+std::shared_ptr<Analysed> decompose_model(const std::string& path, const std::optional<std::string>& text, const StopRequest& stop) {
   std::shared_ptr<Analysed> analysed = read(path, text);
+  stop.throw_if_requested();
   const io::ModelFile& file = analysed->file;
   if (file.framework) {
     throw io::InputError({file.path, 1, 1}, "structural groups are found for models of kind 'structure' or 'network', "
@@ -173,9 +198,33 @@ std::shared_ptr<Analysed> decompose(const std::string& path, const std::optional
   }
   analysed->structure_model = file.network ? io::structure_of_network(*file.network, file.path) : *file.structure;
   analysed->decomposition = structure::analyse_structure(*analysed->structure_model);
+  stop.throw_if_requested();
   analysed->transformations = structure::structural_transformations(*analysed->structure_model, kTransformationLimit);
+  stop.throw_if_requested();
   analysed->verdict = design::structure_verdict(*analysed->structure_model, *analysed->decomposition);
   return analysed;
+}
+
+std::shared_ptr<Analysed> decompose(const std::string& path, std::optional<std::string> text) {
+  return call_interruptibly<std::shared_ptr<Analysed>>(
+      [path, text = std::move(text)](const StopRequest& stop) { return decompose_model(path, text, stop); });
+}
+
+/// A model read without the GIL, no analysis.
+std::shared_ptr<Analysed> read_interruptibly(const std::string& path, std::optional<std::string> text) {
+  return call_interruptibly<std::shared_ptr<Analysed>>(
+      [path, text = std::move(text)](const StopRequest&) { return read(path, text); });
+}
+
+/// `function(analysed, arguments...)` without the GIL, on a worker that keeps `analysed` alive
+/// (it may outlive the call when interrupted).
+template <class Result, class... Arguments>
+auto without_gil(Result (*function)(const Analysed&, Arguments...)) {
+  return [function](const std::shared_ptr<Analysed>& analysed, std::decay_t<Arguments>... arguments) {
+    return call_interruptibly<Result>([function, analysed, arguments...](const StopRequest&) {
+      return function(*analysed, arguments...);
+    });
+  };
 }
 
 std::string json_report(const Analysed& a) {
@@ -340,9 +389,15 @@ std::pair<std::vector<std::string>, std::uint64_t> sweep_lines(const std::string
   options.shard = {index, count};
   options.tolerance = tolerance;
   options.full = full;
-  std::vector<std::string> lines;
-  const std::uint64_t failed = report::run_sweep(io::read_sweep_spec(spec), options, [&lines](const std::string& line) { lines.push_back(line); });
-  return {lines, failed};
+  return call_interruptibly<std::pair<std::vector<std::string>, std::uint64_t>>([spec, options](const StopRequest& stop) {
+    std::vector<std::string> lines;
+    // Between variants: each line's callback is a stage boundary.
+    const std::uint64_t failed = report::run_sweep(io::read_sweep_spec(spec), options, [&lines, &stop](const std::string& line) {
+      lines.push_back(line);
+      stop.throw_if_requested();
+    });
+    return std::make_pair(std::move(lines), failed);
+  });
 }
 
 }  // namespace
@@ -380,9 +435,9 @@ PYBIND11_MODULE(_core, m) {
       .def_property_readonly("kind", [](const Analysed& a) { return std::string(io::kind_name(a.file.kind)); })
       .def_property_readonly("path", [](const Analysed& a) { return a.file.path; })
       .def_property_readonly("notices", [](const Analysed& a) { return a.file.notices; })
-      .def("json", &json_report, "The JSON report of `kinestat analyze --json` (or `structure --json`)")
-      .def("html", &html_report, "The self-contained HTML report; empty when the viewer is not built in")
-      .def("svg", &svg, py::arg("what"), py::arg("mode") = 1, py::arg("stress") = 1)
+      .def("json", without_gil(&json_report), "The JSON report of `kinestat analyze --json` (or `structure --json`)")
+      .def("html", without_gil(&html_report), "The self-contained HTML report; empty when the viewer is not built in")
+      .def("svg", without_gil(&svg), py::arg("what"), py::arg("mode") = 1, py::arg("stress") = 1)
       // Coupling networks (seed 000).
       .def("network_counts", [](const Analysed& a) {
         py::dict counts;
@@ -474,17 +529,18 @@ PYBIND11_MODULE(_core, m) {
       })
       .def("complete", [](const Analysed& a) { return a.decomposition && a.decomposition->complete(); })
       // Finite motion (issue 13): `kinestat move --json`.
-      .def("trace", &trace_json, py::arg("mode"), py::arg("amplitude"), py::arg("steps"))
-      .def("positions", &positions_json, py::arg("inputs"), py::arg("sweep") = std::nullopt);
+      .def("trace", without_gil(&trace_json), py::arg("mode"), py::arg("amplitude"), py::arg("steps"))
+      .def("positions", without_gil(&positions_json), py::arg("inputs"), py::arg("sweep") = std::nullopt);
 
   m.def("analyse", &analyse, py::arg("path"), py::arg("text") = std::nullopt, py::arg("tolerance") = std::nullopt,
         py::arg("arithmetic") = "auto", py::arg("primary") = std::vector<std::string>{}, py::arg("method") = "auto",
         "Reads a model file (or `text` named `path`) and runs the analysis of its kind");
-  m.def("read", [](const std::string& path, const std::optional<std::string>& text) { return read(path, text); }, py::arg("path"), py::arg("text") = std::nullopt, "Reads a model file (or `text` named `path`), no analysis");
+  m.def("read", &read_interruptibly, py::arg("path"), py::arg("text") = std::nullopt, "Reads a model file (or `text` named `path`), no analysis");
   m.def("decompose", &decompose, py::arg("path"), py::arg("text") = std::nullopt,
         "Structural groups of a network or structure model, as `kinestat structure`");
   m.def("sweep_lines", &sweep_lines, py::arg("spec"), py::arg("index") = 0, py::arg("count") = 1, py::arg("tolerance") = std::nullopt,
         py::arg("full") = false, "The JSON lines of a design sweep (one shard of it) and how many variants failed");
   m.def("html_built_in", &report::html_report_built_in);
   m.def("formats", &io::readable_format_names, "The model file formats this kinestat reads");
+  kinestat::python::stop_work_at_exit();
 }
