@@ -124,6 +124,7 @@ std::shared_ptr<Analysed> analyse_model(const std::string& path, const std::opti
   if (file.network) {
     network::AnalysisOptions options;
     options.tolerances = Tolerances::with_rank(tolerance);
+    options.stop = stop;
     // As `kinestat analyze`: the sparse path above kDenseNetworkLimit couplings unless something
     // only Davies' dense matrices give is asked for (their memory grows as the cube of the network).
     const bool dense_request = method == "dense" || arithmetic == "exact" || !primary.empty();
@@ -158,7 +159,8 @@ std::shared_ptr<Analysed> analyse_model(const std::string& path, const std::opti
   } else if (file.framework) {
     framework::AnalysisOptions options;
     options.tolerances = Tolerances::with_rank(tolerance);
-    analysed->framework_options = options;
+    analysed->framework_options = options;  // without the stop request: it belongs to this call
+    options.stop = stop;
     // As src/cli/framework_command.cpp: the generic answer may re-choose the basis first.
     analysed->framework = framework::analyse_framework_as_reported(*file.framework, options, &analysed->framework_generic);
     stop.throw_if_requested();
@@ -322,7 +324,7 @@ Eigen::MatrixXd columns(const Items& items, Eigen::Index rows, Get get) {
 }
 
 /// `kinestat move FILE --mode N --amplitude A --steps S --json` of a framework: the JSON text.
-std::string trace_json(const Analysed& a, long long mode, double amplitude, long long steps) {
+std::string trace_json(const Analysed& a, long long mode, double amplitude, long long steps, const StopRequest& stop) {
   const framework::FrameworkResult& analysis = framework_of(a);
   const framework::FrameworkModel& model = *a.file.framework;
   const std::string& path = a.file.path;
@@ -344,6 +346,7 @@ std::string trace_json(const Analysed& a, long long mode, double amplitude, long
   trace.amplitude_fraction = amplitude;
   trace.steps = move.steps;
   trace.tolerance = linalg::RankTolerance{a.framework_options.tolerances.rank};
+  trace.stop = stop;
   move.trace = framework::trace_motion(model, analysis, analysis.modes[move.mode].velocities, trace);
   return report::json_text(report::framework_move_json(model, analysis, move));
 }
@@ -529,7 +532,13 @@ PYBIND11_MODULE(_core, m) {
       })
       .def("complete", [](const Analysed& a) { return a.decomposition && a.decomposition->complete(); })
       // Finite motion (issue 13): `kinestat move --json`.
-      .def("trace", without_gil(&trace_json), py::arg("mode"), py::arg("amplitude"), py::arg("steps"))
+      .def("trace",
+           [](const std::shared_ptr<Analysed>& analysed, long long mode, double amplitude, long long steps) {
+             return call_interruptibly<std::string>([analysed, mode, amplitude, steps](const StopRequest& stop) {
+               return trace_json(*analysed, mode, amplitude, steps, stop);
+             });
+           },
+           py::arg("mode"), py::arg("amplitude"), py::arg("steps"))
       .def("positions", without_gil(&positions_json), py::arg("inputs"), py::arg("sweep") = std::nullopt);
 
   m.def("analyse", &analyse, py::arg("path"), py::arg("text") = std::nullopt, py::arg("tolerance") = std::nullopt,

@@ -185,6 +185,7 @@ FiniteTrace trace_motion(const FrameworkModel& model, const FrameworkResult& a, 
   Eigen::VectorXd tangent = direction.normalized();
   trace.closed = true;
   for (int step = 0;; ++step) {
+    options.stop.throw_if_requested();
     const auto [rank, null_space] = rank_and_null_space(jacobian_at(model, a, now), a, options.tolerance);
     trace.rank_along_path.push_back(rank);
     trace.positions.push_back(positions(now));

@@ -9,6 +9,7 @@
 #include "kinestat/framework/framework_analysis.hpp"
 #include "kinestat/framework/framework_model.hpp"
 #include "kinestat/framework/mode_order.hpp"
+#include "kinestat/stop_request.hpp"
 #include "kinestat/tolerances.hpp"
 
 namespace kinestat::framework {
@@ -18,6 +19,7 @@ struct TraceOptions {
   double amplitude_fraction = 0.1;
   int steps = 20;
   linalg::RankTolerance tolerance;  ///< the rank rule of the analysis
+  StopRequest stop;                 ///< the caller's request to stop, polled every step (throws Stopped)
 };
 
 /// Current length of a truss element of `model` (length units).

@@ -206,6 +206,7 @@ Eigen::SparseMatrix<double> prepare_analysis(const FrameworkModel& model, Framew
 FrameworkResult analyse_framework(const FrameworkModel& model, const AnalysisOptions& options) {
   FrameworkResult result;
   const Eigen::SparseMatrix<double> jacobian = prepare_analysis(model, result);
+  options.stop.throw_if_requested();
   const linalg::RankTolerance tolerance = rank_tolerance(model, result.length, options.tolerances);
 
   if (std::max(result.m, result.n) > options.dense_limit) {
@@ -233,6 +234,7 @@ FrameworkResult analyse_framework(const FrameworkModel& model, const AnalysisOpt
     result.singular_values = svd.singular_values;
     result.vectors = true;
     const Eigen::Index rank = svd.rank.rank;
+    options.stop.throw_if_requested();
 
     // Kinematic modes: V columns of zero singular values and those in excess of the rows.
     collect_modes(result, deterministic_null_space(svd.null_space, result.column_scale, options.tolerances.free_variable));
@@ -254,6 +256,7 @@ FrameworkResult analyse_framework(const FrameworkModel& model, const AnalysisOpt
   result.rank = result.decision.rank;
   result.mechanisms = result.n - result.rank;
   result.self_stresses = result.m - result.rank;
+  options.stop.throw_if_requested();
   classify_second_order(model, result, options);
   return result;
 }
@@ -265,6 +268,7 @@ void classify_second_order(const FrameworkModel& model, FrameworkResult& result,
     second_order.tracing.tolerance = linalg::RankTolerance{options.tolerances.rank};
     second_order.tracing.amplitude_fraction = options.trace_amplitude_fraction;
     second_order.tracing.steps = options.trace_steps;
+    second_order.tracing.stop = options.stop;
     SecondOrderResult classified = classify_modes(model, result, second_order);
     result.orders = std::move(classified.orders);
     result.prestress = std::move(classified.prestress);

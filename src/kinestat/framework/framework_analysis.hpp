@@ -13,6 +13,7 @@
 #include "kinestat/framework/framework_model.hpp"
 #include "kinestat/framework/mode_order.hpp"
 #include "kinestat/linalg/rank_decision.hpp"
+#include "kinestat/stop_request.hpp"
 #include "kinestat/tolerances.hpp"
 
 namespace kinestat::framework {
@@ -34,6 +35,9 @@ struct AnalysisOptions {
   bool second_order = true;
   double trace_amplitude_fraction = 0.1;  ///< arc length of each trace / characteristic length
   int trace_steps = 20;                   ///< predictor–corrector steps of each trace
+  /// The caller's request to stop (Ctrl-C in Python): polled between the stages of the analysis
+  /// and in the second-order traces; throws Stopped. By default never set.
+  StopRequest stop;
 };
 
 enum class RankMethod { dense_svd, sparse_qr };

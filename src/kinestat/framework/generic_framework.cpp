@@ -242,7 +242,9 @@ std::optional<GenericFramework> generic_framework(const FrameworkModel& model, c
 FrameworkResult analyse_framework_as_reported(const FrameworkModel& model, const AnalysisOptions& options,
                                               std::optional<GenericFramework>* generic) {
   FrameworkResult analysis = analyse_framework(model, options);
+  options.stop.throw_if_requested();
   std::optional<GenericFramework> answer = generic_framework(model, analysis);
+  options.stop.throw_if_requested();
   if (answer) analysis = with_generic_basis(model, std::move(analysis), *answer, options);
   if (generic != nullptr) *generic = std::move(answer);
   return analysis;

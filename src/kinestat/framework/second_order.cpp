@@ -261,6 +261,7 @@ SecondOrderResult classify_modes(const FrameworkModel& model, const FrameworkRes
   }
 
   for (std::size_t k = 0; k < a.modes.size(); ++k) {
+    options.tracing.stop.throw_if_requested();
     ModeOrder& order = result.orders[k];
     const Eigen::VectorXd& u = a.modes[k].velocities;
     const Eigen::VectorXd own = u - rigid * (rigid.transpose() * u);

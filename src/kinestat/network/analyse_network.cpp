@@ -760,11 +760,16 @@ NetworkResult analyse_network(const Model& model, const AnalysisOptions& options
   if (model.couplings.empty()) throw ModelError("couplings", -1, "the model has no couplings");
   const int ground = model.ground.value_or(0);
   NetworkTopologyStage topology = network_topology_stage(model, ground);
+  options.stop.throw_if_requested();
   ConditionedNetworkStage conditioned = condition_network_stage(model, topology, options);
+  options.stop.throw_if_requested();
   NetworkRanksStage ranks = decide_network_ranks_stage(conditioned, model.space.dimension(), options.tolerances);
+  options.stop.throw_if_requested();
   NetworkBasesStage bases = choose_network_bases_stage(model, topology, conditioned, std::move(ranks), options);
+  options.stop.throw_if_requested();
   NetworkResult r =
       network_in_user_frame(model, std::move(topology), std::move(conditioned), std::move(bases), options.tolerances.pair_rank);
+  options.stop.throw_if_requested();
 
   NetworkValuesStage values = network_values_stage(model, r, options);
   r.motion_values = std::move(values.motion_values);

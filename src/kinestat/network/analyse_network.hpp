@@ -18,6 +18,7 @@
 #include "kinestat/linalg/rank_decision.hpp"
 #include "kinestat/network/model.hpp"
 #include "kinestat/network/network_result.hpp"
+#include "kinestat/stop_request.hpp"
 #include "kinestat/tolerances.hpp"
 
 namespace kinestat::network {
@@ -43,6 +44,7 @@ struct AnalysisOptions {
   std::optional<std::vector<std::string>> primary;     ///< overrides Model::primary
   std::vector<std::pair<std::string, screw::Rational>> values;  ///< added to / overriding Model::values
   bool all_pairs = true;                               ///< every pair of bodies, or only coupled pairs
+  StopRequest stop;  ///< the caller's request to stop (Ctrl-C in Python), polled between stages; throws Stopped
 };
 
 /// A problem with the model that the reader cannot see (it needs the analysis): `field` names
