@@ -13,10 +13,16 @@ Python interface to the C++ library (docs/python.md). Three model kinds, as in m
 
 Models can also be built from numpy arrays (:class:`Framework`, :class:`Network`); they are
 checked by the same reader as model files, so the same errors, with the same positions, apply.
-Bad input raises :class:`InputError` with ``file``, ``line``, ``column`` and ``problem``.
+Bad input raises :class:`InputError` (a ``ValueError``) with ``file``, ``line``, ``column`` and
+``problem``; a missing file :class:`MissingFileError` (also a ``FileNotFoundError``), an index
+out of range in a model built in code :class:`ModelIndexError` (also an ``IndexError``).
 """
 
+import errno
 import json
+import math
+import numbers
+import os
 
 import numpy as np
 
@@ -24,9 +30,56 @@ from . import _core
 from ._core import InputError
 
 __all__ = [
-    "InputError", "analyze", "analyse", "structural_groups", "trace", "solve_positions", "Framework", "Network",
+    "InputError", "MissingFileError", "ModelIndexError", "analyze", "analyse", "structural_groups", "trace", "solve_positions", "Framework", "Network",
     "NetworkResult", "FrameworkResult", "StructureResult", "html_built_in", "sweep",
 ]
+
+
+class MissingFileError(FileNotFoundError, InputError):
+    """A model or sweep file that does not exist: a ``FileNotFoundError`` (``errno``,
+    ``filename``) and an :class:`InputError` (``file``, ``line`` 0, ``column`` 0, ``problem``)."""
+
+    def __init__(self, path):
+        super().__init__(errno.ENOENT, os.strerror(errno.ENOENT), str(path))
+        self.file, self.line, self.column = str(path), 0, 0
+        self.problem = "no such file"
+
+
+class ModelIndexError(IndexError, InputError):
+    """An index out of range in a model built in code (a bar's node, a support's node): an
+    ``IndexError`` and an :class:`InputError` whose ``file`` is the model's name for errors."""
+
+    def __init__(self, where, problem):
+        super().__init__(f"{where}: {problem}")
+        self.file, self.line, self.column, self.problem = where, 0, 0, problem
+
+
+def _argument_error(problem):
+    error = InputError(problem)
+    error.file, error.line, error.column, error.problem = "<arguments>", 0, 0, problem
+    return error
+
+
+def _tolerance(value):
+    # As the command's --tolerance: a positive finite number (or None for the default rule).
+    if value is None:
+        return None
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise _argument_error(f"tolerance: {value!r} is not a number: expected a positive number such as 1e-9")
+    number = float(value)
+    if not math.isfinite(number):
+        raise _argument_error(f"tolerance: {value!r} is not finite: expected a positive number such as 1e-9")
+    if number <= 0:
+        raise _argument_error(f"tolerance: {value!r} is not positive: expected a positive number such as 1e-9")
+    return number
+
+
+def _existing(path):
+    # A missing file is a FileNotFoundError, as Python's own readers raise.
+    path = os.fspath(path)
+    if not os.path.exists(path):
+        raise MissingFileError(path)
+    return str(path)
 
 
 def formats():
@@ -264,7 +317,7 @@ _RESULTS = {"network": NetworkResult, "framework": FrameworkResult, "structure":
 def _source(model):
     if isinstance(model, (Framework, Network)):
         return model.name_for_errors, model.to_json()
-    return str(model), None
+    return _existing(model), None
 
 
 def analyze(model, *, tolerance=None, arithmetic="auto", primary=None, method="auto"):
@@ -281,7 +334,7 @@ def analyze(model, *, tolerance=None, arithmetic="auto", primary=None, method="a
     any size: time and memory grow as the cube of the network) or "sparse". A model of kind
     structure gives its structural groups."""
     path, text = _source(model)
-    analysed = _core.analyse(path, text, tolerance, arithmetic, list(primary or []), method)
+    analysed = _core.analyse(path, text, _tolerance(tolerance), arithmetic, list(primary or []), method)
     if analysed.kind == "structure":
         return structural_groups(model)
     return _RESULTS[analysed.kind](analysed)
@@ -302,7 +355,7 @@ def sweep(spec, *, shard=(0, 1), tolerance=None, full=False):
     the lines of ``kinestat sweep SPEC --shard I/N`` (``shard=(I, N)``). A variant that could not
     be analysed has ``error``; a bad spec or model raises :class:`InputError`."""
     index, count = shard
-    lines, _failed = _core.sweep_lines(str(spec), index, count, tolerance, full)
+    lines, _failed = _core.sweep_lines(_existing(spec), index, count, _tolerance(tolerance), full)
     return [json.loads(line) for line in lines]
 
 
@@ -319,7 +372,7 @@ def trace(model, mode=1, amplitude=0.1, steps=20, *, tolerance=None):
     ``residual``, ``rank`` (of D(c) there) and ``positions`` (node name -> coordinates, length
     units, ten significant digits)."""
     path, text = _source(model)
-    analysed = _core.analyse(path, text, tolerance, "auto", [])
+    analysed = _core.analyse(path, text, _tolerance(tolerance), "auto", [])
     if analysed.kind != "framework":
         raise ValueError("trace follows a kinematic mode of a framework (kind: framework); "
                          "a network's positions are solved by solve_positions")
@@ -342,6 +395,17 @@ def solve_positions(model, inputs=None, *, sweep=None):
         name, start, stop, steps = sweep
         sweep = (str(name), float(start), float(stop), int(steps))
     return json.loads(_core.read(path, text).positions(pairs, sweep))
+
+
+def _check_finite(array, what, model, name):
+    # NaN and infinite coordinates are refused where they are given, naming the row.
+    rows = np.flatnonzero(~np.isfinite(array).all(axis=1))
+    if rows.size:
+        i = int(rows[0])
+        problem = f"{what}: {name(i)} has a coordinate that is not a finite number: {array[i].tolist()}"
+        error = InputError(f"{model}: {problem}")
+        error.file, error.line, error.column, error.problem = model, 0, 0, problem
+        raise error
 
 
 def _rows(array, what):
@@ -443,18 +507,47 @@ class Framework(_Model):
         self.node_names = [str(x) for x in (node_names if node_names is not None else range(len(self.nodes)))]
         if len(self.node_names) != len(self.nodes):
             raise ValueError("node_names: one name per node")
-        self.bars = np.zeros((0, 2), dtype=int) if bars is None else np.asarray(bars, dtype=int).reshape(-1, 2)
-        self.beams = np.zeros((0, 2), dtype=int) if beams is None else np.asarray(beams, dtype=int).reshape(-1, 2)
+        _check_finite(self.nodes, "nodes", self.name_for_errors, lambda i: f"node {self.node_names[i]!r}")
+        self.bars = self._node_pairs(bars, "bars")
+        self.beams = self._node_pairs(beams, "beams")
         self.beam_z = None if beam_z is None else np.asarray(beam_z, dtype=float).reshape(-1, 3)
+        if self.beam_z is not None:
+            _check_finite(self.beam_z, "beam_z", self.name_for_errors, lambda i: f"beam {i}")
         self.rigid_bodies = [list(map(int, body)) for body in (rigid_bodies or [])]
+        for k, body in enumerate(self.rigid_bodies):
+            for i in body:
+                self._node_index(i, f"rigid_bodies[{k}]")
         self.supports = dict(supports or {})
         self.independent = dict(independent or {})
+        for what, table in (("supports", self.supports), ("independent", self.independent)):
+            for key in table:
+                self._node(key, what)
         self.released = dict(released or {})
         self.name = name
 
-    def _node(self, key):
+    def _node_index(self, index, where):
+        # Node indices as Python counts them from 0, never from the end: -1 is a mistake here.
+        count = len(self.nodes)
+        if not 0 <= int(index) < count:
+            raise ModelIndexError(self.name_for_errors, f"{where}: node index {int(index)} is out of range: "
+                                  f"there are {count} nodes, 0 to {count - 1}")
+        return int(index)
+
+    def _node_pairs(self, pairs, what):
+        if pairs is None:
+            return np.zeros((0, 2), dtype=int)
+        pairs = np.asarray(pairs, dtype=int).reshape(-1, 2)
+        outside = np.flatnonzero(((pairs < 0) | (pairs >= len(self.nodes))).any(axis=1))
+        if outside.size:
+            k = int(outside[0])
+            p, q = pairs[k].tolist()
+            bad = p if not 0 <= p < len(self.nodes) else q
+            self._node_index(bad, f"{what}[{k}] = [{p}, {q}]")
+        return pairs
+
+    def _node(self, key, where="supports"):
         if isinstance(key, (int, np.integer)):
-            return self.node_names[int(key)]
+            return self.node_names[self._node_index(key, where)]
         return str(key)
 
     @staticmethod
@@ -481,7 +574,7 @@ class Framework(_Model):
         for index, deformations in self.released.items():
             k = int(index) + (count if int(index) < 0 else 0)
             if not 0 <= k < count:
-                raise IndexError(f"released: no element {index} (there are {count})")
+                raise ModelIndexError(self.name_for_errors, f"released: no element {index} (there are {count})")
             released[k] = [str(x) for x in deformations]
         names = self.node_names
         elements = []
@@ -534,8 +627,11 @@ class Network(_Model):
         self.dimension, self.ground, self.name = dimension, ground, name
         self.chords, self.primary, self.inputs = chords, primary, inputs
 
-    def _body(self, key):
+    def _body(self, key, where="ground"):
         if isinstance(key, (int, np.integer)):
+            if not 0 <= int(key) < len(self.bodies):
+                raise ModelIndexError(self.name_for_errors, f"{where}: body index {int(key)} is out of range: there are "
+                                      f"{len(self.bodies)} bodies, 0 to {len(self.bodies) - 1}")
             return self.bodies[int(key)]
         return str(key)
 
@@ -551,7 +647,8 @@ class Network(_Model):
         # Each coupling written straight to its line, as the framework's nodes and bars: a row of
         # NaN leaves its key out, any other row must be finite.
         e = len(self.types)
-        between = [_quote(self._body(b)) for b in self.between.ravel().tolist()]
+        between = [_quote(self._body(b, f"between[{i // 2}] (coupling {self.coupling_names[i // 2]!r})"))
+                   for i, b in enumerate(self.between.ravel().tolist())]
         columns = []
         arrays = list(self.geometry.items())
         if self.pitches is not None:
