@@ -73,8 +73,7 @@ void NetworkBuilder::couple(const std::string& name, screw::CouplingType type, c
   require_printable("joint", name, where);
   for (const std::string& link : {from, to})
     if (!bodies_.count(link)) require_printable("link", link, where);
-  for (const auto& other : loaded_.model.couplings)
-    if (other.name == name) throw InputError(where, fmt::format("duplicate joint name '{}'", name));
+  if (coupling_names_.count(name)) throw InputError(where, fmt::format("duplicate joint name '{}'", name));
   if (from == to) throw InputError(where, fmt::format("joint '{}' joins link '{}' to itself", name, from));
   network::Coupling coupling;
   coupling.name = name;
@@ -104,6 +103,7 @@ void NetworkBuilder::couple(const std::string& name, screw::CouplingType type, c
     throw InputError(where, fmt::format("joint '{}': {}", name, error.what()));
   }
   loaded_.item_locations["couplings"].push_back(where);
+  coupling_names_.insert(name);
   loaded_.model.couplings.push_back(std::move(coupling));
 }
 

@@ -8,6 +8,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 #include "kinestat/io/input_error.hpp"
@@ -55,6 +56,7 @@ class NetworkBuilder {
   std::string path_;
   LoadedNetwork loaded_;
   std::map<std::string, int> bodies_;
+  std::unordered_set<std::string> coupling_names_;  ///< for the duplicate check, in constant time a joint
   int digits_ = 0;
 };
 

@@ -5,14 +5,12 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <cerrno>
 #include <cstdint>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <optional>
 
 #include "kinestat/io/input_error.hpp"
+#include "kinestat/io/yaml_support.hpp"
 
 namespace kinestat::io {
 
@@ -24,19 +22,12 @@ struct Line {
   SourceLocation where;
 };
 
+// Through the bounded reader of model files: a shard's output over its byte limit, /dev/zero or
+// an endless FIFO is refused at the limit instead of filling memory.
 std::string read_whole(const std::string& path) {
   std::error_code error;
   if (std::filesystem::is_directory(path, error)) throw InputError({path, 0, 0}, "is a folder, not a sweep output file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError({path, 0, 0}, fmt::format("cannot read the sweep output: {}", std::strerror(errno)));
-  std::string text;
-  try {
-    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  } catch (const std::ios_base::failure& failure) {  // libstdc++ throws from underflow on a read error
-    throw InputError({path, 0, 0}, fmt::format("cannot read the sweep output: {}", failure.what()));
-  }
-  if (in.bad()) throw InputError({path, 0, 0}, "cannot read the sweep output");
-  return text;
+  return read_model_text(path);
 }
 
 // "0 to 3, 7 and 9": the missing variants, the first few runs of them.

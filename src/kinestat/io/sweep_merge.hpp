@@ -12,7 +12,8 @@ namespace kinestat::io {
 /// InputError at file:line:column for a line that is not a sweep line, a variant that appears
 /// twice, or an `of` that differs from the first line's; and, naming the first file, when
 /// variants of 0 to of − 1 are missing (a shard's file not given, or a shard not finished).
-/// Files are read whole (no size limit beyond memory); empty files are allowed.
+/// Each file is read through the bounded reader of model files (at most 64 MiB, the limit on
+/// YAML models, named in the error); empty files are allowed.
 std::string merge_sweep_files(const std::vector<std::string>& paths);
 
 }  // namespace kinestat::io

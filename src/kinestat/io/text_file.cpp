@@ -1,25 +1,23 @@
 #include "kinestat/io/text_file.hpp"
 
-#include <fmt/format.h>
-
+#include <algorithm>
 #include <cctype>
-#include <fstream>
-#include <iterator>
+#include <filesystem>
+#include <system_error>
 
 #include "kinestat/io/input_error.hpp"
+#include "kinestat/io/yaml_support.hpp"
 
 namespace kinestat::io {
 
+static_assert(kMaxTextFileBytes == ReadingLimits{}.max_bytes, "one byte limit for every input");
+
 std::string read_text_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError({path, 0, 0}, "cannot open the file for reading");
-  in.seekg(0, std::ios::end);
-  const auto size = in.tellg();
-  if (size < 0) throw InputError({path, 0, 0}, "cannot read the file");
-  if (static_cast<std::size_t>(size) > kMaxTextFileBytes)
-    throw InputError({path, 1, 1}, fmt::format("file is larger than the {} MiB limit", kMaxTextFileBytes >> 20));
-  in.seekg(0, std::ios::beg);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  // The YAML reader's folder message asks for a .yaml model; this one fits every format.
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error))
+    throw InputError({path, 0, 0}, "this is a folder, not a file: give the path of the model file");
+  return read_model_text(path);
 }
 
 std::string xml_root_name(const std::string& text) {
@@ -45,6 +43,24 @@ std::string xml_root_name(const std::string& text) {
     }
   }
   return "";
+}
+
+LineIndex::LineIndex(std::string_view text) : text_(text) {
+  starts_.push_back(0);
+  for (std::size_t i = text.find('\n'); i != std::string_view::npos; i = text.find('\n', i + 1)) starts_.push_back(i + 1);
+}
+
+std::pair<int, int> LineIndex::position(std::size_t offset) const {
+  const auto after = std::upper_bound(starts_.begin(), starts_.end(), offset);
+  const auto line = static_cast<std::size_t>(after - starts_.begin());  // >= 1: starts_[0] is 0
+  return {static_cast<int>(line), static_cast<int>(offset - starts_[line - 1]) + 1};
+}
+
+std::string_view LineIndex::line(int number) const {
+  if (number < 1 || static_cast<std::size_t>(number) > starts_.size()) return {};
+  const std::size_t start = starts_[static_cast<std::size_t>(number) - 1];
+  const std::size_t stop = static_cast<std::size_t>(number) < starts_.size() ? starts_[static_cast<std::size_t>(number)] - 1 : text_.size();
+  return text_.substr(start, stop - start);
 }
 
 }  // namespace kinestat::io

@@ -1,20 +1,44 @@
 #pragma once
-// Whole input files as text, for the readers of other programs' formats (SPACAR, URDF, MJCF).
+// Whole input files as text, for the readers of other programs' formats (SPACAR, URDF,
+// SDFormat, MJCF) and the merge of sweep outputs: read through the bounded reader of YAML
+// model files (yaml_support's read_model_text), so that every input has one byte limit and
+// devices and FIFOs are read only up to it.
 
 #include <cstddef>
 #include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
 
 namespace kinestat::io {
 
-/// Largest input file read (as for YAML model files).
+/// Largest input file read: the limit on YAML model files (ReadingLimits::max_bytes, 64 MiB;
+/// text_file.cpp checks that the two agree).
 inline constexpr std::size_t kMaxTextFileBytes = std::size_t{64} << 20;
 
-/// The whole of the file at `path`. Throws InputError naming it if it cannot be read or is
-/// larger than kMaxTextFileBytes.
+/// The whole of the file at `path` (a regular file, a device, a FIFO...), read at most
+/// kMaxTextFileBytes + 1 bytes far. Throws InputError naming the file if it is a folder, cannot
+/// be read, or holds more than the limit (the message names the limit).
 std::string read_text_file(const std::string& path);
 
 /// The name of the first element of XML `text` ("robot", "sdf", "mujoco"), skipping the XML
 /// declaration, comments and doctype; "" when the text does not start like XML.
 std::string xml_root_name(const std::string& text);
+
+/// The line starts of a text, found once: readers that locate many elements (one per joint)
+/// turn offsets into lines and lines into text without scanning from the file's start each time.
+class LineIndex {
+ public:
+  /// Indexes `text`, which must outlive the index.
+  explicit LineIndex(std::string_view text);
+  /// The 1-based line and column (in bytes) of byte `offset` of the text.
+  std::pair<int, int> position(std::size_t offset) const;
+  /// Line `number` (1-based) without its newline; empty past the last line.
+  std::string_view line(int number) const;
+
+ private:
+  std::string_view text_;
+  std::vector<std::size_t> starts_;  ///< byte offset of each line's first character
+};
 
 }  // namespace kinestat::io

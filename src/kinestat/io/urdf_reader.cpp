@@ -8,6 +8,8 @@
 #include <cmath>
 #include <map>
 #include <set>
+#include <string_view>
+#include <vector>
 
 #include "kinestat/io/text_file.hpp"
 
@@ -40,7 +42,7 @@ struct UrdfJoint {
 
 class UrdfReader {
  public:
-  UrdfReader(std::string path, const std::string& text) : path_(std::move(path)), text_(text) {}
+  UrdfReader(std::string path, const std::string& text) : path_(std::move(path)), text_(text), lines_(text_) {}
 
   ImportedNetwork read() {
     tinyxml2::XMLDocument document;
@@ -91,16 +93,9 @@ class UrdfReader {
     const int line = node->GetLineNum();
     int column = 1;
     if (const XMLElement* e = node->ToElement()) {
-      std::size_t start = 0;
-      for (int l = 1; l < line && start != std::string::npos; ++l) {
-        start = text_.find('\n', start);
-        if (start != std::string::npos) ++start;
-      }
-      if (start != std::string::npos) {
-        const std::size_t stop = text_.find('\n', start);
-        const std::size_t at = text_.find(std::string("<") + e->Name(), start);
-        if (at != std::string::npos && (stop == std::string::npos || at < stop)) column = static_cast<int>(at - start) + 1;
-      }
+      const std::string_view text = lines_.line(line);
+      const std::size_t at = text.find(std::string("<") + e->Name());
+      if (at != std::string_view::npos) column = static_cast<int>(at) + 1;
     }
     return {path_, line, column};
   }
@@ -212,17 +207,18 @@ class UrdfReader {
     }
     root_ = roots[0];
     frames_[root_] = Frame{};
-    // Resolve frames from the root down; a joint whose parent is not resolved yet waits.
-    bool progress = true;
-    while (progress) {
-      progress = false;
-      for (const auto& [child, k] : tree_joint) {
-        if (frames_.count(child)) continue;
+    // Resolve frames from the root down, breadth first: each tree joint once.
+    std::map<std::string, std::vector<std::size_t>> children;
+    for (const auto& [child, k] : tree_joint) children[joints_[k].parent].push_back(k);
+    std::vector<std::string> queue{root_};
+    for (std::size_t next = 0; next < queue.size(); ++next) {
+      const auto found = children.find(queue[next]);
+      if (found == children.end()) continue;
+      const Frame parent = frames_.at(queue[next]);
+      for (const std::size_t k : found->second) {
         const UrdfJoint& j = joints_[k];
-        const auto parent = frames_.find(j.parent);
-        if (parent == frames_.end()) continue;
-        frames_[child] = parent->second.then(j.origin);
-        progress = true;
+        frames_[j.child] = parent.then(j.origin);
+        queue.push_back(j.child);
       }
     }
     for (const auto& [child, k] : tree_joint)
@@ -265,6 +261,7 @@ class UrdfReader {
 
   std::string path_;
   const std::string& text_;
+  LineIndex lines_;  // built once: every joint is located (linear time in the joints)
   std::map<std::string, const XMLElement*> links_;
   std::vector<std::string> link_order_;  // bodies in file order
   std::vector<UrdfJoint> joints_;
