@@ -18,20 +18,23 @@ Bad input raises :class:`InputError` (a ``ValueError``) with ``file``, ``line``,
 out of range in a model built in code :class:`ModelIndexError` (also an ``IndexError``).
 """
 
-import errno
-import json
-import math
-import numbers
-import os
+import errno as _errno
+import json as _json
+import math as _math
+import numbers as _numbers
+import os as _os
 
-import numpy as np
+import numpy as _np
 
 from . import _core
 from ._core import InputError
 
+#: The version of kinestat this module was built from (the CMake project's version).
+__version__ = _core.__version__
+
 __all__ = [
     "InputError", "MissingFileError", "ModelIndexError", "analyze", "analyse", "structural_groups", "trace", "solve_positions", "Framework", "Network",
-    "NetworkResult", "FrameworkResult", "StructureResult", "html_built_in", "sweep",
+    "NetworkResult", "FrameworkResult", "StructureResult", "html_built_in", "sweep", "formats",
 ]
 
 
@@ -40,7 +43,7 @@ class MissingFileError(FileNotFoundError, InputError):
     ``filename``) and an :class:`InputError` (``file``, ``line`` 0, ``column`` 0, ``problem``)."""
 
     def __init__(self, path):
-        super().__init__(errno.ENOENT, os.strerror(errno.ENOENT), str(path))
+        super().__init__(_errno.ENOENT, _os.strerror(_errno.ENOENT), str(path))
         self.file, self.line, self.column = str(path), 0, 0
         self.problem = "no such file"
 
@@ -64,10 +67,10 @@ def _tolerance(value):
     # As the command's --tolerance: a positive finite number (or None for the default rule).
     if value is None:
         return None
-    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+    if isinstance(value, bool) or not isinstance(value, _numbers.Real):
         raise _argument_error(f"tolerance: {value!r} is not a number: expected a positive number such as 1e-9")
     number = float(value)
-    if not math.isfinite(number):
+    if not _math.isfinite(number):
         raise _argument_error(f"tolerance: {value!r} is not finite: expected a positive number such as 1e-9")
     if number <= 0:
         raise _argument_error(f"tolerance: {value!r} is not positive: expected a positive number such as 1e-9")
@@ -76,8 +79,8 @@ def _tolerance(value):
 
 def _existing(path):
     # A missing file is a FileNotFoundError, as Python's own readers raise.
-    path = os.fspath(path)
-    if not os.path.exists(path):
+    path = _os.fspath(path)
+    if not _os.path.exists(path):
         raise MissingFileError(path)
     return str(path)
 
@@ -121,14 +124,26 @@ class _Result:
         """The command's JSON report (``kinestat analyze --json``, ``kinestat structure --json``)
         as Python data, key for key."""
         if self._dict is None:
-            self._dict = json.loads(self._analysed.json())
-        return json.loads(json.dumps(self._dict))  # a copy the caller may change
+            self._dict = _json.loads(self._analysed.json())
+        return _json.loads(_json.dumps(self._dict))  # a copy the caller may change
 
     @property
     def verdict(self):
         """The verdict every report leads with (exactly constrained or not, where, one change
         that fixes it), as in the JSON report's "verdict"."""
         return self.to_dict().get("verdict")
+
+    @property
+    def summary(self):
+        """The verdict in one sentence, e.g. "Not exactly constrained: 1 redundant constraint
+        (a structure, no intended motion)." (the JSON report's ``verdict.summary``)."""
+        return self._analysed.verdict_summary
+
+    @property
+    def exactly_constrained(self):
+        """True when the verdict is "exactly constrained": no motion beyond the intended ones and
+        no redundant constraint (the JSON report's ``verdict.exactly_constrained``)."""
+        return self._analysed.exactly_constrained
 
     def to_json(self):
         """The JSON report text, byte for byte as the command writes it."""
@@ -156,8 +171,11 @@ class _Result:
             what = "mechanism" if self.kind == "framework" else "graph"
         return self._analysed.svg(what, mode, stress)
 
+    def _counts_text(self):
+        return ""
+
     def __repr__(self):
-        return f"<kinestat.{type(self).__name__} of {self.path!r}>"
+        return f"<kinestat.{type(self).__name__} of {self.path!r}: {self._counts_text()}\n {self.summary}>"
 
 
 class NetworkResult(_Result):
@@ -172,6 +190,8 @@ class NetworkResult(_Result):
         #: gross and nett degrees of freedom and of constraint, ranks of the unit matrices
         self.F, self.C, self.m, self.a = (counts[key] for key in ("F", "C", "m", "a"))
         self.FN, self.CN = counts["FN"], counts["CN"]
+        #: the names every kind answers to: FN motions (mechanisms), CN self-stresses
+        self.mechanisms, self.self_stresses = self.FN, self.CN
         #: whether exact rational arithmetic was used
         self.exact = counts["exact"]
         #: "dense" (Davies' matrices: every method below) or "sparse" (above 300 couplings: the
@@ -235,6 +255,9 @@ class NetworkResult(_Result):
         """The network's structural groups (seed 004), as ``kinestat structure``."""
         return structural_groups(self.path)
 
+    def _counts_text(self):
+        return f"FN = {self.FN}, CN = {self.CN} (F = {self.F}, C = {self.C}, {self.method})"
+
 
 class FrameworkResult(_Result):
     """Exact-constraint analysis of a framework or flexure mechanism (seed 002). Vectors are
@@ -250,24 +273,84 @@ class FrameworkResult(_Result):
         self.mechanisms, self.self_stresses = counts["mechanisms"], counts["self_stresses"]
         #: characteristic length used to non-dimensionalise D(c)
         self.length = counts["length"]
+        #: 2 (planar) or 3 (spatial), as PyRigi's ``dim``
+        self.dimension = counts["dimension"]
+        #: the names every kind answers to: FN motions (mechanisms), CN self-stresses
+        self.FN, self.CN = self.mechanisms, self.self_stresses
+        self._vectors = counts["vectors"]
+        self._trivial = None
 
-    @property
-    def exactly_constrained(self):
-        return self.mechanisms == 0 and self.self_stresses == 0
+    def _counts_text(self):
+        return (f"mechanisms = {self.mechanisms}, self_stresses = {self.self_stresses} "
+                f"(D(c) {self.rows} x {self.columns}, rank {self.rank})")
 
-    def rigidity_matrix(self):
+    def rigidity_matrix(self, sparse=False):
         """D(c): rows deformations (``row_labels``), columns dependent coordinates
         (``column_labels``), non-dimensional. Its null space holds ``inf_flexes()``, the null
-        space of its transpose ``stresses()``."""
+        space of its transpose ``stresses()``. ``sparse=True``: a ``scipy.sparse`` matrix (needs
+        SciPy, Debian's python3-scipy). Unlike PyRigi's rigidity matrix it has no columns for the
+        supported (fixed) and independent coordinates, and its translations are divided by the
+        characteristic length ``length``."""
+        if sparse:
+            try:
+                import scipy.sparse  # noqa: F401 (pybind11 converts to it)
+            except ImportError:
+                raise ImportError("rigidity_matrix(sparse=True) needs SciPy (Debian: python3-scipy); "
+                                  "rigidity_matrix() gives the dense numpy array") from None
+            return self._analysed.jacobian_sparse()
         return self._analysed.jacobian()
+
+    def trivial_inf_flexes(self):
+        """The rigid motions of the whole framework that its supports and independent
+        coordinates allow, as a basis of columns of D(c) (orthonormal, D̂'s units): 3 for an
+        unsupported planar framework, 6 for a spatial one (fewer for degenerate placements such
+        as collinear nodes in space), none for a framework held in place."""
+        if self._trivial is None:
+            self._trivial = _rigid_motions(self._analysed, self.dimension, self.length)
+        return self._trivial.copy()
+
+    def nontrivial_inf_flexes(self):
+        """A basis of the infinitesimal flexes that are not rigid motions: the modes with their
+        trivial part projected out (orthonormal; the modes themselves when there is no trivial
+        flex). Its size is ``mechanisms - trivial_inf_flexes().shape[1]``."""
+        modes = self._modes()
+        trivial = self.trivial_inf_flexes()
+        if trivial.shape[1] == 0:
+            return modes
+        rest = modes - trivial @ (trivial.T @ modes)
+        return _orthonormal_columns(rest, self.mechanisms - trivial.shape[1])
+
+    def is_inf_rigid(self):
+        """True when every infinitesimal flex is a rigid motion of the whole framework (PyRigi's
+        ``is_inf_rigid``): no mechanism beyond the trivial flexes the supports allow."""
+        return self.mechanisms == self.trivial_inf_flexes().shape[1]
+
+    def rigid_components(self):
+        """The generic rigid components (PyRigi's ``rigid_components``): lists of node names, from
+        the pebble game on the bar graph (planar frameworks of bars only, as the report's
+        ``generic.laman.rigid_components``, which also says which one holds the ground)."""
+        laman = (self.to_dict().get("generic") or {}).get("laman")
+        if not laman or "rigid_components" not in laman:
+            raise ValueError("rigid components come from the pebble game: planar frameworks of bars only")
+        return [list(component["nodes"]) for component in laman["rigid_components"]]
+
+    def _modes(self):
+        if not self._vectors:
+            raise ValueError("this framework took the sparse path (above 1,500 rows or columns of D(c)): counts only, "
+                             "no modes or stress states")
+        return self._analysed.modes()
 
     def singular_values(self):
         """Singular values of the (element-length scaled) D(c), decreasing; the rank decision's evidence."""
         return self._analysed.singular_values()
 
-    def inf_flexes(self):
-        """Kinematically indeterminate modes: columns x mechanisms, unit 2-norm (coordinate rates)."""
-        return self._analysed.modes()
+    def inf_flexes(self, include_trivial=False):
+        """A basis of the infinitesimal flexes (coordinate rates of the columns of D(c)), one
+        column each. ``include_trivial=True``: every kinematically indeterminate mode, as the
+        report numbers them (columns x mechanisms, unit 2-norm); ``False`` (PyRigi's default):
+        without the rigid motions of the whole framework (:meth:`nontrivial_inf_flexes`) — the
+        same modes for a framework held in place, which has none."""
+        return self._modes() if include_trivial else self.nontrivial_inf_flexes()
 
     def stresses(self):
         """Statically indeterminate stress states: rows x self_stresses, unit 2-norm."""
@@ -283,7 +366,7 @@ class FrameworkResult(_Result):
         columns) followed by the predictor-corrector over ``amplitude`` times the characteristic
         length in ``steps`` steps. The JSON of ``kinestat move --mode N --amplitude A
         --steps S --json`` as a dict (see :func:`trace`)."""
-        return json.loads(self._analysed.trace(int(mode), float(amplitude), int(steps)))
+        return _json.loads(self._analysed.trace(int(mode), float(amplitude), int(steps)))
 
     @property
     def row_labels(self):
@@ -296,6 +379,11 @@ class FrameworkResult(_Result):
 
 class StructureResult(_Result):
     """Structural groups (Assur groups) of a mechanism, in order of formation (seed 004)."""
+
+    def _counts_text(self):
+        groups = self.groups
+        return f"{len(groups)} structural group{'s' if len(groups) != 1 else ''}, " + \
+            ("complete" if self.complete else "incomplete")
 
     @property
     def groups(self):
@@ -356,7 +444,7 @@ def sweep(spec, *, shard=(0, 1), tolerance=None, full=False):
     be analysed has ``error``; a bad spec or model raises :class:`InputError`."""
     index, count = shard
     lines, _failed = _core.sweep_lines(_existing(spec), index, count, _tolerance(tolerance), full)
-    return [json.loads(line) for line in lines]
+    return [_json.loads(line) for line in lines]
 
 
 def trace(model, mode=1, amplitude=0.1, steps=20, *, tolerance=None):
@@ -376,7 +464,7 @@ def trace(model, mode=1, amplitude=0.1, steps=20, *, tolerance=None):
     if analysed.kind != "framework":
         raise ValueError("trace follows a kinematic mode of a framework (kind: framework); "
                          "a network's positions are solved by solve_positions")
-    return json.loads(analysed.trace(int(mode), float(amplitude), int(steps)))
+    return _json.loads(analysed.trace(int(mode), float(amplitude), int(steps)))
 
 
 def solve_positions(model, inputs=None, *, sweep=None):
@@ -394,12 +482,62 @@ def solve_positions(model, inputs=None, *, sweep=None):
     if sweep is not None:
         name, start, stop, steps = sweep
         sweep = (str(name), float(start), float(stop), int(steps))
-    return json.loads(_core.read(path, text).positions(pairs, sweep))
+    return _json.loads(_core.read(path, text).positions(pairs, sweep))
+
+
+def _rigid_motions(analysed, dimension, length):
+    # Translations along the axes and rotations about axes through the centroid (planar: x, y
+    # and the rotation about z) at every coordinate, D̂'s units (translations over the
+    # characteristic length, rotations in rad); the combinations that leave every held
+    # coordinate at rest, on the columns of D(c), orthonormalised.
+    positions = analysed.node_positions()
+    arms = (positions - positions.mean(axis=0)) / length if len(positions) else positions
+    translations = (0, 1) if dimension == 2 else (0, 1, 2)
+    rotations = (2,) if dimension == 2 else (0, 1, 2)
+
+    def generators(slots):
+        node, slot = slots[:, 0], slots[:, 1]
+        g = _np.zeros((len(slots), len(translations) + len(rotations)))
+        for k, axis in enumerate(translations):
+            g[:, k] = slot == axis
+        for k, axis in enumerate(rotations, start=len(translations)):
+            velocity = _np.cross(_np.eye(3)[axis], arms[node]) if len(slots) else _np.zeros((0, 3))
+            along = velocity[_np.arange(len(slots)), _np.minimum(slot, 2)]
+            g[:, k] = _np.where(slot < 3, along, slot - 3 == axis)
+        return g
+
+    dependent = generators(analysed.coordinate_slots("dependent"))
+    held = generators(analysed.coordinate_slots("held"))
+    combinations = _np.eye(dependent.shape[1])
+    if len(held):
+        _u, values, vt = _np.linalg.svd(held)
+        kept = int(_np.sum(values > _RIGID_MOTION_CUT * max(1.0, values.max(initial=0.0))))
+        combinations = vt[kept:].T
+    return _orthonormal_columns(dependent @ combinations)
+
+
+# Relative size below which a combination of rigid motions counts as none (rounding of O(1) entries).
+_RIGID_MOTION_CUT = 1e-9
+
+
+def _orthonormal_columns(matrix, count=None):
+    # An orthonormal basis of the column space (its `count` leading directions, or those above the
+    # cut), each column signed so that its largest-magnitude entry is positive.
+    if matrix.size == 0:
+        return _np.zeros((matrix.shape[0], 0))
+    u, values, _vt = _np.linalg.svd(matrix, full_matrices=False)
+    if count is None:
+        count = int(_np.sum(values > _RIGID_MOTION_CUT * max(1.0, values.max(initial=0.0))))
+    basis = u[:, :count]
+    for j in range(basis.shape[1]):
+        if basis[_np.argmax(_np.abs(basis[:, j])), j] < 0:
+            basis[:, j] = -basis[:, j]
+    return basis
 
 
 def _check_finite(array, what, model, name):
     # NaN and infinite coordinates are refused where they are given, naming the row.
-    rows = np.flatnonzero(~np.isfinite(array).all(axis=1))
+    rows = _np.flatnonzero(~_np.isfinite(array).all(axis=1))
     if rows.size:
         i = int(rows[0])
         problem = f"{what}: {name(i)} has a coordinate that is not a finite number: {array[i].tolist()}"
@@ -413,12 +551,12 @@ def _rows(array, what):
     # floats, whose repr is the shortest decimal that reads back as the same double, so a model
     # built in code and its file give the same exact numbers. No Python call per value: the
     # finiteness check runs once on the whole array.
-    array = np.asarray(array, dtype=float)
-    if not np.all(np.isfinite(array)):
-        raise ValueError(f"{what}: not a finite number: {array[~np.isfinite(array)][0]}")
-    integral = (array == np.round(array)) & (np.abs(array) < 2**53)
+    array = _np.asarray(array, dtype=float)
+    if not _np.all(_np.isfinite(array)):
+        raise ValueError(f"{what}: not a finite number: {array[~_np.isfinite(array)][0]}")
+    integral = (array == _np.round(array)) & (_np.abs(array) < 2**53)
     values = array.astype(object)
-    values[integral] = array[integral].astype(np.int64).astype(object)
+    values[integral] = array[integral].astype(_np.int64).astype(object)
     return values.tolist()
 
 
@@ -431,7 +569,7 @@ class _Encoded(list):
         self.mapping = mapping
 
 
-_quote = json.encoder.encode_basestring_ascii  # as json.dumps quotes strings (C, ASCII-escaped)
+_quote = _json.encoder.encode_basestring_ascii  # as json.dumps quotes strings (C, ASCII-escaped)
 
 
 def _json_lines(document):
@@ -451,14 +589,14 @@ def _json_lines(document):
             if isinstance(value, _Encoded):
                 items = value
             elif mapping:
-                items = [f"{_quote(str(name))}: {json.dumps(item)}" for name, item in value.items()]
+                items = [f"{_quote(str(name))}: {_json.dumps(item)}" for name, item in value.items()]
             else:
-                items = [json.dumps(item) for item in value]
+                items = [_json.dumps(item) for item in value]
             lines.append(f" {_quote(key)}: {'{' if mapping else '['}")
             lines.append("  " + ",\n  ".join(items))
             lines.append(f" {'}' if mapping else ']'}{comma}")
         else:
-            lines.append(f" {_quote(key)}: {json.dumps(value)}{comma}")
+            lines.append(f" {_quote(key)}: {_json.dumps(value)}{comma}")
     lines.append("}")
     return "\n".join(lines) + "\n"
 
@@ -478,7 +616,7 @@ class _Model:
 
     def to_dict(self):
         """The model file's document as Python data (``json.loads`` of :meth:`to_json`)."""
-        return json.loads(self.to_json())
+        return _json.loads(self.to_json())
 
     def analyze(self, **options):
         return analyze(self, **options)
@@ -501,7 +639,7 @@ class Framework(_Model):
 
     def __init__(self, nodes, bars=None, beams=None, beam_z=None, rigid_bodies=None, supports=None,
                  independent=None, released=None, node_names=None, name=None):
-        self.nodes = np.atleast_2d(np.asarray(nodes, dtype=float))
+        self.nodes = _np.atleast_2d(_np.asarray(nodes, dtype=float))
         if self.nodes.ndim != 2 or self.nodes.shape[1] not in (2, 3):
             raise ValueError("nodes: an (n, 2) or (n, 3) array of positions")
         self.node_names = [str(x) for x in (node_names if node_names is not None else range(len(self.nodes)))]
@@ -510,7 +648,7 @@ class Framework(_Model):
         _check_finite(self.nodes, "nodes", self.name_for_errors, lambda i: f"node {self.node_names[i]!r}")
         self.bars = self._node_pairs(bars, "bars")
         self.beams = self._node_pairs(beams, "beams")
-        self.beam_z = None if beam_z is None else np.asarray(beam_z, dtype=float).reshape(-1, 3)
+        self.beam_z = None if beam_z is None else _np.asarray(beam_z, dtype=float).reshape(-1, 3)
         if self.beam_z is not None:
             _check_finite(self.beam_z, "beam_z", self.name_for_errors, lambda i: f"beam {i}")
         self.rigid_bodies = [list(map(int, body)) for body in (rigid_bodies or [])]
@@ -535,9 +673,9 @@ class Framework(_Model):
 
     def _node_pairs(self, pairs, what):
         if pairs is None:
-            return np.zeros((0, 2), dtype=int)
-        pairs = np.asarray(pairs, dtype=int).reshape(-1, 2)
-        outside = np.flatnonzero(((pairs < 0) | (pairs >= len(self.nodes))).any(axis=1))
+            return _np.zeros((0, 2), dtype=int)
+        pairs = _np.asarray(pairs, dtype=int).reshape(-1, 2)
+        outside = _np.flatnonzero(((pairs < 0) | (pairs >= len(self.nodes))).any(axis=1))
         if outside.size:
             k = int(outside[0])
             p, q = pairs[k].tolist()
@@ -546,7 +684,7 @@ class Framework(_Model):
         return pairs
 
     def _node(self, key, where="supports"):
-        if isinstance(key, (int, np.integer)):
+        if isinstance(key, (int, _np.integer)):
             return self.node_names[self._node_index(key, where)]
         return str(key)
 
@@ -580,7 +718,7 @@ class Framework(_Model):
         elements = []
         for k, (p, q) in enumerate(self.bars.tolist()):
             if k in released:
-                elements.append(json.dumps({"type": "truss", "nodes": [names[p], names[q]], "released": released[k]}))
+                elements.append(_json.dumps({"type": "truss", "nodes": [names[p], names[q]], "released": released[k]}))
             else:
                 elements.append(f'{{"type": "truss", "nodes": [{quoted[p]}, {quoted[q]}]}}')
         beam_z = None if self.beam_z is None else _rows(self.beam_z, "beam_z")
@@ -592,7 +730,7 @@ class Framework(_Model):
         for k, element in enumerate(bodies, start=len(elements)):
             if k in released:
                 element["released"] = released[k]
-            elements.append(json.dumps(element))
+            elements.append(_json.dumps(element))
         document["elements"] = _Encoded(elements)
         return document
 
@@ -612,9 +750,9 @@ class Network(_Model):
                  coupling_names=None, dimension="spatial", ground=None, chords=None, primary=None, inputs=None, name=None):
         self.types = [str(t) for t in types]
         e = len(self.types)
-        self.between = np.asarray(between).reshape(e, 2)
+        self.between = _np.asarray(between).reshape(e, 2)
         if bodies is None:
-            count = int(np.max(self.between)) + 1 if e and np.issubdtype(self.between.dtype, np.integer) else 0
+            count = int(_np.max(self.between)) + 1 if e and _np.issubdtype(self.between.dtype, _np.integer) else 0
             bodies = [str(i + 1) for i in range(count)]
         self.bodies = [str(b) for b in bodies]
         self.coupling_names = [str(c) for c in coupling_names] if coupling_names is not None else \
@@ -622,13 +760,13 @@ class Network(_Model):
         self.geometry = {}
         for key, array in (("point", points), ("axis", axes), ("normal", normals)):
             if array is not None:
-                self.geometry[key] = np.asarray(array, dtype=float).reshape(e, -1)
-        self.pitches = None if pitches is None else np.asarray(pitches, dtype=float).reshape(e)
+                self.geometry[key] = _np.asarray(array, dtype=float).reshape(e, -1)
+        self.pitches = None if pitches is None else _np.asarray(pitches, dtype=float).reshape(e)
         self.dimension, self.ground, self.name = dimension, ground, name
         self.chords, self.primary, self.inputs = chords, primary, inputs
 
     def _body(self, key, where="ground"):
-        if isinstance(key, (int, np.integer)):
+        if isinstance(key, (int, _np.integer)):
             if not 0 <= int(key) < len(self.bodies):
                 raise ModelIndexError(self.name_for_errors, f"{where}: body index {int(key)} is out of range: there are "
                                       f"{len(self.bodies)} bodies, 0 to {len(self.bodies) - 1}")
@@ -655,7 +793,7 @@ class Network(_Model):
             arrays.append(("pitch", self.pitches.reshape(e, 1)))
         for key, array in arrays:
             texts = [None] * e
-            present = np.flatnonzero(~np.isnan(array).all(axis=1))
+            present = _np.flatnonzero(~_np.isnan(array).all(axis=1))
             for i, row in zip(present.tolist(), _rows(array[present], key)):
                 texts[i] = f'"{key}": {repr(row[0]) if key == "pitch" else "[" + ", ".join(map(repr, row)) + "]"}'
             columns.append(texts)

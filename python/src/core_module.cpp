@@ -407,6 +407,7 @@ std::pair<std::vector<std::string>, std::uint64_t> sweep_lines(const std::string
 
 PYBIND11_MODULE(_core, m) {
   m.doc() = "kinestat's C++ library; use the `kinestat` package";
+  m.attr("__version__") = KINESTAT_VERSION;  // the project's version (CMake)
 
   // Bad input: a Python exception that carries the file, line and column of the problem.
   static py::exception<io::InputError> input_error(m, "InputError", PyExc_ValueError);
@@ -438,6 +439,9 @@ PYBIND11_MODULE(_core, m) {
       .def_property_readonly("kind", [](const Analysed& a) { return std::string(io::kind_name(a.file.kind)); })
       .def_property_readonly("path", [](const Analysed& a) { return a.file.path; })
       .def_property_readonly("notices", [](const Analysed& a) { return a.file.notices; })
+      // The verdict every report leads with: its sentence and whether the design is exactly constrained.
+      .def_property_readonly("verdict_summary", [](const Analysed& a) { return a.verdict.summary; })
+      .def_property_readonly("exactly_constrained", [](const Analysed& a) { return a.verdict.exactly_constrained; })
       .def("json", without_gil(&json_report), "The JSON report of `kinestat analyze --json` (or `structure --json`)")
       .def("html", without_gil(&html_report), "The self-contained HTML report; empty when the viewer is not built in")
       .def("svg", without_gil(&svg), py::arg("what"), py::arg("mode") = 1, py::arg("stress") = 1)
@@ -483,6 +487,7 @@ PYBIND11_MODULE(_core, m) {
         counts["rows"] = r.m, counts["columns"] = r.n, counts["rank"] = r.rank;
         counts["mechanisms"] = r.mechanisms, counts["self_stresses"] = r.self_stresses;
         counts["length"] = r.length, counts["vectors"] = r.vectors;
+        counts["dimension"] = a.file.framework->dimension;  // 2 planar, 3 spatial
         return counts;
       })
       .def("singular_values", [](const Analysed& a) { return framework_of(a).singular_values; })
@@ -504,6 +509,39 @@ PYBIND11_MODULE(_core, m) {
             model, r.indexing, r.partition, framework::deformation_derivative(model, r.indexing), r.length);
         return Eigen::MatrixXd(d);
       })
+      .def("jacobian_sparse", [](const Analysed& a) {
+        // The same D(c), as scipy.sparse (pybind11 imports scipy.sparse for it).
+        const auto& r = framework_of(a);
+        const framework::FrameworkModel& model = *a.file.framework;
+        return Eigen::SparseMatrix<double>(framework::dependent_jacobian(
+            model, r.indexing, r.partition, framework::deformation_derivative(model, r.indexing), r.length));
+      })
+      .def("node_positions", [](const Analysed& a) {
+        // Every node's position (length units; planar models have z = 0), in the file's order.
+        const framework::FrameworkModel& model = *a.file.framework;
+        Eigen::MatrixXd positions(static_cast<Eigen::Index>(model.nodes.size()), 3);
+        for (std::size_t i = 0; i < model.nodes.size(); ++i) positions.row(static_cast<Eigen::Index>(i)) = model.nodes[i].position.transpose();
+        return positions;
+      })
+      .def("coordinate_slots", [](const Analysed& a, const std::string& which) {
+        // (node index, slot) per coordinate: slot 0-2 translations x, y, z, 3-5 rotations about
+        // x, y, z. "dependent": the columns of D(c), in order; "held": fixed then independent.
+        const auto& r = framework_of(a);
+        std::vector<Eigen::Index> chosen = r.partition.dependent_coordinates;
+        if (which == "held") {
+          chosen = r.partition.fixed_coordinates;
+          chosen.insert(chosen.end(), r.partition.independent_coordinates.begin(), r.partition.independent_coordinates.end());
+        } else if (which != "dependent") {
+          throw py::value_error("which is 'dependent' or 'held'");
+        }
+        Eigen::Matrix<long long, Eigen::Dynamic, 2> slots(static_cast<Eigen::Index>(chosen.size()), 2);
+        for (std::size_t i = 0; i < chosen.size(); ++i) {
+          const framework::CoordinateRef& c = r.indexing.coordinates[static_cast<std::size_t>(chosen[i])];
+          slots(static_cast<Eigen::Index>(i), 0) = static_cast<long long>(c.node);
+          slots(static_cast<Eigen::Index>(i), 1) = c.slot;
+        }
+        return slots;
+      }, py::arg("which"))
       .def("row_labels", [](const Analysed& a) {
         std::vector<std::string> labels;
         for (Eigen::Index i = 0; i < framework_of(a).m; ++i)
