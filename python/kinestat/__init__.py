@@ -26,7 +26,11 @@ import os as _os
 
 import numpy as _np
 
-from . import _core
+try:
+    from . import _core
+except ImportError as error:  # Python's own message would blame a circular import
+    raise ImportError(f"kinestat's compiled part, kinestat._core, is missing or does not load beside {__file__} "
+                      f"(is its build finished? `cmake --build` makes it): {error}") from error
 from ._core import InputError
 
 #: The version of kinestat this module was built from (the CMake project's version).

@@ -63,3 +63,16 @@ def test_the_stubs_declare_every_public_name_and_method():
         declared = set().union(*(members.get(base.__name__, set()) for base in cls.__mro__))
         public = {name for name, _ in inspect.getmembers(cls) if not name.startswith("_")}
         assert public <= declared, (cls.__name__, public - declared)
+
+
+def test_a_missing_extension_says_so(tmp_path):
+    # The package's Python files without kinestat._core, as while the build is still running.
+    package = tmp_path / "kinestat"
+    package.mkdir()
+    (package / "__init__.py").write_text((ROOT / "python" / "kinestat" / "__init__.py").read_text())
+    environment = dict(os.environ, PYTHONPATH=str(tmp_path))
+    done = subprocess.run([sys.executable, "-c", "import kinestat"], capture_output=True, text=True, env=environment,
+                          cwd=tmp_path, timeout=120, check=False)
+    last = done.stderr.strip().splitlines()[-1]
+    assert done.returncode != 0 and last.startswith("ImportError: kinestat's compiled part, kinestat._core, is missing")
+    assert "is its build finished?" in last
