@@ -19,6 +19,7 @@ out of range in a model built in code :class:`ModelIndexError` (also an ``IndexE
 """
 
 import errno as _errno
+import html as _html
 import json as _json
 import math as _math
 import numbers as _numbers
@@ -161,10 +162,20 @@ class _Result:
             raise RuntimeError("HTML output is not built in: kinestat was built without npm")
         return text
 
+    def iframe(self, height=640):
+        """The interactive report as one ``<iframe>`` element whose whole document is in its
+        ``srcdoc`` (HTML-escaped), sandboxed with scripts only: its styles, ids and globals cannot
+        reach the page around it nor another report's, so any number share a notebook. ``height``
+        in CSS pixels. Raises RuntimeError without the viewer, as :meth:`html`."""
+        title = _html.escape(f"kinestat report: {self.path}", quote=True)
+        return (f'<iframe srcdoc="{_html.escape(self.html(), quote=True)}" title="{title}" '
+                f'sandbox="allow-scripts allow-downloads" loading="lazy" '
+                f'style="width: 100%; height: {int(height)}px; border: 1px solid #ccc;"></iframe>')
+
     def _repr_html_(self):
-        # Jupyter shows the interactive report inline; without the viewer, the text repr.
-        text = self._analysed.html()
-        return text or None
+        # Jupyter shows the interactive report inline, isolated in its iframe; without the
+        # viewer, the text repr.
+        return self.iframe() if _core.html_built_in() else None
 
     def svg(self, what=None, mode=1, stress=1):
         """An SVG drawing as ``kinestat draw`` makes it: ``what`` is "graph" (coupling, motion and
