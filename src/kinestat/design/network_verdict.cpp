@@ -1,12 +1,15 @@
 #include "kinestat/design/network_verdict.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <Eigen/Geometry>
+#include <Eigen/SVD>
 
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <string>
 #include <tuple>
 
 #include "kinestat/design/screw_text.hpp"
@@ -77,6 +80,7 @@ void add_shares(VerdictState& state, const std::vector<double>& size, const std:
 
 struct Standing {
   int FN = 0, CN = 0, idle = 0;
+  bool keeps = true;  ///< the carriers of the intended motion can still make all of it (screen only)
 };
 
 // Extra motions, motions lost and redundant constraints against `intended` motions.
@@ -86,8 +90,11 @@ struct Tally {
 };
 
 Tally tally(const Standing& s, int intended) {
-  const int moving = s.FN - s.idle;  // motions that are not idle spins
-  return {s.idle + std::max(0, moving - intended), std::max(0, intended - moving), s.CN};
+  // Idle motions are independent motions of the network, so at most FN of them; more is the
+  // rounding of a degenerate geometry.
+  const int idle = std::min(s.idle, s.FN);
+  const int moving = s.FN - idle;  // motions that are not idle spins
+  return {idle + std::max(0, moving - intended), std::max(0, intended - moving), s.CN};
 }
 
 int idle_count(const std::vector<IdleMotion>& idle) {
@@ -118,6 +125,14 @@ class BasisCache {
     return it->second;  // std::map: stays valid while others are added
   }
 
+  /// The basis of `c` in the user's frame (for the motion spaces, which condition it themselves).
+  const screw::CouplingBasis& user_of(const Coupling& c) {
+    std::string key = key_of(c);
+    auto it = user_bases_.find(key);
+    if (it == user_bases_.end()) it = user_bases_.emplace(std::move(key), screw::coupling_basis(c.type, c.geometry, space_)).first;
+    return it->second;
+  }
+
  private:
   static std::string key_of(const Coupling& c) {
     const auto& g = c.geometry;
@@ -141,13 +156,121 @@ class BasisCache {
   network::AnalysisFrame frame_;
   double input_rounding_ = 0.0;
   std::map<std::string, screw::CouplingBasis> bases_;
+  std::map<std::string, screw::CouplingBasis> user_bases_;
+};
+
+// True when a body that hangs on coupling `e` alone is not free on its own: the coupling is a
+// declared input (its motion is driven), or the network has no circuit (an open chain or tree,
+// such as a serial arm, whose every joint motion is taken as intended).
+bool held_leaf(const Model& model, int e) {
+  if (model.couplings.size() + 1 <= model.bodies.size()) return true;  // l = e - n + 1 = 0
+  return std::find(model.inputs.begin(), model.inputs.end(), model.couplings[static_cast<std::size_t>(e)].name) != model.inputs.end();
+}
+
+// A unit motion (axis formation, d coordinates of `space`, user frame) about the centre of
+// `frame` in units of its length: (ω; (v + ω × c) / L), so that spaces of motions are compared
+// free of placement and length unit.
+Eigen::VectorXd conditioned_motion(const Screw& t, const screw::ScrewSpace& space, const Frame& frame) {
+  Screw u = t;
+  const Eigen::Vector3d w = t.head<3>();
+  u.tail<3>() = (Eigen::Vector3d(t.tail<3>()) + w.cross(frame.centre)) / frame.length;
+  Eigen::VectorXd out(space.dimension());
+  for (int k = 0; k < space.dimension(); ++k) out(k) = u(space.components[static_cast<std::size_t>(k)]);
+  return out;
+}
+
+// An orthonormal basis of the columns of `a` (d rows), columns whose singular value is at most
+// `threshold` dropped.
+Eigen::MatrixXd orthonormal_columns(const Eigen::MatrixXd& a, double threshold) {
+  if (a.cols() == 0) return Eigen::MatrixXd(a.rows(), 0);
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(a, Eigen::ComputeThinU);
+  Eigen::Index rank = 0;
+  while (rank < svd.singularValues().size() && svd.singularValues()(rank) > threshold) ++rank;
+  return svd.matrixU().leftCols(rank);
+}
+
+// The motion of every body relative to the ground in a (changed) network with FN motions, as
+// orthonormal bases (d rows, conditioned about `frame`): FN columns of the null space of M^N
+// (its smallest right singular vectors) mapped along a breadth-first tree from the ground. The
+// screen's view of what the bodies carrying the intended motion can do; the proposed set is
+// verified on the full analysis's body motions.
+std::vector<Eigen::MatrixXd> motion_spaces(const Model& model, BasisCache& cache, const Frame& frame, int FN) {
+  const int d = model.space.dimension();
+  const int n = static_cast<int>(model.bodies.size());
+  const int ground = model.ground.value_or(0);
+  std::vector<graph::Edge> edges;
+  std::vector<Eigen::MatrixXd> unit;  // d x f_e per coupling, conditioned
+  std::vector<Eigen::Index> first{0};
+  for (const auto& c : model.couplings) {
+    edges.push_back({c.from, c.to});
+    const auto& basis = cache.user_of(c);
+    Eigen::MatrixXd u(d, static_cast<Eigen::Index>(basis.motions.size()));
+    for (std::size_t j = 0; j < basis.motions.size(); ++j) {
+      std::vector<double> coordinates;
+      for (const auto& x : basis.motions[j].coordinates) coordinates.push_back(x.get_d());
+      u.col(static_cast<Eigen::Index>(j)) = conditioned_motion(embed(coordinates, model.space), model.space, frame);
+    }
+    first.push_back(first.back() + u.cols());
+    unit.push_back(std::move(u));
+  }
+  const Eigen::Index F = first.back();
+  const graph::CouplingGraph graph(n, edges);
+  const graph::SpanningTree tree = graph.breadth_first_tree(ground);
+  const graph::TreeWalk walk = graph.walk(tree, ground);
+  const Eigen::MatrixXi B = graph.circuit_matrix(tree);
+  Eigen::MatrixXd mn = Eigen::MatrixXd::Zero(d * B.rows(), F);
+  for (Eigen::Index i = 0; i < B.rows(); ++i)
+    for (std::size_t e = 0; e < unit.size(); ++e)
+      if (B(i, static_cast<Eigen::Index>(e)) != 0)
+        mn.block(i * d, first[e], d, unit[e].cols()) = B(i, static_cast<Eigen::Index>(e)) * unit[e];
+  const Eigen::Index kept = std::clamp<Eigen::Index>(FN, 0, F);
+  Eigen::MatrixXd null = Eigen::MatrixXd::Identity(F, F).rightCols(kept);
+  if (mn.rows() > 0 && kept > 0 && kept < F) null = linalg::analyse_svd(mn, {}, linalg::SvdVectors::right_only).v.rightCols(kept);
+  std::vector<Eigen::MatrixXd> along(static_cast<std::size_t>(n), Eigen::MatrixXd::Zero(d, F));
+  for (const int b : walk.order) {
+    const int e = walk.parent_edge[static_cast<std::size_t>(b)];
+    if (e < 0) continue;
+    auto& t = along[static_cast<std::size_t>(b)];
+    t = along[static_cast<std::size_t>(walk.parent_body[static_cast<std::size_t>(b)])];
+    t.middleCols(first[static_cast<std::size_t>(e)], unit[static_cast<std::size_t>(e)].cols()) +=
+        walk.sign[static_cast<std::size_t>(b)] * unit[static_cast<std::size_t>(e)];
+  }
+  // Ranked against the largest motion of any body (kPairRankRelative, as the pair systems).
+  std::vector<Eigen::MatrixXd> motion(static_cast<std::size_t>(n));
+  double largest = 0.0;
+  for (int b = 0; b < n; ++b) {
+    motion[static_cast<std::size_t>(b)] = along[static_cast<std::size_t>(b)] * null;
+    largest = std::max(largest, motion[static_cast<std::size_t>(b)].norm());
+  }
+  std::vector<Eigen::MatrixXd> spaces;
+  for (int b = 0; b < n; ++b) spaces.push_back(orthonormal_columns(motion[static_cast<std::size_t>(b)], kPairRankRelative * largest));
+  return spaces;
+}
+
+// True when every motion of `kept` (orthonormal columns) lies in the span of `now` (orthonormal).
+bool contains(const Eigen::MatrixXd& now, const Eigen::MatrixXd& kept) {
+  if (kept.cols() == 0) return true;
+  if (now.cols() < kept.cols()) return false;
+  const Eigen::MatrixXd residual = kept - now * (now.transpose() * kept);
+  return residual.colwise().norm().maxCoeff() <= kMotionSpaceResidual;
+}
+
+// What the screen needs to know of the bodies carrying the intended motion.
+struct Carriers {
+  std::vector<int> bodies;              ///< carriers of the intended motion (see carrier_bodies)
+  std::vector<Eigen::MatrixXd> spaces;  ///< their motion spaces in the original design (screen frame)
+  Frame frame;                          ///< the original model's frame (kept for every copy)
+  bool same_space = false;              ///< the intended motion is all the design's motion: keep it exactly
 };
 
 // FN, CN and idle spins of a changed copy from cached bases: one rank of M^N and one small rank
 // per body, instead of a full analysis. The search compares hundreds of copies this way; the
-// change set it settles on is verified by a full analysis (network_verdict).
-Standing screen(const Model& model, BasisCache& cache, bool exact, const Tolerances& tolerances,
-                double& work) {
+// change set it settles on is verified by a full analysis (network_verdict). A body held by one
+// coupling is free on its own with that coupling's freedoms (unless the coupling is a declared
+// input). With `carriers`, also whether each carrier can still make every motion it made in the
+// original design (`keeps`).
+Standing screen(const Model& model, BasisCache& cache, bool exact, const Tolerances& tolerances, double& work,
+                const Carriers* carriers = nullptr) {
   const int d = model.space.dimension();
   std::vector<graph::Edge> edges;
   std::vector<const screw::CouplingBasis*> bases;
@@ -159,18 +282,19 @@ Standing screen(const Model& model, BasisCache& cache, bool exact, const Toleran
                                              cache.input_rounding());
   const double equations = d * count.l, unknowns = count.F;
   work += equations * unknowns * std::min(equations, unknowns);
-  Standing s{count.FN, count.CN, 0};
+  Standing s{count.FN, count.CN, 0, true};
   // Idle spins: the motions common to every coupling of a body, d less the rank of their actions.
   const int ground = model.ground.value_or(0);
   for (int b = 0; b < static_cast<int>(model.bodies.size()); ++b) {
     std::vector<const std::vector<Rational>*> actions;
-    int couplings = 0;
+    int couplings = 0, last = -1;
     for (std::size_t e = 0; e < edges.size(); ++e) {
       if (b == ground || (edges[e].from != b && edges[e].to != b)) continue;
       ++couplings;
+      last = static_cast<int>(e);
       for (const auto& a : bases[e]->actions) actions.push_back(&a.coordinates);
     }
-    if (couplings < 2) continue;
+    if (couplings == 0 || (couplings == 1 && held_leaf(model, last))) continue;
     const auto rows = static_cast<Eigen::Index>(actions.size());
     if (rows == 0) {
       s.idle += d;
@@ -189,6 +313,11 @@ Standing screen(const Model& model, BasisCache& cache, bool exact, const Toleran
         for (int k = 0; k < d; ++k) exact_actions(r, k) = (*actions[static_cast<std::size_t>(r)])[static_cast<std::size_t>(k)];
       s.idle += d - static_cast<int>(linalg::exact_rank(exact_actions));
     }
+  }
+  if (carriers && carriers->same_space && !carriers->bodies.empty()) {
+    const auto spaces = motion_spaces(model, cache, carriers->frame, count.FN);
+    for (std::size_t i = 0; i < carriers->bodies.size() && s.keeps; ++i)
+      s.keeps = contains(spaces[static_cast<std::size_t>(carriers->bodies[i])], carriers->spaces[i]);
   }
   return s;
 }
@@ -371,22 +500,64 @@ std::vector<std::pair<std::string, std::vector<double>>> geometry_of(const Coupl
 struct Search {
   ChangeSet changes;
   Tally result;
+  int lost_motion = 0;  ///< screened copies turned down because a carrier lost part of its motion
 };
 
-// With `one_way`, a design with only redundant constraints is offered only releases and removals,
-// and one with only extra motions only added constraints: a designer's change, not a removal
-// that frees a motion and a constraint that takes it back.
-Search search_changes(const Model& model, const network::AnalysisOptions& options, bool exact, int intended,
-                      const Tally& start, const std::vector<int>& order, bool one_way, double& work) {
+// Which changes a search may make. `replace_only`: only couplings of another type (a designer's
+// first choice, e.g. the Clavel delta's spherical joints), freedoms added against redundancy and
+// constraints against extra motion; `one_way`: also removals and welds, in the same direction;
+// `two_way`: any change (a removal that frees a motion and a constraint that takes it back).
+enum class SearchMode { lower_pairs, replace_only, one_way, two_way };
+
+// A lower pair (surface contact: revolute, prismatic, helical, cylindrical, universal,
+// spherical, planar) is a designer's first choice; a point contact or a removed or welded
+// coupling changes the design more.
+bool lower_pair(CouplingType type) {
+  switch (type) {
+    case CouplingType::revolute:
+    case CouplingType::prismatic:
+    case CouplingType::helical:
+    case CouplingType::cylindrical:
+    case CouplingType::universal:
+    case CouplingType::spherical:
+    case CouplingType::planar: return true;
+    default: return false;
+  }
+}
+
+// What every search of one verdict shares.
+struct SearchContext {
+  const Model& model;
+  const network::AnalysisOptions& options;
+  bool exact = false;
+  int intended = 0;
+  Tally start;
+  std::vector<int> order;  ///< couplings, those taking the largest part first
+  BasisCache& cache;
+  const Carriers& carriers;
+};
+
+Search search_changes(const SearchContext& x, SearchMode mode, double& work) {
+  const Model& model = x.model;
+  const Tally& start = x.start;
+  const std::vector<int>& order = x.order;
+  const bool one_way = mode != SearchMode::two_way;
   Search s;
   s.result = start;
-  BasisCache cache(model, exact);
+  BasisCache& cache = x.cache;
   int analyses = 0;
   const auto within_budget = [&] { return analyses < kNetworkDesignSearchAnalyses && work < kNetworkDesignSearchWork; };
+  // The tally of a changed copy, or nullopt when it cannot be analysed or a carrier of the
+  // intended motion lost part of it (counted in lost_motion).
   auto evaluate = [&](const ChangeSet& changes) -> std::optional<Tally> {
     ++analyses;
     try {
-      return tally(screen(changed_model(model, changes), cache, exact, options.tolerances, work), intended);
+      const Standing standing = screen(changed_model(model, changes), cache, x.exact, x.options.tolerances, work, &x.carriers);
+      if (!standing.keeps) {
+        ++s.lost_motion;
+        return std::nullopt;
+      }
+      return tally(standing, x.intended);
     } catch (const graph::TreeError&) {
       return std::nullopt;  // a removal that disconnects a body
     } catch (const screw::GeometryError&) {
@@ -403,6 +574,8 @@ Search search_changes(const Model& model, const network::AnalysisOptions& option
     const Coupling& now = current != s.changes.end() ? *current->second : model.couplings[static_cast<std::size_t>(e)];
     const auto f = [&](const Coupling& c) { return static_cast<int>(cache.of(c).motions.size()); };
     for (auto& candidate : candidates_for(changed_model(model, s.changes), now)) {
+      if (mode == SearchMode::replace_only && (!candidate || candidate->type == CouplingType::rigid)) continue;
+      if (mode == SearchMode::lower_pairs && (!candidate || !lower_pair(candidate->type))) continue;
       try {
         // A removal drops the d - f constraints the coupling imposed.
         const int f_after = candidate ? f(*candidate) : model.space.dimension();
@@ -477,6 +650,14 @@ Search search_changes(const Model& model, const network::AnalysisOptions& option
 
 }  // namespace
 
+std::string idle_description(const Model& model, const IdleMotion& idle, const std::string& motion) {
+  const std::string& body = model.bodies[static_cast<std::size_t>(idle.body)];
+  if (idle.holding_coupling >= 0)
+    return fmt::format("body '{}' hangs on coupling {} alone and moves freely: {}", body,
+                       model.couplings[static_cast<std::size_t>(idle.holding_coupling)].name, motion);
+  return fmt::format("idle spin of body '{}': {}", body, motion);
+}
+
 std::vector<IdleMotion> idle_motions(const Model& model, bool exact, const Tolerances& tolerances) {
   const int d = model.space.dimension();
   const Frame frame = frame_of(model);
@@ -490,14 +671,16 @@ std::vector<IdleMotion> idle_motions(const Model& model, bool exact, const Toler
   for (int b = 0; b < static_cast<int>(model.bodies.size()); ++b) {
     if (b == ground) continue;
     std::vector<std::vector<Rational>> actions;
-    int couplings = 0;
-    for (const auto& c : model.couplings) {
+    int couplings = 0, last = -1;
+    for (std::size_t e = 0; e < model.couplings.size(); ++e) {
+      const auto& c = model.couplings[e];
       if (c.from != b && c.to != b) continue;
       ++couplings;
+      last = static_cast<int>(e);
       for (const auto& a : screw::coupling_basis(c.type, c.geometry, model.space).actions) actions.push_back(a.coordinates);
     }
-    if (couplings < 2) continue;
-    IdleMotion idle{b, 0, {}};
+    if (couplings == 0 || (couplings == 1 && held_leaf(model, last))) continue;
+    IdleMotion idle{b, 0, {}, couplings == 1 ? last : -1};
     if (actions.empty()) {
       idle.count = d;
     } else if (exact) {
@@ -540,11 +723,229 @@ std::vector<IdleMotion> idle_motions(const Model& model, bool exact, const Toler
   return list;
 }
 
+namespace {
+
+// The bodies that carry the intended motion: of the bodies that are not free on their own, those
+// whose motion relative to the ground has the most freedoms (they make every intended motion),
+// and of these the farthest from the ground along the couplings (the Delta's platform, not its
+// rods; a four-bar's coupler). Their motion is what a change set must keep.
+Carriers carriers_of(const Model& model, BasisCache& cache, const Frame& frame, int FN, const std::vector<IdleMotion>& idle,
+                     const Tally& start) {
+  Carriers c;
+  c.frame = frame;
+  c.same_space = start.lost == 0 && start.extra == std::min(idle_count(idle), FN);  // every motion that is not idle is intended
+  if (FN == 0) return c;
+  std::vector<Eigen::MatrixXd> spaces;
+  try {
+    spaces = motion_spaces(model, cache, frame, FN);
+  } catch (const graph::TreeError&) {
+    return c;
+  }
+  const int ground = model.ground.value_or(0);
+  std::vector<graph::Edge> edges;
+  for (const auto& coupling : model.couplings) edges.push_back({coupling.from, coupling.to});
+  const graph::CouplingGraph graph(static_cast<int>(model.bodies.size()), edges);
+  const graph::TreeWalk walk = graph.walk(graph.breadth_first_tree(ground), ground);
+  std::vector<int> depth(model.bodies.size(), 0);
+  for (const int b : walk.order)
+    if (walk.parent_edge[static_cast<std::size_t>(b)] >= 0)
+      depth[static_cast<std::size_t>(b)] = depth[static_cast<std::size_t>(walk.parent_body[static_cast<std::size_t>(b)])] + 1;
+  Eigen::Index most = 0;
+  int farthest = 0;
+  const auto eligible = [&](int b) {
+    return b != ground && std::none_of(idle.begin(), idle.end(), [&](const IdleMotion& i) { return i.body == b; });
+  };
+  for (int b = 0; b < static_cast<int>(model.bodies.size()); ++b)
+    if (eligible(b)) most = std::max(most, spaces[static_cast<std::size_t>(b)].cols());
+  if (most == 0) return c;
+  for (int b = 0; b < static_cast<int>(model.bodies.size()); ++b)
+    if (eligible(b) && spaces[static_cast<std::size_t>(b)].cols() == most) farthest = std::max(farthest, depth[static_cast<std::size_t>(b)]);
+  for (int b = 0; b < static_cast<int>(model.bodies.size()); ++b)
+    if (eligible(b) && spaces[static_cast<std::size_t>(b)].cols() == most && depth[static_cast<std::size_t>(b)] == farthest) {
+      c.bodies.push_back(b);
+      c.spaces.push_back(spaces[static_cast<std::size_t>(b)]);
+    }
+  return c;
+}
+
+std::string carrier_names(const Model& model, const Carriers& carriers) {
+  std::vector<std::string> names;
+  for (const int b : carriers.bodies) names.push_back("'" + model.bodies[static_cast<std::size_t>(b)] + "'");
+  return names.empty() ? std::string("the moving bodies") : fmt::format("{}", fmt::join(names, ", "));
+}
+
+// "release T1a -> spherical, remove T3a": a change set in one line, in model order.
+std::string change_set_text(const Model& model, const ChangeSet& set) {
+  std::vector<std::string> parts;
+  for (const auto& [e, replacement] : set) {
+    const std::string& name = model.couplings[static_cast<std::size_t>(e)].name;
+    parts.push_back(replacement ? fmt::format("{} -> {}", name, screw::coupling_type_name(replacement->type)) : "remove " + name);
+  }
+  return fmt::format("{}", fmt::join(parts, ", "));
+}
+
+std::vector<DesignChange> design_changes(const Model& model, const ChangeSet& set, const Tally& start) {
+  // A set that removes some couplings and constrains others moves constraints, it does not
+  // only drop them: say so instead of calling the removed coupling redundant.
+  const bool constrains = std::any_of(set.begin(), set.end(), [&](const auto& entry) {
+    return entry.second && freedoms(*entry.second, model.space) < freedoms(model.couplings[static_cast<std::size_t>(entry.first)], model.space);
+  });
+  std::vector<DesignChange> changes;
+  for (const auto& [e, replacement] : set) {
+    const Coupling& before = model.couplings[static_cast<std::size_t>(e)];
+    const int f0 = freedoms(before, model.space);
+    DesignChange change;
+    change.target_kind = "coupling";
+    change.target = before.name;
+    change.from = std::string(screw::coupling_type_name(before.type));
+    if (!replacement) {
+      change.action = "remove";
+      change.becomes = "removed";
+      change.reason = constrains ? "its constraints move to the couplings this set constrains"
+                                 : "the coupling is redundant: the others already impose what it does";
+    } else {
+      const int f1 = freedoms(*replacement, model.space);
+      change.action = f1 > f0 ? "release" : (f1 < f0 ? "constrain" : "replace");
+      change.becomes = std::string(screw::coupling_type_name(replacement->type));
+      change.geometry = geometry_of(*replacement);
+      change.reason = f1 > f0 ? fmt::format("{} along the locked action (f {} -> {})", counted(f1 - f0, "freedom", "freedoms"), f0, f1)
+                              : fmt::format("{} against {} (f {} -> {})", counted(f0 - f1, "constraint", "constraints"),
+                                            start.extra > 0 ? "the extra motion" : "the motion the other changes would free", f0, f1);
+    }
+    changes.push_back(std::move(change));
+  }
+  return changes;
+}
+
+// A body's motion relative to the ground from the full analysis, conditioned about `frame`
+// (d rows, one column per primary motion).
+Eigen::MatrixXd conditioned_body_motion(const network::LinearForms& forms, const screw::ScrewSpace& space, const Frame& frame) {
+  Eigen::MatrixXd out(space.dimension(), forms.values.cols());
+  for (Eigen::Index j = 0; j < forms.values.cols(); ++j) {
+    std::vector<double> coordinates(forms.values.col(j).data(), forms.values.col(j).data() + forms.values.rows());
+    out.col(j) = conditioned_motion(embed(coordinates, space), space, frame);
+  }
+  return out;
+}
+
+// Ranks of a carrier's motion before, after, and of both together: exact when both analyses
+// were, otherwise numerical (kPairRankRelative of the largest, as the pair freedoms fij).
+struct SpaceRanks {
+  long before = 0, after = 0, both = 0;
+};
+
+SpaceRanks space_ranks(const network::LinearForms& before, const network::LinearForms& after, const screw::ScrewSpace& space,
+                       const Frame& frame) {
+  if (before.exact && after.exact) {
+    const auto rows = before.exact->rows();
+    linalg::RationalMatrix both(rows, before.exact->cols() + after.exact->cols());
+    for (Eigen::Index i = 0; i < rows; ++i) {
+      for (Eigen::Index j = 0; j < before.exact->cols(); ++j) both(i, j) = (*before.exact)(i, j);
+      for (Eigen::Index j = 0; j < after.exact->cols(); ++j) both(i, before.exact->cols() + j) = (*after.exact)(i, j);
+    }
+    return {static_cast<long>(linalg::exact_rank(*before.exact)), static_cast<long>(linalg::exact_rank(*after.exact)),
+            static_cast<long>(linalg::exact_rank(both))};
+  }
+  const Eigen::MatrixXd a = conditioned_body_motion(before, space, frame), b = conditioned_body_motion(after, space, frame);
+  Eigen::MatrixXd both(a.rows(), a.cols() + b.cols());
+  both << a, b;
+  const auto rank = [](const Eigen::MatrixXd& m) -> long {
+    if (m.cols() == 0 || !(m.norm() > 0.0)) return 0;
+    return static_cast<long>(linalg::numerical_rank(m, {kPairRankRelative}).rank);
+  };
+  return {rank(a), rank(b), rank(both)};
+}
+
+// "3 translations" or "3 motions (2 with rotation)": what a motion space of a carrier is.
+std::string space_words(const network::LinearForms& forms, long rank, const screw::ScrewSpace& space) {
+  Eigen::MatrixXd rotation = Eigen::MatrixXd::Zero(3, forms.values.cols());
+  for (Eigen::Index j = 0; j < forms.values.cols(); ++j) {
+    std::vector<double> coordinates(forms.values.col(j).data(), forms.values.col(j).data() + forms.values.rows());
+    rotation.col(j) = embed(coordinates, space).head<3>();
+  }
+  const double size = forms.values.norm();
+  const long rotating = rotation.cols() == 0 || !(size > 0.0) ? 0
+                        : static_cast<long>(linalg::numerical_rank(rotation / size, {kPairRankRelative}).rank);
+  if (rotating == 0) return counted(rank, "translation", "translations");
+  if (rotating == rank) return counted(rank, "rotation", "rotations");
+  return fmt::format("{} ({} with rotation)", counted(rank, "motion", "motions"), rotating);
+}
+
+// The outcome of re-analysing a changed copy in full: what was compared, and why it failed.
+struct Verification {
+  bool passed = false;
+  std::vector<std::string> compared;
+  std::string failure;
+  std::string becomes;
+};
+
+// A change set passes when the full re-analysis of the changed copy (the user's arithmetic) has
+// CN = 0, no extra motion, no body free on its own, and each carrier of the intended motion keeps
+// the same pair freedoms fij with the ground and the same motion screws (or, when the design has
+// more motion than intended, keeps no motion it did not have).
+Verification verify_changes(const Model& model, const network::NetworkResult& r, const ChangeSet& changes,
+                            const network::AnalysisOptions& options, int intended, const Carriers& carriers) {
+  Verification out;
+  network::AnalysisOptions full = options;
+  full.primary.reset();
+  full.values.clear();
+  const Model changed = changed_model(model, changes);
+  network::NetworkResult after;
+  try {
+    after = network::analyse_network(changed, full);
+  } catch (const std::exception& error) {
+    out.failure = fmt::format("the changed model could not be analysed: {}", error.what());
+    return out;
+  }
+  const auto idle = idle_motions(changed, after.exact, full.tolerances);
+  const Tally t = tally({after.FN, after.CN, idle_count(idle)}, intended);
+  out.becomes = fmt::format("FN = {}, CN = {}: {}{}", after.FN, after.CN,
+                            t.score() == 0 && t.lost == 0
+                                ? (intended == 0 ? std::string("exactly constrained, a structure")
+                                                 : "exactly constrained with " + counted(intended, "intended motion", "intended motions"))
+                                : constraint_words(t.extra, t.CN),
+                            after.FN != r.FN ? fmt::format(" (FN was {})", r.FN) : "");
+  std::vector<std::string> failures;
+  out.compared.push_back(fmt::format("re-analysed: FN = {}, CN = {} (was FN = {}, CN = {}); {} intended, {}", after.FN, after.CN,
+                                     r.FN, r.CN, counted(intended, "motion", "motions"),
+                                     t.extra == 0 && t.lost == 0 ? "no extra motion" : constraint_words(t.extra, 0)));
+  if (after.CN > 0) failures.push_back(counted(after.CN, "redundant constraint remains", "redundant constraints remain"));
+  if (t.lost > 0) failures.push_back(fmt::format("{} lost", counted(t.lost, "intended motion", "intended motions")));
+  if (idle.empty()) {
+    out.compared.push_back("no body free on its own (idle spins and bodies held by one coupling looked for)");
+  } else {
+    const Frame frame = frame_of(changed);
+    for (const auto& spin : idle)
+      failures.push_back(idle_description(changed, spin, motion_text(embed(spin.screws.front(), changed.space), frame.length)));
+  }
+  const int ground = model.ground.value_or(0);
+  for (const int b : carriers.bodies) {
+    const std::string pair = fmt::format("{}–{}", model.bodies[static_cast<std::size_t>(ground)], model.bodies[static_cast<std::size_t>(b)]);
+    const auto& was = r.body_motions[static_cast<std::size_t>(b)];
+    const auto& now = after.body_motions[static_cast<std::size_t>(b)];
+    const SpaceRanks k = space_ranks(was, now, model.space, carriers.frame);
+    if (k.before != k.after && carriers.same_space) {
+      failures.push_back(fmt::format("{}: fij {} -> {}", pair, k.before, k.after));
+    } else if (carriers.same_space ? k.both != k.before : k.both != k.before || k.after != intended) {
+      failures.push_back(fmt::format("{}: fij = {}, but other motion screws than before", pair, k.after));
+    } else {
+      out.compared.push_back(fmt::format("{}: fij = {} before and after, the same motion screws ({})", pair, k.after,
+                                         space_words(now, k.after, model.space)));
+      if (!carriers.same_space && k.after != k.before) out.compared.back() = fmt::format("{}: fij {} -> {}, motions kept from the design's ({})", pair, k.before, k.after, space_words(now, k.after, model.space));
+    }
+  }
+  out.passed = failures.empty();
+  if (!out.passed) out.failure = fmt::format("{}", fmt::join(failures, "; "));
+  return out;
+}
+
+}  // namespace
+
 Verdict network_verdict(const Model& model, const network::NetworkResult& r, const network::AnalysisOptions& options) {
   Verdict v;
   const Frame frame = frame_of(model);
   const auto idle = idle_motions(model, r.exact, options.tolerances);
-  const Standing standing{r.FN, r.CN, idle_count(idle)};
+  const Standing standing{r.FN, r.CN, std::min(idle_count(idle), r.FN)};
   const int declared = static_cast<int>(model.inputs.size());
   const int intended = model.inputs.empty() ? standing.FN - standing.idle : declared;
   v.intended_motions = intended;
@@ -564,8 +965,7 @@ Verdict network_verdict(const Model& model, const network::NetworkResult& r, con
   for (const auto& spin : idle) {
     for (const auto& s : spin.screws) {
       const std::string what = motion_text(embed(s, model.space), frame.length);
-      VerdictState state{"extra motion",
-                         fmt::format("idle spin of body '{}': {}", model.bodies[static_cast<std::size_t>(spin.body)], what), {}};
+      VerdictState state{"extra motion", idle_description(model, spin, what), {}};
       state.participants.push_back({"body", model.bodies[static_cast<std::size_t>(spin.body)], 1.0, what});
       std::vector<double> size(e_count, 0.0);
       std::vector<std::string> detail(e_count, "lets the body spin: " + what);
@@ -638,63 +1038,62 @@ Verdict network_verdict(const Model& model, const network::NetworkResult& r, con
   for (std::size_t e = 0; e < e_count; ++e)
     if (std::find(order.begin(), order.end(), static_cast<int>(e)) == order.end()) order.push_back(static_cast<int>(e));
 
-  double work = 0.0;  // shared by both searches
-  Search search = search_changes(model, options, r.exact, intended, start, order, true, work);
-  if (search.result.score() > 0 || search.result.lost > 0)
-    search = search_changes(model, options, r.exact, intended, start, order, false, work);
-  // A set that removes some couplings and constrains others moves constraints, it does not
-  // only drop them: say so instead of calling the removed coupling redundant.
-  const bool constrains = std::any_of(search.changes.begin(), search.changes.end(), [&](const auto& entry) {
-    return entry.second && freedoms(*entry.second, model.space) < freedoms(model.couplings[static_cast<std::size_t>(entry.first)], model.space);
-  });
-  for (const auto& [e, replacement] : search.changes) {
-    const Coupling& before = model.couplings[static_cast<std::size_t>(e)];
-    const int f0 = freedoms(before, model.space);
-    DesignChange change;
-    change.target_kind = "coupling";
-    change.target = before.name;
-    change.from = std::string(screw::coupling_type_name(before.type));
-    if (!replacement) {
-      change.action = "remove";
-      change.becomes = "removed";
-      change.reason = constrains ? "its constraints move to the couplings this set constrains"
-                                 : "the coupling is redundant: the others already impose what it does";
-    } else {
-      const int f1 = freedoms(*replacement, model.space);
-      change.action = f1 > f0 ? "release" : (f1 < f0 ? "constrain" : "replace");
-      change.becomes = std::string(screw::coupling_type_name(replacement->type));
-      change.geometry = geometry_of(*replacement);
-      change.reason = f1 > f0 ? fmt::format("{} along the locked action (f {} -> {})", counted(f1 - f0, "freedom", "freedoms"), f0, f1)
-                              : fmt::format("{} against {} (f {} -> {})", counted(f0 - f1, "constraint", "constraints"),
-                                            start.extra > 0 ? "the extra motion" : "the motion the other changes would free", f0, f1);
-    }
-    v.changes.push_back(std::move(change));
+  double work = 0.0;  // shared by every search
+  BasisCache cache(model, r.exact);
+  const Carriers carriers = carriers_of(model, cache, frame, r.FN, idle, start);
+  const SearchContext context{model, options, r.exact, intended, start, order, cache, carriers};
+  struct Proposal {
+    ChangeSet changes;
+    Verification check;
+  };
+  std::vector<Proposal> verified;
+  std::vector<std::string> seen;
+  int lost_motion = 0;
+  for (const SearchMode mode : {SearchMode::lower_pairs, SearchMode::replace_only, SearchMode::one_way, SearchMode::two_way}) {
+    if (mode == SearchMode::two_way && !verified.empty()) break;
+    if (work >= kNetworkDesignSearchWork) break;
+    const Search found = search_changes(context, mode, work);
+    lost_motion += found.lost_motion;
+    if (found.changes.empty() || found.result.score() > 0 || found.result.lost > 0) continue;
+    const std::string key = change_set_text(model, found.changes);
+    if (std::find(seen.begin(), seen.end(), key) != seen.end()) continue;
+    seen.push_back(key);
+    Verification check = verify_changes(model, r, found.changes, options, intended, carriers);
+    if (check.passed) verified.push_back({found.changes, std::move(check)});
+    else v.rejected.push_back(key + ": " + check.failure);
   }
-  if (v.changes.empty()) {
-    v.note = work >= kNetworkDesignSearchWork
-                 ? "no change set found within the search budget: analyse a smaller part of the network to get one"
-                 : "no change of a single coupling type reduces the extra motions or redundant constraints";
+  // Simplest first: sets of lower pairs only, then with point contacts, then with removals or
+  // welds; within each, the fewest changes, then the fewest freedoms changed.
+  const auto simplicity = [&](const ChangeSet& set) {
+    int kind = 0, delta = 0;
+    for (const auto& [e, replacement] : set) {
+      const int f0 = freedoms(model.couplings[static_cast<std::size_t>(e)], model.space);
+      kind = std::max(kind, !replacement || replacement->type == CouplingType::rigid ? 2 : lower_pair(replacement->type) ? 0 : 1);
+      delta += std::abs((replacement ? freedoms(*replacement, model.space) : model.space.dimension()) - f0);
+    }
+    return std::make_tuple(kind, set.size(), delta);
+  };
+  std::stable_sort(verified.begin(), verified.end(),
+                   [&](const Proposal& p, const Proposal& q) { return simplicity(p.changes) < simplicity(q.changes); });
+  if (!verified.empty()) {
+    v.changes = design_changes(model, verified.front().changes, start);
+    v.changes_verified = true;
+    v.becomes = verified.front().check.becomes;
+    v.verification = verified.front().check.compared;
+    for (std::size_t i = 1; i < verified.size(); ++i) v.alternatives.push_back(design_changes(model, verified[i].changes, start));
     return v;
   }
-  // Verified by a full re-analysis of the changed copy, with the user's arithmetic.
-  network::AnalysisOptions full = options;
-  full.primary.reset();
-  full.values.clear();
-  try {
-    const Model changed = changed_model(model, search.changes);
-    const network::NetworkResult after = network::analyse_network(changed, full);
-    const Tally t = tally({after.FN, after.CN, idle_count(idle_motions(changed, after.exact, full.tolerances))}, intended);
-    v.changes_verified = t.score() == 0 && t.lost == 0;
-    v.becomes = fmt::format("FN = {}, CN = {}: {}{}", after.FN, after.CN,
-                            v.changes_verified ? (intended == 0 ? std::string("exactly constrained, a structure") : "exactly constrained with " + counted(intended, "intended motion", "intended motions"))
-                                               : constraint_words(t.extra, t.CN),
-                            after.FN != r.FN ? fmt::format(" (FN was {})", r.FN) : "");
-  } catch (const std::exception& error) {
-    v.becomes = fmt::format("the changed model could not be analysed: {}", error.what());
-  }
-  if (!v.changes_verified && v.note.empty())
-    v.note = work >= kNetworkDesignSearchWork ? "the change set found removes only part of the problem (search budget spent)"
-                                              : "the change set found removes only part of the problem";
+  const std::string turned_down =
+      lost_motion > 0 ? fmt::format("; {} screened {} took part of the intended motion from {}", lost_motion,
+                                    lost_motion == 1 ? "copy was turned down: it" : "copies were turned down: they",
+                                    carrier_names(model, carriers))
+                      : "";
+  if (!v.rejected.empty())
+    v.note = fmt::format("no change set passed the re-analysis ({} tried, none proposed){}", v.rejected.size(), turned_down);
+  else if (work >= kNetworkDesignSearchWork)
+    v.note = "no change set found within the search budget: analyse a smaller part of the network to get one" + turned_down;
+  else
+    v.note = "no change of coupling types, removal or weld removes every extra motion and redundant constraint" + turned_down;
   return v;
 }
 

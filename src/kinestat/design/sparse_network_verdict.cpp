@@ -13,6 +13,7 @@
 #include "kinestat/design/network_verdict.hpp"
 #include "kinestat/design/screw_text.hpp"
 #include "kinestat/network/magnitude_names.hpp"
+#include "kinestat/screw/coupling_basis.hpp"
 #include "kinestat/tolerances.hpp"
 
 namespace kinestat::design {
@@ -81,8 +82,24 @@ std::vector<IdleMotion> sparse_idle_spins(const Model& model, const SparseNetwor
   }
   std::vector<IdleMotion> spins;
   for (std::size_t b = 0; b < model.bodies.size(); ++b) {
-    if (static_cast<int>(b) == ground || touching[b].size() < 2 || !may_spin(model, r, static_cast<int>(b), touching[b], tolerances))
+    if (static_cast<int>(b) == ground || touching[b].empty()) continue;
+    if (touching[b].size() == 1) {
+      // A body held by one coupling is free on its own with all that coupling's freedoms (as
+      // idle_motions), unless the coupling is a declared input or the network has no circuit.
+      const network::Coupling& c = model.couplings[touching[b].front()];
+      const bool open = model.couplings.size() + 1 <= model.bodies.size();
+      if (open || std::find(model.inputs.begin(), model.inputs.end(), c.name) != model.inputs.end()) continue;
+      IdleMotion leaf{static_cast<int>(b), 0, {}, static_cast<int>(touching[b].front())};
+      for (const auto& motion : screw::coupling_basis(c.type, c.geometry, model.space).motions) {
+        std::vector<double> coordinates;
+        for (const auto& x : motion.coordinates) coordinates.push_back(x.get_d());
+        leaf.screws.push_back(std::move(coordinates));
+      }
+      leaf.count = static_cast<int>(leaf.screws.size());
+      if (leaf.count > 0) spins.push_back(std::move(leaf));
       continue;
+    }
+    if (!may_spin(model, r, static_cast<int>(b), touching[b], tolerances)) continue;
     Model star;
     star.space = model.space;
     star.bodies = {model.bodies[b], "the rest"};
@@ -223,6 +240,7 @@ Verdict sparse_network_verdict(const Model& model, const SparseNetworkResult& r,
   const Conditioning frame{r.frame_origin, r.frame_scale};
   int idle_count = 0;
   for (const auto& i : idle) idle_count += i.count;
+  idle_count = std::min(idle_count, r.FN);  // independent motions: at most FN (more is rounding)
   const int moving = r.FN - idle_count;  // motions that are not idle spins
   const int declared = static_cast<int>(model.inputs.size());
   const int intended = model.inputs.empty() ? moving : declared;
@@ -247,7 +265,7 @@ Verdict sparse_network_verdict(const Model& model, const SparseNetworkResult& r,
     for (const auto& s : spin.screws) {
       if (static_cast<Index>(v.states.size()) >= kSparseVerdictStates) break;
       const std::string what = motion_text(embed(s, model.space), frame.scale);
-      VerdictState state{"extra motion", fmt::format("idle spin of body '{}': {}", body, what), {{"body", body, 1.0, what}}};
+      VerdictState state{"extra motion", idle_description(model, spin, what), {{"body", body, 1.0, what}}};
       std::vector<std::string> couplings;
       for (const auto& c : model.couplings)
         if (c.from == spin.body || c.to == spin.body) couplings.push_back(c.name);

@@ -49,9 +49,16 @@ struct Verdict {
   int intended_motions = 0;          ///< the motions the design is meant to have
   std::string intended_basis;        ///< how intended_motions was decided (declared inputs, FN less idle spins, ...)
   std::vector<DesignChange> changes;  ///< one minimal set of changes
-  bool changes_verified = false;      ///< the changed design was re-analysed and is exactly constrained
+  bool changes_verified = false;      ///< the changed design was re-analysed and passed every check of `verification`
   std::string becomes;                ///< what the changed design is, e.g. "exactly constrained, 1 motion"
   std::string note;                   ///< why no (verified) change is given, when that is so
+  /// What the re-analysis of the changed design compared with the original, one line each (e.g.
+  /// "base–platform: fij = 3 before and after, the same motion screws (3 translations)").
+  std::vector<std::string> verification;
+  /// Further verified minimal sets, after `changes` in the order fewest and simplest first.
+  std::vector<std::vector<DesignChange>> alternatives;
+  /// Change sets the search found but the re-analysis turned down, each "set: why".
+  std::vector<std::string> rejected;
   /// The generic answer beside the given one, one sentence per count, e.g. "FN = 1, all from the
   /// geometry of couplings A, B, C, D: generic FN = 0" (filled by the caller from
   /// report::network_generic_sentences / framework_generic_sentences; empty when not computed).

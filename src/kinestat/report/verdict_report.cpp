@@ -48,6 +48,15 @@ std::string vector_text(const std::vector<double>& v) {
   return fmt::format("({})", fmt::join(parts, ", "));
 }
 
+// Further verified change sets and turned-down sets listed in the text report; JSON lists them all.
+constexpr std::size_t kTextAlternatives = 2;
+
+// "T1a -> spherical" or "remove T3a": one change in a few words (for the alternatives).
+std::string short_change_text(const design::DesignChange& c) {
+  if (c.becomes == "removed") return fmt::format("remove {} {}", c.target_kind, printable_text(c.target));
+  return fmt::format("{} {} -> {}", c.target_kind, printable_text(c.target), printable_text(c.becomes));
+}
+
 // Every string of the verdict can carry a name from the model: each is printed through
 // io::printable_text.
 std::string change_text(const design::DesignChange& c) {
@@ -60,6 +69,26 @@ std::string change_text(const design::DesignChange& c) {
   if (!geometry.empty()) text += fmt::format(" ({})", fmt::join(geometry, ", "));
   if (!c.reason.empty()) text += ": " + printable_text(c.reason);
   return text;
+}
+
+Json changes_json(const std::vector<design::DesignChange>& list) {
+  Json changes = Json::array();
+  for (const auto& c : list) {
+    Json change;
+    change["action"] = c.action;
+    change["target_kind"] = c.target_kind;
+    change["target"] = c.target;
+    if (!c.from.empty()) change["from"] = c.from;
+    change["becomes"] = c.becomes;
+    if (!c.geometry.empty()) {
+      Json geometry = Json::object();
+      for (const auto& [key, value] : c.geometry) geometry[key] = value;
+      change["geometry"] = geometry;
+    }
+    change["reason"] = c.reason;
+    changes.push_back(change);
+  }
+  return changes;
 }
 
 }  // namespace
@@ -78,25 +107,16 @@ Json verdict_json(const design::Verdict& v) {
   for (const auto& s : v.states)
     states.push_back({{"kind", s.kind}, {"description", s.description}, {"participants", participants_json(s.participants)}});
   j["states"] = states;
-  Json changes = Json::array();
-  for (const auto& c : v.changes) {
-    Json change;
-    change["action"] = c.action;
-    change["target_kind"] = c.target_kind;
-    change["target"] = c.target;
-    if (!c.from.empty()) change["from"] = c.from;
-    change["becomes"] = c.becomes;
-    if (!c.geometry.empty()) {
-      Json geometry = Json::object();
-      for (const auto& [key, value] : c.geometry) geometry[key] = value;
-      change["geometry"] = geometry;
-    }
-    change["reason"] = c.reason;
-    changes.push_back(change);
-  }
-  j["changes"] = changes;
+  j["changes"] = changes_json(v.changes);
   j["changes_verified"] = v.changes_verified;
   j["becomes"] = v.becomes;
+  if (!v.verification.empty()) j["verification"] = v.verification;
+  if (!v.alternatives.empty()) {
+    Json alternatives = Json::array();
+    for (const auto& set : v.alternatives) alternatives.push_back(changes_json(set));
+    j["alternatives"] = alternatives;
+  }
+  if (!v.rejected.empty()) j["rejected"] = v.rejected;
   if (!v.note.empty()) j["note"] = v.note;
   if (!v.generic.empty()) j["special_geometry"] = v.generic;
   if (v.near_rank_change) j["near_rank_change"] = rank_evidence_number(*v.near_rank_change);
@@ -131,6 +151,19 @@ std::string verdict_text(const design::Verdict& v) {
     for (const auto& c : v.changes) t += "    - " + change_text(c) + "\n";
   }
   if (!v.becomes.empty() && !v.exactly_constrained) t += fmt::format("  becomes: {}\n", printable_text(v.becomes));
+  for (std::size_t i = 0; i < v.verification.size(); ++i)
+    t += fmt::format("  {} {}\n", i == 0 ? "checked:" : "        ", printable_text(v.verification[i]));
+  for (std::size_t i = 0; i < v.alternatives.size() && i < kTextAlternatives; ++i) {
+    std::vector<std::string> parts;
+    for (const auto& c : v.alternatives[i]) parts.push_back(short_change_text(c));
+    t += fmt::format("  or instead (verified): {}\n", fmt::join(parts, ", "));
+  }
+  if (v.alternatives.size() > kTextAlternatives)
+    t += fmt::format("  ... and {} more verified sets (see --json)\n", v.alternatives.size() - kTextAlternatives);
+  for (std::size_t i = 0; i < v.rejected.size() && i < kTextAlternatives; ++i)
+    t += fmt::format("  turned down: {}\n", printable_text(v.rejected[i]));
+  if (v.rejected.size() > kTextAlternatives)
+    t += fmt::format("  ... and {} more sets turned down (see --json)\n", v.rejected.size() - kTextAlternatives);
   if (!v.note.empty()) t += fmt::format("  note: {}\n", printable_text(v.note));
   t += "\n";
   return t;
