@@ -170,7 +170,7 @@ class _Result:
         title = _html.escape(f"kinestat report: {self.path}", quote=True)
         return (f'<iframe srcdoc="{_html.escape(self.html(), quote=True)}" title="{title}" '
                 f'sandbox="allow-scripts allow-downloads" loading="lazy" '
-                f'style="width: 100%; height: {int(height)}px; border: 1px solid #ccc;"></iframe>')
+                f'style="box-sizing: border-box; width: 100%; height: {int(height)}px; border: 1px solid #ccc;"></iframe>')
 
     def _repr_html_(self):
         # Jupyter shows the interactive report inline, isolated in its iframe; without the
