@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "cli/commands.hpp"
+#include "cli/option_checks.hpp"
 #include "kinestat/framework/framework_analysis.hpp"
 #include "kinestat/io/framework_reader.hpp"
 #include "kinestat/io/framework_yaml_writer.hpp"
@@ -41,6 +42,8 @@ framework::FrameworkModel read_framework_input(const std::string& path) {
 }
 
 int run(const ConvertOptions& options) {
+  // Before reading: the input must survive a typo that names it twice.
+  io::refuse_output_over_inputs(options.output, {options.input});
   const std::string out = extension(options.output);
   if (out != "dat" && out != "yaml" && out != "yml")
     throw io::InputError({options.output, 0, 0}, "unknown output format: name the output file .dat (SPACAR) or .yaml (kinestat)");
@@ -86,7 +89,7 @@ void register_convert(CLI::App& app, Action& action) {
   command->add_flag("--apply-proposal", options->apply_proposal,
                     "SPACAR output: write the proposed releases as RLSE / INPUTX lines instead of commented lines to paste");
   command->add_option("--tolerance", options->tolerance, "Relative rank tolerance for the proposal (as for analyze)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_finite_number());
   command->callback([options, &action] { action = [options] { return run(*options); }; });
 }
 

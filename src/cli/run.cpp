@@ -23,6 +23,7 @@ void emit(const CommonOptions& options, const std::string& text) {
     std::cout << text;
     std::cout.flush();
   } else {
+    io::refuse_output_over_inputs(options.output_path, {options.model_path});
     io::write_file_atomically(options.output_path, text);
   }
 }

@@ -97,6 +97,7 @@ class LineSink {
 int run_merge(const SweepOptions& options) {
   if (!options.shard.empty()) throw io::InputError({"--shard", 0, 0}, "--merge puts the lines of every shard together: drop --shard");
   if (options.inputs.empty()) throw io::InputError({"--merge", 0, 0}, "give the sweep output files to merge, e.g. --merge part-0.jsonl part-1.jsonl");
+  io::refuse_output_over_inputs(options.common.output_path, options.inputs);
   emit(options.common, io::merge_sweep_files(options.inputs));
   return 0;
 }
@@ -112,6 +113,11 @@ int sweep_action(const SweepOptions& options) {
   run.tolerance = options.common.tolerance;
   run.full = options.full;
   const io::SweepSpec spec = io::read_sweep_spec(options.inputs.front());
+  // Refused before the first variant runs: the output is written whole at the end.
+  std::vector<std::string> read_files = {options.inputs.front()};
+  if (!spec.model.empty()) read_files.push_back(io::spec_relative_path(options.inputs.front(), spec.model));
+  for (const std::string& variant : spec.variants) read_files.push_back(io::spec_relative_path(options.inputs.front(), variant));
+  io::refuse_output_over_inputs(options.common.output_path, read_files);
   const design::SweepShard& shard = run.shard;
   LineSink sink(options.common);
   ProgressBar progress(design::shard_size(spec.count, shard), sink.to_standard_output() && ::isatty(STDOUT_FILENO) == 1,

@@ -127,4 +127,18 @@ void write_file_atomically(const std::string& path, const std::string& content) 
   write_by_rename(path, target, nullptr, content);
 }
 
+void refuse_output_over_inputs(const std::string& output, const std::vector<std::string>& inputs) {
+  if (output.empty() || output == "-") return;
+  struct stat written {};
+  if (::stat(output.c_str(), &written) != 0 || !S_ISREG(written.st_mode)) return;
+  for (const std::string& input : inputs) {
+    struct stat read {};
+    if (input.empty() || input == "-" || ::stat(input.c_str(), &read) != 0) continue;
+    if (read.st_dev == written.st_dev && read.st_ino == written.st_ino)
+      throw InputError({output, 0, 0}, fmt::format("the output file is the input file '{}': refusing to replace it with the output; "
+                                                   "name another output file",
+                                                   input));
+  }
+}
+
 }  // namespace kinestat::io
