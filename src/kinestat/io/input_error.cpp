@@ -15,7 +15,7 @@ namespace {
 // so that echoing a 70,000-character name still gives a readable one-line message.
 constexpr std::size_t kMaxWordBytes = 120;
 constexpr std::size_t kKeptWordBytes = 60;
-constexpr std::size_t kMaxProblemBytes = 1000;
+constexpr std::size_t kMaxProblemBytes = 400;
 
 // The longest prefix of `text` of at most `bytes` bytes that ends on a UTF-8 character boundary.
 std::size_t utf8_prefix(std::string_view text, std::size_t bytes) {

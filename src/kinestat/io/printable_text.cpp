@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdint>
 
 namespace kinestat::io {
@@ -62,6 +63,18 @@ std::string printable_text(std::string_view text) {
     i += length;
   }
   return out;
+}
+
+std::string input_excerpt(std::string_view text) {
+  const std::size_t line_end = std::min(text.find_first_of("\r\n"), text.size());
+  std::size_t end = 0, characters = 0;
+  while (end < line_end && characters < kExcerptCharacters) {
+    const std::size_t length = utf8_character_length(text, end);
+    end += length == 0 ? 1 : length;
+    ++characters;
+  }
+  end = std::min(end, line_end);
+  return printable_text(text.substr(0, end)) + (end < text.size() ? "\u2026" : "");
 }
 
 }  // namespace kinestat::io

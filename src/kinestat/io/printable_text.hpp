@@ -17,6 +17,15 @@ namespace kinestat::io {
 /// A backslash stays as it is; the result is valid UTF-8 without control characters.
 std::string printable_text(std::string_view text);
 
+/// How many characters of the input a message may quote (io::input_excerpt).
+inline constexpr std::size_t kExcerptCharacters = 40;
+
+/// A short excerpt of input text for a message: its first line only, at most
+/// kExcerptCharacters characters, escaped as printable_text does, with "…" where it was cut. A
+/// message never carries more of a file than this, so naming the wrong file (a password file, a
+/// private key) does not print it.
+std::string input_excerpt(std::string_view text);
+
 /// The length in bytes (1-4) of the well-formed UTF-8 character (RFC 3629: no overlong forms,
 /// surrogates or code points above U+10FFFF) that starts at byte `i` of `text`, or 0 when the
 /// bytes there are not one.

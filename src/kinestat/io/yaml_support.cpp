@@ -499,7 +499,7 @@ class TreeBuilder {
 
 std::string describe(const TreeNode& node) {
   switch (node.kind()) {
-    case TreeNode::Kind::scalar: return fmt::format("'{}'", node.scalar());
+    case TreeNode::Kind::scalar: return fmt::format("'{}'", input_excerpt(node.scalar()));
     case TreeNode::Kind::sequence: return "a list";
     case TreeNode::Kind::map: return "a map";
     default: return "nothing";
@@ -835,7 +835,7 @@ void check_map_keys(const YamlFile& file, const TreeNode& map, std::string_view 
         allowed.end()) {
       std::string list;
       for (const auto& name : allowed) list += fmt::format("{}{}", list.empty() ? "" : ", ", std::string_view(name));
-      file.fail(key_node, fmt::format("unknown key '{}' in {}; expected one of: {}", key, what, list));
+      file.fail(key_node, fmt::format("unknown key '{}' in {}; expected one of: {}", input_excerpt(key), what, list));
     }
     bool duplicate = false;
     if (size <= kCompareDirectly) {
@@ -843,7 +843,7 @@ void check_map_keys(const YamlFile& file, const TreeNode& map, std::string_view 
     } else {
       duplicate = !seen.insert(key).second;
     }
-    if (duplicate) file.fail(key_node, fmt::format("duplicate key '{}' in {}", key, what));
+    if (duplicate) file.fail(key_node, fmt::format("duplicate key '{}' in {}", input_excerpt(key), what));
   }
 }
 
@@ -891,7 +891,7 @@ ExactNumber YamlFile::number(const TreeNode& node, std::string_view what) const 
       const bool underflow = result.value == 0.0 && sgn(*result.exact) != 0;
       if (!std::isfinite(result.value) || underflow) {
         fail(node, fmt::format("{} is out of range: '{}' is beyond what a double holds (about 1e-308 to 1e308)",
-                               what, text));
+                               what, input_excerpt(text)));
       }
       return result;
     }
@@ -900,19 +900,19 @@ ExactNumber YamlFile::number(const TreeNode& node, std::string_view what) const 
                              kMaxLiteralDigits));
     case LiteralProblem::exponent_too_large:
       fail(node, fmt::format("{} is out of range: '{}' is beyond what a double holds (about 1e-308 to 1e308)", what,
-                             text));
+                             input_excerpt(text)));
     case LiteralProblem::not_decimal: break;
   }
-  if (starts_with_prefix(text, "0x")) fail(node, fmt::format("{} is written in hexadecimal ('{}'): write it as a decimal number", what, text));
-  if (starts_with_prefix(text, "0o")) fail(node, fmt::format("{} is written in octal ('{}'): write it as a decimal number", what, text));
-  if (starts_with_prefix(text, "0b")) fail(node, fmt::format("{} is written in binary ('{}'): write it as a decimal number", what, text));
-  fail(node, fmt::format("{} must be a finite number, found '{}'", what, text));
+  if (starts_with_prefix(text, "0x")) fail(node, fmt::format("{} is written in hexadecimal ('{}'): write it as a decimal number", what, input_excerpt(text)));
+  if (starts_with_prefix(text, "0o")) fail(node, fmt::format("{} is written in octal ('{}'): write it as a decimal number", what, input_excerpt(text)));
+  if (starts_with_prefix(text, "0b")) fail(node, fmt::format("{} is written in binary ('{}'): write it as a decimal number", what, input_excerpt(text)));
+  fail(node, fmt::format("{} must be a finite number, found '{}'", what, input_excerpt(text)));
 }
 
 long long YamlFile::integer(const TreeNode& node, std::string_view what) const {
   const ExactNumber n = number(node, what);
   if (!n.exact || n.exact->get_den() != 1 || std::abs(n.value) > 1e15) {
-    fail(node, fmt::format("{} must be an integer, found '{}'", what, node.scalar()));
+    fail(node, fmt::format("{} must be an integer, found '{}'", what, input_excerpt(node.scalar())));
   }
   return static_cast<long long>(n.value);
 }
@@ -960,7 +960,7 @@ std::string model_kind(const YamlFile& file) {
   if (!kind.defined()) return "network";
   const std::string name = file.string(kind, "'kind'");
   if (name != "network" && name != "framework" && name != "structure") {
-    file.fail(kind, fmt::format("unknown kind '{}'; expected network, framework or structure", name));
+    file.fail(kind, fmt::format("unknown kind '{}'; expected network, framework or structure", input_excerpt(name)));
   }
   return name;
 }
