@@ -36,6 +36,9 @@ namespace kinestat::cli {
 
 namespace {
 
+// The largest --amplitude: a path of a thousand characteristic lengths (many turns of any crank).
+constexpr double kMaxTraceAmplitude = 1000.0;
+
 struct MoveOptions {
   CommonOptions common;
   long long mode = 0;
@@ -238,8 +241,10 @@ void register_move(CLI::App& app, Action& action) {
                              ->check(non_negative_whole_number());
   options->amplitude_option =
       command->add_option("--amplitude", options->amplitude,
-                          "With --mode: arc length to follow, as a fraction of the characteristic length; default 0.1")
-          ->check(positive_finite_number());
+                          "With --mode: arc length to follow, as a fraction of the characteristic length (at most 1000); "
+                          "default 0.1")
+          // Beyond a thousand model sizes a step no longer resolves the model: refused, not traced.
+          ->check(positive_finite_number() & CLI::Range(0.0, kMaxTraceAmplitude));
   options->steps_option = command->add_option("--steps", options->steps, "With --mode: predictor-corrector steps; default 20")
                               ->check(non_negative_whole_number() & CLI::Range(1LL, 100000LL));
   options->input_option = command->add_option("--input", options->inputs,

@@ -3,7 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <set>
 
 #include "kinestat/design/sweep_grid.hpp"
@@ -22,6 +24,27 @@ TEST(SweepGrid, RangeHitsBothEndsAndTheMiddleExactly) {
   // 0.1 to 0.3: the naive from + (to − from) would end at 0.30000000000000004.
   EXPECT_EQ(range_values(0.1, 0.3, 7).back(), 0.3);
   EXPECT_TRUE(range_values(0, 1, 0).empty());
+}
+
+// −1e308 to 1e308 in 4 steps: −1e308·3 overflows, yet every value lies between the ends.
+// By hand: −1e308·(3/4) + 1e308·(1/4) = −5e307, then 0, then 5e307 (each within an ulp).
+TEST(SweepGrid, EndsNearTheLargestDoubleGiveFiniteValues) {
+  const auto values = range_values(-1e308, 1e308, 4);
+  ASSERT_EQ(values.size(), 5u);
+  EXPECT_EQ(values.front(), -1e308);
+  EXPECT_DOUBLE_EQ(values[1], -5e307);
+  EXPECT_EQ(values[2], 0.0);
+  EXPECT_DOUBLE_EQ(values[3], 5e307);
+  EXPECT_EQ(values.back(), 1e308);
+  EXPECT_EQ(range_value(-1e308, 1e308, 2, 4), 0.0);
+  // Ends of one sign near the largest double: still finite, still between them.
+  const double largest = std::numeric_limits<double>::max();
+  for (long long k = 0; k <= 3; ++k) {
+    const double v = range_value(largest, largest / 2, k, 3);
+    EXPECT_TRUE(std::isfinite(v)) << k;
+    EXPECT_LE(v, largest);
+    EXPECT_GE(v, largest / 2);
+  }
 }
 
 TEST(SweepGrid, VariantsAreNumberedRowMajorFirstParameterSlowest) {

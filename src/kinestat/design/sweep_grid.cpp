@@ -3,20 +3,26 @@
 #include <fmt/format.h>
 
 #include <charconv>
+#include <cmath>
 #include <limits>
 
 namespace kinestat::design {
+
+double range_value(double from, double to, long long k, long long steps) {
+  if (k <= 0) return from;
+  if (k >= steps) return to;
+  const auto s = static_cast<double>(steps), t = static_cast<double>(k);
+  // The weighted form is exact at both ends, unlike from + (to − from)·k/steps; its products
+  // overflow only for ends near the largest double, where weights of at most 1 cannot.
+  const double weighted = (from * (s - t) + to * t) / s;
+  return std::isfinite(weighted) ? weighted : from * ((s - t) / s) + to * (t / s);
+}
 
 std::vector<double> range_values(double from, double to, long long steps) {
   std::vector<double> values;
   if (steps < 1 || steps > kMaxSweepSteps) return values;
   values.reserve(static_cast<std::size_t>(steps) + 1);
-  const auto s = static_cast<double>(steps);
-  for (long long k = 0; k <= steps; ++k) {
-    const auto t = static_cast<double>(k);
-    // The weighted form is exact at both ends (k = 0 and k = steps), unlike from + (to − from)·k/steps.
-    values.push_back(k == 0 ? from : k == steps ? to : (from * (s - t) + to * t) / s);
-  }
+  for (long long k = 0; k <= steps; ++k) values.push_back(range_value(from, to, k, steps));
   return values;
 }
 

@@ -17,9 +17,13 @@ inline constexpr std::uint64_t kMaxSweepVariants = 1'000'000'000'000ULL;
 /// Most values one ranged parameter may take (steps + 1).
 inline constexpr long long kMaxSweepSteps = 10'000'000;
 
-/// The `steps + 1` values from `from` to `to` in equal steps, value k = (from·(steps − k) +
-/// to·k) / steps, so the first is `from` and the last is `to` exactly (in the model's units).
-/// `steps` ≥ 1 and ≤ kMaxSweepSteps, `from` and `to` finite.
+/// Value k of `steps + 1` values from `from` to `to` in equal steps: (from·(steps − k) + to·k) /
+/// steps, so value 0 is `from` and value `steps` is `to` exactly (in the model's units); where
+/// that sum overflows a double (ends near ±1e308), from·((steps − k)/steps) + to·(k/steps),
+/// which cannot. `steps` ≥ 1, 0 ≤ k ≤ steps, `from` and `to` finite: the value is finite.
+double range_value(double from, double to, long long k, long long steps);
+/// The `steps + 1` values range_value(from, to, k, steps), k = 0 … steps. `steps` ≥ 1 and
+/// ≤ kMaxSweepSteps (else none), `from` and `to` finite.
 std::vector<double> range_values(double from, double to, long long steps);
 
 /// The number of variants of a grid whose parameters take `sizes[p]` values each (the product;

@@ -522,9 +522,26 @@ PositionPlan plan_positions(const network::Model& model, const structure::Struct
   return plan;
 }
 
-PositionResult solve_positions(const network::Model& model, const PositionPlan& plan, const std::vector<double>& values,
+namespace {
+
+// A revolute input far beyond one turn (1e20 rad) loses its angle in `pj − pi − value` and in
+// std::remainder by the double nearest 2π (the error grows as value × 2.4e-16). sin and cos
+// reduce their argument exactly, so the angle within one turn is atan2(sin, cos). Values of up
+// to a million turns keep their written value: the residuals lose at most 1e-9 rad there.
+constexpr double kExactlyReducedAngle = 2 * std::numbers::pi * 1e6;
+std::vector<double> within_one_turn(const network::Model& model, const PositionPlan& plan, std::vector<double> values) {
+  for (std::size_t i = 0; i < values.size(); ++i)
+    if (is_revolute(model.couplings[static_cast<std::size_t>(plan.drivers[i])]) && std::abs(values[i]) > kExactlyReducedAngle)
+      values[i] = std::atan2(std::sin(values[i]), std::cos(values[i]));
+  return values;
+}
+
+}  // namespace
+
+PositionResult solve_positions(const network::Model& model, const PositionPlan& plan, const std::vector<double>& given_values,
                                const std::vector<Pose>& start) {
-  if (values.size() != plan.drivers.size()) throw Error("one value per input is needed");
+  if (given_values.size() != plan.drivers.size()) throw Error("one value per input is needed");
+  const std::vector<double> values = within_one_turn(model, plan, given_values);
   PositionResult result;
   result.poses = start.size() == model.bodies.size() ? start : std::vector<Pose>(model.bodies.size());
   result.poses[static_cast<std::size_t>(plan.frame)] = Pose{};

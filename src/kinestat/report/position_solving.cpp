@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "kinestat/design/sweep_grid.hpp"
 #include "kinestat/io/input_error.hpp"
 #include "kinestat/io/network_structure.hpp"
 #include "kinestat/kinematics/position_solver.hpp"
@@ -46,7 +47,7 @@ PositionSweep solve_position_sweep(io::LoadedNetwork& loaded, const std::string&
   for (std::size_t s = 0; s < count; ++s) {
     std::vector<double> values;
     for (const auto& input : inputs) values.push_back(input.second);
-    if (sweep) values.push_back(sweep->from + (sweep->to - sweep->from) * static_cast<double>(s) / static_cast<double>(sweep->steps));
+    if (sweep) values.push_back(design::range_value(sweep->from, sweep->to, static_cast<long long>(s), sweep->steps));
     kinematics::PositionResult r = kinematics::solve_positions(loaded.model, plan, values, start);
     if (r.assembled) start = r.poses;  // Newton groups continue from the last configuration reached
     result.values.push_back(std::move(values));
