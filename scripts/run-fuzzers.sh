@@ -22,6 +22,7 @@ for harness in build/fuzz/fuzz/fuzz_*; do
     fuzz_sweep_spec) seeds="fuzz/seeds/sweep examples/sweeps" ;;
     fuzz_spacar_file) seeds="examples/spacar tests/importers/data" ;;
     fuzz_urdf_file | fuzz_sdformat_file | fuzz_mjcf_file) seeds="examples/robots tests/importers/data" ;;
+    fuzz_valid_models) seeds="" ;;  # the bytes are choices of a generator: any input is a model
     *) seeds="examples examples/json fuzz/seeds/model" ;;
   esac
   echo "== $name for ${seconds}s"

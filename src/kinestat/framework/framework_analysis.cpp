@@ -245,8 +245,9 @@ FrameworkResult analyse_framework(const FrameworkModel& model, const AnalysisOpt
     // One minimal set of releases: the rows a column-pivoted QR of D(c)ᵀ leaves out of a basis
     // of the row space; then, among the kept rows, the columns left out of a column basis are
     // the coordinates to constrain. Removing both leaves a square non-singular D(c).
-    const Eigen::MatrixXd weighted =
-        transposed * proposal_row_weights(result.m, fixed_rows, transposed.cwiseAbs().maxCoeff()).asDiagonal();
+    // D(c) may have no column (every node supported) or no row (no element): nothing to weigh.
+    const double largest_entry = transposed.size() > 0 ? transposed.cwiseAbs().maxCoeff() : 0.0;
+    const Eigen::MatrixXd weighted = transposed * proposal_row_weights(result.m, fixed_rows, largest_entry).asDiagonal();
     auto [kept_rows, released] = pivot_columns(weighted, rank);
     result.releases = released;
     Eigen::MatrixXd kept(static_cast<Eigen::Index>(kept_rows.size()), dense.cols());
