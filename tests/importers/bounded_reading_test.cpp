@@ -183,7 +183,7 @@ TEST(BoundedReading, SdformatAndMjcfBeyondTheirLibrariesLimitsAreRefusedEarly) {
       (void)io::parse_mjcf("big.xml", text);
       ADD_FAILURE() << "a model past the limit was read";
     } catch (const io::InputError& error) {
-      EXPECT_TRUE(has(error.what(), "the file has 10001 <body> elements; kinestat reads at most 10000")) << error.what();
+      EXPECT_TRUE(has(error.what(), "big.xml: error: the model has 10001 <body> elements; kinestat reads at most 10000")) << error.what();
     }
   }
 }

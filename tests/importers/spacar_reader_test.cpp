@@ -465,7 +465,7 @@ TEST(SpacarReader, ErrorsNameLineAndColumn) {
   EXPECT_EQ(error_of("X 1 0 0 nan\n"), "bad.dat:1:9: error: expected a coordinate (a finite number), found 'nan'");
   EXPECT_EQ(error_of("X 1 0 0 0\nX 3 1 0 0\nTRUSS 1 1 3\nCYLINDER 2 2 4\n"),
             "bad.dat:4:1: error: unsupported SPACAR keyword 'CYLINDER' in the kinematic part; kinestat reads X, BEAM, BEAMW, "
-            "TRUSS, HINGE, PINBODY, PLBEAM, PLTRUSS, PLHINGE, DYNE, RLSE, INPUTE, FIX and INPUTX up to END or HALT");
+            "TRUSS, HINGE, PINBODY, PLBEAM, PLTRUSS, PLHINGE, DYNE, RLSE, INPUTE, FIX, INPUTX and DYNX up to END or HALT");
   // Hinges and pin bodies: what kinestat cannot express is refused, never guessed.
   const std::string beams = "X 1 0 0 0\nX 3 1 0 0\nX 5 2 0 0\nBEAM 1 1 2 3 4\nBEAM 2 3 6 5 7\n";
   EXPECT_EQ(error_of(beams + "HINGE 3 4 6 0 1\n"),
@@ -513,7 +513,7 @@ TEST(SpacarReader, ErrorsNameLineAndColumn) {
   EXPECT_EQ(error_of("X 1 0 0 0\nX 3 1 0 0\nTRUSS 1 1 3\nFIX 1 2\nINPUTX 1 2\n"),
             "bad.dat:5:1: error: coordinate y of node 1 is both fixed (FIX) and prescribed (INPUTX)");
   EXPECT_EQ(error_of("X 1 0 0 0\nX\x01 3\n"),
-            "bad.dat:2:2: error: unexpected character: a SPACAR file holds ASCII keywords, numbers and '#' comments");
+            "bad.dat:2:2: error: unexpected character: a SPACAR file holds ASCII keywords, numbers and '#' or '%' comments");
   EXPECT_EQ(error_of("X 1 0 0 0\nX 3 1 0 0\nTRUSS 0 1 3\n"),
             "bad.dat:3:7: error: expected an element number (a whole number from 1 to 100000000), found '0'");
 }

@@ -2,21 +2,29 @@
 
 #include <fmt/format.h>
 
+#include "kinestat/io/text_file.hpp"
+
+#if KINESTAT_HAVE_MUJOCO && KINESTAT_HAVE_TINYXML2
+#include <mujoco/mujoco.h>
+#include <tinyxml2.h>
+
 #include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
 #include <memory>
 #include <regex>
+#include <set>
+#include <string_view>
 #include <unordered_map>
 #include <vector>
 
-#include "kinestat/io/text_file.hpp"
-
-#if KINESTAT_HAVE_MUJOCO
-#include <mujoco/mujoco.h>
+#include "kinestat/io/printable_text.hpp"
 #endif
 
 namespace kinestat::io {
 
-#if KINESTAT_HAVE_MUJOCO
+#if KINESTAT_HAVE_MUJOCO && KINESTAT_HAVE_TINYXML2
 
 namespace {
 
@@ -44,23 +52,295 @@ void collect_warning(const char* message) {
 /// an allocation fails, so a model asking for more is refused first.
 constexpr double kMaxDataBytes = 1 << 30;
 
+// MuJoCo 2.2.2's compiler takes time growing faster than the number of bodies (a flat model of
+// 10^4 hinged bodies: 2.4 s; 2 * 10^4: 13 s; 10^5: 131 s), so larger models are refused before it
+// starts.
+constexpr std::size_t kMaxMjcfBodies = 10000;
+
+// Attributes that hold numbers MuJoCo reads as doubles: "nan" or "inf" in one of them is
+// refused where it is written (MuJoCo 2.2.2 takes pos="nan" and puts the joint at the origin).
+bool numeric_attribute(std::string_view name) {
+  for (const char* numeric : {"pos", "quat", "axisangle", "xyaxes", "zaxis", "euler", "axis", "anchor", "fromto", "size", "range",
+                              "ref", "springref", "relpose", "data", "polycoef", "torquescale", "mass", "diaginertia",
+                              "fullinertia", "ipos", "iquat", "stiffness", "damping", "armature", "frictionloss", "margin",
+                              "gap", "solref", "solimp", "solreflimit", "solimplimit", "solreffriction", "solimpfriction",
+                              "friction", "springdamper", "gear", "lengthrange", "ctrlrange", "forcerange", "density", "scale"})
+    if (name == numeric) return true;
+  return false;
+}
+
+// Assets that point to files (meshes, textures, heightfields, skins) and materials (which
+// use textures): none has kinematic meaning, so none is ever read (issue 37).
+bool file_asset(std::string_view name) {
+  return name == "mesh" || name == "texture" || name == "hfield" || name == "skin" || name == "material";
+}
+
+/// An element of the document MuJoCo compiles, and where the user wrote it.
+struct Origin {
+  std::string file;
+  int line = 0;
+  int depth = 0;  ///< includes between the file given and this element's file
+};
+
+/// The MJCF document as kinestat hands it to MuJoCo: every <include file=> expanded in place
+/// (resolved as MuJoCo does, in the folder of the file given; each file once), numbers checked,
+/// and every asset that needs a file stripped (mesh geoms become small spheres: a geom has no
+/// kinematic meaning). Printed once; every line of the printed text and every name maps back to
+/// the file and line the user wrote, so MuJoCo's messages and the joints point there.
+class MjcfDocument {
+ public:
+  MjcfDocument(std::string path, const ImportOptions& options, bool folder_known)
+      : path_(std::move(path)), options_(options), folder_known_(folder_known) {}
+
+  /// Builds the document from the text of the file given. Throws InputError where a problem is.
+  void build(const std::string& text) {
+    if (folder_known_) {
+      std::error_code error;
+      const auto canonical = std::filesystem::weakly_canonical(path_, error);
+      folder_ = (error ? std::filesystem::path(path_) : canonical).parent_path().string();
+      included_.insert(error ? path_ : canonical.string());
+    }
+    total_bytes_ = text.size();
+    if (document_.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS)
+      throw InputError({path_, document_.ErrorLineNum(), 1}, fmt::format("malformed XML: {}", printable_text(document_.ErrorStr())));
+    tinyxml2::XMLElement* root = document_.RootElement();
+    if (!root || std::string_view(root->Name()) != "mujoco")
+      throw InputError({path_, root ? root->GetLineNum() : 1, 1}, "expected an MJCF model: a <mujoco> root element");
+    std::vector<tinyxml2::XMLElement*> stack{root};
+    std::size_t bodies = 0, stripped = 0;
+    std::vector<tinyxml2::XMLElement*> removed;
+    while (!stack.empty()) {
+      tinyxml2::XMLElement* e = stack.back();
+      stack.pop_back();
+      const std::string_view name = e->Name();
+      if (name == "include") {
+        for (tinyxml2::XMLElement* spliced : expand(e)) stack.push_back(spliced);
+        continue;
+      }
+      check_numbers(e);
+      if (name == "body") ++bodies;
+      const tinyxml2::XMLElement* parent = e->Parent() ? e->Parent()->ToElement() : nullptr;
+      if (file_asset(name) && parent && std::string_view(parent->Name()) == "asset") {
+        removed.push_back(e);
+        ++stripped;
+        continue;
+      }
+      if (name == "skin") {  // MuJoCo 2.2.2 keeps skins in <deformable> too
+        removed.push_back(e);
+        ++stripped;
+        continue;
+      }
+      strip_geometry(e);
+      for (tinyxml2::XMLElement* child = e->LastChildElement(); child; child = child->PreviousSiblingElement()) stack.push_back(child);
+    }
+    if (bodies > kMaxMjcfBodies)
+      throw InputError({path_, 0, 0}, fmt::format("the model has {} <body> elements; kinestat reads at most {} from an MJCF file, "
+                                                  "because MuJoCo 2.2.2's compiler takes time growing faster than their number "
+                                                  "(convert the model to URDF, which is read without this limit)",
+                                                  bodies, kMaxMjcfBodies));
+    for (tinyxml2::XMLElement* e : removed) e->Parent()->DeleteChild(e);
+    if (stripped > 0)
+      notices.push_back(fmt::format("{}: note: ignored {} mesh, texture, heightfield, skin and material asset(s), and mesh geoms "
+                                    "read as small spheres: geometry has no kinematic meaning, so no asset file is read",
+                                    path_, stripped));
+    read_welds(root);
+    print();
+  }
+
+  /// The text MuJoCo compiles.
+  const std::string& text() const { return printed_; }
+
+  /// Where line `line` of the printed text was written (0: the file given, no line).
+  SourceLocation at_printed_line(int line) const {
+    if (line <= 0 || printed_lines_.empty()) return {path_, 0, 0};
+    const Origin& o = printed_lines_[std::min<std::size_t>(static_cast<std::size_t>(line), printed_lines_.size() - 1)];
+    return {o.file.empty() ? path_ : o.file, o.line, o.line > 0 ? 1 : 0};
+  }
+
+  /// Where the first element named `name` was written.
+  SourceLocation where_named(const std::string& name) const {
+    const auto found = named_.find(name);
+    if (found == named_.end()) return {path_, 0, 0};
+    return {found->second.file, found->second.line, found->second.line > 0 ? 1 : 0};
+  }
+
+  /// For each equality constraint (MuJoCo's order): a weld with torquescale 0, which constrains
+  /// the position of a point only and so is a connect (MuJoCo's reference).
+  std::vector<bool> weld_as_connect;
+  std::vector<std::string> notices;
+
+ private:
+  Origin origin(const tinyxml2::XMLElement* e) const {
+    const auto found = origins_.find(e);
+    return found != origins_.end() ? found->second : Origin{path_, e->GetLineNum(), 0};
+  }
+
+  SourceLocation where(const tinyxml2::XMLElement* e) const {
+    const Origin o = origin(e);
+    return {o.file, o.line, 1};
+  }
+
+  void check_numbers(const tinyxml2::XMLElement* e) const {
+    for (const tinyxml2::XMLAttribute* a = e->FirstAttribute(); a; a = a->Next()) {
+      if (!numeric_attribute(a->Name())) continue;
+      const char* p = a->Value();
+      while (*p) {
+        char* end = nullptr;
+        const double x = std::strtod(p, &end);
+        if (end == p) break;  // not a number: MuJoCo says so
+        if (!std::isfinite(x))
+          throw InputError(where(e), fmt::format("attribute {}=\"{}\" of <{}>: every number must be finite", a->Name(),
+                                                 printable_text(std::string_view(a->Value()).substr(0, 60)), e->Name()));
+        p = end;
+      }
+    }
+  }
+
+  // A geom that shows a mesh or a heightfield becomes a small sphere (in <default> classes too),
+  // and materials are dropped everywhere: what they name is stripped.
+  static void strip_geometry(tinyxml2::XMLElement* e) {
+    e->DeleteAttribute("material");
+    if (std::string_view(e->Name()) != "geom") return;
+    const char* type = e->Attribute("type");
+    const bool shaped = e->Attribute("mesh") || e->Attribute("hfield") ||
+                        (type && (std::string_view(type) == "mesh" || std::string_view(type) == "hfield" || std::string_view(type) == "sdf"));
+    if (!shaped) return;
+    e->DeleteAttribute("mesh");
+    e->DeleteAttribute("hfield");
+    e->DeleteAttribute("fromto");
+    e->SetAttribute("type", "sphere");
+    e->SetAttribute("size", "0.01");
+  }
+
+  // <include file="..."/> -> the children of the included file's <mujoco>, in its place.
+  std::vector<tinyxml2::XMLElement*> expand(tinyxml2::XMLElement* include) {
+    const SourceLocation at = where(include);
+    const int depth = origin(include).depth + 1;
+    const char* written_c = include->Attribute("file");
+    if (!written_c || !*written_c) throw InputError(at, "<include> needs a 'file' attribute");
+    const std::string written = written_c;
+    if (!folder_known_) throw InputError(at, "an <include> is resolved in the model's folder: read the model from its file, not from text");
+    if (depth > kMaxIncludeDepth)
+      throw InputError(at, fmt::format("includes nested more than {} files deep; kinestat stops there", kMaxIncludeDepth));
+    // MuJoCo resolves an include in the folder of the file given, whichever file holds it.
+    const std::filesystem::path target = std::filesystem::path(written).is_absolute() ? std::filesystem::path(written)
+                                                                                      : std::filesystem::path(folder_) / written;
+    std::error_code error;
+    if (!std::filesystem::exists(target, error))
+      throw InputError(at, fmt::format("the included file '{}' is not found in the model's folder (looked for {}); kinestat never "
+                                       "looks in the working directory", printable_text(written),
+                                       printable_text(target.lexically_normal().string())));
+    const std::string canonical = allowed_include(target.string(), folder_, options_, at, written);
+    if (!included_.insert(canonical).second)
+      throw InputError(at, fmt::format("'{}' is {}, which is already included: MuJoCo includes a file once (a file that includes "
+                                       "itself never ends)", printable_text(written), printable_text(canonical)));
+    const std::string text = read_text_file(canonical);
+    total_bytes_ += text.size();
+    if (total_bytes_ > kMaxTextFileBytes)
+      throw InputError(at, fmt::format("with its includes the model is larger than the {} MiB limit on model files", kMaxTextFileBytes >> 20));
+    tinyxml2::XMLDocument& part = *parts_.emplace_back(std::make_unique<tinyxml2::XMLDocument>());
+    if (part.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS)
+      throw InputError({canonical, part.ErrorLineNum(), 1}, fmt::format("malformed XML: {}", printable_text(part.ErrorStr())));
+    const tinyxml2::XMLElement* root = part.RootElement();
+    if (!root || std::string_view(root->Name()) != "mujoco")
+      throw InputError({canonical, root ? root->GetLineNum() : 1, 1}, "an included MJCF file has a <mujoco> root element");
+    // Clones of the included elements, each remembered with its own file and line.
+    tinyxml2::XMLNode* parent = include->Parent();
+    tinyxml2::XMLNode* after = include;
+    std::vector<tinyxml2::XMLElement*> spliced;
+    for (const tinyxml2::XMLElement* child = root->FirstChildElement(); child; child = child->NextSiblingElement()) {
+      tinyxml2::XMLElement* copy = clone(child, canonical, depth);
+      parent->InsertAfterChild(after, copy);
+      after = copy;
+      spliced.push_back(copy);
+    }
+    parent->DeleteChild(include);
+    return spliced;
+  }
+
+  tinyxml2::XMLElement* clone(const tinyxml2::XMLElement* source, const std::string& file, int depth) {
+    tinyxml2::XMLElement* top = source->ShallowClone(&document_)->ToElement();
+    std::vector<std::pair<const tinyxml2::XMLNode*, tinyxml2::XMLNode*>> stack{{source, top}};
+    while (!stack.empty()) {
+      const auto [from, to] = stack.back();
+      stack.pop_back();
+      if (from->ToElement()) origins_[to->ToElement()] = {file, from->GetLineNum(), depth};
+      for (const tinyxml2::XMLNode* child = from->FirstChild(); child; child = child->NextSibling()) {
+        if (child->ToComment()) continue;
+        tinyxml2::XMLNode* copy = child->ShallowClone(&document_);
+        to->InsertEndChild(copy);
+        stack.push_back({child, copy});
+      }
+    }
+    return top;
+  }
+
+  void read_welds(const tinyxml2::XMLElement* root) {
+    for (const tinyxml2::XMLElement* equality = root->FirstChildElement("equality"); equality;
+         equality = equality->NextSiblingElement("equality"))
+      for (const tinyxml2::XMLElement* e = equality->FirstChildElement(); e; e = e->NextSiblingElement()) {
+        const char* scale = e->Attribute("torquescale");
+        weld_as_connect.push_back(std::string_view(e->Name()) == "weld" && scale && std::strtod(scale, nullptr) == 0.0);
+      }
+  }
+
+  // Prints the document, reads the print back and walks both element trees side by side: each
+  // printed line gets the place its element was written, and each name its first element.
+  void print() {
+    tinyxml2::XMLPrinter printer;
+    document_.Print(&printer);
+    printed_.assign(printer.CStr(), static_cast<std::size_t>(std::max(printer.CStrSize() - 1, 0)));
+    tinyxml2::XMLDocument again;
+    again.Parse(printed_.data(), printed_.size());
+    printed_lines_.assign(static_cast<std::size_t>(std::count(printed_.begin(), printed_.end(), '\n')) + 2, Origin{});
+    std::vector<std::pair<const tinyxml2::XMLElement*, const tinyxml2::XMLElement*>> stack{{document_.RootElement(), again.RootElement()}};
+    while (!stack.empty()) {
+      const auto [original, copy] = stack.back();
+      stack.pop_back();
+      if (!original || !copy) continue;
+      const Origin o = origin(original);
+      Origin& line = printed_lines_[std::min<std::size_t>(static_cast<std::size_t>(copy->GetLineNum()), printed_lines_.size() - 1)];
+      if (line.line == 0) line = o;
+      if (const char* name = original->Attribute("name")) named_.emplace(name, o);
+      for (auto [a, b] = std::pair{original->LastChildElement(), copy->LastChildElement()}; a && b;
+           a = a->PreviousSiblingElement(), b = b->PreviousSiblingElement())
+        stack.push_back({a, b});
+    }
+    for (std::size_t k = 1; k < printed_lines_.size(); ++k)
+      if (printed_lines_[k].line == 0) printed_lines_[k] = printed_lines_[k - 1];
+  }
+
+  std::string path_;
+  ImportOptions options_;
+  bool folder_known_;
+  std::string folder_;
+  std::set<std::string> included_;  ///< canonical paths: MuJoCo includes a file once
+  std::size_t total_bytes_ = 0;
+  tinyxml2::XMLDocument document_;
+  std::vector<std::unique_ptr<tinyxml2::XMLDocument>> parts_;
+  std::unordered_map<const tinyxml2::XMLElement*, Origin> origins_;  ///< elements from included files
+  std::string printed_;
+  std::vector<Origin> printed_lines_;
+  std::unordered_map<std::string, Origin> named_;
+};
+
 class MjcfReader {
  public:
-  MjcfReader(std::string path, std::string text) : path_(std::move(path)), text_(std::move(text)) {}
-  MjcfReader(const MjcfReader&) = delete;  // lines_ views text_
-  MjcfReader& operator=(const MjcfReader&) = delete;
+  MjcfReader(std::string path, const MjcfDocument& document) : path_(std::move(path)), document_(document) {}
 
   ImportedNetwork read(mjModel* raw, const char* error) {
     if (!raw) {
-      // MuJoCo's messages end with "Element 'x', line N" (sometimes a column too).
+      // MuJoCo's messages end with "Element 'x', line N" (sometimes a column too), a line of the
+      // printed document: it is mapped back to the file (an included one) and line written.
       std::string message = error;
       std::smatch match;
-      int line = 0, column = 0;
-      if (std::regex_search(message, match, std::regex("line (\\d+)"))) line = std::stoi(match[1]);
-      if (std::regex_search(message, match, std::regex("column (\\d+)"))) column = std::stoi(match[1]);
+      int line = 0;
+      if (std::regex_search(message, match, std::regex("line (\\d{1,9})"))) line = std::stoi(match[1]);
+      message = std::regex_replace(message, std::regex(",? ?line \\d+(, column \\d+)?"), "");
       for (char& c : message)
-        if (c == '\n') c = ' ';
-      throw InputError({path_, line, line ? std::max(column, 1) : 0}, "MuJoCo: " + message);
+        if (c == '\n' || c == '\r') c = ' ';
+      while (!message.empty() && message.back() == ' ') message.pop_back();
+      throw InputError(document_.at_printed_line(line), "MuJoCo: " + printable_text(message));
     }
     const std::unique_ptr<mjModel, ModelDeleter> model(raw);
     const mjModel* m = model.get();
@@ -106,7 +386,7 @@ class MjcfReader {
         from = to;
       }
     }
-    std::string ignored;
+    std::string ignored, welds_as_connects;
     for (int e = 0; e < m->neq; ++e) {
       const std::string eq = name(m, mjOBJ_EQUALITY, e, "equality" + std::to_string(e));
       const int type = m->eq_type[e];
@@ -120,7 +400,17 @@ class MjcfReader {
       }
       const int b1 = m->eq_obj1id[e], b2 = m->eq_obj2id[e];
       JointGeometry g;
-      if (type == mjEQ_CONNECT) {
+      const bool point_only = type == mjEQ_WELD && static_cast<std::size_t>(e) < document_.weld_as_connect.size() &&
+                              document_.weld_as_connect[static_cast<std::size_t>(e)];
+      if (point_only) {
+        // A weld with torquescale 0 holds a point of body 2 (its anchor, in body 2's frame: the
+        // first three numbers of a weld's eq_data) in place on body 1 and lets it turn.
+        const mjtNum* local = m->eq_data + mjNEQDATA * e;
+        const mjtNum* x = d->xpos + 3 * b2;
+        const mjtNum* r = d->xmat + 9 * b2;
+        for (int i = 0; i < 3; ++i) g.point(i) = x[i] + r[3 * i] * local[0] + r[3 * i + 1] * local[1] + r[3 * i + 2] * local[2];
+        welds_as_connects += (welds_as_connects.empty() ? "" : ", ") + eq;
+      } else if (type == mjEQ_CONNECT) {
         // The anchor is given in body 1's frame.
         const mjtNum* local = m->eq_data + mjNEQDATA * e;
         const mjtNum* x = d->xpos + 3 * b1;
@@ -129,10 +419,13 @@ class MjcfReader {
       } else {
         g.point = vec(d->xpos + 3 * b1);
       }
-      builder.couple(eq, type == mjEQ_CONNECT ? screw::CouplingType::spherical : screw::CouplingType::rigid, body_name(m, b1),
-                     body_name(m, b2), g, locate(eq));
+      builder.couple(eq, type == mjEQ_CONNECT || point_only ? screw::CouplingType::spherical : screw::CouplingType::rigid,
+                     body_name(m, b1), body_name(m, b2), g, locate(eq));
     }
-    ImportedNetwork out{builder.finish(), {}};
+    ImportedNetwork out{builder.finish(), document_.notices};
+    if (!welds_as_connects.empty())
+      out.notices.push_back(fmt::format("{}: note: weld(s) {} with torquescale 0 read as connect (a spherical coupling): MuJoCo "
+                                        "then constrains the position only", path_, welds_as_connects));
     for (const std::string& w : warnings_) out.notices.push_back(fmt::format("{}: note: MuJoCo: {}", path_, w));
     if (!ignored.empty())
       out.notices.push_back(fmt::format("{}: note: equality constraint(s) {} ignored: only active connect and weld "
@@ -150,34 +443,11 @@ class MjcfReader {
 
   static std::string body_name(const mjModel* m, int b) { return name(m, mjOBJ_BODY, b, b == 0 ? "world" : "body" + std::to_string(b)); }
 
-  // MuJoCo keeps no file positions: the element is found by its name in the text. The first
-  // place of every name="..." is indexed once, so that locating every joint stays linear.
-  SourceLocation locate(const std::string& object) {
-    if (!names_indexed_) index_names();
-    const auto found = name_offsets_.find(object);
-    if (found == name_offsets_.end()) return {path_, 0, 0};
-    const std::size_t open = text_.rfind('<', found->second);
-    const auto [line, column] = lines_.position(open == std::string::npos ? found->second : open);
-    return {path_, line, column};
-  }
-
-  void index_names() {
-    names_indexed_ = true;
-    for (std::size_t at = text_.find("name="); at != std::string::npos; at = text_.find("name=", at + 5)) {
-      if (at == 0 || !std::isspace(static_cast<unsigned char>(text_[at - 1])) || at + 5 >= text_.size()) continue;
-      const char quote = text_[at + 5];
-      if (quote != '"' && quote != '\'') continue;
-      const std::size_t end = text_.find(quote, at + 6);
-      if (end == std::string::npos) break;
-      name_offsets_.emplace(text_.substr(at + 6, end - at - 6), at);
-    }
-  }
+  // MuJoCo keeps no file positions: the element is found by its name, where it was written.
+  SourceLocation locate(const std::string& object) const { return document_.where_named(object); }
 
   std::string path_;
-  std::string text_;
-  LineIndex lines_{text_};
-  bool names_indexed_ = false;
-  std::unordered_map<std::string, std::size_t> name_offsets_;  ///< name -> offset of its first name="..."
+  const MjcfDocument& document_;
 
  public:
   std::vector<std::string> warnings_;
@@ -192,68 +462,56 @@ mjModel* load(const char* file, const mjVFS* vfs, char (&error)[1024], MjcfReade
   return m;
 }
 
-// MuJoCo 2.2.2's compiler takes time growing faster than the number of bodies (a flat model of
-// 10^4 hinged bodies: 2.4 s; 2 * 10^4: 13 s; 10^5: 131 s), so larger models are refused before it
-// starts. Counted on the text: a "<body" that is not "<body" inside another word.
-constexpr std::size_t kMaxMjcfBodies = 10000;
-
-void refuse_large(const std::string& path, const std::string& text) {
-  std::size_t bodies = 0;
-  for (std::size_t at = text.find("<body"); at != std::string::npos; at = text.find("<body", at + 5)) {
-    const char next = at + 5 < text.size() ? text[at + 5] : '>';
-    if (next == '>' || next == '/' || std::isspace(static_cast<unsigned char>(next))) ++bodies;
-  }
-  if (bodies > kMaxMjcfBodies)
-    throw InputError({path, 0, 0}, fmt::format("the file has {} <body> elements; kinestat reads at most {} from an MJCF file, "
-                                               "because MuJoCo 2.2.2's compiler takes time growing faster than their number "
-                                               "(convert the model to URDF, which is read without this limit)",
-                                               bodies, kMaxMjcfBodies));
-}
-
 // MuJoCo ends the process (mju_error, not an error message) on an empty file, and libmujoco
 // 2.2.2 crashes on some malformed URDF, which it also reads: only an MJCF root reaches it (fuzzer).
 void refuse_empty(const std::string& path, const std::string& text) {
   if (text.empty()) throw InputError({path, 0, 0}, "the file is empty: expected an MJCF model (<mujoco>)");
   if (xml_root_name(text) != "mujoco") throw InputError({path, 1, 1}, "expected an MJCF model: a <mujoco> root element");
-  refuse_large(path, text);
 }
 
 }  // namespace
 
 bool mjcf_reader_built_in() { return true; }
 
-ImportedNetwork read_mjcf(const std::string& path) {
-  const std::string text = read_text_file(path);
-  refuse_empty(path, text);
-  MjcfReader reader(path, text);
-  char error[1024] = "";
-  mjModel* m = load(path.c_str(), nullptr, error, reader);
-  return reader.read(m, error);
-}
+namespace {
 
-ImportedNetwork parse_mjcf(const std::string& path, const std::string& text) {
+// The document built (includes, checks, assets stripped) and compiled by MuJoCo from memory: it
+// reads no file of its own.
+ImportedNetwork compile(const std::string& path, const std::string& text, const ImportOptions& options, bool folder_known) {
   refuse_empty(path, text);
+  MjcfDocument document(path, options, folder_known);
+  document.build(text);
+  const std::string& printed = document.text();
   const std::unique_ptr<mjVFS, VfsDeleter> vfs(new mjVFS);
   mj_defaultVFS(vfs.get());
-  if (mj_makeEmptyFileVFS(vfs.get(), "model.xml", static_cast<int>(text.size())) != 0)
+  if (mj_makeEmptyFileVFS(vfs.get(), "model.xml", static_cast<int>(printed.size())) != 0)
     throw InputError({path, 0, 0}, "MuJoCo: cannot hold the model in memory");
   const int index = mj_findFileVFS(vfs.get(), "model.xml");
-  std::copy(text.begin(), text.end(), static_cast<char*>(vfs->filedata[index]));
-  MjcfReader reader(path, text);
+  std::copy(printed.begin(), printed.end(), static_cast<char*>(vfs->filedata[index]));
+  MjcfReader reader(path, document);
   char error[1024] = "";
   mjModel* m = load("model.xml", vfs.get(), error, reader);
   return reader.read(m, error);
 }
 
+}  // namespace
+
+ImportedNetwork read_mjcf(const std::string& path, const ImportOptions& options) {
+  return compile(path, read_text_file(path), options, true);
+}
+
+ImportedNetwork parse_mjcf(const std::string& path, const std::string& text) { return compile(path, text, {}, false); }
+
 #else
 
 bool mjcf_reader_built_in() { return false; }
 
-ImportedNetwork read_mjcf(const std::string& path) {
-  throw InputError({path, 0, 0}, "MJCF is not built in: rebuild kinestat with libmujoco-dev installed (docs/formats.md)");
+ImportedNetwork read_mjcf(const std::string& path, const ImportOptions&) {
+  throw InputError({path, 0, 0}, "MJCF is not built in: rebuild kinestat with libmujoco-dev and libtinyxml2-dev installed "
+                                 "(docs/formats.md)");
 }
 
-ImportedNetwork parse_mjcf(const std::string& path, const std::string&) { return read_mjcf(path); }
+ImportedNetwork parse_mjcf(const std::string& path, const std::string&) { return read_mjcf(path, {}); }
 
 #endif
 

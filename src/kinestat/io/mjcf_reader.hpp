@@ -14,10 +14,16 @@ namespace kinestat::io {
 /// True when this kinestat was built with libmujoco.
 bool mjcf_reader_built_in();
 
-/// Reads the MJCF file at `path` (included files and assets resolved next to it).
-ImportedNetwork read_mjcf(const std::string& path);
+/// Reads the MJCF file at `path`. Each <include file=> is resolved as MuJoCo does, in the folder
+/// of `path` (never the working directory), at most 16 deep and each file once; outside that
+/// folder only when `options` allow it. Meshes, textures, heightfields, skins and materials are
+/// never read: they are stripped before MuJoCo compiles the model (one notice says so). Errors
+/// (MuJoCo's included) are InputErrors at file:line:column of the element, in the included file
+/// where it is; a number that is not finite is refused where it is written.
+ImportedNetwork read_mjcf(const std::string& path, const ImportOptions& options = {});
 
-/// Reads MJCF `text` that came from `path` (used in messages only; no included files).
+/// Reads MJCF `text` that came from `path` (used in messages only): without a folder, a text with
+/// an <include> is refused.
 ImportedNetwork parse_mjcf(const std::string& path, const std::string& text);
 
 }  // namespace kinestat::io

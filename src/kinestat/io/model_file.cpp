@@ -41,7 +41,7 @@ std::string_view kind_name(ModelKind kind) {
   return "network";
 }
 
-ModelFile read_model_file(const std::string& path) {
+ModelFile read_model_file(const std::string& path, const ImportOptions& options) {
   const ModelFormat format = model_format(path);
   if (format == ModelFormat::kinestat) return read_parsed(YamlFile::load(path));
   ModelFile model;
@@ -55,8 +55,8 @@ ModelFile read_model_file(const std::string& path) {
     return model;
   }
   ImportedNetwork imported = format == ModelFormat::urdf       ? read_urdf(path)
-                             : format == ModelFormat::sdformat ? read_sdformat(path)
-                                                               : read_mjcf(path);
+                             : format == ModelFormat::sdformat ? read_sdformat(path, options)
+                                                               : read_mjcf(path, options);
   model.kind = ModelKind::network;
   model.network = std::move(imported.loaded);
   model.notices = std::move(imported.notices);

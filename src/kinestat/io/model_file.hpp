@@ -12,6 +12,7 @@
 #include "kinestat/io/input_error.hpp"
 #include "kinestat/io/loaded_network.hpp"
 #include "kinestat/io/model_format.hpp"
+#include "kinestat/io/network_import.hpp"
 #include "kinestat/structure/structure_model.hpp"
 
 namespace kinestat::io {
@@ -40,8 +41,9 @@ struct ModelFile {
 /// Reads the model file at `path` in its format (model_format: kinestat YAML / JSON, SPACAR,
 /// URDF, SDFormat or MJCF, the last three when built in). Throws InputError naming file, line
 /// and column for anything that is not a valid model (the message the command prints before
-/// exiting 2).
-ModelFile read_model_file(const std::string& path);
+/// exiting 2). `options`: what the URDF, SDFormat and MJCF readers may read besides `path`
+/// (files included from outside its folder).
+ModelFile read_model_file(const std::string& path, const ImportOptions& options = {});
 
 /// Reads a kinestat YAML / JSON model from `text`; `path` names it in error messages.
 ModelFile parse_model_text(const std::string& path, const std::string& text);

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <system_error>
 
 #include "kinestat/io/printable_text.hpp"
 #include "kinestat/io/yaml_support.hpp"
@@ -23,6 +25,23 @@ void require_printable(const char* what, const std::string& name, const SourceLo
                                         what, name));
 }
 }  // namespace
+
+std::string allowed_include(const std::string& target, const std::string& folder, const ImportOptions& options,
+                            const SourceLocation& where, const std::string& written) {
+  std::error_code error;
+  const std::filesystem::path canonical = std::filesystem::canonical(target, error);
+  if (error) throw InputError(where, fmt::format("cannot read the included file '{}': {}", printable_text(written), error.message()));
+  const std::string text = canonical.string();
+  // Compared after links are resolved, so that a link inside the folder cannot lead out of it.
+  const bool inside = text.size() > folder.size() && text.compare(0, folder.size(), folder) == 0 &&
+                      (folder.back() == '/' || text[folder.size()] == '/');
+  if (!inside && !options.allow_includes_outside_folder)
+    throw InputError(where, fmt::format("the include '{}' is {}, outside the model's folder {}: kinestat reads included files "
+                                        "outside that folder only when the user allows it (kinestat's "
+                                        "--allow-outside-includes)",
+                                        printable_text(written), printable_text(text), printable_text(folder)));
+  return text;
+}
 
 NetworkBuilder::NetworkBuilder(std::string path, std::string name, std::string units) : path_(std::move(path)) {
   require_printable("model", name, {path_, 0, 0});
@@ -57,7 +76,7 @@ screw::Vec3 NetworkBuilder::exact(const Eigen::Vector3d& v) {
       while (text.back() == '0') text.pop_back();
       if (text.back() == '.') text.pop_back();
     }
-    if (text == "-0") text = "0";
+    if (text == "-0") text.erase(0, 1);  // "0" (erase, not assignment: GCC 12 warns wrongly of overlapping copies)
     // A component that still has 12 significant digits was a genuinely long number (0.8660254…),
     // not a short decimal with rounding noise: such models are analysed in floating point.
     const int digits = significant_digits(text);

@@ -24,6 +24,24 @@ struct ImportedNetwork {
   std::vector<std::string> notices;
 };
 
+/// What the readers of other programs' formats may read besides the file given.
+struct ImportOptions {
+  /// Read an included file (SDFormat <include><uri>, MJCF <include file=>) that lies outside the
+  /// folder of the file given and its subfolders. Off by default: a model cannot make kinestat
+  /// read files elsewhere (/etc, a home folder) unless the user allows it.
+  bool allow_includes_outside_folder = false;
+};
+
+/// Deepest chain of includes read (a file that includes a file that includes ...).
+inline constexpr int kMaxIncludeDepth = 16;
+
+/// The canonical path of included file `target` (a file that exists), after checking that it
+/// lies inside `folder` (the canonical folder of the model file given) unless `options` allow
+/// files outside it. `written` is the include as written in the file, for the message; throws
+/// InputError at `where` when the file is outside and not allowed.
+std::string allowed_include(const std::string& target, const std::string& folder, const ImportOptions& options,
+                            const SourceLocation& where, const std::string& written);
+
 /// Geometry of one joint in the world frame (only what its type uses need be set).
 struct JointGeometry {
   Eigen::Vector3d point = Eigen::Vector3d::Zero();

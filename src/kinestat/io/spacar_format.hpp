@@ -35,10 +35,14 @@ inline bool is_role_keyword(std::string_view keyword) {
   return keyword == "DYNE" || keyword == "RLSE" || keyword == "INPUTE" || keyword == "FIX" || keyword == "INPUTX";
 }
 
+/// Keywords of SPACAR's dynamic analysis allowed in the kinematic part: DYNX (the nodal
+/// coordinates that are dynamic degrees of freedom). Read and checked; they fix nothing.
+inline bool is_dynamic_keyword(std::string_view keyword) { return keyword == "DYNX"; }
+
 /// Keywords allowed in the kinematic part that only control SPACAR's own output.
 inline bool is_output_keyword(std::string_view keyword) { return keyword == "OUTLEVEL"; }
 
 inline constexpr std::string_view kSupportedKeywords =
-    "X, BEAM, BEAMW, TRUSS, HINGE, PINBODY, PLBEAM, PLTRUSS, PLHINGE, DYNE, RLSE, INPUTE, FIX and INPUTX";
+    "X, BEAM, BEAMW, TRUSS, HINGE, PINBODY, PLBEAM, PLTRUSS, PLHINGE, DYNE, RLSE, INPUTE, FIX, INPUTX and DYNX";
 
 }  // namespace kinestat::io::spacar

@@ -106,20 +106,20 @@ class SpacarReader {
       std::vector<Token> tokens;
       for (std::size_t i = start; i < stop;) {
         const unsigned char c = static_cast<unsigned char>(text[i]);
-        if (c == '#') break;  // comment to the end of the line
+        if (c == '#' || c == '%') break;  // comment to the end of the line ('%' as in SPACAR's own files)
         if (c == ' ' || c == '\t' || c == '\r' || c == ',') {
           ++i;
           continue;
         }
         if (c < 0x20 || c >= 0x7f)
           throw InputError({path_, line, static_cast<int>(i - start) + 1},
-                           "unexpected character: a SPACAR file holds ASCII keywords, numbers and '#' comments");
+                           "unexpected character: a SPACAR file holds ASCII keywords, numbers and '#' or '%' comments");
         std::size_t j = i;
-        while (j < stop && text[j] != ' ' && text[j] != '\t' && text[j] != '\r' && text[j] != ',' && text[j] != '#') {
+        while (j < stop && text[j] != ' ' && text[j] != '\t' && text[j] != '\r' && text[j] != ',' && text[j] != '#' && text[j] != '%') {
           const unsigned char d = static_cast<unsigned char>(text[j]);
           if (d < 0x20 || d >= 0x7f)
             throw InputError({path_, line, static_cast<int>(j - start) + 1},
-                             "unexpected character: a SPACAR file holds ASCII keywords, numbers and '#' comments");
+                             "unexpected character: a SPACAR file holds ASCII keywords, numbers and '#' or '%' comments");
           ++j;
         }
         tokens.push_back({text.substr(i, j - i), line, static_cast<int>(i - start) + 1});
@@ -256,7 +256,7 @@ class SpacarReader {
     const std::string& k = r.keyword.text;
     const auto type = spacar::element_keyword(k);
     if (!type) {
-      if (k == "X" || spacar::is_role_keyword(k)) return;
+      if (k == "X" || spacar::is_role_keyword(k) || spacar::is_dynamic_keyword(k)) return;
       if (spacar::is_output_keyword(k)) {
         if (ignored_kinematic_.insert(k).second)
           notices_.push_back(fmt::format("{}:{}:{}: note: {} controls SPACAR's output and is ignored", path_, r.keyword.line,
@@ -496,9 +496,26 @@ class SpacarReader {
     }
   }
 
+  // DYNX: nodal coordinates that SPACAR's dynamic analysis integrates. Neither fixed nor
+  // prescribed, they are free in the kinematic analysis, which finds the free motions itself:
+  // the node is checked and the card noted once.
+  void read_dynamic(const Record& r) {
+    const std::string& k = r.keyword.text;
+    if (r.values.empty()) fail(r.keyword, fmt::format("{} expects a node number", k));
+    const long n = integer(r.values[0], "a node number");
+    if (!position_index_.count(n) && !orientation_index_.count(n) && !warping_nodes_.count(n))
+      fail(r.values[0], fmt::format("{}: node {} is neither an X position node nor an orientation node of an element", k, n));
+    for (std::size_t i = 1; i < r.values.size(); ++i) (void)integer(r.values[i], "a coordinate number");
+    if (ignored_kinematic_.insert(k).second)
+      notices_.push_back(fmt::format("{}:{}:{}: note: {} (the dynamic degrees of freedom of SPACAR's dynamic analysis) read: it "
+                                     "neither fixes nor prescribes a coordinate, so it changes nothing in a kinematic analysis",
+                                     path_, r.keyword.line, r.keyword.column, k));
+  }
+
   // DYNE, RLSE and INPUTE (deformations of an element), FIX and INPUTX (nodal coordinates).
   void read_role(const Record& r) {
     const std::string& k = r.keyword.text;
+    if (spacar::is_dynamic_keyword(k)) return read_dynamic(r);
     if (!spacar::is_role_keyword(k)) return;
     if (r.values.empty()) fail(r.keyword, fmt::format("{} expects a{} number", k, k == "FIX" || k == "INPUTX" ? " node" : "n element"));
     if (k == "FIX" || k == "INPUTX") return read_coordinates(r, k == "FIX" ? CoordinateRole::fixed : CoordinateRole::independent);

@@ -1,8 +1,8 @@
 #pragma once
 // Reads the kinematic part of a SPACAR input file (.dat, as written by hand or by SPACAR
 // Light) into a FrameworkModel: X, BEAM, BEAMW, TRUSS, HINGE, PINBODY, PLBEAM, PLTRUSS,
-// PLHINGE, DYNE, RLSE, INPUTE, FIX and INPUTX up to the first END or HALT. How each keyword
-// maps is in docs/formats.md.
+// PLHINGE, DYNE, RLSE, INPUTE, FIX, INPUTX and DYNX (noted: it fixes nothing) up to the first
+// END or HALT; '#' and '%' start comments. How each keyword maps is in docs/formats.md.
 // Every problem is an InputError at file:line:column.
 
 #include <string>

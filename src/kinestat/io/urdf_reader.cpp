@@ -4,6 +4,7 @@
 
 #include <Eigen/Geometry>
 
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <map>
@@ -35,9 +36,10 @@ struct Frame {
 struct UrdfJoint {
   const XMLElement* element = nullptr;
   std::string name, type, parent, child;
-  Frame origin;  ///< joint frame relative to the parent link frame
+  Frame origin;  ///< joint frame relative to the parent link frame (to the child's for a <gazebo> joint)
   Eigen::Vector3d axis = Eigen::Vector3d::UnitX();
-  bool loop = false;  ///< closes a loop (its child already has a parent, or a <loop_joint>)
+  bool loop = false;  ///< closes a loop (its child already has a parent, a <loop_joint> or a <gazebo> joint)
+  bool on_child = false;  ///< `origin` is in the child link's frame (SDFormat's joint pose, in <gazebo>)
 };
 
 class UrdfReader {
@@ -59,6 +61,7 @@ class UrdfReader {
       else if (tag == "joint") joints_.push_back(read_joint(e, false));
       else if (tag == "loop_joint") joints_.push_back(read_loop_joint(e));
       else if (tag == "transmission") transmissions_.push_back(attribute_or(e, "name", "(unnamed)"));
+      else if (tag == "gazebo" && e->FirstChildElement("joint")) read_gazebo_joints(e);
       else ignored.insert(tag);
     }
     if (links_.empty()) fail(robot, "the robot has no <link>");
@@ -79,6 +82,9 @@ class UrdfReader {
       for (const auto& t : transmissions_) names += (names.empty() ? "" : ", ") + t;
       out.notices.push_back(fmt::format("{}: note: transmission(s) {} ignored (actuation, not kinematics)", path_, names));
     }
+    if (gazebo_joints_ > 0)
+      out.notices.push_back(fmt::format("{}: note: {} joint(s) in <gazebo> blocks read as loop-closing couplings (their pose "
+                                        "in the child link's frame, as Gazebo reads them)", path_, gazebo_joints_));
     if (!ignored.empty()) {
       std::string names;
       for (const auto& t : ignored) names += (names.empty() ? "<" : ", <") + t + ">";
@@ -188,6 +194,67 @@ class UrdfReader {
     return j;
   }
 
+  // Gazebo's way of closing a loop in URDF (its tutorial's four-bar): an SDFormat joint inside a
+  // <gazebo> block, <parent> and <child> link names as text, <pose> (x y z roll pitch yaw) in
+  // the child link's frame and <axis><xyz> in the joint frame, as SDFormat 1.6 reads them.
+  void read_gazebo_joints(const XMLElement* gazebo) {
+    for (const XMLElement* e = gazebo->FirstChildElement("joint"); e; e = e->NextSiblingElement("joint")) {
+      UrdfJoint j;
+      j.element = e;
+      j.loop = true;
+      j.on_child = true;
+      j.name = required(e, "name");
+      j.type = required(e, "type");
+      j.parent = text_of(required_child(e, "parent", fmt::format("joint '{}'", j.name)));
+      j.child = text_of(required_child(e, "child", fmt::format("joint '{}'", j.name)));
+      if (const XMLElement* pose = e->FirstChildElement("pose")) {
+        const std::vector<double> v = numbers(pose, 6);
+        const Eigen::Vector3d rpy(v[3], v[4], v[5]);
+        j.origin.rotation = (Eigen::AngleAxisd(rpy.z(), Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(rpy.y(), Eigen::Vector3d::UnitY()) *
+                             Eigen::AngleAxisd(rpy.x(), Eigen::Vector3d::UnitX()))
+                                .toRotationMatrix();
+        j.origin.origin = Eigen::Vector3d(v[0], v[1], v[2]);
+      }
+      if (const XMLElement* axis = e->FirstChildElement("axis"))
+        if (const XMLElement* xyz = axis->FirstChildElement("xyz")) {
+          const std::vector<double> v = numbers(xyz, 3);
+          j.axis = Eigen::Vector3d(v[0], v[1], v[2]);
+        }
+      if (j.type == "continuous") j.type = "revolute";
+      joints_.push_back(std::move(j));
+      ++gazebo_joints_;
+    }
+  }
+
+  std::string text_of(const XMLElement* e) const {
+    const char* text = e->GetText();
+    std::string_view value = text ? text : "";
+    while (!value.empty() && std::isspace(static_cast<unsigned char>(value.front()))) value.remove_prefix(1);
+    while (!value.empty() && std::isspace(static_cast<unsigned char>(value.back()))) value.remove_suffix(1);
+    if (value.empty()) fail(e, fmt::format("<{}> needs a link name", e->Name()));
+    return std::string(value);
+  }
+
+  // Exactly `count` finite numbers, the text of `e`.
+  std::vector<double> numbers(const XMLElement* e, std::size_t count) const {
+    const char* text = e->GetText() ? e->GetText() : "";
+    const char* p = text;
+    const char* end = text + std::char_traits<char>::length(text);
+    std::vector<double> out;
+    while (true) {
+      while (p < end && std::isspace(static_cast<unsigned char>(*p))) ++p;
+      if (p == end) break;
+      double x = 0;
+      const auto [next, ec] = std::from_chars(p, end, x);
+      if (ec != std::errc() || !std::isfinite(x) || out.size() == count)
+        fail(e, fmt::format("<{}> must hold {} finite numbers", e->Name(), count));
+      out.push_back(x);
+      p = next;
+    }
+    if (out.size() != count) fail(e, fmt::format("<{}> must hold {} finite numbers", e->Name(), count));
+    return out;
+  }
+
   // In file order, the first joint that names a link as child is its tree joint; any later
   // one closes a loop. The root is the one link that is nobody's child.
   void build_tree() {
@@ -227,7 +294,7 @@ class UrdfReader {
   }
 
   void couple(NetworkBuilder& builder, const UrdfJoint& j) const {
-    const Frame joint = frames_.at(j.parent).then(j.origin);
+    const Frame joint = frames_.at(j.on_child ? j.child : j.parent).then(j.origin);
     JointGeometry g;
     g.point = joint.origin;
     const Eigen::Vector3d axis = joint.rotation * j.axis;
@@ -269,6 +336,7 @@ class UrdfReader {
   std::string root_;
   std::string mimics_;
   std::vector<std::string> transmissions_;
+  int gazebo_joints_ = 0;
 };
 
 }  // namespace
