@@ -11,7 +11,10 @@
 // owning everything it uses. The interpreter waits for such workers at exit (they may be inside
 // BLAS, whose buffers exit would free), after asking every running one to stop.
 //
-// The work must not touch Python objects: it runs without the GIL.
+// The work must not touch Python objects: it runs without the GIL. One piece of work runs at a
+// time (LibraryTurn), as when the GIL serialised every call: parts of the library share process
+// state (METIS's rand() for orderings), and a result must not depend on what another thread
+// analyses meanwhile.
 
 #include <pybind11/pybind11.h>
 
@@ -69,6 +72,12 @@ class RunningWork {
   std::set<std::atomic<bool>*> flags_;
 };
 
+/// The library's work, one call at a time. Never destroyed (see RunningWork).
+inline std::mutex& library_turn() {
+  static auto* turn = new std::mutex;
+  return *turn;
+}
+
 /// Runs `work(stop)` on a worker thread as described above and returns its value, or rethrows
 /// its exception (with the GIL held, so pybind11's translators apply), or raises the exception a
 /// signal handler raised (KeyboardInterrupt). Call with the GIL held.
@@ -94,7 +103,10 @@ Result call_interruptibly(std::function<Result(const StopRequest& stop)> work) {
   try {
     worker = std::thread([job, shared_work] {
       try {
-        job->value.emplace((*shared_work)(StopRequest{&job->stop}));
+        const std::lock_guard turn(library_turn());
+        const StopRequest stop{&job->stop};
+        stop.throw_if_requested();  // interrupted while waiting for its turn
+        job->value.emplace((*shared_work)(stop));
       } catch (...) {
         job->error = std::current_exception();
       }
@@ -108,6 +120,7 @@ Result call_interruptibly(std::function<Result(const StopRequest& stop)> work) {
   } catch (...) {  // no thread to be had: the work in this thread, without interruption
     RunningWork::instance().remove(&job->stop);
     const pybind11::gil_scoped_release release;
+    const std::lock_guard turn(library_turn());
     return (*shared_work)(StopRequest{});
   }
   bool interrupted = false;

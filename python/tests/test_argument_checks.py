@@ -86,3 +86,15 @@ def test_every_node_supported_counts_the_redundant_bar():
     done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=120, check=False)
     assert done.returncode == 0, done.stderr[-2000:]
     assert done.stdout.split() == ["0", "1"]
+
+
+@pytest.mark.parametrize("bad", [math.nan, math.inf, -1.0, 0.0])
+def test_trace_and_position_numbers_are_finite(bad, examples):
+    # As `kinestat move`: the amplitude a positive finite number, inputs and sweep ends finite.
+    with pytest.raises(ValueError, match="amplitude"):
+        kinestat.trace(examples / "four-bar-linkage.yaml", amplitude=bad)
+    if not math.isfinite(bad):
+        with pytest.raises(ValueError, match="not a finite number"):
+            kinestat.solve_positions(examples / "four-bar-planar.yaml", inputs={"A": bad})
+        with pytest.raises(ValueError, match="finite"):
+            kinestat.solve_positions(examples / "four-bar-planar.yaml", sweep=("A", 0.0, bad, 10))

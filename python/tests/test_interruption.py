@@ -99,3 +99,21 @@ def test_other_threads_run_while_an_analysis_is_in_progress():
     gaps = np.diff([started, *during, ended])
     # Holding the GIL, the analysis would leave one gap as long as itself.
     assert gaps.max() < 0.25, f"the ticker stopped for {gaps.max():.2f} s of a {ended - started:.2f} s analysis"
+
+
+def test_analyses_from_several_threads_give_the_results_of_one_thread():
+    # Calls from other threads wait for their turn in the library (its orderings share state):
+    # every thread gets the JSON report a lone call gives, byte for byte.
+    models = [grid(12), grid(13), kinestat.Framework(np.c_[np.arange(40.0), np.zeros(40)], bars=np.c_[np.arange(39), np.arange(1, 40)])]
+    alone = [kinestat.analyze(model).to_json() for model in models]
+    together = [None] * (2 * len(models))
+
+    def run(slot):
+        together[slot] = kinestat.analyze(models[slot % len(models)]).to_json()
+
+    threads = [threading.Thread(target=run, args=(slot,)) for slot in range(len(together))]
+    for thread in threads:
+        thread.start()
+    for thread in threads:
+        thread.join()
+    assert together == alone + alone

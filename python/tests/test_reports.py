@@ -94,12 +94,13 @@ def test_svg_drawings(examples):
         framework.svg("graph")
 
 
-def test_html_repr_is_a_complete_self_contained_document(examples, tmp_path):
+def test_html_is_a_complete_self_contained_document(examples, tmp_path):
+    # The notebook's repr wraps this document in an iframe (test_notebook_html.py).
     result = kinestat.analyze(examples / "davies-2-circuit.yaml")
     if not kinestat.html_built_in():
         assert result._repr_html_() is None
         pytest.skip("built without npm: HTML output is not built in")
-    html = result._repr_html_()
+    html = result.html()
     assert html.lstrip().lower().startswith("<!doctype html>")
     assert html.rstrip().endswith("</html>")
     assert "<script src=" not in html and "<link " not in html  # nothing fetched from elsewhere
