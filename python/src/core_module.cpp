@@ -368,7 +368,7 @@ std::string positions_json(const Analysed& a, const std::vector<std::pair<std::s
     swept = report::SweptInput{name, from, to, steps};
   }
   const report::PositionSweep result = report::solve_position_sweep(loaded, path, inputs, swept, "");
-  return report::json_text(report::positions_json(loaded.model, result));
+  return report::positions_json_text(loaded.model, result);
 }
 
 std::vector<std::string> magnitude_names(const std::vector<network::Magnitude>& magnitudes, const std::vector<int>& pick) {

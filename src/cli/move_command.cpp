@@ -206,7 +206,7 @@ int move_network(const MoveOptions& options, io::LoadedNetwork loaded, const std
   if (!options.sweep.empty()) sweep = parse_sweep(options.sweep);
   const report::PositionSweep result = report::solve_position_sweep(loaded, path, inputs, sweep,
                                                                     ", or follow one of its primary motions with --mode N");
-  emit(options.common, options.common.json ? report::json_text(report::positions_json(loaded.model, result))
+  emit(options.common, options.common.json ? report::positions_json_text(loaded.model, result)
                                            : report::positions_text(loaded.model, result));
   return 0;
 }

@@ -3,13 +3,17 @@
 // inputs and sweep ends far beyond the model, NaN tolerances) are refused or handled.
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 
+#include "kinestat/address_sanitizer.hpp"
 #include "support/cli_run.hpp"
 
 namespace kinestat {
@@ -155,6 +159,22 @@ TEST(NumbersAtTheEdge, SweepEndsNearTheLargestDoubleGiveFiniteValues) {
   EXPECT_FALSE(mentions(run.out, "\"far\":null")) << run.out.substr(0, 2000);
   for (const char* value : {"\"far\":-1e+308", "\"far\":-5e+307", "\"far\":0.0", "\"far\":5e+307", "\"far\":1e+308"})
     EXPECT_TRUE(mentions(run.out, value)) << value << " in " << run.out.substr(0, 2000);
+}
+
+// A sweep whose JSON does not fit in memory ends with exit 3 and one line, not an abort (the
+// whole positions tree used to be destroyed under memory exhaustion, which allocates). The
+// address space is capped at 600 MB; AddressSanitizer reserves far more, so not under it.
+TEST(NumbersAtTheEdge, AnOutputTooLargeForMemoryIsExitThree) {
+  if (kBuiltWithAddressSanitizer) GTEST_SKIP() << "AddressSanitizer reserves more address space than the cap";
+  const std::string err = (scratch_folder() / "too_large_err").string();
+  const std::string command = "sh -c 'ulimit -v 600000; exec " + std::string(KINESTAT_CLI) + " move --json " +
+                              example_path("four-bar-planar.yaml") + " --sweep A=0:6.283185307179586:1000000' >/dev/null 2>" + err;
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 3);
+  const std::string message = file_text(err);
+  EXPECT_TRUE(mentions(message, "out of memory")) << message;
+  EXPECT_EQ(std::count(message.begin(), message.end(), '\n'), 1) << message;
 }
 
 TEST(NumbersAtTheEdge, ConvertRefusesANanTolerance) {

@@ -309,8 +309,99 @@ std::string inputs_text(const network::Model& model, const PositionSweep& sweep,
 
 }  // namespace
 
-nlohmann::ordered_json positions_json(const network::Model& model, const PositionSweep& sweep) {
-  using kinematics::AssemblyStatus;
+namespace {
+
+// One step of positions_json_text as JSON; a step whose group could not be placed also adds
+// its entry to `not_assembled`.
+nlohmann::ordered_json position_step_json(const network::Model& model, const PositionSweep& sweep, std::size_t s,
+                                          std::vector<nlohmann::ordered_json>& not_assembled) {
+  const double length = sweep.plan.length;
+  const kinematics::PositionResult& r = sweep.results[s];
+  nlohmann::ordered_json step;
+  nlohmann::ordered_json inputs;
+  for (std::size_t i = 0; i < sweep.plan.drivers.size(); ++i)
+    inputs[model.couplings[static_cast<std::size_t>(sweep.plan.drivers[i])].name] = rounded_for_report(sweep.values[s][i]);
+  step["inputs"] = inputs;
+  step["assembled"] = r.assembled;
+  if (r.failed_group) {
+    const auto& g = sweep.plan.groups[*r.failed_group];
+    step["failed_group"] = g.number;
+    step["reason"] = r.groups[*r.failed_group].reason;
+    nlohmann::ordered_json failure;
+    failure["step"] = s;
+    failure["inputs"] = inputs;
+    failure["group"] = g.number;
+    failure["bodies"] = names_of(model, g.bodies, true);
+    failure["reason"] = r.groups[*r.failed_group].reason;
+    not_assembled.push_back(std::move(failure));
+  } else {
+    step["failed_group"] = nullptr;
+  }
+  if (r.assembled) step["max_residual"] = three_significant(r.max_residual);
+  else step["max_residual"] = nullptr;
+  step["groups"] = nlohmann::ordered_json::array();
+  for (std::size_t g = 0; g < r.groups.size(); ++g) {
+    nlohmann::ordered_json group;
+    group["number"] = sweep.plan.groups[g].number;
+    group["status"] = kinematics::assembly_status_name(r.groups[g].status);
+    if (sweep.plan.groups[g].method == kinematics::GroupMethod::newton) {
+      group["iterations"] = r.groups[g].iterations;
+      group["residual"] = three_significant(r.groups[g].discriminant);
+    } else if (sweep.plan.groups[g].method == kinematics::GroupMethod::closed_form) {
+      group["discriminant"] = three_significant(r.groups[g].discriminant);
+    }
+    if (!r.groups[g].reason.empty()) group["reason"] = r.groups[g].reason;
+    step["groups"].push_back(std::move(group));
+  }
+  const std::vector<bool> placed = placed_bodies(model, sweep, r);
+  nlohmann::ordered_json bodies;
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    if (!placed[b]) {
+      bodies[model.bodies[b]] = nullptr;
+      continue;
+    }
+    const auto& p = r.poses[b];
+    bodies[model.bodies[b]] = {{"x", coordinate(p.x, length)}, {"y", coordinate(p.y, length)}, {"angle", rounded_for_report(p.angle)}};
+  }
+  step["bodies"] = std::move(bodies);
+  nlohmann::ordered_json couplings;
+  for (std::size_t c = 0; c < model.couplings.size(); ++c) {
+    const auto& coupling = model.couplings[c];
+    if (!placed[static_cast<std::size_t>(coupling.from)] || !placed[static_cast<std::size_t>(coupling.to)]) {
+      couplings[coupling.name] = nullptr;
+      continue;
+    }
+    const auto point = kinematics::coupling_point(model, r.poses, static_cast<int>(c));
+    const double value = kinematics::coupling_value(model, r.poses, static_cast<int>(c));
+    couplings[coupling.name] = {{"point", {coordinate(point[0], length), coordinate(point[1], length)}},
+                                {"value", coupling.type == screw::CouplingType::revolute ? rounded_for_report(value) : coordinate(value, length)}};
+  }
+  step["couplings"] = std::move(couplings);
+  return step;
+}
+
+// `text` (a JSON value dumped at indent 2 from level 0) as an element of an array at level 1.
+void append_array_element(std::string& out, const nlohmann::ordered_json& element, bool first) {
+  const std::string text = element.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
+  out += first ? "\n    " : ",\n    ";
+  for (const char c : text) {
+    out += c;
+    if (c == '\n') out += "    ";
+  }
+}
+
+// Replaces `"key": []` in `head` (an object dumped at indent 2) by `"key": [` + elements + `]`,
+// as nlohmann would print the array there.
+void splice_array(std::string& head, const std::string& key, const std::string& elements) {
+  const std::string empty = "\"" + key + "\": []";
+  const std::size_t at = head.find(empty);
+  if (at == std::string::npos || elements.empty()) return;
+  head.replace(at, empty.size(), "\"" + key + "\": [" + elements + "\n  ]");
+}
+
+}  // namespace
+
+std::string positions_json_text(const network::Model& model, const PositionSweep& sweep) {
   const double length = sweep.plan.length;
   nlohmann::ordered_json j;
   j["kind"] = "network";
@@ -331,71 +422,17 @@ nlohmann::ordered_json positions_json(const network::Model& model, const Positio
   }
   j["steps"] = nlohmann::ordered_json::array();
   j["not_assembled"] = nlohmann::ordered_json::array();
-  for (std::size_t s = 0; s < sweep.results.size(); ++s) {
-    const kinematics::PositionResult& r = sweep.results[s];
-    nlohmann::ordered_json step;
-    nlohmann::ordered_json inputs;
-    for (std::size_t i = 0; i < sweep.plan.drivers.size(); ++i)
-      inputs[model.couplings[static_cast<std::size_t>(sweep.plan.drivers[i])].name] = rounded_for_report(sweep.values[s][i]);
-    step["inputs"] = inputs;
-    step["assembled"] = r.assembled;
-    if (r.failed_group) {
-      const auto& g = sweep.plan.groups[*r.failed_group];
-      step["failed_group"] = g.number;
-      step["reason"] = r.groups[*r.failed_group].reason;
-      nlohmann::ordered_json failure;
-      failure["step"] = s;
-      failure["inputs"] = inputs;
-      failure["group"] = g.number;
-      failure["bodies"] = names_of(model, g.bodies, true);
-      failure["reason"] = r.groups[*r.failed_group].reason;
-      j["not_assembled"].push_back(std::move(failure));
-    } else {
-      step["failed_group"] = nullptr;
-    }
-    if (r.assembled) step["max_residual"] = three_significant(r.max_residual);
-    else step["max_residual"] = nullptr;
-    step["groups"] = nlohmann::ordered_json::array();
-    for (std::size_t g = 0; g < r.groups.size(); ++g) {
-      nlohmann::ordered_json group;
-      group["number"] = sweep.plan.groups[g].number;
-      group["status"] = kinematics::assembly_status_name(r.groups[g].status);
-      if (sweep.plan.groups[g].method == kinematics::GroupMethod::newton) {
-        group["iterations"] = r.groups[g].iterations;
-        group["residual"] = three_significant(r.groups[g].discriminant);
-      } else if (sweep.plan.groups[g].method == kinematics::GroupMethod::closed_form) {
-        group["discriminant"] = three_significant(r.groups[g].discriminant);
-      }
-      if (!r.groups[g].reason.empty()) group["reason"] = r.groups[g].reason;
-      step["groups"].push_back(std::move(group));
-    }
-    const std::vector<bool> placed = placed_bodies(model, sweep, r);
-    nlohmann::ordered_json bodies;
-    for (std::size_t b = 0; b < model.bodies.size(); ++b) {
-      if (!placed[b]) {
-        bodies[model.bodies[b]] = nullptr;
-        continue;
-      }
-      const auto& p = r.poses[b];
-      bodies[model.bodies[b]] = {{"x", coordinate(p.x, length)}, {"y", coordinate(p.y, length)}, {"angle", rounded_for_report(p.angle)}};
-    }
-    step["bodies"] = std::move(bodies);
-    nlohmann::ordered_json couplings;
-    for (std::size_t c = 0; c < model.couplings.size(); ++c) {
-      const auto& coupling = model.couplings[c];
-      if (!placed[static_cast<std::size_t>(coupling.from)] || !placed[static_cast<std::size_t>(coupling.to)]) {
-        couplings[coupling.name] = nullptr;
-        continue;
-      }
-      const auto point = kinematics::coupling_point(model, r.poses, static_cast<int>(c));
-      const double value = kinematics::coupling_value(model, r.poses, static_cast<int>(c));
-      couplings[coupling.name] = {{"point", {coordinate(point[0], length), coordinate(point[1], length)}},
-                                  {"value", coupling.type == screw::CouplingType::revolute ? rounded_for_report(value) : coordinate(value, length)}};
-    }
-    step["couplings"] = std::move(couplings);
-    j["steps"].push_back(std::move(step));
-  }
-  return j;
+  // Each step is dumped on its own and the text spliced in: the steps of a long sweep (10^7) are
+  // never one JSON tree, whose destruction under memory exhaustion would allocate and abort.
+  std::string steps;
+  std::vector<nlohmann::ordered_json> not_assembled;
+  for (std::size_t s = 0; s < sweep.results.size(); ++s) append_array_element(steps, position_step_json(model, sweep, s, not_assembled), s == 0);
+  std::string failures;
+  for (std::size_t f = 0; f < not_assembled.size(); ++f) append_array_element(failures, not_assembled[f], f == 0);
+  std::string text = j.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
+  splice_array(text, "steps", steps);
+  splice_array(text, "not_assembled", failures);
+  return text + "\n";
 }
 
 std::string positions_text(const network::Model& model, const PositionSweep& sweep) {

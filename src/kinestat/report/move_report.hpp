@@ -69,10 +69,12 @@ struct PositionSweep {
   std::vector<kinematics::PositionResult> results;   ///< per step
 };
 
-/// The positions as JSON: `groups` (order of formation, type, method, branch) and `steps`, each
-/// with the inputs, `assembled`, the failing group, `max_residual`, per-body poses and per-coupling
-/// points and values; `not_assembled` lists the steps where a group could not be placed.
-nlohmann::ordered_json positions_json(const network::Model& model, const PositionSweep& sweep);
+/// The positions as JSON text (indented as report::json_text prints, with its final newline):
+/// `groups` (order of formation, type, method, branch) and `steps`, each with the inputs,
+/// `assembled`, the failing group, `max_residual`, per-body poses and per-coupling points and
+/// values; `not_assembled` lists the steps where a group could not be placed. Built step by
+/// step, so a sweep too long for memory ends in std::bad_alloc, not in an abort.
+std::string positions_json_text(const network::Model& model, const PositionSweep& sweep);
 /// The same as readable text: the groups, then one line per step.
 std::string positions_text(const network::Model& model, const PositionSweep& sweep);
 
