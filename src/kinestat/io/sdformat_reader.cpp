@@ -162,12 +162,6 @@ class ModelFiles {
     }
     std::vector<std::string> chain{canonical};
     const File& main = process(path_, canonical, text, chain);
-    if (main.links_and_joints > kMaxSdformatLinksAndJoints)
-      throw InputError({path_, 1, 1}, fmt::format("the file has {} <link> and <joint> elements{}; kinestat reads at most {} "
-                                                  "from an SDFormat model, because libsdformat 12 needs about 0.7 MB and 5 ms "
-                                                  "for each (convert the model to URDF, which is read without this limit)",
-                                                  main.links_and_joints, main.includes ? " with its includes" : "",
-                                                  kMaxSdformatLinksAndJoints));
     if (!stripped_.empty()) {
       std::string names;
       for (const auto& [name, count] : stripped_) names += fmt::format("{}{} <{}>", names.empty() ? "" : ", ", count, name);
@@ -234,6 +228,16 @@ class ModelFiles {
 
   [[noreturn]] static void refuse(const SourceLocation& where, const std::string& problem) { throw InputError(where, problem); }
 
+  // Checked as soon as a file is counted (before any copy is written), so that a model far past
+  // the limit is refused in the time it takes to parse it.
+  void check_size(const File& file, bool with_includes) const {
+    if (file.links_and_joints <= kMaxSdformatLinksAndJoints) return;
+    refuse({path_, 1, 1}, fmt::format("the file has {} <link> and <joint> elements{}; kinestat reads at most {} from an "
+                                      "SDFormat model, because libsdformat 12 needs about 0.7 MB and 5 ms for each (convert the "
+                                      "model to URDF, which is read without this limit)",
+                                      file.links_and_joints, with_includes ? " with its includes" : "", kMaxSdformatLinksAndJoints));
+  }
+
   const File& process(const std::string& shown, const std::string& canonical, const std::string& text,
                       std::vector<std::string>& chain) {
     if (const auto done = files_.find(canonical); done != files_.end()) return done->second;
@@ -267,6 +271,7 @@ class ModelFiles {
         named_.emplace(std::string(name) + ":" + element_name, SourceLocation{shown, e->GetLineNum(), 1});
       for (tinyxml2::XMLElement* child = e->FirstChildElement(); child; child = child->NextSiblingElement()) stack.push_back(child);
     }
+    check_size(file, false);
     for (tinyxml2::XMLElement* e : stripped) e->Parent()->DeleteChild(e);
     const std::string folder = std::filesystem::path(canonical).parent_path().string();
     for (tinyxml2::XMLElement* include : includes) {
@@ -289,6 +294,7 @@ class ModelFiles {
       chain.pop_back();
       file.expanded_bytes += child.expanded_bytes;
       file.links_and_joints += child.links_and_joints;
+      check_size(file, true);
       if (file.expanded_bytes > kMaxTextFileBytes)
         refuse(where, fmt::format("with its includes expanded the model is larger than the {} MiB limit on model files",
                                   kMaxTextFileBytes >> 20));
