@@ -4,15 +4,20 @@
 # The seed is fixed (FUZZ_SEED, default 1): a run from an empty corpus then explores the same
 # inputs in the same order on every machine, so a longer local run covers what CI's short run
 # will try, and a CI failure repeats locally.
-# Usage: [FUZZ_SEED=N] scripts/run-fuzzers.sh [SECONDS]
+# FUZZ_JOBS harnesses (default 2, one a core of CI's machines) run at a time, each for the full
+# SECONDS on a core of its own; each prints its lines when it ends.
+# Usage: [FUZZ_SEED=N] [FUZZ_JOBS=N] scripts/run-fuzzers.sh [SECONDS]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-30}
 seed=${FUZZ_SEED:-1}
 out=build/fuzz/crashes
 mkdir -p "$out"
-status=0
-for harness in build/fuzz/fuzz/fuzz_*; do
+jobs=${FUZZ_JOBS:-2}
+
+# run_harness PATH: runs one harness and prints its report; fails when the harness does.
+run_harness() {
+  local harness=$1 name corpus seeds
   name=$(basename "$harness")
   corpus=build/fuzz/corpus/$name
   mkdir -p "$corpus"
@@ -25,12 +30,30 @@ for harness in build/fuzz/fuzz/fuzz_*; do
     fuzz_valid_models) seeds="" ;;  # the bytes are choices of a generator: any input is a model
     *) seeds="examples examples/json fuzz/seeds/model" ;;
   esac
-  echo "== $name for ${seconds}s"
-  if ! "$harness" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=4096 -max_len=65536 -seed="$seed" \
-       -artifact_prefix="$out/$name-" -print_final_stats=1 "$corpus" $seeds >/dev/null 2>"build/fuzz/$name.log"; then
-    status=1
-    tail -40 "build/fuzz/$name.log"
+  local status=0
+  # shellcheck disable=SC2086 # seeds: one folder a word
+  "$harness" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=4096 -max_len=65536 -seed="$seed" \
+    -artifact_prefix="$out/$name-" -print_final_stats=1 "$corpus" $seeds >/dev/null 2>"build/fuzz/$name.log" || status=1
+  # One write, so that the reports of harnesses that end together do not interleave.
+  local report="== $name for ${seconds}s"
+  if ((status != 0)); then report+=$'\n'$(tail -40 "build/fuzz/$name.log"); fi
+  report+=$'\n'$(grep -E "stat::number_of_executed_units|stat::peak_rss_mb" "build/fuzz/$name.log" || true)
+  printf '%s\n' "$report"
+  return $status
+}
+
+status=0
+running=0
+for harness in build/fuzz/fuzz/fuzz_*; do
+  if ((running >= jobs)); then
+    wait -n || status=1
+    running=$((running - 1))
   fi
-  grep -E "stat::number_of_executed_units|stat::peak_rss_mb" "build/fuzz/$name.log" || true
+  run_harness "$harness" &
+  running=$((running + 1))
+done
+while ((running > 0)); do
+  wait -n || status=1
+  running=$((running - 1))
 done
 exit $status
