@@ -283,5 +283,22 @@ TEST(UrdfRealFiles, GazeboLoopJointClosesTheFourBar) {
   EXPECT_EQ(r.CN, 3);
 }
 
+// Issue 37 item 4: Drake's <drake:joint> and implicit world (counts in the file's comment: FN 5, CN 0).
+TEST(UrdfRealFiles, DrakeJointsAndTheImplicitWorld) {
+  if (!urdf_reader_built_in()) GTEST_SKIP();
+  const ImportedNetwork imported = read_urdf(std::string(KINESTAT_SOURCE_DIR) + "/tests/importers/data/urdf-drake-joints.urdf");
+  const network::Model& m = imported.loaded.model;
+  ASSERT_EQ(m.couplings.size(), 3u);
+  ASSERT_NE(coupling(m, "ball"), nullptr);
+  EXPECT_EQ(coupling(m, "ball")->type, CouplingType::spherical);
+  ASSERT_NE(coupling(m, "cardan"), nullptr);
+  EXPECT_EQ(coupling(m, "cardan")->type, CouplingType::universal);
+  ASSERT_TRUE(m.ground.has_value());
+  EXPECT_EQ(m.bodies[static_cast<std::size_t>(*m.ground)], "world");
+  const network::NetworkResult r = network::analyse_network(m);
+  EXPECT_EQ(r.FN, 5);
+  EXPECT_EQ(r.CN, 0);
+}
+
 }  // namespace
 }  // namespace kinestat::io::includes_test

@@ -58,12 +58,23 @@ class UrdfReader {
     for (const XMLElement* e = robot->FirstChildElement(); e; e = e->NextSiblingElement()) {
       const std::string tag = e->Name();
       if (tag == "link") read_link(e);
-      else if (tag == "joint") joints_.push_back(read_joint(e, false));
+      else if (tag == "joint" || tag == "drake:joint") joints_.push_back(read_joint(e, false));  // Drake: ball, universal, planar
       else if (tag == "loop_joint") joints_.push_back(read_loop_joint(e));
       else if (tag == "transmission") transmissions_.push_back(attribute_or(e, "name", "(unnamed)"));
       else if (tag == "gazebo" && e->FirstChildElement("joint")) read_gazebo_joints(e);
       else ignored.insert(tag);
     }
+    // Drake's dialect: a joint may name the world without a <link name="world">; it is then
+    // the root, the ground.
+    bool implicit_world = false;
+    if (!links_.count("world"))
+      for (const UrdfJoint& j : joints_)
+        if (j.parent == "world") {
+          links_.emplace("world", robot);
+          link_order_.insert(link_order_.begin(), "world");
+          implicit_world = true;
+          break;
+        }
     if (links_.empty()) fail(robot, "the robot has no <link>");
     for (const UrdfJoint& j : joints_)
       for (const std::string* link : {&j.parent, &j.child})
@@ -82,6 +93,9 @@ class UrdfReader {
       for (const auto& t : transmissions_) names += (names.empty() ? "" : ", ") + t;
       out.notices.push_back(fmt::format("{}: note: transmission(s) {} ignored (actuation, not kinematics)", path_, names));
     }
+    if (implicit_world)
+      out.notices.push_back(fmt::format("{}: note: a joint names the link 'world', which the file does not declare: read as "
+                                        "the ground, as Drake does", path_));
     if (gazebo_joints_ > 0)
       out.notices.push_back(fmt::format("{}: note: {} joint(s) in <gazebo> blocks read as loop-closing couplings (their pose "
                                         "in the child link's frame, as Gazebo reads them)", path_, gazebo_joints_));
