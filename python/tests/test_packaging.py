@@ -17,7 +17,8 @@ STUB = ROOT / "python" / "kinestat" / "__init__.pyi"
 
 
 def test_pip_installs_into_a_venv_and_the_module_analyses(tmp_path):
-    pytest.importorskip("ensurepip")  # Debian: python3-venv
+    for module in ("ensurepip", "setuptools", "wheel"):  # Debian: python3-venv, python3-setuptools, python3-wheel
+        pytest.importorskip(module)
     venv = tmp_path / "v"
     subprocess.run([sys.executable, "-m", "venv", "--system-site-packages", str(venv)], check=True, timeout=300)
     environment = {key: value for key, value in os.environ.items() if key != "PYTHONPATH"}
