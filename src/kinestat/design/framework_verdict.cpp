@@ -1,6 +1,7 @@
 #include "kinestat/design/framework_verdict.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <map>
@@ -37,8 +38,30 @@ Verdict framework_verdict(const FrameworkModel& model, const FrameworkResult& a,
   v.summary = summary_sentence(v.extra_motions, v.redundant_constraints, v.intended_motions);
   note_near_rank_change(v, a.decision.distance(), a.mechanisms > 0);
 
+  // Rigid motions of the whole model first, as one state (rigid_mode_basis.hpp names them).
+  std::vector<std::string> rigid;
+  for (const auto& mode : a.modes)
+    if (!mode.rigid_motion.empty()) rigid.push_back(mode.rigid_motion);
+  if (!rigid.empty()) {
+    const bool unsupported = static_cast<int>(rigid.size()) == (model.dimension == 2 ? 3 : 6);
+    VerdictState state{"extra motion",
+                       unsupported ? fmt::format("no supports: {} rigid motions", rigid.size())
+                                   : fmt::format("not enough supports: {}", fmt::join(rigid, "; ")),
+                       {}};
+    for (const auto& name : rigid) state.participants.push_back({"motion", name, 1.0 / static_cast<double>(rigid.size()), "rigid-body motion"});
+    v.states.push_back(std::move(state));
+  }
+  std::size_t internal = 0;
   for (std::size_t k = 0; k < a.modes.size(); ++k) {
-    VerdictState state{"extra motion", fmt::format("kinematically indeterminate mode {}", k + 1), {}};
+    if (!a.modes[k].rigid_motion.empty()) continue;
+    ++internal;
+    const std::string order = k < a.orders.size() && a.orders[k].order != framework::MotionOrder::undetermined
+                                  ? std::string(framework::motion_order_name(a.orders[k].order)) + " "
+                                  : "";
+    VerdictState state{"extra motion",
+                       rigid.empty() ? fmt::format("kinematically indeterminate mode {}", k + 1)
+                                     : fmt::format("internal {}mode {} (mode {} of the report)", order, internal, k + 1),
+                       {}};
     const Eigen::VectorXd& velocity = a.modes[k].velocities;
     for (Eigen::Index col : a.modes[k].moving) {
       const double share = velocity(col) * velocity(col) / std::max(velocity.squaredNorm(), 1e-300);

@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include <string>
 #include <vector>
 
 #include "kinestat/framework/framework_jacobian.hpp"
@@ -48,6 +49,9 @@ enum class RankMethod { dense_svd, sparse_qr };
 struct KinematicMode {
   Eigen::VectorXd velocities;
   std::vector<Eigen::Index> moving;  ///< columns of D(c) with a non-zero rate
+  /// A rigid-body motion of the whole model, in words ("translation along x"), when this mode is
+  /// one (rigid_mode_basis.hpp); empty for an internal mode.
+  std::string rigid_motion{};
 };
 
 /// A statically indeterminate stress state: generalised stress resultants dual to the rows of

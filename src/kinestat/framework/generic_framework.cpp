@@ -6,6 +6,7 @@
 
 #include <algorithm>
 
+#include "kinestat/framework/rigid_mode_basis.hpp"
 #include "kinestat/linalg/homogeneous_solution.hpp"
 #include "kinestat/linalg/modular_rank.hpp"
 #include "kinestat/linalg/seeded_random.hpp"
@@ -246,6 +247,7 @@ FrameworkResult analyse_framework_as_reported(const FrameworkModel& model, const
   std::optional<GenericFramework> answer = generic_framework(model, analysis);
   options.stop.throw_if_requested();
   if (answer) analysis = with_generic_basis(model, std::move(analysis), *answer, options);
+  separate_rigid_motions(model, analysis, answer, options);
   if (generic != nullptr) *generic = std::move(answer);
   return analysis;
 }

@@ -317,6 +317,12 @@ nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const 
     m["velocities"] = velocities_by_node(model, a, mode.velocities);
     m["moving"] = nlohmann::ordered_json::array();
     for (Eigen::Index col : mode.moving) m["moving"].push_back(framework_column_label(model, a, col));
+    if (!mode.rigid_motion.empty()) {
+      // A rigid motion of the whole model: no cause or order of its own (issue 35).
+      m["rigid_motion"] = mode.rigid_motion;
+      j["modes"].push_back(std::move(m));
+      continue;
+    }
     if (generic && k < generic->mode_causes.size()) m["cause"] = linalg::cause_name(generic->mode_causes[k]);
     if (k < a.orders.size()) {
       const framework::ModeOrder& o = a.orders[k];
@@ -431,11 +437,14 @@ std::string framework_report_text(const FrameworkModel& model, const FrameworkRe
         line(fmt::format("  {:>24} {:>12}", row_label(row), number(resultants(row))));
   };
   for (std::size_t k = 0; k < a.modes.size(); ++k) {
-    const std::string cause = generic && k < generic->mode_causes.size() ? ", from the " + linalg::cause_name(generic->mode_causes[k]) : "";
-    line(fmt::format("mode {} (velocities; translations per characteristic length){}:", k + 1, cause));
+    const bool rigid = !a.modes[k].rigid_motion.empty();
+    const std::string cause = rigid ? ": rigid-body motion, " + a.modes[k].rigid_motion
+                              : generic && k < generic->mode_causes.size() ? ", from the " + linalg::cause_name(generic->mode_causes[k])
+                                                                           : "";
+    line(fmt::format("mode {} (velocities; translations per characteristic length){}{}", k + 1, cause, rigid ? "" : ":"));
     for (Eigen::Index col : a.modes[k].moving)
       line(fmt::format("  {:>16} {:>12}", column_label(col), number(a.modes[k].velocities(col))));
-    if (k >= a.orders.size()) continue;
+    if (rigid || k >= a.orders.size()) continue;
     const framework::ModeOrder& o = a.orders[k];
     line(fmt::format("  order: {} -- {}", framework::motion_order_name(o.order), order_reason_text(o)));
     if (o.reason == framework::OrderReason::blocked_by_stress) stress_lines("  blocking self-stress:", o.blocking_stress);
