@@ -300,5 +300,24 @@ TEST(UrdfRealFiles, DrakeJointsAndTheImplicitWorld) {
   EXPECT_EQ(r.CN, 0);
 }
 
+// Issue 37 item 4: a site-based connect (MuJoCo 3 files; libmujoco 2.2.2 refuses site1/site2).
+// A free body at (0, 0, 1) with site s 0.5 above its origin, connected to world site w at
+// (0, 0, 1.5): a spherical coupling there, 6 - 3 = 3 freedoms, no redundancy (3/0).
+TEST(MjcfRealFiles, SiteBasedConnectIsAConnectOfTheSitesBodies) {
+  if (!mjcf_reader_built_in()) GTEST_SKIP();
+  const ImportedNetwork imported = parse_mjcf(
+      "s.xml",
+      "<mujoco>\n<worldbody>\n<site name=\"w\" pos=\"0 0 1.5\"/>\n<body name=\"b\" pos=\"0 0 1\">\n<freejoint/>\n"
+      "<geom size=\"0.1\"/>\n<site name=\"s\" pos=\"0 0 0.5\"/>\n</body>\n</worldbody>\n<equality>\n"
+      "<connect name=\"c\" site1=\"w\" site2=\"s\"/>\n</equality>\n</mujoco>\n");
+  const network::Coupling* c = coupling(imported.loaded.model, "c");
+  ASSERT_NE(c, nullptr);
+  EXPECT_EQ(c->type, CouplingType::spherical);
+  EXPECT_EQ(c->geometry.point[2], screw::Rational(3, 2));
+  const network::NetworkResult r = network::analyse_network(imported.loaded.model);
+  EXPECT_EQ(r.FN, 3);
+  EXPECT_EQ(r.CN, 0);
+}
+
 }  // namespace
 }  // namespace kinestat::io::includes_test

@@ -119,6 +119,8 @@ class MjcfDocument {
       }
       check_numbers(e);
       if (name == "body") ++bodies;
+      if (name == "site")
+        if (const char* site = e->Attribute("name")) sites_.emplace(site, e);
       const tinyxml2::XMLElement* parent = e->Parent() ? e->Parent()->ToElement() : nullptr;
       if (file_asset(name) && parent && std::string_view(parent->Name()) == "asset") {
         removed.push_back(e);
@@ -143,6 +145,7 @@ class MjcfDocument {
       notices.push_back(fmt::format("{}: note: ignored {} mesh, texture, heightfield, skin and material asset(s), and mesh geoms "
                                     "read as small spheres: geometry has no kinematic meaning, so no asset file is read",
                                     path_, stripped));
+    connect_sites(root);
     read_welds(root);
     print();
   }
@@ -275,6 +278,51 @@ class MjcfDocument {
     return top;
   }
 
+  // A connect between two sites (MuJoCo 2.3.3 and later: site1, site2) -> the body-based connect
+  // MuJoCo 2.2.2 reads: body1 the body of site1, its anchor the site's position in that body,
+  // body2 the body of site2 (the world when the site is in <worldbody>). The sites coincide in
+  // the assembled mechanism, which is where kinestat reads it.
+  void connect_sites(tinyxml2::XMLElement* root) {
+    for (tinyxml2::XMLElement* equality = root->FirstChildElement("equality"); equality;
+         equality = equality->NextSiblingElement("equality"))
+      for (tinyxml2::XMLElement* e = equality->FirstChildElement("connect"); e; e = e->NextSiblingElement("connect")) {
+        const char* site1 = e->Attribute("site1");
+        const char* site2 = e->Attribute("site2");
+        if (!site1 && !site2) continue;
+        if (!site1 || !site2) throw InputError(where(e), "a site-based <connect> names both site1 and site2");
+        std::string body1 = body_of(site1, e), body2 = body_of(site2, e);
+        const tinyxml2::XMLElement* anchor_site = sites_.at(site1);
+        if (body1 == "world") {  // the anchor goes on a body
+          std::swap(body1, body2);
+          anchor_site = sites_.at(site2);
+        }
+        if (body1 == "world") throw InputError(where(e), "both sites of this <connect> are in <worldbody>: it joins nothing");
+        e->DeleteAttribute("site1");
+        e->DeleteAttribute("site2");
+        e->SetAttribute("body1", body1.c_str());
+        if (body2 != "world") e->SetAttribute("body2", body2.c_str());
+        e->SetAttribute("anchor", anchor_site->Attribute("pos") ? anchor_site->Attribute("pos") : "0 0 0");
+        ++site_connects_;
+      }
+    if (site_connects_ > 0)
+      notices.push_back(fmt::format("{}: note: {} site-based <connect>(s) read as connects of the sites' bodies at site1 (MuJoCo "
+                                    "2.2.2 knows only body-based ones)", path_, site_connects_));
+  }
+
+  // The name of the body that holds site `site` ("world" for <worldbody>).
+  std::string body_of(const char* site, const tinyxml2::XMLElement* at) const {
+    const auto found = sites_.find(site);
+    if (found == sites_.end())
+      throw InputError(where(at), fmt::format("no <site name=\"{}\"> for this <connect>", printable_text(std::string_view(site).substr(0, 60))));
+    const tinyxml2::XMLElement* parent = found->second->Parent() ? found->second->Parent()->ToElement() : nullptr;
+    if (parent && std::string_view(parent->Name()) == "worldbody") return "world";
+    if (!parent || std::string_view(parent->Name()) != "body" || !parent->Attribute("name"))
+      throw InputError(where(found->second), "a site that a <connect> names must be directly in a named <body> (or in <worldbody>)");
+    if (found->second->Attribute("fromto"))
+      throw InputError(where(found->second), "a site that a <connect> names is placed by pos, not fromto");
+    return parent->Attribute("name");
+  }
+
   void read_welds(const tinyxml2::XMLElement* root) {
     for (const tinyxml2::XMLElement* equality = root->FirstChildElement("equality"); equality;
          equality = equality->NextSiblingElement("equality"))
@@ -322,6 +370,8 @@ class MjcfDocument {
   std::string printed_;
   std::vector<Origin> printed_lines_;
   std::unordered_map<std::string, Origin> named_;
+  std::unordered_map<std::string, const tinyxml2::XMLElement*> sites_;  ///< by name, for site-based connects
+  int site_connects_ = 0;
 };
 
 class MjcfReader {
