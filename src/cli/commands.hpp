@@ -31,6 +31,7 @@ struct CommonOptions {
   std::optional<double> tolerance;  ///< relative rank tolerance (default: the LAPACK rule)
   std::string backend = "serial";  ///< `analyze --backend`: serial, or petsc (under mpirun)
   bool timings = false;            ///< `analyze --timings`: the petsc backend's times and memory in the report
+  bool brief = false;              ///< `--brief`: the verdict block alone (JSON: the `verdict` object alone)
 };
 
 /// Parses the command line, runs the chosen subcommand and returns the exit code: 0 success,
@@ -69,6 +70,9 @@ void register_convert(CLI::App& app, Action& action);
 void register_move(CLI::App& app, Action& action);
 void register_sweep(CLI::App& app, Action& action);
 
+/// Adds `--allow-outside-includes` to `command`: SDFormat and MJCF files may then include files
+/// outside the model's folder (io::ImportOptions::allow_includes_outside_folder).
+void add_import_options(CLI::App& command);
 /// Reads a SPACAR file; its notices (what was ignored) go to standard error, one line each.
 framework::FrameworkModel read_spacar_model(const std::string& path);
 /// Reads a URDF, SDFormat or MJCF file; notices go to standard error, one line each.

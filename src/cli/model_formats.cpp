@@ -12,13 +12,26 @@ namespace kinestat::cli {
 
 namespace {
 
+// The command's import settings, set by its options before any model is read (the CLI is the
+// one place for settings of the whole process; the library takes them as options).
+io::ImportOptions& import_options() {
+  static io::ImportOptions options;
+  return options;
+}
+
 io::ModelFile read_with_notices(const std::string& path) {
-  io::ModelFile file = io::read_model_file(path);
+  io::ModelFile file = io::read_model_file(path, import_options());
   for (const std::string& notice : file.notices) std::cerr << io::printable_text(notice) << '\n';
   return file;
 }
 
 }  // namespace
+
+void add_import_options(CLI::App& command) {
+  command.add_flag("--allow-outside-includes", import_options().allow_includes_outside_folder,
+                   "SDFormat and MJCF: also read included files outside the model's folder (never the working directory's "
+                   "or system folders unless named)");
+}
 
 framework::FrameworkModel read_spacar_model(const std::string& path) { return std::move(*read_with_notices(path).framework); }
 

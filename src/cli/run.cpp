@@ -15,10 +15,28 @@
 #include "kinestat/linalg/blas_threads.hpp"
 #include "kinestat/linalg/gmp_allocation.hpp"
 #include "kinestat/report/html_writer.hpp"
+#include "kinestat/report/json_text.hpp"
 
 namespace kinestat::cli {
 
-void emit(const CommonOptions& options, const std::string& text) {
+namespace {
+
+// With --brief: the JSON report's `verdict` object alone, or the text report up to the blank
+// line that ends its verdict block (report::verdict_text); other output unchanged.
+std::string brief_of(const CommonOptions& options, const std::string& text) {
+  if (options.json) {
+    const auto report = nlohmann::ordered_json::parse(text, nullptr, false);
+    if (report.is_object() && report.contains("verdict")) return report::json_text(report["verdict"]);
+    return text;
+  }
+  const std::size_t end = text.find("\n\n");
+  return text.rfind("Verdict: ", 0) == 0 && end != std::string::npos ? text.substr(0, end + 1) : text;
+}
+
+}  // namespace
+
+void emit(const CommonOptions& options, const std::string& full_text) {
+  const std::string text = options.brief ? brief_of(options, full_text) : full_text;
   if (options.output_path.empty() || options.output_path == "-") {
     std::cout << text;
     std::cout.flush();
@@ -88,6 +106,8 @@ int run(int argc, const char* const* argv) {
   register_convert(app, action);
   register_move(app, action);
   register_sweep(app, action);
+  for (CLI::App* command : app.get_subcommands({}))
+    if (command->get_name() != "sweep") add_import_options(*command);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& success) {

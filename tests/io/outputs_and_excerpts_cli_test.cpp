@@ -100,6 +100,25 @@ TEST(OutputsNeverReplaceInputs, SweepSpecsModelsAndMergedShards) {
   EXPECT_EQ(file_text(shard), shard_before);
 }
 
+// An include outside the model's folder is read only with --allow-outside-includes: an MJCF body
+// on a slide joint in ../outside.xml (one prismatic freedom: FN 1, CN 0 when allowed).
+TEST(OutputsNeverReplaceInputs, IncludesOutsideTheFolderOnlyWhenTheCommandAllowsThem) {
+  const auto folder = scratch_folder() / "outside_include";
+  std::filesystem::create_directories(folder / "model");
+  std::ofstream(folder / "model" / "main.xml") << "<mujoco model=\"m\">\n<include file=\"../outside.xml\"/>\n</mujoco>\n";
+  std::ofstream(folder / "outside.xml") << "<mujoco>\n<worldbody>\n<body name=\"b\">\n<joint name=\"s\" type=\"slide\" axis=\"1 0 0\"/>\n"
+                                           "<geom type=\"sphere\" size=\"0.1\"/>\n</body>\n</worldbody>\n</mujoco>\n";
+  const std::string main = (folder / "model" / "main.xml").string();
+  const auto refused = run_cli("analyze " + main);
+  if (mentions(refused.err, "not built in")) GTEST_SKIP() << refused.err;
+  EXPECT_EQ(refused.exit_code, 2) << refused.err;
+  EXPECT_TRUE(mentions(refused.err, "outside the model's folder")) << refused.err;
+  const auto allowed = run_cli("analyze --json " + main + " --allow-outside-includes");
+  ASSERT_EQ(allowed.exit_code, 0) << allowed.err;
+  EXPECT_TRUE(mentions(allowed.out, "\"FN\": 1")) << allowed.out.substr(0, 1500);
+  EXPECT_TRUE(mentions(allowed.out, "\"CN\": 0")) << allowed.out.substr(0, 1500);
+}
+
 // A file that is no model (a password file, a private key) is refused without being printed:
 // the message quotes at most the first 40 characters of one line.
 TEST(MessagesQuoteExcerpts, AFileThatIsNoModelIsNotEchoed) {
