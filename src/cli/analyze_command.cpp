@@ -15,6 +15,7 @@ void register_analyze(CLI::App& app, Action& action) {
       "analyze", "Nett degree of freedom and of constraint of a model (kind: network or framework)");
   command->add_option("model", options->model_path, "Model file: kinestat YAML / JSON, SPACAR .dat, URDF .urdf, SDFormat .sdf or MJCF .xml")->required();
   command->add_flag("--json", options->json, "Machine-readable JSON instead of text");
+  command->add_flag("--brief", options->brief, "Print the verdict block alone (with --json: the verdict object alone)");
   command->add_option("-o,--output", options->output_path, "Write the report to this file instead of standard output");
   command->add_option("--tolerance", options->tolerance,
                       "Relative rank tolerance (fraction of the largest singular value); default max(rows,cols)*eps")

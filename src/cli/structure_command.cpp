@@ -111,6 +111,7 @@ void register_structure(CLI::App& app, Action& action) {
                       "Model file (kind: structure), or '-' for a matrix or model on standard input");
   command->add_flag("--stdin", options->from_stdin, "Read a whitespace-separated adjacency matrix (or a YAML model) from standard input");
   command->add_flag("--json", options->common.json, "Machine-readable JSON instead of text");
+  command->add_flag("--brief", options->common.brief, "Print the verdict block alone (with --json: the verdict object alone)");
   command->add_option("-o,--output", options->common.output_path, "Write to this file instead of standard output");
   command->add_option("--diagram", options->diagram, "Write the structural diagram instead of the report")
       ->check(CLI::IsMember({"dot", "svg"}));

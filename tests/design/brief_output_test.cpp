@@ -1,0 +1,40 @@
+// Issue 35, item 7: `--brief` prints the verdict block alone — in text, the lines from "Verdict:"
+// to the blank line that ends the block; in JSON, just the `verdict` object — and the same
+// verdict as the full report.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+#include "support/cli_run.hpp"
+
+namespace kinestat {
+namespace {
+
+using testing::example_path;
+using testing::run_cli;
+
+TEST(BriefOutput, TextIsTheVerdictBlockOfTheFullReport) {
+  for (const std::string command : {"analyze", "structure"}) {
+    SCOPED_TRACE(command);
+    const auto full = run_cli(command + " " + example_path("bennett.yaml"));
+    const auto brief = run_cli(command + " --brief " + example_path("bennett.yaml"));
+    ASSERT_EQ(brief.exit_code, 0) << brief.err;
+    EXPECT_EQ(brief.out.rfind("Verdict: ", 0), 0u);
+    EXPECT_EQ(brief.out.find("\n\n"), std::string::npos);  // one block, no detail after it
+    EXPECT_EQ(full.out.rfind(brief.out, 0), 0u);             // the full report starts with it
+  }
+}
+
+TEST(BriefOutput, JsonIsTheVerdictObjectAlone) {
+  const auto full = run_cli("analyze --json " + example_path("four-bar-planar.yaml"));
+  const auto brief = run_cli("analyze --json --brief " + example_path("four-bar-planar.yaml"));
+  ASSERT_EQ(brief.exit_code, 0) << brief.err;
+  const auto verdict = nlohmann::json::parse(brief.out);
+  EXPECT_EQ(verdict, nlohmann::json::parse(full.out)["verdict"]);
+  EXPECT_TRUE(verdict.contains("summary"));
+  EXPECT_FALSE(verdict.contains("verdict"));
+}
+
+}  // namespace
+}  // namespace kinestat
