@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <filesystem>
 #include <string>
 
 #include "support/cli_run.hpp"
@@ -34,6 +36,22 @@ TEST(BriefOutput, JsonIsTheVerdictObjectAlone) {
   EXPECT_EQ(verdict, nlohmann::json::parse(full.out)["verdict"]);
   EXPECT_TRUE(verdict.contains("summary"));
   EXPECT_FALSE(verdict.contains("verdict"));
+}
+
+// The verdict block of every shipped example fits in 25 lines (issue 35, item 7).
+TEST(BriefOutput, EveryExamplesVerdictBlockFitsIn25Lines) {
+  for (const std::string folder : {"", "robots/"}) {
+    for (const auto& entry : std::filesystem::directory_iterator(example_path(folder))) {
+      if (!entry.is_regular_file()) continue;
+      const std::string path = entry.path().string();
+      auto run = run_cli("analyze --brief " + path);
+      if (run.exit_code != 0) run = run_cli("structure --brief " + path);  // kind: structure
+      if (run.exit_code != 0) continue;                                   // not a model (e.g. a README)
+      SCOPED_TRACE(path);
+      EXPECT_EQ(run.out.rfind("Verdict: ", 0), 0u);
+      EXPECT_LE(std::count(run.out.begin(), run.out.end(), '\n'), 25);
+    }
+  }
 }
 
 }  // namespace

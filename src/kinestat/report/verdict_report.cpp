@@ -21,8 +21,15 @@ using io::printable_text;
 // rank by eye, stable against last-bit noise.
 double share(double x) { return std::round(x * design::kParticipationScale) / design::kParticipationScale; }
 
-// Participants listed per state in the text report; JSON lists them all.
+// Participants listed per state in the text report (fewer when there are more than two
+// states), and states listed; JSON lists them all.
 constexpr std::size_t kTextParticipants = 6;
+constexpr std::size_t kTextParticipantsOfMany = 2;
+constexpr std::size_t kTextStates = 3;
+// Changes of one set listed in the text report; JSON lists them all.
+constexpr std::size_t kTextChanges = 6;
+// Lines of what the re-analysis compared (the counts, free bodies, one carrier) in the text.
+constexpr std::size_t kTextChecks = 3;
 
 Json participant_json(const design::Participant& p) {
   Json j;
@@ -135,24 +142,39 @@ Json lead_with_verdict(const design::Verdict& verdict, Json report, const std::s
 std::string verdict_text(const design::Verdict& v) {
   std::string t = fmt::format("Verdict: {}\n", printable_text(v.summary));
   for (const auto& sentence : v.generic) t += fmt::format("  generic: {}\n", printable_text(sentence));
-  for (const auto& s : v.states) {
+  // The block stays short (issue 35: within 25 lines): a few states, fewer participants each
+  // when there are many; the rest is in the JSON and the detail below.
+  const std::size_t participants_shown = v.states.size() > 2 ? kTextParticipantsOfMany : kTextParticipants;  // the others: --json
+  for (std::size_t k = 0; k < v.states.size(); ++k) {
+    const auto& s = v.states[k];
+    if (k == kTextStates) {
+      std::size_t motions = 0;
+      for (std::size_t m = k; m < v.states.size(); ++m) motions += v.states[m].kind == "extra motion" ? 1 : 0;
+      t += fmt::format("  ... and {} more: {} extra motion(s), {} self-stress(es) (see --json)\n", v.states.size() - k, motions,
+                       v.states.size() - k - motions);
+      break;
+    }
     t += fmt::format("  {}: {}\n", s.kind, printable_text(s.description));
-    for (std::size_t i = 0; i < s.participants.size() && i < kTextParticipants; ++i) {
+    for (std::size_t i = 0; i < s.participants.size() && i < participants_shown; ++i) {
       const auto& p = s.participants[i];
       t += fmt::format("    {:>3.0f}%  {} {}{}\n", 100.0 * p.participation, p.kind, printable_text(p.name),
                        p.detail.empty() ? "" : ": " + printable_text(p.detail));
     }
-    if (s.participants.size() > kTextParticipants)
-      t += fmt::format("    ... and {} more (see --json)\n", s.participants.size() - kTextParticipants);
+    if (s.participants.size() > participants_shown && v.states.size() <= 2)
+      t += fmt::format("    ... and {} more (see --json)\n", s.participants.size() - participants_shown);
   }
   if (!v.changes.empty()) {
     t += fmt::format("  {} ({}):\n", v.changes.size() == 1 ? "change" : "changes",
                      v.changes_verified ? "one minimal set, verified by re-analysis" : "NOT verified: the re-analysis is not exactly constrained");
-    for (const auto& c : v.changes) t += "    - " + change_text(c) + "\n";
+    for (std::size_t i = 0; i < v.changes.size() && i < kTextChanges; ++i) t += "    - " + change_text(v.changes[i]) + "\n";
+    if (v.changes.size() > kTextChanges) t += fmt::format("    ... and {} more changes (see --json)\n", v.changes.size() - kTextChanges);
   }
   if (!v.becomes.empty() && !v.exactly_constrained) t += fmt::format("  becomes: {}\n", printable_text(v.becomes));
-  for (std::size_t i = 0; i < v.verification.size(); ++i)
-    t += fmt::format("  {} {}\n", i == 0 ? "checked:" : "        ", printable_text(v.verification[i]));
+  for (std::size_t i = 0; i < v.verification.size() && i < kTextChecks; ++i)
+    t += fmt::format("  {} {}{}\n", i == 0 ? "checked:" : "        ", printable_text(v.verification[i]),
+                     i + 1 == kTextChecks && v.verification.size() > kTextChecks
+                         ? fmt::format(" (and {} more, see --json)", v.verification.size() - kTextChecks)
+                         : "");
   for (std::size_t i = 0; i < v.alternatives.size() && i < kTextAlternatives; ++i) {
     std::vector<std::string> parts;
     for (const auto& c : v.alternatives[i]) parts.push_back(short_change_text(c));
