@@ -79,7 +79,16 @@ bool file_asset(std::string_view name) {
 struct Origin {
   std::string file;
   int line = 0;
-  int depth = 0;  ///< includes between the file given and this element's file
+  int depth = 0;   ///< includes between the file given and this element's file
+  int column = 0;  ///< of the element's '<' on its line (0: not known)
+};
+
+/// A file of the document, indexed by line, so an element's column can be found on its line
+/// (tinyxml2 keeps lines only).
+struct FileText {
+  explicit FileText(std::string content) : text(std::move(content)), lines(text) {}
+  std::string text;
+  LineIndex lines;
 };
 
 /// The MJCF document as kinestat hands it to MuJoCo: every <include file=> expanded in place
@@ -101,6 +110,7 @@ class MjcfDocument {
       included_.insert(error ? path_ : canonical.string());
     }
     total_bytes_ = text.size();
+    texts_.emplace(path_, std::make_unique<FileText>(text));
     if (document_.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS)
       throw InputError({path_, document_.ErrorLineNum(), 1}, fmt::format("malformed XML: {}", printable_text(document_.ErrorStr())));
     tinyxml2::XMLElement* root = document_.RootElement();
@@ -164,7 +174,7 @@ class MjcfDocument {
   SourceLocation where_named(const std::string& name) const {
     const auto found = named_.find(name);
     if (found == named_.end()) return {path_, 0, 0};
-    return {found->second.file, found->second.line, found->second.line > 0 ? 1 : 0};
+    return {found->second.file, found->second.line, found->second.column};
   }
 
   /// For each equality constraint (MuJoCo's order): a weld with torquescale 0, which constrains
@@ -180,7 +190,16 @@ class MjcfDocument {
 
   SourceLocation where(const tinyxml2::XMLElement* e) const {
     const Origin o = origin(e);
-    return {o.file, o.line, 1};
+    return {o.file, o.line, o.line > 0 ? column_of(o, e->Name()) : 0};
+  }
+
+  // The column of `<tag` on the element's line: the first on the line (1 when not found).
+  int column_of(const Origin& o, std::string_view tag) const {
+    const auto found = texts_.find(o.file);
+    if (found == texts_.end() || o.line <= 0) return 1;
+    const std::string_view line = found->second->lines.line(o.line);
+    const std::size_t at = line.find("<" + std::string(tag));
+    return at == std::string_view::npos ? 1 : static_cast<int>(at) + 1;
   }
 
   void check_numbers(const tinyxml2::XMLElement* e) const {
@@ -237,7 +256,7 @@ class MjcfDocument {
     if (!included_.insert(canonical).second)
       throw InputError(at, fmt::format("'{}' is {}, which is already included: MuJoCo includes a file once (a file that includes "
                                        "itself never ends)", printable_text(written), printable_text(canonical)));
-    const std::string text = read_text_file(canonical);
+    const std::string& text = texts_.emplace(canonical, std::make_unique<FileText>(read_text_file(canonical))).first->second->text;
     total_bytes_ += text.size();
     if (total_bytes_ > kMaxTextFileBytes)
       throw InputError(at, fmt::format("with its includes the model is larger than the {} MiB limit on model files", kMaxTextFileBytes >> 20));
@@ -349,7 +368,11 @@ class MjcfDocument {
       const Origin o = origin(original);
       Origin& line = printed_lines_[std::min<std::size_t>(static_cast<std::size_t>(copy->GetLineNum()), printed_lines_.size() - 1)];
       if (line.line == 0) line = o;
-      if (const char* name = original->Attribute("name")) named_.emplace(name, o);
+      if (const char* name = original->Attribute("name")) {
+        Origin named = o;
+        named.column = o.line > 0 ? column_of(o, original->Name()) : 0;
+        named_.emplace(name, named);
+      }
       for (auto [a, b] = std::pair{original->LastChildElement(), copy->LastChildElement()}; a && b;
            a = a->PreviousSiblingElement(), b = b->PreviousSiblingElement())
         stack.push_back({a, b});
@@ -370,6 +393,7 @@ class MjcfDocument {
   std::string printed_;
   std::vector<Origin> printed_lines_;
   std::unordered_map<std::string, Origin> named_;
+  std::unordered_map<std::string, std::unique_ptr<FileText>> texts_;  ///< by the file names in Origin
   std::unordered_map<std::string, const tinyxml2::XMLElement*> sites_;  ///< by name, for site-based connects
   int site_connects_ = 0;
 };
