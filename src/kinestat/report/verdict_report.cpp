@@ -154,7 +154,10 @@ std::string verdict_text(const design::Verdict& v) {
                        v.states.size() - k - motions);
       break;
     }
-    t += fmt::format("  {}: {}\n", s.kind, printable_text(s.description));
+    // Participants left out without a line of their own are counted on the state's line.
+    const bool counted_here = s.participants.size() > participants_shown && v.states.size() > 2;
+    t += fmt::format("  {}: {}{}\n", s.kind, printable_text(s.description),
+                     counted_here ? fmt::format(" ({} participants, {} shown; all in --json)", s.participants.size(), participants_shown) : "");
     for (std::size_t i = 0; i < s.participants.size() && i < participants_shown; ++i) {
       const auto& p = s.participants[i];
       t += fmt::format("    {:>3.0f}%  {} {}{}\n", 100.0 * p.participation, p.kind, printable_text(p.name),
