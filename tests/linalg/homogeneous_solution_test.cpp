@@ -90,5 +90,12 @@ TEST(HomogeneousSolution, RedundantRowsDependOnLaterRows) {
   EXPECT_EQ(redundant_rows(a), std::vector<Eigen::Index>{0});
 }
 
+// A matrix with rows and no column (a network whose every coupling is rigid has no motion
+// unknown): rank 0, so every row is redundant. Found by fuzz_valid_models as undefined behaviour.
+TEST(HomogeneousSolution, RowsWithoutColumnsAreAllRedundant) {
+  EXPECT_EQ(redundant_rows(Eigen::MatrixXd(3, 0), 0), (std::vector<Eigen::Index>{0, 1, 2}));
+  EXPECT_TRUE(redundant_rows(Eigen::MatrixXd(0, 0), 0).empty());
+}
+
 }  // namespace
 }  // namespace kinestat::linalg

@@ -159,6 +159,13 @@ std::vector<Eigen::Index> redundant_rows(const RationalMatrix& a) {
 }
 
 std::vector<Eigen::Index> redundant_rows(const Eigen::MatrixXd& a, Eigen::Index rank) {
+  std::vector<Eigen::Index> redundant;
+  if (a.cols() == 0) {
+    // No unknown (every coupling rigid): every row is redundant. Eigen's row() of a matrix
+    // without columns offsets a null pointer (undefined behaviour, found by fuzz_valid_models).
+    for (Eigen::Index r = 0; r < a.rows(); ++r) redundant.push_back(r);
+    return redundant;
+  }
   Eigen::MatrixXd unit_rows = a;
   for (Eigen::Index r = 0; r < a.rows(); ++r) {
     const double norm = a.row(r).norm();
@@ -174,7 +181,6 @@ std::vector<Eigen::Index> redundant_rows(const Eigen::MatrixXd& a, Eigen::Index 
   }
   std::vector<bool> is_kept(static_cast<std::size_t>(a.rows()), false);
   for (Eigen::Index r : kept) is_kept[static_cast<std::size_t>(r)] = true;
-  std::vector<Eigen::Index> redundant;
   for (Eigen::Index r = 0; r < a.rows(); ++r)
     if (!is_kept[static_cast<std::size_t>(r)]) redundant.push_back(r);
   return redundant;
