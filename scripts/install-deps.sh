@@ -5,20 +5,37 @@
 # libsdformat-dev for SDFormat, libmujoco-dev for MJCF (its CMake package names the headers of
 # libqhull-dev, which it does not depend on); CI installs them so every reader is tested.
 set -euo pipefail
+# --minimal: only what the `user` preset needs (library, command, Python module, HTML viewer,
+# every reader); no test frameworks, benchmarks, clang, Chromium, PETSc or MPI.
+minimal=false
+case "${1:-}" in
+  --minimal) minimal=true ;;
+  "") ;;
+  *) echo "usage: scripts/install-deps.sh [--minimal]" >&2; exit 2 ;;
+esac
 packages=(
   git build-essential cmake ninja-build pkg-config
   libeigen3-dev libsuitesparse-dev libopenblas-dev libgmp-dev libyaml-dev libcli11-dev nlohmann-json3-dev libfmt-dev
-  libgtest-dev libgmock-dev libbenchmark-dev
   libtinyxml2-dev libsdformat-dev libmujoco-dev libqhull-dev
-  clang libclang-rt-14-dev
-  chromium
-  # The Python module (pybind11) and its tests, for Debian's /usr/bin/python3.
-  python3-dev python3-pybind11 python3-numpy python3-pytest
-  # The optional distributed backend (`analyze --backend petsc`, cmake/KinestatPetsc.cmake):
-  # PETSc with MUMPS, SLEPc and OpenMPI. CI builds it in the release preset and runs its tests
-  # (ctest label `mpi`, under mpirun -n 2); a build without them simply leaves it out.
-  petsc-dev slepc-dev libopenmpi-dev openmpi-bin
+  # The Python module (pybind11), for Debian's /usr/bin/python3.
+  python3-dev python3-pybind11 python3-numpy
 )
+if ! $minimal; then
+  packages+=(
+    libgtest-dev libgmock-dev libbenchmark-dev python3-pytest
+    # The Python tests: pip install into a venv, the sparse rigidity matrix, the example notebook
+    # executed by Jupyter (each test is skipped without its package).
+    python3-venv python3-setuptools python3-wheel python3-scipy jupyter-nbconvert python3-ipykernel
+    clang libclang-rt-14-dev
+    chromium
+    # ccache: .ci/run uses it when present (objects shared between CI clones).
+    ccache
+    # The optional distributed backend (`analyze --backend petsc`, cmake/KinestatPetsc.cmake):
+    # PETSc with MUMPS, SLEPc and OpenMPI. CI builds it in the release preset and runs its tests
+    # (ctest label `mpi`, under mpirun -n 2); a build without them simply leaves it out.
+    petsc-dev slepc-dev libopenmpi-dev openmpi-bin
+  )
+fi
 # Node.js and npm build the HTML report viewer. Machines that already have them (for example
 # NodeSource's nodejs, which conflicts with Debian's npm package) keep their own.
 if ! command -v node >/dev/null 2>&1; then packages+=(nodejs); fi
