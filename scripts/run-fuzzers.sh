@@ -30,9 +30,13 @@ run_harness() {
     fuzz_valid_models) seeds=fuzz/seeds/valid ;;  # the bytes are choices of a generator; the seeds are past findings
     *) seeds="examples examples/json fuzz/seeds/model" ;;
   esac
+  # fuzz_valid_models analyses each model two to four times with its verdict's change search and
+  # every report: up to 10 s an input under ASan on a busy machine, so its hang limit is longer.
+  local timeout=20
+  [[ $name == fuzz_valid_models ]] && timeout=120
   local status=0
   # shellcheck disable=SC2086 # seeds: one folder a word
-  "$harness" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=4096 -max_len=65536 -seed="$seed" \
+  "$harness" -max_total_time="$seconds" -timeout="$timeout" -rss_limit_mb=4096 -max_len=65536 -seed="$seed" \
     -artifact_prefix="$out/$name-" -print_final_stats=1 "$corpus" $seeds >/dev/null 2>"build/fuzz/$name.log" || status=1
   # One write, so that the reports of harnesses that end together do not interleave.
   local report="== $name for ${seconds}s"
