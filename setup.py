@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The build step of pyproject.toml: kinestat._core is built by the project's CMake (the library
 and the module only: no tests, benchmarks or PETSc) and copied into the wheel. Nothing is
 downloaded. Settings (environment):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The dense path with all its vectors against the reference issue 11 names for it: numpy's
 // dense SVD of the same D(c) (numpy.linalg.svd calls LAPACK's dgesdd with full U and V; here
 // it is called directly, on the same OpenBLAS, pinned to the same thread count, in the same

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: BSD-3-Clause
 # Serial sparse path vs the distributed backend on P = 1 and P = 2 processes, side by side in
 # one run (bench/README.md, "Distributed backend"): wall time and peak memory per process.
 # Serial: /usr/bin/time -v of `kinestat analyze MODEL --json`; P processes: the same for mpirun

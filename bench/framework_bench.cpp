@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Exact-constraint analysis of generated pin-jointed frameworks (tests/support/lattice_generator.hpp):
 // planar triangulated and square lattices and a 3-D cubic lattice, 10² to 10⁶ bars, dense SVD
 // and sparse QR paths, and — on the same matrices, in the same run — the reference the sparse

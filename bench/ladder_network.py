@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Writes a spatial ladder network (kind: network) of about N couplings to stdout.
 
 Rails u0..uL and v0..vL, rungs ui-vi; loop i is u(i-1) ui vi v(i-1): 3L + 1 couplings,

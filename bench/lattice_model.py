@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Writes the lattices of tests/support/lattice_generator.cpp as framework model files
 (same nodes, bars and supports, same order), for whole-command runs of `kinestat analyze`, and
 builds their D(c) for numpy (rows: bars, columns: x, y[, z] of the free nodes, entries the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Coupling-network analysis benchmarks (Google Benchmark): Davies' 2-circuit network (exact),
 // and generated networks of about 10, 100 and 1,000 couplings: (a) a ladder of spatial
 // four-bar-like loops, (b) a random connected graph; random revolute, cylindrical and

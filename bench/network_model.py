@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Writes a generated coupling network (kind: network) of about N couplings to stdout.
 
   rss N      R-S-S chain (as BM_SparseRssChain in bench/network_bench.cpp): unit i is the closed

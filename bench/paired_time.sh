@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Two commands timed alternately in one run (the machines are shared and noisy, so a figure
 # is only compared with one taken in the same minutes): CPU (user + sys) min / median / max,
 # median wall time and the peak RSS of each, from /usr/bin/time.

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Time of building a large framework in Python (kinestat.Framework from numpy arrays), writing its
 model document and analysing it, beside the standard library's indented json.dumps of the same
 document (what Framework.to_json used before), in the same run.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Reading model files: a planar triangular lattice of about 10⁴, 10⁵ and 10⁶ bars written as
 // YAML (as scripts/generate-triangular-lattice.py writes it) and read into a FrameworkModel,
 // and a spatial ladder network of 10³-10⁵ couplings (shaped as bench/ladder_network.py writes

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Paired whole-command measurements for bench/README.md: each pair runs back to back, the pairs
 # alternate, so load on the shared machine hits both sides alike. Run from the repository root
 # after `cmake --build --preset release --target kinestat_cli framework_bench dense_vectors_bench`.

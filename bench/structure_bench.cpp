@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Structural-group decomposition on generated planar mechanisms: chains of dyads, triads,
 // cam followers and cranks of 10 to 10,000 bodies, and single large Assur groups (rings),
 // with the polynomial matching method and, where it finishes, the seed's chain search.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # Run with cmake -P at build time: installs three.js from the npm registry (npm ci with the
 # committed package-lock.json) when npm is found now, and writes a C++ file with the viewer's
 # JavaScript and CSS as raw string literals, split into chunks below compilers' literal limits.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # All dependencies come from Debian packages; nothing is downloaded at build time.
 find_package(Eigen3 3.3 REQUIRED NO_MODULE)
 find_package(fmt REQUIRED)

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # Install rules and the CMake package: `cmake --install build/release --prefix P` gives
 #   P/lib/libkinestat.a, P/include/kinestat/<layer>/*.hpp, P/include/kinestat/kinestat.hpp,
 #   P/bin/kinestat (and P/bin/kinestat-mpi with the distributed backend), P/lib/cmake/kinestat/ (kinestatConfig.cmake, version file, targets),
@@ -26,3 +27,5 @@ write_basic_package_version_file(${PROJECT_BINARY_DIR}/kinestatConfigVersion.cma
 install(FILES ${PROJECT_BINARY_DIR}/kinestatConfig.cmake ${PROJECT_BINARY_DIR}/kinestatConfigVersion.cmake
               ${KINESTAT_VIEWER_WORK}/viewer_built_in.cmake
         DESTINATION ${KINESTAT_CMAKE_DIR})
+# The licence beside the documentation (docs/licensing.md: what the linked libraries imply).
+install(FILES ${PROJECT_SOURCE_DIR}/LICENSE DESTINATION ${CMAKE_INSTALL_DOCDIR})

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # The optional distributed backend (src/kinestat/distributed, docs/scaling.md): rank decisions
 # and null spaces on PETSc / SLEPc / MUMPS over MPI (Debian: petsc-dev, slepc-dev,
 # libopenmpi-dev). Its own library, kinestat_petsc: not part of the installed package and not

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # The Python module `kinestat` (python/), built with pybind11 from Debian's python3-pybind11
 # against /usr/bin/python3 (python3-dev); nothing is downloaded. KINESTAT_PYTHON=AUTO builds
 # it when both are found, ON insists, OFF skips. Its pytest suite is registered in CTest.

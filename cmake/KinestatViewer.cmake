@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # The HTML report's viewer: three.js from the npm registry (viewer/package.json and the
 # committed package-lock.json, installed with `npm ci` into the build tree at build time) and
 # kinestat's own viewer.js / viewer.css, embedded into the library as string literals.

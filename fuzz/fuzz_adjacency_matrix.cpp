@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // libFuzzer harness: any bytes as a whitespace adjacency matrix on standard input
 // (`kinestat structure -`), through the reader and, for small mechanisms, the decomposition.
 #include <cstddef>

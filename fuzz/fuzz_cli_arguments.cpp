@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // libFuzzer harness: the command line. The input is split at newlines into arguments; the
 // argument "model.yaml" names a valid model in a scratch folder, so the fuzzer explores options
 // around real input. Inputs with '/' in an argument or an output option are skipped, so that

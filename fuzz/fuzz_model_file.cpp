@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // libFuzzer harness: any bytes as a model file (network, framework or structure), through the
 // reader of its kind and, for small models, the analyses, the network, framework and structure verdicts
 // and every report of them (text, JSON, DOT, SVG drawings of the scene). Input errors are

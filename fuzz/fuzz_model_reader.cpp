@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // libFuzzer harness: any bytes as a model file, through the YAML reader and the reader of the
 // model's kind only (no analysis). fuzz_model_file does the same and then analyses small
 // models and renders every report, which keeps it near 50 runs a second; this one runs

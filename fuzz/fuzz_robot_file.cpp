@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // libFuzzer harness: any bytes as a robot description (built three times, as fuzz_urdf_file,
 // fuzz_sdformat_file and fuzz_mjcf_file, with KINESTAT_FUZZ_READ naming the reader), through
 // the reader and, for small models, the network analysis and the YAML writer, whose output

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // libFuzzer harness: any bytes as a SPACAR input file, through the SPACAR reader and, for
 // small models, the framework analysis, the SPACAR and YAML writers and a re-read of both.
 // Input errors are expected; any other exception, crash, hang or sanitizer report is a bug,

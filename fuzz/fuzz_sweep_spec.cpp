@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // libFuzzer harness: any bytes as a sweep spec (kind: sweep), through the spec reader and, when
 // it varies a model, the search for each parameter's number in a fixed small model (a planar
 // framework or a planar network, as the spec's `model:` ends in "network.yaml" or not) and the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // libFuzzer harness for semantic fuzzing (issue 40): the bytes steer a generator of valid model
 // files (tests/support/valid_models.hpp: every kind, with the degenerate cases weighted in), and
 // every generated model is read, analysed, judged and reported. Besides crashes, hangs and

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Installs a built kinestat into a fresh prefix, builds tests/consumer against the installed
 # package (the C++ example and every installed header compiled alone) and runs the example.
 # Usage: scripts/check-install.sh [build folder, default build/release]

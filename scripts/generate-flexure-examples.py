@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Writes the straight-guidance examples of seed 002, section 4 (Figs. 3-6), to examples/.
 
 The geometry is designed to match the text (the paper gives no coordinates): the moving part is

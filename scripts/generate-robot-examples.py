@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Writes the four-bar, Stewart-Gough and Delta mechanisms of examples/ as URDF, SDFormat and
 MJCF files (examples/robots/), from one description per mechanism in world coordinates, so
 that every format states the same joints at the same places. kinestat must give the same FN,

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Writes a planar framework model: a triangular lattice of bars (for scale measurements).
 
 usage: generate-triangular-lattice.py BARS [FILE]    (FILE defaults to standard output)

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Installs kinestat's build and test dependencies from Debian 12 packages. Run it as root, or
 # as a user who may use sudo; anything else stops here with a message.
 # The readers of other formats are optional (docs/formats.md): libtinyxml2-dev for URDF,

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Runs every libFuzzer harness for SECONDS (default 30) each, seeded with the shipped
 # examples. Crashes are written to build/fuzz/crashes/ and fail the script.
 # The seed is fixed (FUZZ_SEED, default 1): a run from an empty corpus then explores the same

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // kinestat report viewer: draws the scene embedded as window.KINESTAT_SCENE with three.js
 // (global THREE). Rotate by dragging, zoom with the wheel. window.kinestatViewer gives tests
 // and users a small API: setView, setAmplitude, freeze, elementColours, ready, and for traced

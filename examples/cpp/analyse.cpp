@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // A program using the installed kinestat package: reads a model file, analyses it, prints the verdict's numbers.
 #include <iostream>
 #include <kinestat/kinestat.hpp>

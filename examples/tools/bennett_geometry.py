@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Exact geometry of the Bennett linkage in examples/bennett.yaml (and its perturbed twin).
 
 Bennett (1903): a 4R loop with link lengths a, b, a, b and twists alpha, beta, alpha, beta

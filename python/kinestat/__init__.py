@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """kinestat: how free and how constrained is a mechanism, a compliant mechanism or a structure?
 
 Python interface to the C++ library (docs/python.md). Three model kinds, as in model files:

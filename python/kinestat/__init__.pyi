@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # Type stubs of the public API of kinestat (python/kinestat/__init__.py): numpy arrays are
 # float64 unless said otherwise; paths may be str or os.PathLike.
 import os

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // kinestat._core: the C++ library seen from Python. Thin: it reads models with io/, runs the
 // pure analyses and hands back their numbers (Eigen -> numpy) and the report layer's texts
 // (the JSON report is written by the command's own report functions from the same analysis and

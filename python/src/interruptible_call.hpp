@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Long C++ work called from Python without holding the interpreter, and stoppable with Ctrl-C.
 //

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Shared fixtures: the command-line tool and the examples (paths from CTest's environment)."""
 
 import json

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The Python API refuses what the command refuses (issue 40, items 6 and 7): tolerances that are
 not positive finite numbers, NaN coordinates, indices out of range; a missing file is a
 FileNotFoundError. Every refusal is also a kinestat.InputError (a ValueError)."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Long calls give up the GIL and stop on Ctrl-C (issue 40, item 7): the analysis runs on a
 worker thread while the caller checks for signals every 50 ms."""
 

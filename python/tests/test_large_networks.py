@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Networks above 300 couplings take the sparse body-twist path from Python, as `kinestat
 analyze` does (Davies' dense matrices grow as the cube of the network: a ring of 3,000
 revolutes ran the machine out of memory before)."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Model files of other programs (SPACAR, URDF, SDFormat, MJCF) read from Python as
 `kinestat analyze` reads them. Expected counts are hand derivations (Grübler–Kutzbach and the
 known mobility of each linkage), not kinestat's output."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Models built from numpy arrays give the results of their model files; errors carry positions."""
 
 import numpy as np

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Finite motion from Python (issue 13): kinestat.trace follows a framework mode and
 kinestat.solve_positions solves a planar mechanism group by group; both return the dict of
 `kinestat move --json`. Expected values are derived here: bar lengths from the file's

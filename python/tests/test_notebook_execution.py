@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The example notebook runs under Debian's Jupyter (`jupyter nbconvert --execute`, package
 jupyter-nbconvert with python3-ipykernel) and its page holds two independent reports (issue 39,
 item 3). Skipped where Jupyter is not installed."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Reports in a notebook (issue 39, item 3): `_repr_html_` is one sandboxed iframe whose whole
 document is in `srcdoc`, so no style, id or script of a report reaches the notebook or another
 report."""

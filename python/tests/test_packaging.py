@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """kinestat installs the Python way (issue 39, item 2): `pip install --no-build-isolation .` into a
 venv of Debian's interpreter, offline; the type stubs cover the public API."""
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The API a rigidity user expects (issue 39, item 2): PyRigi's names on framework results, one
 set of names for the counts of every kind, a repr with the counts and the verdict, a version,
 nothing but the API in the package's namespace. Expected values are counted by hand."""

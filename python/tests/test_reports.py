@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The Python results carry the command's reports: to_dict() equals `--json`, key for key."""
 
 import json

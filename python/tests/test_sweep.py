@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """kinestat.sweep gives the lines of `kinestat sweep`, and the values derived by hand (docs/sweep.md)."""
 
 import json

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `kinestat analyze FILE`: nett freedom and constraint of a coupling network or a framework.
 
 #include "cli/commands.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The `kinestat` command is thin: each subcommand parses options, calls a reader in io/, a
 // pure analysis, and a writer in report/. Each subcommand lives in its own file.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `kinestat convert IN OUT`: a model from any supported format written as kinestat YAML
 // (OUT.yaml) or as a SPACAR input file with kinestat's release proposal (OUT.dat).
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `kinestat draw FILE --what graph|mechanism|structure`: static SVG pictures of a model.
 
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `kinestat analyze FILE` for `kind: framework`: exact-constraint analysis of seed 002.
 
 #include <fmt/format.h>

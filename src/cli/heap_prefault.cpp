@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The heap's pages faulted in on the idle core. On virtual machines the first write to a fresh
 // page costs 0.3-1.5 GB/s (the kernel clears it; bench/README.md), and a large analysis touches
 // most of its memory once: a fifth of a 10^6-bar lattice's command was the kernel clearing pages

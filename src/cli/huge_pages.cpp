@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Large models on transparent huge pages. Most of the memory of a large analysis is touched
 // once, page by page (the model, D(c), SuiteSparse's fronts): with 4 KiB pages that is one page
 // fault per 4 KiB, and on virtual machines the faults were a fifth to a third of the CPU time

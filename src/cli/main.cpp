@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // kinestat: how free and how constrained is a mechanism, a compliant mechanism or a structure?
 #include "cli/commands.hpp"
 #include "cli/thread_local_rand.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The readers of other programs' formats as the commands use them: io::read_model_file picks
 // the reader by the file's format (io::model_format), and the commands print its notices to
 // standard error.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `kinestat move FILE`: finite motion (issue 13). A framework: follow kinematic mode N with the
 // predictor–corrector and print the path. A network: follow primary motion N the same way
 // (--mode), or, planar, solve the positions of all bodies group by group at given input values

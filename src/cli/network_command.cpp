@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `kinestat analyze` for coupling networks (kind: network): Davies' four methods.
 
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Checks of numeric command-line options with messages that say what is expected. CLI11's
 // own range checks let NaN through and print their bounds with all 309 digits of DBL_MAX.

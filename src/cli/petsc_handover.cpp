@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `kinestat analyze --backend petsc`: handed over to `kinestat-mpi`, the same command line
 // interface built with the distributed backend (distributed/petsc_backend.cpp), found beside
 // this executable. Linking PETSc, SLEPc and MPI into `kinestat` itself made every command load

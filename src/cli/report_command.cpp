@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `kinestat report FILE -o report.html`: one self-contained interactive HTML report.
 
 #include <iostream>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The body of the `kinestat` command (main() is in main.cpp so fuzz harnesses can call run()).
 
 #include <malloc.h>

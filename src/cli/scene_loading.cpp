@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Reads a model of any kind, runs its analysis and builds the scene that `draw` and `report`
 // picture.
 

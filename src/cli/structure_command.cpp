@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `kinestat structure FILE`: decomposition of a mechanism into structural groups (seed 004).
 
 #include <cctype>

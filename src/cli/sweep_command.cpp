@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `kinestat sweep SPEC`: a design sweep (issue 17; docs/sweep.md). Every variant of the spec's
 // model (or every variant file) is read and analysed as `kinestat analyze --json` would, and
 // gives one JSON line; `--shard I/N` takes the variants v with v mod N = I, so shards run

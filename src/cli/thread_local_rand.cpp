@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // rand() and srand() with one state per thread, for METIS. METIS (through SuiteSparse's
 // orderings) seeds with srand() at the start of each ordering and then draws with rand(); glibc
 // keeps one state for the whole process, so two orderings on two threads would interleave their

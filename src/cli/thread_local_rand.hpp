@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The `kinestat` command's rand() and srand(): one state per thread (thread_local_rand.cpp).
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Whether this translation unit is built with AddressSanitizer (gcc defines __SANITIZE_ADDRESS__,
 // clang answers __has_feature). Code that depends on how memory is mapped or freed asks this:

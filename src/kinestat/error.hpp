@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The root of every error kinestat throws on purpose. A caller catches kinestat::Error once
 // and gets the message, the exit code a command should end with and, for input problems,

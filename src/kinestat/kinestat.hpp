@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // kinestat: every public header. Layers: screw, graph, linalg -> network, framework, structure,
 // kinematics, design -> io -> report (docs/architecture.md). The installed-package check

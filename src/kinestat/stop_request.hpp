@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A caller's request that a long computation stop early (Ctrl-C in the Python module). The
 // library never watches signals or any other process-wide state (DESIGN.md): the caller owns the

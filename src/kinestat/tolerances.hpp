@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Every tolerance kinestat uses, in one place (docs/architecture.md, sections "Tolerances" and "Rank decisions", explains each).
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Browser tests of the HTML reports: headless Chromium (Debian's `chromium`) driven by
 // playwright-core from the npm registry. For every shipped example: the report opens without
 // console errors, the 3D canvas is not blank, the verdict panel leads the side panel and the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Issue 35, item 7: `--brief` prints the verdict block alone — in text, the lines from "Verdict:"
 // to the blank line that ends the block; in JSON, just the `verdict` object — and the same
 // verdict as the full report.

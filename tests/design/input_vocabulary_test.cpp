@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // No silent guesses in the input (issue 10, item 6): one `dimension` vocabulary, planar models
 // refuse spatial couplings, `units:` reaches every report, and options or values that a model
 // does not use, or that are given twice, are errors with exit code 2.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Issue 35: a change set is proposed only when the changed design keeps the intended motion —
 // the same pair freedoms between the bodies that carry it and the ground, the same motion
 // screws, no body free on its own, CN = 0. The expected values are derived by hand from the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Issue 35, item 4: clean mode spaces. A model free in space has six rigid motions (three
 // translations, three rotations: by hand), named first and kept apart; the internal modes are
 // orthonormal and orthogonal to them, and only they carry `order` and `cause`. Checked on

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Model numbers too large for doubles. A network with a 120-digit coordinate (found by
 // fuzz_model_file) made the verdict's change search convert exact coupling actions of a candidate
 // beyond 1.8e308 to doubles and hand the infinite entries to LAPACK, whose SVD never returned.

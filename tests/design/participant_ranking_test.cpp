@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // design::rank_participants: by participation, shares within kParticipationTie (5e-5) of their
 // group's largest in model order.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The verdict of the sparse body-twist path on large networks whose counts and participants are
 // derived by hand (rings and chains of revolutes and spherical joints), and against the dense
 // path's verdict on mid-size networks analysed both ways.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The verdict of every shipped example, against counts derived by hand from the examples'
 // geometry (the derivations are in each file's header and repeated below), and every change set
 // re-applied here, independently of the design code, and re-analysed: the changed design must be

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Runs every model sample of README.md and docs/*.md through the built `kinestat` command.
 
 Conventions for the pages (what this test enforces):

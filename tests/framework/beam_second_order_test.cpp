@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Second order and finite motion of frameworks with beams and rigid bodies (issue 13). The
 // second derivatives of seed 002's deformations are checked against finite differences of the
 // deformation functions along the motion they are defined on; the classifications against hand

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Analytic derivatives of the deformation functions (seed 002, eqs 2-4, including the
 // second-order terms of eq 3) against central finite differences at generic configurations.
 

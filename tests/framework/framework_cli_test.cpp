@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `kinestat analyze` on framework files: examples succeed with the expected JSON, output is
 // byte-identical between runs, and bad input exits with code 2 and one line
 // `file:line:col: error: ...` on stderr.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The framework model file: what it accepts, and one clear error with file, line and column for
 // each kind of bad input.
 

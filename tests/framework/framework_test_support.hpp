@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Helpers shared by the framework tests: load an example, transform a model rigidly or by
 // scaling, and find rows/columns of D(c) by label.

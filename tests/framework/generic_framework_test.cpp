@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The generic answer of frameworks (issue 12, item 3) and Laman's count by the pebble game.
 // Expected numbers come from Maxwell's rule, Laman's theorem and the geometry of each example,
 // derived in the comments.

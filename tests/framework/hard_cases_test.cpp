@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Numerically hard frameworks: exactly singular geometry given in floating point, nearly
 // singular geometry, and one model with element lengths of 1e3 and 1e-6. Each expected answer
 // is derived by hand in the test's comment, not from the code under test.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Unit invariance and rigid-motion invariance: counts, classification, singular values and
 // mode shapes must not change when every length is scaled (mm -> m -> km) or the whole model
 // is moved rigidly, because D(c) is non-dimensionalised with the characteristic length.

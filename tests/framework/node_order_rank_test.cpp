@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The counts-only sparse path factors D(c) in a nested dissection of the node graph when that
 // graph keeps enough of D(c)'s column couplings (linalg::grouped_nested_dissection_order,
 // linalg::sparse_numerical_rank). Expected shares are counted by hand from the lattices' bars;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Pin-jointed frameworks with known counts of mechanisms m and self-stresses s (Pellegrino &
 // Calladine 1986 and textbook cases). Each expectation comes from Maxwell's rule
 // s − m = b − (d·j − k) plus the specific geometry, as explained in each example file.

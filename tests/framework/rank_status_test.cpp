@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Issue 12, item 2, floating-point path: a well-conditioned framework's rank is certain, the twelve
 // trusses of seed 002 moved by 1e-12 are full rank but close, and the report shows the distance
 // (it printed "smallest/largest singular value: 0" before: values below 2^12 ε were cut to zero).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Second-order classification and finite-motion tracing of bar frameworks (issue 13).
 // Every expectation is derived by hand below (and was cross-checked with an independent numpy
 // script that builds the rigidity matrix, its self-stresses and the stress matrix Σ ω_e |Δu_e|²

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The sparse path's modes, stress states and release proposal (null vectors of the sparse R
 // factors) against the dense SVD path on every framework example, and against hand-derived
 // bases on generated lattices.

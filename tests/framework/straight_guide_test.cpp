@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Seed 002, section 4: straight guiding mechanisms with wire and folded sheet flexures
 // (Figs. 3-6). Expected values follow from the text and from hand analysis of the geometry
 // documented in each example file.

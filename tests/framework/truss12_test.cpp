@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Seed 002, section 3.3: the system of twelve rigid trusses (Fig. 2, Table 2, after
 // Pellegrino & Calladine 1986).
 

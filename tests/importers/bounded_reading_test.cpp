@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Issue 40 item 5: every importer and `sweep --merge` read through the bounded reader of YAML
 // model files (64 MiB, devices and FIFOs read only up to the limit), and read in time linear in
 // the number of joints: a chain of 2 * 10^4 revolutes (URDF) and of 2 * 10^4 trusses (SPACAR).

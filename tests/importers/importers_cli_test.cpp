@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The `kinestat` command with other programs' files: analyze / draw / structure read them by
 // extension, `convert` writes YAML and SPACAR, and bad files exit 2 with one located line.
 

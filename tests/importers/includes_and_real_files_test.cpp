@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Issue 40 items 3, 8 and 6 (includes resolved beside the including file, with a depth limit and
 // the model's folder as a boundary; libsdformat's and MuJoCo's errors at the file and line written,
 // the included file named; NaN refused) and issue 37 (elements without kinematic meaning and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // URDF, SDFormat and MJCF readers: small files exercising every supported element give the
 // coupling network derived by hand, and the four-bar, Stewart-Gough platform and Delta robot
 // written in each format (examples/robots/) give the FN, CN, modes, self-stresses and pair

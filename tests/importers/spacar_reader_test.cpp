@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The SPACAR reader: every supported keyword gives the model derived by hand (the expected
 // values below come from the file's numbers and docs/formats.md, not from the program), the
 // published mechanisms give the counts of seed 002 and of the YAML examples, and malformed

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // SPACAR out and kinestat YAML out: a model written and read back keeps its kinematic meaning
 // (same D(c) size, rank, modes and self-stresses), and the release proposal comes out as the
 // RLSE lines that make the re-read model exactly constrained.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // One error root (issue 14): every error the library throws on purpose is a kinestat::Error
 // with the exit code a command ends with and, for input, the file position.
 #include <gtest/gtest.h>

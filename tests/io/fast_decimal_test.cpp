@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The readers' fast path for numbers (io::decimal_toward_zero, YamlFile::plain_numbers) gives
 // exactly the double the exact path gives: GMP's exact rational of the literal converted by
 // mpq_get_d (rounding towards zero), compared bit for bit on fixed and seeded random literals.

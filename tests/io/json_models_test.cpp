@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Model files may be JSON (exported from other tools): YAML 1.2 reads JSON, so the same
 // readers apply. Each JSON file under examples/json/ is a shipped YAML example written as
 // JSON; the reports must be byte-identical, and JSON syntax errors must name line and column.

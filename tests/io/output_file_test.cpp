@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Output files (`-o`): devices and FIFOs are written in place and never replaced, symbolic
 // links are followed, parallel writers never collide, and a failed write leaves nothing behind
 // and says why. Device nodes are made with mknod in a private scratch folder, never in /dev.

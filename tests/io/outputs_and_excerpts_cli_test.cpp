@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Issue 40 at the command line: no output replaces an input (by device and inode, through
 // links), messages quote at most a short excerpt of a file, and numbers at the edge (amplitudes,
 // inputs and sweep ends far beyond the model, NaN tolerances) are refused or handled.

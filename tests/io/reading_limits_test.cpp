@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The reading layer enforces every limit while it reads (issue 16): bytes through a bounded
 // reader (devices, FIFOs, standard input), nesting, aliases counted as they expand, one
 // document per file, strings checked after unescaping, and messages that say what is wrong.

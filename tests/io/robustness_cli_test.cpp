@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Issue 16 at the command line: tolerances and values that are not usable numbers, results
 // that overflow, geometry that must be given, and the messages that used to mislead.
 #include <gtest/gtest.h>

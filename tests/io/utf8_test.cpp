@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Model files are UTF-8. A name with bytes that are not UTF-8 (a Latin-1 export, a corrupted
 // file) used to pass the reader and make the JSON report throw (exit 3; found by the fuzzer,
 // fuzz/seeds/model/regression-invalid-utf8-name.yaml); now it is an input error with its

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The model reader parses YAML with libyaml's event parser (io/yaml_support.cpp). These tests
 // pin what the reader adds to it or maps from it: positions (1-based, columns in characters),
 // nulls, anchors defined again, aliases of undefined anchors, characters that YAML 1.1 takes as

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Hostile or huge input fails cleanly with a position, without stack overflow, hang or
 // memory blow-up: deep flow and block nesting, alias expansion ("billion laughs"), long
 // strings and huge numbers.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `kinestat move` (issue 13): a framework mode or a network's primary motion traced with its
 // path printed, and a planar mechanism's positions solved group by group. Expected values come
 // from the geometry (bar lengths, Bennett's relation, the hand-derived limit angle of the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Position analysis group by group (issue 13, item 3): positions checked against closed forms
 // written here (law of cosines, Freudenstein's equation, circle-line and line-line
 // intersections) and against positions computed by an independent script

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The BLAS/LAPACK kernels of the dense path on small matrices computed by hand.
 
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Ruiz equilibration of a magnitude pattern: the scaled maxima of every row and column are 1,
 // and rank-relevant structure is left to the values (the pattern carries no values).
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // σ_min(R11) of a sparse QR's live block (SparseQr::smallest_singular_estimate) against Eigen's
 // dense Jacobi SVD of the same block (an independent method), and Kahan's matrix, whose pivots
 // are all far above its smallest singular value: the case where the smallest |R_ii| overstates

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // A sparse factorisation that would need more memory than allowed is refused after SuiteSparseQR's
 // symbolic analysis, with what it would need. The figure is checked against the factorisation
 // itself, made with the limit lifted: the refused stack holds R (at least 8 bytes per entry of

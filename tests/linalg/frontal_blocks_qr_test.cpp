@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // R read from SuiteSparseQR's frontal blocks: sparse_qr_rank (the rank and smallest live pivot,
 // R never assembled) and SparseQr (R assembled once, in trapezoidal form). Checked against a hand
 // derivation (orthogonal columns, where every pivot is a column norm whatever the order), against

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The sparse QR with a caller's column order (SparseQr with column_order) and the nested
 // dissection of a graph (nested_dissection_order) and of column groups
 // (grouped_nested_dissection_order), against Eigen's dense SVD (an independent method) on

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // GMP allocation failures become std::bad_alloc (a clean error) instead of GMP's abort().
 
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Homogeneous solutions on the seed's single-circuit example (seed 000, section 2.1) and on
 // small hand-checked systems.
 #include <gtest/gtest.h>

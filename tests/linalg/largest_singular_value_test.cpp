@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // σ_max of sparse matrices by Lanczos (linalg::estimate_largest_singular_value), the scale of
 // the sparse rank threshold, against Eigen's dense Jacobi SVD (an independent method) and
 // against matrices whose singular values are known by construction.

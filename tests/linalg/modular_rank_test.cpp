@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Modular ranks (issue 12, item 4): a lower bound of the rational rank, equal to it for large
 // primes; checked on matrices whose ranks are known by construction.
 #include <gtest/gtest.h>

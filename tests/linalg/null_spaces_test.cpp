@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // analyse_null_spaces against hand-derived spaces and singular values.
 
 #include <gtest/gtest.h>

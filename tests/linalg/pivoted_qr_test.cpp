@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // linalg::pivoted_column_order (blocked, in panels of 32) against orders derived by hand: column
 // norms that an orthogonal mixing of the rows leaves unchanged, ties to the earlier column, and
 // near-parallel columns whose remaining norm must be recomputed after cancellation.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The status of a rank decision (exact, certain, close, unproven) and its distance, on matrices
 // whose singular values are known by construction (diagonal matrices: the singular values are
 // the absolute diagonal entries, computed exactly by any SVD).

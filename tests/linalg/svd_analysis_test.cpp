@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The checked SVD: factors reconstruct A and are orthonormal, null spaces are exact to
 // rounding, including on matrices with many equal singular values (where Eigen 3.4's
 // divide-and-conquer SVD can fail).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `kinestat analyze` on every mechanism example: exit code 0, JSON that parses and carries the
 // published FN and CN, byte-identical output for the same input.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // FN, CN and every pair's fij and cij are properties of the mechanism, not of its
 // description: they must not change under a rigid motion of all geometry, a change of
 // length unit, renaming and reordering of bodies and couplings, another spanning tree, or

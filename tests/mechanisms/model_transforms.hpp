@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Test helpers for the mechanism examples: load an example, transform a network::Model
 // (rigid motion, scaling, renaming and reordering, other spanning trees) and compare the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Published mechanisms: every expected value comes from the literature cited in the example
 // file's header (Davies' seed 000; Bennett 1903; Hunt 1978; Phillips; Merlet), from a
 // Grübler-Kutzbach count or from Davies' identities, never from the program's output.

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: BSD-3-Clause
 # `mpirun -n 2 kinestat analyze --backend petsc` against the serial command on a generated
 # 10^4-bar square grid (bench/lattice_model.py; 70 mechanisms and 70 self-stresses by hand:
 # tests/support/lattice_generator.hpp), with --vectors 3 against the serial path's whole null

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: BSD-3-Clause
 # Pair freedoms on the distributed backend (`--pair BODY1:BODY2`, `--coupled-pairs`) at P = 1
 # and P = 2 against the serial sparse path (`analyze --sparse`, network::sparse_pair_freedoms on
 # generic vectors from the sparse QR, itself tested against Davies' dense method), on an example

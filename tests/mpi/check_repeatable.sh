@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: BSD-3-Clause
 # The same input gives byte-identical JSON at P = 2, where MUMPS sums in the order messages
 # arrive: each model twice under `mpirun -n 2 kinestat analyze --backend petsc MODEL --json`,
 # compared byte for byte. The models are those whose reports differed before every residual

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Coupling networks through the distributed backend against the serial sparse path
 // (network::analyse_network_sparse, SPQR of K and Kᵀ) on the benchmarks' generated networks
 // (tests/support/network_generator.hpp) of 10³–3·10³ couplings: FN, CN, the class, the couplings

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The distributed backend against counts known by hand (tests/support/lattice_generator.hpp:
 // Maxwell's rule and the shear of layers) and against the serial sparse path, on lattices of
 // 10^4 to 10^5 bars; null vectors checked by their residual. Run under mpirun -n 2: every

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // main() of the mpi tests: MPI, PETSc and SLEPc around GoogleTest; only rank 0 prints.
 
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The `kinestat analyze` command on networks: output, determinism, and bad input (exit code 2
 // and a single line `file:line:column: error: ...` on standard error).
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The `kinestat` command factors K and Kᵀ of a large network side by side: its own rand() keeps
 // one state per thread, so each METIS ordering draws what it draws alone. With the C library's
 // rand() shared by both threads the fill orders, and with them the ladder's close rank evidence

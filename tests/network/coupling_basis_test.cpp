@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Bases of every coupling type: f + c = d, the actions are reciprocal to the motions, and
 // both sets are independent; planar projections; the standard bases of seed 000 Table 3/4.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Davies' 2-circuit network (seed 000, Fig. 1, Appendix 3): every matrix, rank and table
 // printed in the paper. Expected values are typed in from the paper and were checked by hand
 // against Tables 3 and 4 (unit screws) and the partitions of B and Q; two printed values that

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // On every shipped network example: the circulation law and the cutset-motion method give the
 // same motion matrix, the cutset law and the circuit-action method the same action matrix,
 // the identities of seed 000 (eqs 7, 8, 16) hold, and exact and floating-point arithmetic agree.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Finite-motion tracing of coupling networks (issue 13, item 2). Every expected value comes from
 // a closed form of the mechanism, derived in the comments, never from the program's output:
 // Freudenstein's equation for the planar four-bar (analysed planar and in space), Bennett's

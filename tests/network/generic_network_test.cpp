@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The generic answer of coupling networks (issue 12, item 3): FN and CN of the same couplings at
 // a random realisation, and which motions and self-stresses exist only because of the geometry.
 // Every expected number is derived by hand in the comments (screw systems of lines in general

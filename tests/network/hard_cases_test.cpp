@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Numerically hard coupling networks (issue: robustness): exactly singular geometry given in
 // floating point, nearly singular geometry, ill-scaled models and decisions near the
 // tolerance. Expected answers come from the geometry, not from the program.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The single-rank count of FN and CN used to screen design changes. Expected values are hand
 // derived from the geometry (Grubler-Kutzbach where it holds, the parallel-axis argument where
 // it does not); the every-example case checks the count against the full analysis.

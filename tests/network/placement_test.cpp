@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Placement never changes the answer (issue 12, item 1): every network example, rotated and
 // moved by 10, 100 and 1000 times its size with its coordinates at full double precision (as a
 // program that places a mechanism in a machine writes them), analysed in floating point, gives

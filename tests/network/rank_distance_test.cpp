@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Issue 12, item 2: every rank decision has a status (exact, certain, close) and a distance to
 // another rank. Exact analyses of designs a little away from a mobile one (Bennett's linkage, the
 // parallelogram with a redundant crank) say FN = 0 exactly, and how near the mobile design is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The doubles of the sparse path's coupling bases (screw::rounded_coupling_basis) against the
 // exact GMP bases rounded by Rational::get_d: the same screws, kinds, letters and the same bits,
 // on seeded random geometry of every type (spatial and planar, integers, tenths, thirds and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Second-order classification of network motions (issue 13): the expected orders come from
 // hand derivations (the collinear triangle below) and from mechanisms known to move finitely
 // (a motion that exists finitely cannot be blocked at second order): the planar and spherical

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Property-based tests for frameworks: on every shipped framework example and on seeded random
 // planar and spatial trusses, the counts (rank, mechanisms, self-stresses) do not change when
 // nodes and elements are renamed and listed in another order, and on random trusses also not

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Property-based tests over seeded random coupling networks: the identities of seed 000 hold,
 // the dual methods agree, and FN, CN and every pair's fij and cij are unchanged by a rigid
 // motion, a change of length unit (x1e-3, x1e3), renaming and reordering, another spanning

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Seeded random coupling networks with exact rational geometry, and the transformations the
 // property tests apply to them (rigid motion, change of length unit, renaming and reordering).

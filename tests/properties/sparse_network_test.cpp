@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The sparse body-twist path against Davies' dense exact path (an independent method: circuit
 // and cutset laws over a spanning tree) on seeded random networks and on every example: FN, CN,
 // the couplings that carry a self-stress and the couplings that move, and the pair freedoms

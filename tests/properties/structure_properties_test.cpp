@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Property-based tests of the structural-group decomposition (seed 004): the groups, their
 // Eq. 1 parameters, the order relation between them, the DOF assignments and the part that
 // cannot be decomposed depend on the mechanism, not on how it is written down. Each model is

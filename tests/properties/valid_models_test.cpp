@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Semantic properties on valid models (issue 40): random model files that the readers accept
 // never crash the analyses, verdicts or reports, and satisfy the counting identities; the
 // degenerate models (every node supported, no element, one body, a body on one coupling, all

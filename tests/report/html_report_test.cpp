@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `kinestat report`: one self-contained HTML file, errors with exit code 2, and large models
 // that still give a bounded file (elements merged into one line set above kLargeSceneElements).
 

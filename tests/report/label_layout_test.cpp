@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Pictures checked by eye, and what a test can check of them (issue 10, item 5): in the
 // mechanism drawing of every example (including the robot files and SPACAR decks) no two labels
 // overlap and no label or line leaves the canvas, the verdict under the title is the text

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Every self-stress and mode is visible (issue 10, items 4 and 5): the folded-sheet guide's
 // self-stress colours every sheet, Davies' network draws both self-stresses as coupling
 // wrenches and its three modes as body twists, and the structural diagram of saura-eq2 routes

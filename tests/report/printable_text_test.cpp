@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Names with control characters in every text writer (issue 16): the readers refuse most of
 // them, but the library's models can be built in code (as here, bypassing the readers) and a
 // name may still hold a tab or a line feed. Every text report, the verdict block, the DOT graph

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The scene carries the model and result data the pictures show.
 
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // One sign for every mode and self-stress (issue 10, item 3): the text report, the JSON
 // report, the SVG drawing and the HTML scene of a framework show the same sign for every
 // resultant and every nodal velocity, on every shipped framework example, on a Warren truss

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // SVG drawings are deterministic and match the stored, eye-reviewed files under
 // tests/report/golden/. To regenerate after an intended change (then look at every changed
 // picture before committing it):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Issue 13, item 2: the HTML report animates a framework's finite modes through configurations
 // traced both ways, written compactly into the scene; modes that are not traced keep the
 // first-order animation with the reason. Expected bar lengths are the models' own, computed by

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Deriving a structure model from a coupling list (what a coupling-network model provides).
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The polynomial method against the seed's own search (Algorithms 1-3), on generated
 // mechanisms with shuffled body numbers and on random adjacency matrices: whenever the
 // mechanism is well constrained, the two must give the same groups in the same order and

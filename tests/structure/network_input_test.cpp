@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `kinestat structure` on a coupling-network model: the four-bar of seed 004, Fig. 2, written
 // as a planar network with the crank's revolute as input, gives SG-I = {2}, SG-II = {3, 4}.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The examples of seed 004 (Saura, Celdrán, Dopico, Cuadrado): the four-bar of Fig. 2 and
 // the mechanism of Fig. 4 with the adjacency matrices and result matrices of Eqs. 2-4.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The `kinestat structure` command: examples, standard input, diagrams, and bad input
 // (exit code 2 with one line on standard error).
 #include <gtest/gtest.h>

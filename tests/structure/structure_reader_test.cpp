@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Reading structure models: the matrix form, the named-pairs form, the bare stdin matrix,
 // and one clear error (file:line:column, row and column) for each kind of bad input.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Reports of the structural analysis: JSON keys and values, determinism, DOT and SVG.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Helpers shared by the structure tests: loading example files and reading groups with the
 // paper's 1-based body numbers.

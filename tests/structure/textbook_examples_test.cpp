@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Classic decompositions from textbooks, loaded from the shipped examples, and the seed's
 // examples as files. The expected groups are the published ones cited in each example file.
 #include <gtest/gtest.h>

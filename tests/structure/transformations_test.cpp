@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Structural transformations (the seed's AMPLIACION) of the mechanism of Fig. 4.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Runs the built `kinestat` command for CLI tests and captures exit code, stdout and stderr.
 

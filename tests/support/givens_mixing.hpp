@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A fixed orthogonal matrix for tests whose hand-derived answer is invariant under an orthogonal
 // change of the rows (singular values, spans, column norms, a pivoted QR's choices): it leaves

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "support/lattice_generator.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Generated pin-jointed lattices for benchmarks and cross-checks of the sparse path: their
 // counts follow from the geometry (Maxwell's rule and the shear of layers), so they need no

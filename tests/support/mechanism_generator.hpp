@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Generated planar mechanisms for benchmarks and cross-checks: a crank driven from the
 // frame, then structural groups attached to bodies already placed, so that the mechanism is

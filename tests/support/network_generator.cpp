@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "support/network_generator.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Generated coupling networks for benchmarks and cross-checks of the sparse and distributed
 // network paths (bench/network_bench.cpp, tests/mpi): random revolute, cylindrical and spherical

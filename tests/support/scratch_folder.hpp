@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // One private scratch folder per test process, removed with its contents when the process ends,
 // so that a run of the suite leaves nothing behind in the system's temporary folder.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Comparing two bases of one space (modes, self-stresses) without comparing entries: a basis is
 // only defined up to an invertible change of coordinates.

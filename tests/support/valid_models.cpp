@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "support/valid_models.hpp"
 
 #include <fmt/format.h>

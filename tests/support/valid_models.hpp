@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Random *valid* model files for semantic fuzzing and property tests (issue 40): byte fuzzing
 // rarely writes a model the readers accept, so the crash of a framework whose every node is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `kinestat sweep` (issue 17, docs/sweep.md). Expected values: the parameter values from the
 // spec's arithmetic (k-th of `steps` equal steps), the counts from seed 002 (the folded-sheet
 // guide: D(c) 42 × 41 of rank 41) and from hand derivations (two bars, or three revolutes,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The arithmetic of design sweeps (design/sweep_grid.hpp). Expected values follow from the
 // definitions in docs/sweep.md (row-major numbering, v mod N shards), worked out by hand.
 

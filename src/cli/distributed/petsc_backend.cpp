@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `kinestat analyze --backend petsc FILE` (run under mpirun): a framework's or a coupling
 // network's counts (and with --vectors the first null vectors) decided by the distributed
 // backend (src/kinestat/distributed, docs/scaling.md). Rank 0 reads the model, builds D(c) or K

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The verdict of an exact-constraint analysis of a framework (seed 002): its kinematically
 // indeterminate modes are the extra motions (the intended ones are the declared independent

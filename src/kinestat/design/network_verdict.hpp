@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Design help for coupling networks (seed 000): the verdict of an analysed network. Intended
 // motions are the declared `inputs:` when the model has them, otherwise FN less the idle motions

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Screws of the verdict in words: a wrench as the line of its force (or a pure torque), a twist
 // as the axis of its rotation (or a pure translation), with the pitch when it is not zero.

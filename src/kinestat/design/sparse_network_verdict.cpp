@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/design/sparse_network_verdict.hpp"
 
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The verdict of a coupling network analysed on the sparse body-twist path (networks of
 // thousands of couplings): the same counts as network_verdict — intended motions are the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/design/structure_verdict.hpp"
 
 #include <fmt/format.h>

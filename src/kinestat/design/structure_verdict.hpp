@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The verdict of a structural decomposition (seed 004): bodies whose freedoms no input drives
 // are extra motions, constraints or inputs beyond what the bodies can take are redundant. One

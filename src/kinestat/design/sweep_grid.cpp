@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/design/sweep_grid.hpp"
 
 #include <fmt/format.h>

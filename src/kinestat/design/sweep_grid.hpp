@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The variants of a design sweep (docs/sweep.md): the values of each swept parameter, their
 // Cartesian product numbered in row-major order, and the deterministic slice of it that one

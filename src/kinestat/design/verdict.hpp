@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The verdict that leads every report (DESIGN.md, "Delivering the answer"): exactly
 // constrained or not, where the extra motions and redundant constraints sit, and one minimal

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The rank of a large sparse matrix A (m × n) decided on many processes. The symmetric
 // Jordan–Wielandt matrix H = [[0, A], [Aᵀ, 0]] has eigenvalues ±σ_i(A) and zeros, so by

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/distributed/framework_rank.hpp"
 
 #include <mpi.h>

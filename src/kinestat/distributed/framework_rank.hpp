@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A framework's counts decided by the distributed backend: D(c) built and scaled on rank 0
 // exactly as the serial path builds it (framework::prepare_analysis), the threshold of the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A coupling network's counts decided by the distributed backend: K (C × d(n − 1), body-twist
 // form, conditioned analysis frame) and its threshold built on rank 0 exactly as the serial

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/distributed/petsc_session.hpp"
 
 #include <mpi.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // MPI, PETSc and SLEPc for the life of one object: the distributed backend's entry point. Only
 // `kinestat analyze --backend petsc` and the mpi tests create one; nothing else in kinestat

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/distributed/process_memory.hpp"
 
 #include <sys/resource.h>

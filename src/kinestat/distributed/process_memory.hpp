@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Peak memory of this process, for the distributed backend's per-process report.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Deformation functions of seed 002, eqs (2)-(4), and their analytic derivatives with respect
 // to the nodal coordinates. Velocities of a node are (ẋ, ω): the translation rate (length/s)

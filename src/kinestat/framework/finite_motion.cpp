@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/framework/finite_motion.hpp"
 
 #include <Eigen/Geometry>

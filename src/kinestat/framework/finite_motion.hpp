@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Finite-motion tracing of a framework (issue 13, item 2): a predictor–corrector that follows
 // a direction of the mechanism space on the full nonlinear constraints (every fixed and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Exact-constraint analysis of seed 002, section 3: rank of D(c) from its SVD, the class of
 // Table 1, kinematically indeterminate modes (from V) and statically indeterminate stress

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/framework/framework_jacobian.hpp"
 
 #include "kinestat/framework/deformation_functions.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Assembly of the derivative 𝒟,x of all deformation functions (seed 002, eq 8), its partition
 // by the roles of coordinates and deformations (eq 10), the Jacobian D(c) of eq (11) and the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/framework/framework_model.hpp"
 
 #include <algorithm>

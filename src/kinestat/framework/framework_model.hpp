@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The finite-element multibody model of seed 002 (Aarts, Meijaard, Jonker) as plain data:
 // nodes with positions (and triads where rotations matter), elements with deformation modes,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/framework/generic_framework.hpp"
 
 #include <Eigen/Geometry>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The generic answer of a framework: the numbers of kinematically indeterminate modes and of
 // self-stresses for the same nodes, elements, supports and releases at a random realisation

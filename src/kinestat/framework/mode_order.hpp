@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Plain results of the second-order classification of kinematic modes and of finite-motion
 // tracing (issue 13): is a first-order mechanism blocked at second order by a self-stress

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/framework/pebble_game.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Laman's count for planar bar frameworks by the (2, 3) pebble game (Jacobs and Hendrickson,
 // J. Comput. Phys. 137, 1997): which bars are independent at a generic realisation of the same

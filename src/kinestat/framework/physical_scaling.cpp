@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/framework/physical_scaling.hpp"
 
 #include <algorithm>

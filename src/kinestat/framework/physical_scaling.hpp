@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The scaling of D̂ by the lengths of the elements: one characteristic length makes D(c)
 // independent of units, but a model with elements of 1e-6 and 1e3 still spreads its singular

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/framework/rigid_mode_basis.hpp"
 
 #include <fmt/format.h>

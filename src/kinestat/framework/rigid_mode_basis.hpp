@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Mode bases a designer can read (issue 35): the rigid-body motions of a model without enough
 // supports named first and kept apart, then the internal modes as an orthonormal basis

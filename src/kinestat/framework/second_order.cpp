@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/framework/second_order.hpp"
 
 #include <Eigen/Eigenvalues>

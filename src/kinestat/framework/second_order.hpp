@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Second-order classification of the kinematic modes of a framework (issue 13, item 1).
 //

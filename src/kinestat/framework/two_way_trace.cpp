@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/framework/two_way_trace.hpp"
 
 #include <algorithm>

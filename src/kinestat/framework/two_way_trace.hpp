@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A kinematic mode followed both ways from the model's configuration (issue 13, item 2): what
 // the HTML report animates instead of the first-order velocities. Two runs of trace_motion,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/graph/coupling_graph.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The coupling graph G_C (seed 000, section 2.3.1): bodies are nodes, couplings are directed
 // edges `between: [i, j]` from i to j. Circuits take the orientation of their chord, cutsets

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Reads a `kind: framework` model file (docs/framework.md) into a FrameworkModel. Every
 // problem is an InputError at the offending node: file:line:column: error: what.

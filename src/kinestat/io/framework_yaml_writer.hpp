@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Writes a framework model as a kinestat model file (docs/framework.md), so that a model read
 // from another format (SPACAR) can be seen, edited and analysed as YAML.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The one error type for bad input: every message names file, line and column so that a
 // user can jump straight to the problem (`file:line:column: what was expected`).

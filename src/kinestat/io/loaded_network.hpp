@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A coupling-network model as read from a file: the model and where each of its items is in
 // the file, so that problems the analysis finds later can point into the file.

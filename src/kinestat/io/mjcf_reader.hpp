@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Reads a MuJoCo MJCF file through libmujoco into a coupling network (docs/formats.md): the
 // body tree with its joints (hinge, slide, ball, free; several joints in one body become a

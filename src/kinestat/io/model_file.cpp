@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/io/model_file.hpp"
 
 #include "kinestat/io/framework_reader.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Reads a model file of any kind (network, framework, structure; YAML or JSON) for programs
 // that use kinestat as a library. The YAML parser stays inside the library: this header is

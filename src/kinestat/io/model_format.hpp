@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Which reader a model file goes to (docs/formats.md): kinestat's own YAML / JSON, or another
 // program's format told by the file's extension (and, for .xml, its root element).

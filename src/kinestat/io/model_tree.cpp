@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/io/model_tree.hpp"
 
 namespace kinestat::io {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The parsed content of a model file: a compact read-only tree of scalars, lists and maps,
 // each node with its 1-based line and column. Built event by event from YAML or JSON (see

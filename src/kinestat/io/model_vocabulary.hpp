@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Keys every model kind shares, read the same way everywhere: `dimension:` (the words
 // `spatial` and `planar`; a bare number is refused because 3 meant planar in one kind and

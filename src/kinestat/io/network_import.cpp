@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/io/network_import.hpp"
 
 #include <fmt/format.h>

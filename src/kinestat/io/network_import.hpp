@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Shared by the readers of robot description formats (URDF, SDFormat, MJCF): a network model
 // built joint by joint with the file position of every joint, so that problems the analysis

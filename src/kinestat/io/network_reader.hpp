@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Reads a coupling-network model file (kind: network) into network::Model, with a position
 // for every item so that problems found later by the analysis can point into the file.

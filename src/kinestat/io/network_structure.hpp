@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The topology of a coupling-network model as a structure model (seed 004): which bodies
 // form lower or higher pairs and where the inputs are, so `kinestat structure` reads network

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/io/network_yaml_writer.hpp"
 
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Writes a coupling network as a kinestat model file (docs/network.md), so that a model read
 // from URDF, SDFormat or MJCF can be seen, edited and analysed as YAML.

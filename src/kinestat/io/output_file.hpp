@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Output files are written whole or not at all. A regular file (or a new one) is written to a
 // uniquely named temporary file beside it and renamed over it, so a failure never leaves a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Names and other user-supplied text placed in a text report, a DOT graph, a comment of a
 // written file or an error message: every character that a terminal or a line-oriented reader

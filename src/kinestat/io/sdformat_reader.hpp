@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Reads an SDFormat file (.sdf) through libsdformat into a coupling network (docs/formats.md):
 // links become bodies, joints couplings with poses and axes resolved to the model frame; the

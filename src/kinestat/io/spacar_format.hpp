@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The SPACAR keywords kinestat reads and writes (docs/formats.md), shared by the SPACAR
 // reader and writer so that both agree on what each element keyword means.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Reads the kinematic part of a SPACAR input file (.dat, as written by hand or by SPACAR
 // Light) into a FrameworkModel: X, BEAM, BEAMW, TRUSS, HINGE, PINBODY, PLBEAM, PLTRUSS,

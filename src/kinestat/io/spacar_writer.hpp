@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Writes a framework model as the kinematic part of a SPACAR input file (docs/formats.md):
 // X, BEAM / PLBEAM, TRUSS / PLTRUSS, RLSE, INPUTE, FIX and INPUTX, numbered as SPACAR Light

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/io/structure_reader.hpp"
 
 #include "kinestat/io/model_vocabulary.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Reads the topology for a structural analysis: a `kind: structure` model file (an
 // adjacency matrix of the codes of seed 004, Table 1, or named bodies and pairs), or a bare

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/io/sweep_merge.hpp"
 
 #include <fmt/format.h>

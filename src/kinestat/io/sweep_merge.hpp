@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The merge step of a sharded sweep (docs/sweep.md): the lines of every shard's output, in
 // variant order, checked to be one whole sweep.

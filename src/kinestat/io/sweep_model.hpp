@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The model of a parameter sweep as text with a hole for each parameter: every variant is the
 // model file with the parameters' literals written in place of the numbers they address, read

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Reads a sweep spec (`kind: sweep`, docs/sweep.md): the model and the parameters varied in it,
 // or a list of variant files. Every problem is an InputError at its place in the spec

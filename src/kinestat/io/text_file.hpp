@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Whole input files as text, for the readers of other programs' formats (SPACAR, URDF,
 // SDFormat, MJCF) and the merge of sweep outputs: read through the bounded reader of YAML

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Reads a URDF robot description into a coupling network (docs/formats.md): links become
 // bodies, joints couplings with their axes and positions resolved to the root link's frame;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/io/yaml_support.hpp"
 
 #include "kinestat/io/printable_text.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Reading kinestat model files (YAML, or JSON which is YAML too): the text is read through a
 // bounded reader and parsed event by event into a ModelTree, with every limit (bytes, nesting,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/kinematics/position_solver.hpp"
 
 #include <Eigen/Dense>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Position analysis of a planar mechanism group by group (issue 13, item 3; seed 004's next
 // step): the structural groups are solved in their order of formation, each from the poses of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Matrix products and solves on the optimised BLAS/LAPACK kinestat links (Debian's OpenBLAS, its threads pinned by
 // pin_blas_threads). Eigen's own kernels are compiled for the baseline x86-64 instruction set

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // kinestat's dense kernels (LAPACK's SVD, SuiteSparse's frontal matrices) run on Debian's
 // OpenBLAS. Its thread count is pinned rather than left to the machine.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Which states (motions, self-stresses) of a basis come from the topology of a model and which
 // from its special geometry. The generic answer (a random realisation of the same topology)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // CHOLMOD's description of an Eigen compressed-column matrix with 64-bit indices, without a copy:
 // how SuiteSparseQR and CHOLMOD are handed a matrix. Internal (not installed): it includes

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // SuiteSparse's METIS orderings draw from the C library's rand(), whose state glibc keeps once
 // per process: two orderings on two threads would interleave their draws, so each fill order

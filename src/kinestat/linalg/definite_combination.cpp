@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/linalg/definite_combination.hpp"
 
 #include <Eigen/Eigenvalues>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The most positive combination of symmetric quadratic forms: the search behind prestress
 // stability (Connelly & Whiteley 1996), for frameworks (stress matrices of the self-stresses)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Diagonal equilibration of a matrix from the natural magnitudes of its entries. A rank
 // decision relative to sigma_max is only meaningful when rows and columns are measured in

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/linalg/factorisation_memory.hpp"
 
 #include <fmt/format.h>

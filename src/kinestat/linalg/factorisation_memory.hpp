@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // How much memory a sparse factorisation may take, and the refusal of one that would take more.
 // SuiteSparseQR's symbolic analysis knows, before any numeric work, the size of the stack of

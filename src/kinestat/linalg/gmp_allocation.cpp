@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/linalg/gmp_allocation.hpp"
 
 #include <gmp.h>

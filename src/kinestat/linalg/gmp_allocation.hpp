@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // GMP's default allocation functions call abort() when memory runs out ("GNU MP: Cannot
 // allocate memory"), which no caller can catch. These replacements throw std::bad_alloc

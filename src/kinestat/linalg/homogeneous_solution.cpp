@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/linalg/homogeneous_solution.hpp"
 
 #include "kinestat/linalg/blas_kernels.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The solution space of a homogeneous system A x = 0, expressed in terms of chosen free
 // variables (Davies' "primary variables"), exactly or in floating point. This is the one

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Exact ranks by arithmetic modulo a prime. The rank of a rational matrix reduced modulo p is
 // never above its rank over the rationals (a minor that vanishes over Q vanishes mod p), and it

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Fill-reducing nested-dissection orderings (METIS, through CHOLMOD) of an undirected graph,
 // and of the columns of a sparse matrix whose columns come in groups attached to the vertices

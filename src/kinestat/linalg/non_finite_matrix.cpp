@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/linalg/non_finite_matrix.hpp"
 
 namespace kinestat::linalg {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The refusal of a matrix with an infinite or NaN entry before it reaches LAPACK: dgesdd's QR
 // iteration (dbdsqr) never returned on a 13 × 6 matrix with infinite entries (found by

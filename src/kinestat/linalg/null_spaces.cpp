@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/linalg/null_spaces.hpp"
 
 #include <algorithm>

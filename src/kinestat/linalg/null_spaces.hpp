@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Rank and both null spaces of a dense matrix, for analyses that need the null vectors but not
 // the other singular vectors (a framework's modes and self-stress states).

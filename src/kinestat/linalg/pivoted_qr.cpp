@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/linalg/pivoted_qr.hpp"
 
 #include <Eigen/Householder>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The column order of a Householder QR factorisation with column pivoting, with a tie rule
 // that rounding cannot change: columns whose remaining norms are within kPivotTie of the

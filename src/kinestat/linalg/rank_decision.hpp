@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Every rank kinestat reports carries its evidence: how far the smallest kept singular value
 // (or exact pivot) is from the largest dropped one, so a user sees how close the design is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A dense matrix of exact rationals (GMP). Eigen is not used here because mpq_class is not an
 // Eigen scalar out of the box and the algorithms we need (elimination) are simple.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A fixed-seed pseudo-random sequence (SplitMix64) for random realisations: the same on every
 // platform and standard library (std:: distributions are not), so reports stay byte-identical.

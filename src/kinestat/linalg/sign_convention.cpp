@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/linalg/sign_convention.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The one sign convention of every mode and self-stress vector (DESIGN.md: "a sign shown in a
 // picture is the one the analysis decided"). A null-space vector has no sign of its own; the

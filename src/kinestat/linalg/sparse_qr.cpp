@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/linalg/sparse_qr.hpp"
 
 #include "kinestat/linalg/blas_threads.hpp"

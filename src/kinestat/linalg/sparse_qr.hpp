@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Rank-revealing sparse QR by SuiteSparseQR, called through its own C++ interface rather than
 // Eigen's wrapper: a nested-dissection (METIS) fill-reducing ordering or the caller's own, R

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/linalg/sparse_rank.hpp"
 
 #include "kinestat/linalg/nested_dissection.hpp"

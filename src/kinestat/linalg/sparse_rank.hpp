@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Numerical rank of a large sparse matrix by SuiteSparseQR (multifrontal, nested-dissection
 // ordering, Heath's column-norm rank rule), for models too large for a dense SVD.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Singular value decomposition with a rank decision, for analyses that need the singular
 // vectors themselves (kinematic modes from V, self-stress states from U).

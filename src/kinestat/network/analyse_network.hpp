@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Davies' four methods on a coupling network (seed 000): Kirchhoff's circulation law for
 // motions, the cutset law for actions, and their virtual-power duals (cutset motions and

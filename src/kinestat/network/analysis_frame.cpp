@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/network/analysis_frame.hpp"
 
 #include <algorithm>

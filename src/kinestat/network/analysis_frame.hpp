@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Floating-point ranks of screw matrices depend on the origin and the length unit, because
 // rotational and translational coordinates mix. Floating-point analyses therefore run in a

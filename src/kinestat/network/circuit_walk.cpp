@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/network/circuit_walk.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The circuits of a coupling network as products of exponentials (issue 13): each circuit of the
 // analysis (a row of B) walked from its chord's `from` body, coupling by coupling, each coupling

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/network/finite_motion.hpp"
 
 #include <Eigen/Dense>

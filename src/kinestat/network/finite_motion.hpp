@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Finite-motion tracing of a coupling network (issue 13, item 2): a predictor–corrector that
 // follows a first-order motion of the network on the full nonlinear loop-closure equations,

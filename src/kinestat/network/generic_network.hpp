@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The generic answer of a coupling network: FN and CN for the same bodies, couplings and
 // coupling types at a random realisation of their geometry (random points, axes, normals and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Names of the unknown magnitudes, as in seed 000: the coordinate letter of a unit screw
 // along a frame axis followed by the coupling's label in lower case ("sa": rotation about y in

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/network/mobility_count.hpp"
 
 #include "kinestat/linalg/rational_matrix.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // FN and CN of a coupling network from a single rank, for screening many variants of one model
 // (the design search tries hundreds): the full analysis also solves the cutset law, both

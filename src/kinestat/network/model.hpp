@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A coupling network as plain data: bodies, couplings between them, and the user's choices
 // (chords, primary variables, numeric values). Filled by io::read_network_model.

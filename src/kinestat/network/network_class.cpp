@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/network/network_result.hpp"
 
 namespace kinestat::network {

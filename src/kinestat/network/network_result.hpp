@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Everything the coupling-network analysis finds, as plain data (seed 000): the graph
 // matrices, the unit matrices, ranks with their evidence, FN and CN, the motions and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/network/second_order.hpp"
 
 #include <Eigen/Dense>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Second-order classification of the motions of a coupling network (issue 13, item 1).
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Coupling networks too large for Davies' dense matrices, in body-twist form: the twists of the
 // n − 1 bodies other than the ground are the unknowns, and each of the C unit actions a of a

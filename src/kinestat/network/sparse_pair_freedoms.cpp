@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/network/sparse_pair_freedoms.hpp"
 
 #include <fmt/format.h>

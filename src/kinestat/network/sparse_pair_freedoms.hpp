@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Pair freedoms of a network analysed on the sparse body-twist path (seed 000, section 2.7):
 // fij, the nett degree of freedom of body j relative to body i, and cij, the nett degree of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/network/unit_matrices.hpp"
 
 namespace kinestat::network {

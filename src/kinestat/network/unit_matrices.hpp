@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The matrices of seed 000, sections 2.3-2.4: circuit and cutset matrices of the motion and
 // action graphs, the unit matrices of direct couplings, and the network unit matrices.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/report/analysis_report.hpp"
 
 #include "kinestat/design/framework_verdict.hpp"

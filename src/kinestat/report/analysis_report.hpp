@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The JSON report of a framework or network model as `kinestat analyze --json MODEL` prints it
 // with its default options: the analysis, the generic answer, the verdict and the report, in

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Text and JSON reports of an exact-constraint analysis (seed 002). Deterministic: the same
 // model and analysis give byte-identical output (fixed key order, numbers rounded to ten

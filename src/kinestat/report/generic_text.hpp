@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // One sentence per count on the generic answer (a random realisation of the same topology),
 // shared by the network and framework reports.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/report/html_writer.hpp"
 
 #include "kinestat/report/json_text.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The interactive report: one self-contained HTML file (three.js, the viewer and the scene as
 // JSON inlined) that opens offline in any browser with WebGL.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/report/linear_form_text.hpp"
 #include "kinestat/tolerances.hpp"
 

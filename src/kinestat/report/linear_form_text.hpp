@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Linear forms in primary variables as text: "Ub - We", "-sa", "0.5*vc", "0".
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Text placed in SVG or HTML: the characters that markup would read as markup, escaped.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/report/move_report.hpp"
 #include "kinestat/report/json_text.hpp"
 

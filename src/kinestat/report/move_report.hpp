@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Reports of `kinestat move` (issue 13): the path a framework mode or a network's primary motion
 // is traced along, and the positions a planar mechanism reaches at given inputs, group by group. Deterministic: numbers

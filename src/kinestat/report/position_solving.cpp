@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/report/position_solving.hpp"
 
 #include <fmt/format.h>

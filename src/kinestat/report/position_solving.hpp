@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Positions of a planar network solved group by group at given inputs (issue 13, item 3), as
 // `kinestat move FILE --input NAME=VALUE ... [--sweep NAME=FROM:TO:STEPS]` and Python's

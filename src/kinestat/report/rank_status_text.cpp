@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/report/rank_status_text.hpp"
 
 #include <fmt/format.h>

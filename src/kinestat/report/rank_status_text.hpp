@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // How every report states a rank decision: its status (exact, certain, close; unproven for a
 // sparse QR) and its distance to another rank (docs/architecture.md, "Rank decisions").

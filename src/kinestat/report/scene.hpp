@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A scene: what the pictures of a model show, as plain data built from a model and its
 // result — node positions, elements, coupling glyphs, modes as nodal velocities, stress

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The structural diagram of seed 004 as SVG (declared in structure_report.hpp): one circle per
 // structural group labelled (N_m, n_c) and with its bodies, arrows from the group that gives
 // DOF to the group that receives it. An arrow that would pass under a circle it does not end

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/report/structure_report.hpp"
 
 #include "kinestat/io/printable_text.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Writers for the structural analysis: a text report, a JSON report (fixed key order, so
 // the same model gives byte-identical output), and the structural diagram as Graphviz DOT

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/report/svg_writer.hpp"
 
 #include "kinestat/report/markup_escape.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Static SVG drawings of a scene, fit for a paper, with no external dependency. Layouts follow
 // fixed placement rules and every number is written with fixed precision, so the same model

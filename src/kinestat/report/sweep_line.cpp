@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/report/sweep_line.hpp"
 
 #include "kinestat/report/json_text.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // One line of a design sweep's output (docs/sweep.md): which variant, what it is, and the keys
 // of its `kinestat analyze --json` report that a sweep compares (or the whole report), as one

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A design sweep run (docs/sweep.md): every variant of one shard of a spec, in ascending order,
 // read and analysed as `kinestat analyze --json` would, each turned into its line. The command

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The verdict block that leads every report (text and JSON), formatted from a design::Verdict
 // as decided by the design layer; nothing is recomputed here.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The HTML viewer's assets, embedded at build time (cmake/KinestatViewer.cmake): three.js
 // from the npm registry and kinestat's viewer.js / viewer.css.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Unit motion and action screws spanning the systems a coupling allows and transmits
 // (seed 000, Appendix 3, Tables 3 and 4): motions in axis formation (w; p x w + h w),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/screw/coupling_type.hpp"
 
 #include <array>

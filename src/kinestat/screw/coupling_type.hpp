@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The kinds of coupling (joint) kinestat knows, with their file-format names.
 

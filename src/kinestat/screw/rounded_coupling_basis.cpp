@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/screw/rounded_coupling_basis.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A coupling's unit motion and action screws in doubles, for the sparse network path: the same
 // screws as coupling_basis (seed 000, Appendix 3), each coordinate rounded toward zero as

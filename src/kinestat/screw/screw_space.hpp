@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The screw space of a model: which of the six coordinates (r, s, t; u, v, w) for motions and
 // (R, S, T; U, V, W) for actions it uses. d = 6 for spatial models, d = 3 for planar motion in

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // An exact rational with 64-bit numerator and denominator, for building coupling bases without
 // GMP when the geometry's numbers are short (integer or few-digit decimal coordinates). Every

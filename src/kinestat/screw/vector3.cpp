@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/screw/vector3.hpp"
 
 #include <algorithm>

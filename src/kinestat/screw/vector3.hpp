@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Exact 3-vectors for coupling geometry. Model files give decimal literals, which are exact
 // rationals, so screw coordinates are built exactly and rounded only when a floating-point

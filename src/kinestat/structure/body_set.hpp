@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // An ordered set of body numbers in [0, n): a bitmap with a summary word per 64 words.
 // The structural search inserts and erases a body once or twice each and lists the set in

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/structure/constraint_blocks.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The polynomial core of the structural analysis: the constraints of the pairs (and the
 // inputs, which fix freedoms) are assigned to the freedoms of the bodies by a maximum flow,

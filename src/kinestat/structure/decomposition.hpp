@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Decomposition of a mechanism into structural groups (Assur groups), seed 004: the groups
 // in the order in which they are obtained, their Eq. 1 parameters, the result matrix

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/structure/structural_diagram.hpp"
 
 #include <algorithm>

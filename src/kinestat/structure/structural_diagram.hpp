@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The structural diagram of seed 004 (Fig. 2.g, Fig. 4.c) as data: one node per structural
 // group labelled (N_m, n_c), the frame as node 0, and an arrow from every group to each group

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/structure/structure_model.hpp"
 
 #include "kinestat/error.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The topology a structural analysis needs: bodies (body 1, index 0, is the frame) and the
 // kinematic pairs between them, each with its number of freedoms and of input movements.

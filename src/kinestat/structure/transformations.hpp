@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Structural transformations (the seed's AMPLIACION): the same mechanism with its input
 // movements placed on other pairs. Each placement is decomposed and the placements are

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Independent positions of the six-bar test mechanisms (tests/kinematics/position_solver_test.cpp).
 
 Not kinestat's method: every moving joint position is an unknown at once, every link keeps

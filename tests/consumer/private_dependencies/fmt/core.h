@@ -1,1 +1,2 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #error "a public kinestat header includes <fmt/core.h>, a private dependency"
