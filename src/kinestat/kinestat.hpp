@@ -5,6 +5,7 @@
 // (tests/consumer) fails when a public header is missing here.
 #include "kinestat/address_sanitizer.hpp"
 #include "kinestat/error.hpp"
+#include "kinestat/design/framework_change_application.hpp"
 #include "kinestat/design/framework_verdict.hpp"
 #include "kinestat/design/network_verdict.hpp"
 #include "kinestat/design/screw_text.hpp"
