@@ -70,6 +70,9 @@ void register_report(CLI::App& app, Action& action);
 void register_convert(CLI::App& app, Action& action);
 void register_move(CLI::App& app, Action& action);
 void register_sweep(CLI::App& app, Action& action);
+/// `kinestat fix MODEL -o FIXED` (fix_command.cpp): the verdict's first verified change set applied and
+/// written as a kinestat YAML model; exit 4 when already exactly constrained, 5 without a verified set.
+void register_fix(CLI::App& app, Action& action);
 
 /// Adds `--allow-outside-includes` to `command`: SDFormat and MJCF files may then include files
 /// outside the model's folder (io::ImportOptions::allow_includes_outside_folder).

@@ -107,6 +107,7 @@ int run(int argc, const char* const* argv) {
   register_convert(app, action);
   register_move(app, action);
   register_sweep(app, action);
+  register_fix(app, action);
   for (CLI::App* command : app.get_subcommands({}))
     if (command->get_name() != "sweep") add_import_options(*command);
   try {

@@ -32,6 +32,17 @@ std::string decimal(const screw::Rational& value) {
 
 std::string yaml_vector(const screw::Vec3& v) { return fmt::format("[{}, {}, {}]", decimal(v[0]), decimal(v[1]), decimal(v[2])); }
 
+// A custom coupling's screws: [[d numbers], ...].
+std::string yaml_screws(const std::vector<std::vector<screw::Rational>>& screws) {
+  std::string out = "[";
+  for (std::size_t k = 0; k < screws.size(); ++k) {
+    out += k ? ", [" : "[";
+    for (std::size_t i = 0; i < screws[k].size(); ++i) out += (i ? ", " : "") + decimal(screws[k][i]);
+    out += "]";
+  }
+  return out + "]";
+}
+
 }  // namespace
 
 std::string network_yaml(const network::Model& model, const std::vector<std::string>& comments) {
@@ -54,7 +65,14 @@ std::string network_yaml(const network::Model& model, const std::vector<std::str
     if (c.geometry.axis2) out += ", axis2: " + yaml_vector(*c.geometry.axis2);
     if (c.geometry.normal) out += ", normal: " + yaml_vector(*c.geometry.normal);
     if (c.type == screw::CouplingType::helical) out += ", pitch: " + decimal(c.geometry.pitch);
+    if (!c.geometry.custom_motions.empty()) out += ", motions: " + yaml_screws(c.geometry.custom_motions);
+    if (!c.geometry.custom_actions.empty()) out += ", actions: " + yaml_screws(c.geometry.custom_actions);
     out += "}\n";
+  }
+  if (!model.inputs.empty()) {
+    out += "inputs: [";
+    for (std::size_t i = 0; i < model.inputs.size(); ++i) out += (i ? ", " : "") + yaml_quoted(model.inputs[i]);
+    out += "]\n";
   }
   return out;
 }

@@ -10,7 +10,7 @@
 
 namespace kinestat::io {
 
-/// The YAML text of `model` (bodies, ground, couplings with their geometry), preceded by
+/// The YAML text of `model` (bodies, ground, couplings with their geometry, custom screws, inputs), preceded by
 /// `comments` (one `# ` line each). Numbers are written exactly when they are terminating
 /// decimals, otherwise to 17 significant digits.
 std::string network_yaml(const network::Model& model, const std::vector<std::string>& comments = {});

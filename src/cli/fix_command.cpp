@@ -1,0 +1,257 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// `kinestat fix MODEL -o FIXED`: the design the verdict proposes, written as a model file. The
+// verdict's first verified change set is applied to the model (networks:
+// design::apply_network_change_set, frameworks: design::apply_framework_change_set) and the
+// result written as kinestat YAML — for an imported URDF, SDFormat, MJCF or SPACAR file, the
+// converted model with the changes applied. Before anything is written, the text about to be
+// written is read back and analysed again: the file is written only when that analysis is
+// exactly constrained with the intended motions of the original, and the report shows its
+// verdict. Exit codes: 0 written, 2 bad input, 3 internal error, kExitAlreadyExact and
+// kExitNoVerifiedChange (nothing written, docs/report.md).
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <cctype>
+#include <iostream>
+#include <memory>
+#include <optional>
+
+#include "cli/commands.hpp"
+#include "cli/option_checks.hpp"
+#include "kinestat/design/framework_change_application.hpp"
+#include "kinestat/design/framework_verdict.hpp"
+#include "kinestat/design/network_change_application.hpp"
+#include "kinestat/framework/generic_framework.hpp"
+#include "kinestat/io/framework_reader.hpp"
+#include "kinestat/io/framework_yaml_writer.hpp"
+#include "kinestat/io/model_file.hpp"
+#include "kinestat/io/network_reader.hpp"
+#include "kinestat/io/network_yaml_writer.hpp"
+#include "kinestat/io/output_file.hpp"
+#include "kinestat/io/printable_text.hpp"
+#include "kinestat/network/sparse_network.hpp"
+#include "kinestat/report/analysis_report.hpp"
+#include "kinestat/report/framework_report.hpp"
+#include "kinestat/report/json_text.hpp"
+#include "kinestat/report/verdict_report.hpp"
+
+namespace kinestat::cli {
+
+namespace {
+
+/// The model is exactly constrained already: nothing to fix, nothing written.
+constexpr int kExitAlreadyExact = 4;
+/// The verdict has no verified change set (none found, none passed re-analysis, or the model is
+/// beyond the change search): nothing written.
+constexpr int kExitNoVerifiedChange = 5;
+
+struct FixOptions {
+  std::string model_path;
+  std::string output_path;
+  bool json = false;
+  std::optional<double> tolerance;
+};
+
+// A model analysed as the reports show it: its verdict, and its model for applying changes.
+struct Judged {
+  design::Verdict verdict;
+  std::optional<network::Model> network;
+  std::optional<framework::FrameworkModel> framework;
+};
+
+Judged judge_network(const io::LoadedNetwork& loaded, const std::string& path, const FixOptions& o) {
+  Judged judged;
+  judged.network = loaded.model;
+  try {
+    if (static_cast<int>(loaded.model.couplings.size()) > network::kDenseNetworkLimit) {
+      judged.verdict = report::analyse_sparse_network_as_reported(loaded.model, Tolerances::with_rank(o.tolerance)).verdict;
+      return judged;
+    }
+    network::AnalysisOptions options;
+    options.tolerances = Tolerances::with_rank(o.tolerance);
+    report::NetworkAnalysisParts parts;
+    parts.second_order = false;  // the verdict does not depend on it
+    judged.verdict = report::analyse_network_as_reported(loaded.model, options, parts).verdict;
+  } catch (const network::ModelError& error) {
+    throw io::locate(error, loaded, path);
+  }
+  return judged;
+}
+
+Judged judge_framework(const framework::FrameworkModel& model, const FixOptions& o) {
+  framework::AnalysisOptions options;
+  options.tolerances = Tolerances::with_rank(o.tolerance);
+  std::optional<framework::GenericFramework> generic;
+  const framework::FrameworkResult analysis = framework::analyse_framework_as_reported(model, options, &generic);
+  Judged judged;
+  judged.verdict = design::framework_verdict(model, analysis, options);
+  if (generic) judged.verdict.generic = report::framework_generic_sentences(model, analysis, *generic);
+  judged.framework = model;
+  return judged;
+}
+
+Judged judge(const io::ModelFile& file, const FixOptions& o) {
+  if (file.network) return judge_network(*file.network, file.path, o);
+  if (file.framework) return judge_framework(*file.framework, o);
+  throw io::InputError({file.path, 1, 1},
+                       "'kinestat fix' writes networks and frameworks; a model of kind 'structure' has no geometry to change "
+                       "(its verdict counts structural groups: change its 'inputs:' and pairs as 'kinestat structure' proposes)");
+}
+
+// The model file as `analyze` reads it (imported formats with their notices on standard error).
+io::ModelFile read_fix_model(const std::string& path) {
+  io::ModelFile file;
+  file.path = path;
+  file.format = io::model_format(path);
+  if (file.format == io::ModelFormat::spacar) {
+    file.kind = io::ModelKind::framework;
+    file.framework = read_spacar_model(path);
+    return file;
+  }
+  if (file.format != io::ModelFormat::kinestat) {
+    file.kind = io::ModelKind::network;
+    file.network = read_imported_network(path);
+    return file;
+  }
+  const io::YamlFile yaml = io::YamlFile::load(path);
+  const std::string kind = io::model_kind(yaml);
+  if (kind == "network") {
+    file.network = io::read_network_model(yaml);
+  } else if (kind == "framework") {
+    file.kind = io::ModelKind::framework;
+    file.framework = io::read_framework_model(yaml);
+  } else {
+    file.kind = io::ModelKind::structure;
+  }
+  return file;
+}
+
+std::string lower_extension(const std::string& path) {
+  const auto dot = path.find_last_of('.');
+  if (dot == std::string::npos || path.find('/', dot) != std::string::npos) return "";
+  std::string ext = path.substr(dot + 1);
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+// "release coupling A: revolute -> spherical" / "remove coupling T3a": a change in a few words
+// for the file's comments and the report's list (the verdict's reason stays in its report).
+std::string change_words(const design::DesignChange& c) {
+  if (c.becomes == "removed") return fmt::format("{} {} {}", c.action, c.target_kind, c.target);
+  std::string text = fmt::format("{} {} {}", c.action, c.target_kind, c.target);
+  text += c.from.empty() ? fmt::format(" -> {}", c.becomes) : fmt::format(": {} -> {}", c.from, c.becomes);
+  std::vector<std::string> geometry;
+  for (const auto& [key, value] : c.geometry) {
+    if (key == "point") continue;
+    std::vector<std::string> numbers;
+    for (const double x : value) numbers.push_back(fmt::format("{:.6g}", x == 0 ? 0.0 : x));
+    geometry.push_back(fmt::format("{} ({})", key, fmt::join(numbers, ", ")));
+  }
+  if (!geometry.empty()) text += fmt::format(" ({})", fmt::join(geometry, ", "));
+  return text;
+}
+
+// The changed model's YAML text, headed by what was done to which file.
+std::string fixed_text(const io::ModelFile& file, const Judged& judged) {
+  std::vector<std::string> comments = {fmt::format("fixed by kinestat from {}: the verdict's first verified change set applied",
+                                                   io::printable_text(file.path))};
+  for (const auto& change : judged.verdict.changes) comments.push_back("  " + io::printable_text(change_words(change)));
+  comments.push_back(fmt::format("was: {}", io::printable_text(judged.verdict.summary)));
+  if (judged.network) return io::network_yaml(design::apply_network_change_set(*judged.network, judged.verdict.changes), comments);
+  return io::framework_yaml(design::apply_framework_change_set(*judged.framework, judged.verdict.changes), comments);
+}
+
+nlohmann::ordered_json fix_json(const FixOptions& o, const design::Verdict& was, const std::optional<std::string>& why) {
+  const nlohmann::ordered_json before = report::verdict_json(was);
+  nlohmann::ordered_json fix;
+  fix["model"] = o.model_path;
+  fix["written"] = why ? nlohmann::ordered_json() : nlohmann::ordered_json(o.output_path);
+  fix["was"] = was.summary;
+  fix["changes"] = why ? nlohmann::ordered_json::array() : before["changes"];
+  if (!why && before.contains("verification")) fix["checked"] = before["verification"];
+  if (why) fix["nothing_written"] = *why;
+  return fix;
+}
+
+// Nothing is written: the report says why, with the model's own verdict.
+int refuse(const FixOptions& o, const design::Verdict& verdict, const std::string& why, int exit_code) {
+  if (o.json) {
+    nlohmann::ordered_json j;
+    j["verdict"] = report::verdict_json(verdict);
+    j["fix"] = fix_json(o, verdict, why);
+    std::cout << report::json_text(j);
+  } else {
+    std::cout << fmt::format("Nothing written: {}\n", io::printable_text(why)) << report::verdict_text(verdict);
+  }
+  std::cout.flush();
+  return exit_code;
+}
+
+int run_fix(const FixOptions& o) {
+  // Before reading: a typo that names the model twice must not replace it.
+  io::refuse_output_over_inputs(o.output_path, {o.model_path});
+  if (o.output_path == "-")
+    throw io::InputError({"-o", 0, 0}, "the fixed model is written to a file: name it with -o FIXED.yaml (the report goes to standard output)");
+  const std::string ext = lower_extension(o.output_path);
+  if (ext != "yaml" && ext != "yml")
+    throw io::InputError({o.output_path, 0, 0}, "the fixed model is written as kinestat YAML: name the output file .yaml or .yml");
+  const io::ModelFile file = read_fix_model(o.model_path);
+  const Judged judged = judge(file, o);
+  const design::Verdict& was = judged.verdict;
+  if (was.exactly_constrained)
+    return refuse(o, was, fmt::format("{} is exactly constrained already; nothing to fix", o.model_path), kExitAlreadyExact);
+  if (was.changes.empty() || !was.changes_verified)
+    return refuse(o, was,
+                  fmt::format("the verdict of {} has no verified change set{}", o.model_path,
+                              was.note.empty() ? std::string() : " (" + was.note + ")"),
+                  kExitNoVerifiedChange);
+
+  // The text to be written, read back and analysed as the user will read it.
+  const std::string text = fixed_text(file, judged);
+  const io::ModelFile reread = io::parse_model_text(o.output_path, text);
+  const Judged now = judge(reread, o);
+  const design::Verdict& v = now.verdict;
+  if (!v.exactly_constrained || v.intended_motions != was.intended_motions)
+    throw Error(fmt::format("the fixed model, read back, is not what the verdict verified ({}; expected exactly constrained with {}); "
+                            "nothing written",
+                            v.summary, design::counted(was.intended_motions, "intended motion", "intended motions")),
+                {}, 3);
+  io::write_file_atomically(o.output_path, text);
+
+  if (o.json) {
+    nlohmann::ordered_json j;
+    j["verdict"] = report::verdict_json(v);
+    j["fix"] = fix_json(o, was, std::nullopt);
+    std::cout << report::json_text(j);
+  } else {
+    std::string t = fmt::format("Fixed: wrote {}, {} with the verdict's first verified change set:\n", io::printable_text(o.output_path),
+                                io::printable_text(o.model_path));
+    for (const auto& change : was.changes) t += "  - " + io::printable_text(change_words(change)) + "\n";
+    t += fmt::format("  was: {}\n", io::printable_text(was.summary));
+    for (const auto& line : was.verification) t += fmt::format("  kept: {}\n", io::printable_text(line));
+    t += fmt::format("The written file, read back and analysed:\n{}", report::verdict_text(v));
+    std::cout << t;
+  }
+  std::cout.flush();
+  return 0;
+}
+
+}  // namespace
+
+void register_fix(CLI::App& app, Action& action) {
+  auto options = std::make_shared<FixOptions>();
+  CLI::App* command = app.add_subcommand(
+      "fix", "Write the design the verdict proposes (its first verified change set applied) as a kinestat YAML model");
+  command->add_option("model", options->model_path,
+                      "Model file (kind: network or framework): kinestat YAML / JSON, SPACAR .dat, URDF .urdf, SDFormat .sdf or MJCF .xml")
+      ->required();
+  command->add_option("-o,--output", options->output_path, "The fixed model's file (.yaml or .yml; never one of the inputs)")->required();
+  command->add_flag("--json", options->json, "Machine-readable report: the fixed model's verdict and what was changed");
+  command->add_option("--tolerance", options->tolerance,
+                      "Relative rank tolerance (fraction of the largest singular value); default max(rows,cols)*eps")
+      ->check(positive_finite_number());
+  command->callback([options, &action] { action = [options] { return run_fix(*options); }; });
+}
+
+}  // namespace kinestat::cli
