@@ -3,7 +3,9 @@
 // An exact rational with 64-bit numerator and denominator, for building coupling bases without
 // GMP when the geometry's numbers are short (integer or few-digit decimal coordinates). Every
 // operation is exact or throws SmallRational::Overflow, so a caller can fall back to GMP; the
-// value is then the same rational GMP would compute.
+// value is then the same rational GMP would compute. The basis construction itself is written
+// once for both scalars (coupling_basis.cpp, vector3.hpp): this class supplies the arithmetic,
+// sgn, abs_less and exact_sqrt that it uses.
 
 #include <cmath>
 #include <cstdint>
@@ -46,6 +48,11 @@ class SmallRational {
   /// The exact square root when the value is the square of a rational, else empty (also for
   /// negative values).
   std::optional<SmallRational> exact_sqrt() const;
+
+  /// -1, 0 or 1, as GMP's sgn.
+  friend int sgn(const SmallRational& a) { return a.sign(); }
+  /// As the member, for the scalar-generic vector operations (vector3.hpp).
+  friend std::optional<SmallRational> exact_sqrt(const SmallRational& a) { return a.exact_sqrt(); }
 
  private:
   SmallRational(std::int64_t num, std::int64_t den, bool) : num_(num), den_(den) {}
