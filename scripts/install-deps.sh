@@ -28,7 +28,7 @@ if ! $minimal; then
     # executed by Jupyter (each test is skipped without its package).
     python3-venv python3-setuptools python3-wheel python3-scipy jupyter-nbconvert python3-ipykernel
     # JSON Schema validation of every example and report (schemas/).
-    python3-jsonschema
+    python3-jsonschema python3-yaml
     # The documentation site (`cmake --build ... --target docs`, test docs_site).
     doxygen python3-sphinx python3-myst-parser
     clang libclang-rt-14-dev
