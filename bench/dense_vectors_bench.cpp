@@ -24,7 +24,7 @@
 #include "kinestat/framework/generic_framework.hpp"
 #include "kinestat/io/framework_reader.hpp"
 #include "kinestat/io/yaml_support.hpp"
-#include "kinestat/linalg/blas_threads.hpp"
+#include "cli/process/process_setup.hpp"
 
 extern "C" void dgesdd_(const char* jobz, const int* m, const int* n, double* a, const int* lda, double* s, double* u,
                         const int* ldu, double* vt, const int* ldvt, double* work, const int* lwork, int* iwork, int* info,
@@ -44,7 +44,7 @@ const kinestat::framework::FrameworkModel& bench_model() {
 void BM_DenseLapackSvd(benchmark::State& state) {
   kinestat::framework::FrameworkResult prepared;
   const Eigen::MatrixXd d(kinestat::framework::prepare_analysis(bench_model(), prepared));
-  kinestat::linalg::pin_blas_threads();
+  kinestat::cli::process::pin_blas_threads();
   int m = static_cast<int>(d.rows()), n = static_cast<int>(d.cols()), info = 0, lwork = -1;
   const int p = std::min(m, n);
   Eigen::MatrixXd a = d, u(m, m), vt(n, n);

@@ -17,7 +17,7 @@
 #include "support/lattice_generator.hpp"
 #include "kinestat/io/framework_reader.hpp"
 #include "kinestat/io/yaml_support.hpp"
-#include "kinestat/linalg/blas_threads.hpp"
+#include "cli/process/process_setup.hpp"
 #include "kinestat/linalg/cholmod_view.hpp"
 #include "kinestat/linalg/sparse_rank.hpp"
 
@@ -74,7 +74,7 @@ void cholmod_normal_equations(benchmark::State& state, const FrameworkModel& mod
   kinestat::framework::FrameworkResult prepared;
   const Eigen::SparseMatrix<double> d = kinestat::framework::prepare_analysis(model, prepared);
   const double sigma = kinestat::linalg::estimate_largest_singular_value(d);
-  kinestat::linalg::pin_blas_threads();
+  kinestat::cli::process::pin_blas_threads();
   std::size_t peak = 0;
   double factor_entries = 0.0, complete = 0.0;
   for (auto _ : state) {

@@ -38,12 +38,10 @@ void register_analyze(CLI::App& app, Action& action) {
       if (format == io::ModelFormat::spacar) return run_framework_analysis(*options, read_spacar_model(options->model_path), options->model_path);
       if (format != io::ModelFormat::kinestat)
         return run_network_analysis(*options, read_imported_network(options->model_path), options->model_path);
-      prefault_heap_for_reading(options->model_path);
       // The parsed tree is let go once the model is read: it is not needed by the analysis
       // (about 0.2 GB for 10^6 bars).
       std::optional<io::YamlFile> model(io::YamlFile::load(options->model_path));
       const std::string kind = io::model_kind(*model);
-      prefault_heap_for_analysis(options->model_path, kind);
       const std::string path = model->path();
       if (kind == "network") {
         const auto network = io::read_network_model(*model);

@@ -39,26 +39,6 @@ struct CommonOptions {
 /// 2 bad input or usage, 3 internal error or out of memory.
 int run(int argc, const char* const* argv);
 
-/// When an argument names a regular file of 1 MiB or more and GLIBC_TUNABLES does not name
-/// glibc.malloc.hugetlb, starts this program again (execv of /proc/self/exe, same arguments)
-/// with glibc.malloc.hugetlb=1 added, so that its heap is on transparent huge pages
-/// (huge_pages.cpp); otherwise, or when that fails, returns.
-void restart_on_huge_pages_for_large_input(int argc, char** argv);
-
-/// The size in bytes of the regular file at `path`; 0 if it is not one (or cannot be read).
-std::uintmax_t regular_file_bytes(const std::string& path);
-
-/// Before the model file at `model_path` is parsed: extends the heap by an estimate of what the
-/// parsed tree will take (at most a quarter of the available memory and below run()'s trim
-/// threshold), frees it again and faults its pages in on a background thread (heap_prefault.cpp),
-/// so that the kernel clears them on the idle core rather than on the thread that works. Nothing
-/// for files under 1 MiB, under AddressSanitizer or with KINESTAT_PREFAULT=0. Needs run()'s heap
-/// settings (no separate mappings, a high trim threshold).
-void prefault_heap_for_reading(const std::string& model_path);
-/// The same once the parsed file is known to be a model of `kind`: for a framework, an estimate
-/// of what reading and analysing it will add; nothing for other kinds.
-void prefault_heap_for_analysis(const std::string& model_path, std::string_view kind);
-
 /// Writes `text` to standard output, or atomically to `output_path` when it is set.
 void emit(const CommonOptions& options, const std::string& text);
 

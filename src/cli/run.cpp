@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The body of the `kinestat` command (main() is in main.cpp so fuzz harnesses can call run()).
 
-#include <malloc.h>
-
 #include <algorithm>
 #include <iostream>
 #include <string>
@@ -13,7 +11,6 @@
 #include "kinestat/io/model_format.hpp"
 #include "kinestat/io/output_file.hpp"
 #include "kinestat/io/printable_text.hpp"
-#include "kinestat/linalg/blas_threads.hpp"
 #include "kinestat/linalg/gmp_allocation.hpp"
 #include "kinestat/report/html_writer.hpp"
 #include "kinestat/report/json_text.hpp"
@@ -49,27 +46,6 @@ void emit(const CommonOptions& options, const std::string& full_text) {
 
 namespace {
 
-// glibc maps every block above 128 KiB (raised by frees, up to 32 MiB) separately and unmaps it
-// when freed, and trims the heap top above 128 KiB, so each analysis stage touched fresh pages
-// for buffers that the stage before had just given back. Kept in the heap instead, they are
-// reused; page faults are much of the system time on virtual machines (bench/README.md). Keeping
-// blocks of up to 32 MiB took the page faults of `analyze` on a 10^5-bar cubic lattice 37,600 ->
-// 30,600, on a 10^6-bar triangular one 762,000 -> 712,000. No separate mappings at all keeps the
-// largest blocks too (a sparse QR's stack of hundreds of MB): a network analysis factors Kᵀ,
-// frees it and factors K in the same pages (ladder of 10^5 couplings: system time 0.9-1.8 s ->
-// 1.0 s, peak RSS 810 -> 775 MB). (A trim threshold alone, with mappings allowed, freezes the
-// mmap threshold at 128 KiB and doubled the faults.) One arena for every thread: the second
-// thread of a network's two factorisations (network::analyse_network_sparse) otherwise gets an
-// arena of its own, in fresh mappings that neither reuse what the first factorisation frees nor
-// lie on the huge pages of the main heap (ladder of 10^5 couplings: 44,100 -> 2,500 page faults,
-// peak RSS 1.17 -> 0.92 GB, CPU time down too; bench/README.md, session 17): the factorisations
-// allocate in large blocks, so the shared lock costs nothing measurable.
-void keep_freed_memory_for_reuse() {
-  mallopt(M_MMAP_MAX, 0);
-  mallopt(M_TRIM_THRESHOLD, 1 << 30);
-  mallopt(M_ARENA_MAX, 1);
-}
-
 // What this build is and can do: the version, the model formats it reads (URDF, SDFormat and
 // MJCF need their libraries at build time) and whether the HTML report's viewer is built in.
 std::string version_text() {
@@ -82,9 +58,6 @@ std::string version_text() {
 }  // namespace
 
 int run(int argc, const char* const* argv) {
-  // First, so that OpenBLAS's workers, started when it was loaded, stop before they spin.
-  linalg::pin_blas_threads();
-  keep_freed_memory_for_reuse();
   CLI::App app{"kinestat: nett degrees of freedom and of constraint of mechanisms, compliant mechanisms and structures"};
   app.require_subcommand(1);
   app.set_version_flag("--version", version_text);

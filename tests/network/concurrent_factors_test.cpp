@@ -3,8 +3,7 @@
 // one state per thread, so each METIS ordering draws what it draws alone. With the C library's
 // rand() shared by both threads the fill orders, and with them the ladder's close rank evidence
 // and supports, changed from run to run; the report must instead be the one the library gives
-// one factorisation after the other (this test's process does not declare a per-thread rand()),
-// on every run.
+// one factorisation after the other (threads = 1, the library's default), on every run.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -15,7 +14,6 @@
 
 #include "kinestat/design/sparse_network_verdict.hpp"
 #include "kinestat/io/network_yaml_writer.hpp"
-#include "kinestat/linalg/concurrent_orderings.hpp"
 #include "kinestat/network/sparse_network.hpp"
 #include "support/cli_run.hpp"
 #include "support/network_generator.hpp"
@@ -31,7 +29,6 @@ std::vector<std::string> coupling_names(const Model& model, const std::vector<in
 
 TEST(ConcurrentFactors, CommandGivesTheSequentialAnswerOnEveryRun) {
   const Model model = generated_ladder(10000);
-  ASSERT_FALSE(linalg::concurrent_orderings_allowed());
   const SparseNetworkResult sequential = analyse_network_sparse(model, {}, design::kSparseVerdictStates);
   ASSERT_GE(sequential.K.nonZeros(), kConcurrentFactorNonZeros);  // the command takes two threads
   ASSERT_GT(sequential.FN, 0);

@@ -4,8 +4,6 @@
 #include <cstddef>
 #include <vector>
 
-#include "kinestat/linalg/blas_threads.hpp"
-
 // BLAS (Fortran interface; trailing arguments are the hidden lengths of character arguments).
 extern "C" void dgemv_(const char* trans, const int* m, const int* n, const double* alpha, const double* a, const int* lda,
                        const double* x, const int* incx, const double* beta, double* y, const int* incy, std::size_t trans_length);
@@ -22,7 +20,6 @@ std::optional<Eigen::MatrixXd> lapack_right_divide(const Eigen::MatrixXd& b, con
   // B A⁻¹ = (A⁻ᵀ Bᵀ)ᵀ: one solve with Aᵀ and the rows of B as right-hand sides.
   Eigen::MatrixXd at = a.transpose(), x = b.transpose();
   if (x.size() == 0) return Eigen::MatrixXd(b.rows(), a.cols());
-  pin_blas_threads();
   const int n = static_cast<int>(at.rows()), rhs = static_cast<int>(x.cols());
   std::vector<int> pivots(static_cast<std::size_t>(n));
   int info = 0;
@@ -33,7 +30,6 @@ std::optional<Eigen::MatrixXd> lapack_right_divide(const Eigen::MatrixXd& b, con
 
 void blas_subtract_projection(const Eigen::MatrixXd& basis, Eigen::Index kept, Eigen::MatrixXd& block) {
   if (kept == 0 || block.size() == 0) return;
-  pin_blas_threads();
   const int rows = static_cast<int>(basis.rows()), depth = static_cast<int>(kept), cols = static_cast<int>(block.cols());
   Eigen::MatrixXd along(kept, block.cols());
   const double one = 1.0, zero = 0.0, minus_one = -1.0;
@@ -44,7 +40,6 @@ void blas_subtract_projection(const Eigen::MatrixXd& basis, Eigen::Index kept, E
 void blas_transposed_vector_product(double alpha, const double* a, Eigen::Index rows, Eigen::Index cols,
                                     Eigen::Index stride, const double* x, double* y) {
   if (cols == 0) return;
-  pin_blas_threads();
   const int m = static_cast<int>(rows), n = static_cast<int>(cols), lda = static_cast<int>(stride), one = 1;
   const double zero = 0.0;
   dgemv_("T", &m, &n, &alpha, a, &lda, x, &one, &zero, y, &one, 1);
@@ -53,7 +48,6 @@ void blas_transposed_vector_product(double alpha, const double* a, Eigen::Index 
 void blas_subtract_product_transposed(const double* v, Eigen::Index ldv, const double* f, Eigen::Index ldf, double* c,
                                       Eigen::Index ldc, Eigen::Index rows, Eigen::Index cols, Eigen::Index depth) {
   if (rows == 0 || cols == 0 || depth == 0) return;
-  pin_blas_threads();
   const int m = static_cast<int>(rows), n = static_cast<int>(cols), k = static_cast<int>(depth);
   const int lda = static_cast<int>(ldv), ldb = static_cast<int>(ldf), ldcc = static_cast<int>(ldc);
   const double minus_one = -1.0, one = 1.0;

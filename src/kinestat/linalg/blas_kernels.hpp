@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
-// Matrix products and solves on the optimised BLAS/LAPACK kinestat links (Debian's OpenBLAS, its threads pinned by
-// pin_blas_threads). Eigen's own kernels are compiled for the baseline x86-64 instruction set
-// (SSE2); OpenBLAS picks kernels for the machine it runs on, several times faster on the
+// Matrix products and solves on the optimised BLAS/LAPACK kinestat links (Debian's OpenBLAS; its
+// thread count is the process's to set: the command pins it, cli/process/process_setup.hpp).
+// Eigen's own kernels are compiled for the baseline x86-64 instruction set (SSE2); OpenBLAS picks kernels for the machine it runs on, several times faster on the
 // products of the dense path. Single-threaded OpenBLAS gives the same bits on every run.
 
 #include <Eigen/Core>

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <vector>
 
-#include "kinestat/linalg/blas_threads.hpp"
 #include "kinestat/linalg/non_finite_matrix.hpp"
 #include "kinestat/linalg/svd_analysis.hpp"
 
@@ -69,7 +68,6 @@ NullSpaces analyse_null_spaces(const Eigen::MatrixXd& a, const RankTolerance& to
   const Eigen::Index m = a.rows(), n = a.cols();
   if (m > n && n > 0) {
     require_finite(a);
-    pin_blas_threads();
     Eigen::MatrixXd qr = a;
     Eigen::VectorXd tau;
     if (lapack_householder_qr(qr, tau)) {

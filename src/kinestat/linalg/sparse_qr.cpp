@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/linalg/sparse_qr.hpp"
 
-#include "kinestat/linalg/blas_threads.hpp"
 #include "kinestat/linalg/cholmod_view.hpp"
 #include "kinestat/linalg/factorisation_memory.hpp"
 
@@ -291,7 +290,6 @@ SparseQr::SparseQr(const Eigen::SparseMatrix<double>& a, double threshold, const
 
 void SparseQr::factor(const Eigen::SparseMatrix<double>& a, const std::function<double()>& threshold,
                       const std::vector<Eigen::Index>& column_order, bool threshold_late) {
-  pin_blas_threads();
   if (rows_ == 0 || cols_ == 0) {
     threshold();  // asked for in every case, so that a caller's promise is always collected
     for (Eigen::Index j = 0; j < cols_; ++j) permutation_.push_back(j);
@@ -342,7 +340,6 @@ SparseRankCount sparse_qr_rank(const Eigen::SparseMatrix<double>& a, double thre
     throw std::invalid_argument("SparseQr: the column order must list every column once");
   SparseRankCount count;
   if (a.rows() == 0 || a.cols() == 0) return count;
-  pin_blas_threads();
   SpqrInput input(a, column_order);
   const FrontalFactorisation qr(input, !column_order.empty(), threshold);
   count.rank = static_cast<Eigen::Index>(qr.factor().rank);

@@ -5,10 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <future>
 #include <limits>
-#include <system_error>
-#include <thread>
 #include <vector>
 
 #include <Eigen/Eigenvalues>
@@ -34,10 +31,6 @@ constexpr double kSigmaMaxSettled = 1e-6;
 // 10⁶ bars), the triangulated grid of bench/lattice_model.py 0.5 (node order: −10 % CPU, +12 %
 // factor memory), the cubic lattice 0.19 (node order: +35 % CPU, +25 % factor memory).
 constexpr double kGroupedOrderMinShare = 0.4;
-
-// From this many nonzeros σ_max's Lanczos runs on a thread of its own beside the grouped order
-// (sparse_numerical_rank): below it a thread's start costs more than the overlap saves.
-constexpr Eigen::Index kThresholdBesideOrderNonZeros = 100000;
 
 }  // namespace
 
@@ -114,20 +107,11 @@ RankDecision sparse_numerical_rank(const Eigen::SparseMatrix<double>& a, const R
   // SPQR is fastest on tall matrices; rank(A) = rank(Aᵀ).
   const bool tall = a.rows() >= a.cols();
   const bool grouped = tall && !column_groups.empty();
-  // The threshold (σ_max by Lanczos) and the grouped order (METIS on the group graph) both only
-  // read `a`: on large matrices they run side by side, with the same results as one after the
-  // other (the Lanczos start is fixed; METIS stays on the calling thread, with its rand()).
-  std::future<RankDecision> threshold_beside;
-  if (grouped && a.nonZeros() >= kThresholdBesideOrderNonZeros && std::thread::hardware_concurrency() >= 2) {
-    try {
-      threshold_beside = std::async(std::launch::async, [&a, &tolerance] { return sparse_rank_threshold(a, tolerance); });
-    } catch (const std::system_error&) {
-      // no thread to be had (a process limit): one after the other
-    }
-  }
+  // One thread: σ_max's Lanczos beside the order saved 2 % of a 10⁶-bar lattice (bench/README.md,
+  // session 18), too little for a thread of the library's own (issue 36).
   const std::vector<Eigen::Index> order =
       grouped ? grouped_nested_dissection_order(a, column_groups, kGroupedOrderMinShare) : std::vector<Eigen::Index>{};
-  RankDecision decision = threshold_beside.valid() ? threshold_beside.get() : sparse_rank_threshold(a, tolerance);
+  RankDecision decision = sparse_rank_threshold(a, tolerance);
   // Counts only: R is not needed beyond its pivots (sparse_qr_rank).
   const SparseRankCount count = tall ? sparse_qr_rank(a, decision.threshold, order)
                                      : sparse_qr_rank(Eigen::SparseMatrix<double>(a.transpose()), decision.threshold);

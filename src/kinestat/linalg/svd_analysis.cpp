@@ -9,7 +9,6 @@
 #include <utility>
 #include <vector>
 
-#include "kinestat/linalg/blas_threads.hpp"
 #include "kinestat/linalg/non_finite_matrix.hpp"
 
 // LAPACK (Fortran interface; the trailing argument is the hidden length of `jobz`).
@@ -101,7 +100,6 @@ bool lapack_singular_values(const Eigen::MatrixXd& a, Eigen::VectorXd& s) {
 // check. `full`: U and V completed to square orthonormal matrices.
 ThinFactors checked_svd(const Eigen::MatrixXd& a, bool full) {
   require_finite(a);
-  pin_blas_threads();
   ThinFactors f;
   if (lapack_svd(a, full, f) && factors_check(a, f)) return f;
   Eigen::JacobiSVD<Eigen::MatrixXd, Eigen::ColPivHouseholderQRPreconditioner> svd(a, Eigen::ComputeFullU | Eigen::ComputeFullV);
@@ -159,7 +157,6 @@ SvdAnalysis analyse_svd(const Eigen::MatrixXd& a, const RankTolerance& tolerance
 Eigen::VectorXd singular_values(const Eigen::MatrixXd& a) {
   if (a.rows() == 0 || a.cols() == 0) return {};
   require_finite(a);
-  pin_blas_threads();
   Eigen::VectorXd s;
   if (lapack_singular_values(a, s)) return s;
   return checked_svd(a, false).s;

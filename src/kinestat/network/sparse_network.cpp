@@ -15,7 +15,6 @@
 #include <system_error>
 #include <thread>
 
-#include "kinestat/linalg/concurrent_orderings.hpp"
 #include "kinestat/linalg/sparse_qr.hpp"
 #include "kinestat/linalg/sparse_rank.hpp"
 #include "kinestat/network/analyse_network.hpp"
@@ -247,7 +246,7 @@ void finish_sparse_network(SparseNetworkResult& r, const std::vector<bool>& stre
 }
 
 SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances& tolerances, Index vectors, bool pair_vectors,
-                                           const std::function<void(const SparseNetworkResult&)>& alongside) {
+                                           const std::function<void(const SparseNetworkResult&)>& alongside, int threads) {
   double input_rounding = 0.0;
   SparseNetworkResult r = build_body_twist_matrix(model, input_rounding);
   // The rank rule of build_body_twist_system (the threshold rises with the rounding of the
@@ -257,8 +256,8 @@ SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances&
   const Index d = r.d;
   std::vector<bool> stressed(static_cast<std::size_t>(r.e), false), moving(static_cast<std::size_t>(r.e), false);
   if (k.rows() > 0 && k.cols() > 0) {
-    // The self-stresses' factor (of K) runs beside the motions' (of Kᵀ) on large networks where
-    // the process allows it (linalg::concurrent_orderings_allowed: METIS's rand()): the two are
+    // The self-stresses' factor (of K) runs beside the motions' (of Kᵀ) on large networks when the
+    // caller gives two threads (and with them a rand() per thread, for METIS): the two are
     // independent, each with its own SuiteSparse workspace, and their results are merged below
     // in a fixed order, so the answer is the same as one after the other. K's starts first: it
     // orders K while this thread finds σ_max for the threshold, which K's factor asks for only
@@ -271,8 +270,7 @@ SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances&
     auto stress_side = [&k, &threshold_for_stresses, vectors, pair_vectors, d]() {
       return factor_side(k, [&threshold_for_stresses] { return threshold_for_stresses.get(); }, vectors, pair_vectors, d);
     };
-    bool concurrent = k.nonZeros() >= kConcurrentFactorNonZeros && linalg::concurrent_orderings_allowed() &&
-                      std::thread::hardware_concurrency() >= 2;
+    bool concurrent = k.nonZeros() >= kConcurrentFactorNonZeros && threads >= 2;
     std::future<FactorSide> stress_future;
     if (concurrent) {
       try {

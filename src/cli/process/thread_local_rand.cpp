@@ -7,14 +7,12 @@
 // keeps glibc's own generator (random_r on a 128-byte TYPE_3 state, what rand() uses), so each
 // ordering draws exactly the sequence it draws alone.
 
-#include "cli/thread_local_rand.hpp"
+#include "cli/process/thread_local_rand.hpp"
 
 #include <dlfcn.h>
 
 #include <cstdint>
 #include <cstdlib>
-
-#include "kinestat/linalg/concurrent_orderings.hpp"
 
 namespace {
 
@@ -46,13 +44,12 @@ extern "C" int rand() noexcept {
   return value;
 }
 
-namespace kinestat::cli {
+namespace kinestat::cli::process {
 
-void declare_thread_local_rand() {
+bool thread_local_rand_bound() {
   // Only when a shared library would bind to these definitions (the executable exports them).
-  const bool ours = ::dlsym(RTLD_DEFAULT, "rand") == reinterpret_cast<void*>(&rand) &&
-                    ::dlsym(RTLD_DEFAULT, "srand") == reinterpret_cast<void*>(&srand);
-  linalg::set_thread_local_rand(ours);
+  return ::dlsym(RTLD_DEFAULT, "rand") == reinterpret_cast<void*>(&rand) &&
+         ::dlsym(RTLD_DEFAULT, "srand") == reinterpret_cast<void*>(&srand);
 }
 
-}  // namespace kinestat::cli
+}  // namespace kinestat::cli::process

@@ -7,7 +7,10 @@
 // glibc.malloc.hugetlb is set when the process starts, so a command given a large input file
 // starts itself again with it. The system's transparent huge page setting decides the rest
 // ("never" keeps 4 KiB pages); a GLIBC_TUNABLES that names glibc.malloc.hugetlb is left alone.
-// The restart also tells OpenBLAS its thread count (linalg::pin_blas_threads sets the same), so
+// Kept where other process tricks went (issue 36): side by side on the 10^5-bar cubic lattice
+// (bench/lattice_model.py spatial 30), 6 pairs in one run on a busy machine, the restart took the
+// command from 0.88 to 0.63 s of CPU (median). It also tells OpenBLAS its thread count
+// (process::pin_blas_threads sets the same), so
 // that the new process does not start, spin and then stop a worker thread: on the 10^5-bar
 // cubic lattice that was 0.07 s of 0.6-0.7 s of CPU (perf stat, 8 runs each).
 
@@ -20,9 +23,9 @@
 #include <string_view>
 #include <system_error>
 
-#include "cli/commands.hpp"
+#include "cli/process/huge_pages.hpp"
 
-namespace kinestat::cli {
+namespace kinestat::cli::process {
 
 namespace {
 
@@ -31,6 +34,13 @@ constexpr std::uintmax_t kHugePageInputBytes = std::uintmax_t{1} << 20;
 constexpr std::string_view kHugePageTunable = "glibc.malloc.hugetlb";
 constexpr const char* kBlasThreadsVariable = "OPENBLAS_NUM_THREADS";
 
+std::uintmax_t regular_file_bytes(const std::string& path) {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) return 0;
+  const std::uintmax_t bytes = std::filesystem::file_size(path, error);
+  return error ? 0 : bytes;
+}
+
 bool names_large_file(int argc, char** argv) {
   for (int i = 1; i < argc; ++i)
     if (regular_file_bytes(argv[i]) >= kHugePageInputBytes) return true;
@@ -38,13 +48,6 @@ bool names_large_file(int argc, char** argv) {
 }
 
 }  // namespace
-
-std::uintmax_t regular_file_bytes(const std::string& path) {
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error)) return 0;
-  const std::uintmax_t bytes = std::filesystem::file_size(path, error);
-  return error ? 0 : bytes;
-}
 
 void restart_on_huge_pages_for_large_input(int argc, char** argv) {
   const char* tunables = std::getenv("GLIBC_TUNABLES");
@@ -65,4 +68,4 @@ void restart_on_huge_pages_for_large_input(int argc, char** argv) {
   if (!blas_threads_given) ::unsetenv(kBlasThreadsVariable);
 }
 
-}  // namespace kinestat::cli
+}  // namespace kinestat::cli::process
