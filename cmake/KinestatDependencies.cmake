@@ -9,18 +9,15 @@ pkg_check_modules(GMPXX REQUIRED IMPORTED_TARGET gmpxx gmp)
 # libyaml (Debian libyaml-dev) parses model files event by event (io/yaml_support.cpp); private.
 pkg_check_modules(LIBYAML REQUIRED IMPORTED_TARGET yaml-0.1)
 
-# SuiteSparse 5 on Debian 12 ships no CMake config for SPQR: find it by hand.
-find_path(SUITESPARSE_INCLUDE_DIR SuiteSparseQR.hpp PATH_SUFFIXES suitesparse REQUIRED)
-find_library(SPQR_LIBRARY spqr REQUIRED)
-find_library(CHOLMOD_LIBRARY cholmod REQUIRED)
-find_library(SUITESPARSECONFIG_LIBRARY suitesparseconfig REQUIRED)
-# Debian's OpenBLAS (libopenblas-dev) is the BLAS/LAPACK that SuiteSparse's dense kernels run
-# on (through the libblas.so.3 alternative); kinestat links it directly to pin its threads.
-find_library(OPENBLAS_LIBRARY openblas REQUIRED)
+# SuiteSparseQR and OpenBLAS as imported targets (SuiteSparse::SPQR, kinestat::openblas); the
+# same file is installed with the CMake package, so that the exported targets carry no path.
+include(${CMAKE_CURRENT_LIST_DIR}/kinestatSuiteSparse.cmake)
+if(NOT KinestatSuiteSparse_FOUND)
+  message(FATAL_ERROR "kinestat needs SuiteSparseQR and OpenBLAS (Debian: libsuitesparse-dev libopenblas-dev)")
+endif()
+# For the tests and benchmarks that call SuiteSparse themselves.
 add_library(kinestat_suitesparse INTERFACE)
-target_include_directories(kinestat_suitesparse SYSTEM INTERFACE ${SUITESPARSE_INCLUDE_DIR})
-target_link_libraries(kinestat_suitesparse INTERFACE ${SPQR_LIBRARY} ${CHOLMOD_LIBRARY} ${SUITESPARSECONFIG_LIBRARY}
-  ${OPENBLAS_LIBRARY})
+target_link_libraries(kinestat_suitesparse INTERFACE SuiteSparse::SPQR kinestat::openblas)
 
 # Optional readers of other programs' formats (docs/formats.md). Each option is ON when its
 # Debian package is found; without it the format is refused with "rebuild with ...".

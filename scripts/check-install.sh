@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSD-3-Clause
 # Installs a built kinestat into a fresh prefix, builds tests/consumer against the installed
-# package (the C++ example and every installed header compiled alone) and runs the example.
+# package (the C++ example and every installed header compiled alone) and runs the example;
+# builds the example again from `pkg-config kinestat` alone; checks that the installed CMake
+# package and pkg-config file carry no absolute path, and, for a shared library
+# (-DKINESTAT_SHARED=ON), its SONAME.
 # Usage: scripts/check-install.sh [build folder, default build/release]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -9,6 +12,34 @@ build=${1:-build/release}
 work=$build/install-check
 rm -rf "$work"
 cmake --install "$build" --prefix "$work/prefix" >/dev/null
+prefix=$(cd "$work/prefix" && pwd)
+libdir=$(dirname "$(find "$prefix" -name 'libkinestat.*' -print -quit)")
+# A shared library (-DKINESTAT_SHARED=ON): its SONAME is libkinestat.so.0, the development link
+# points at it, and programs of a prefix outside /usr find it (LD_LIBRARY_PATH for the checks).
+shared=false
+if [[ -e "$libdir/libkinestat.so.0" ]]; then
+  shared=true
+  soname=$(objdump -p "$libdir/libkinestat.so.0" | awk '$1 == "SONAME" {print $2}')
+  [[ "$soname" == libkinestat.so.0 ]] || { echo "SONAME is '$soname', not libkinestat.so.0" >&2; exit 1; }
+  [[ "$(readlink -f "$libdir/libkinestat.so")" == "$(readlink -f "$libdir/libkinestat.so.0")" ]]
+  export LD_LIBRARY_PATH=$libdir${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
+  echo "shared library: SONAME $soname"
+fi
+# The exported CMake package and pkg-config file name no folder of this machine: dependencies
+# are found again where the package is used (imported targets, ${pcfiledir}).
+if grep -nE '"?/(usr|work|home|root|opt|tmp)/' "$libdir"/cmake/kinestat/*.cmake "$libdir"/pkgconfig/kinestat.pc | grep -v ':[0-9]*: *#'; then
+  echo "check-install: absolute paths in the installed CMake package or kinestat.pc (above)" >&2
+  exit 1
+fi
+# pkg-config: a consumer compiled and linked from `pkg-config --cflags --libs` alone (--static
+# for the static library, whose private dependencies come from Requires.private and Libs.private).
+static_flag=--static
+$shared && static_flag=
+# shellcheck disable=SC2046 # one flag a word
+c++ -std=c++20 -O0 examples/cpp/analyse.cpp -o "$work/pkg-config-analyse" \
+  $(PKG_CONFIG_PATH=$libdir/pkgconfig pkg-config --cflags --libs $static_flag kinestat)
+"$work/pkg-config-analyse" examples/davies-2-circuit.yaml | grep -q "FN = 3, CN = 2"
+echo "pkg-config: $(PKG_CONFIG_PATH=$libdir/pkgconfig pkg-config --modversion kinestat), a consumer built from its flags runs"
 cmake -S tests/consumer -B "$work/consumer" -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_PREFIX_PATH="$PWD/$work/prefix" ${CMAKE_CXX_COMPILER_LAUNCHER:+-DCMAKE_CXX_COMPILER_LAUNCHER=$CMAKE_CXX_COMPILER_LAUNCHER}
 cmake --build "$work/consumer" -j2
