@@ -13,6 +13,7 @@
 #include "kinestat/design/structure_verdict.hpp"
 #include "kinestat/design/sweep_grid.hpp"
 #include "kinestat/design/verdict.hpp"
+#include "kinestat/framework/body_motions.hpp"
 #include "kinestat/framework/deformation_functions.hpp"
 #include "kinestat/framework/finite_motion.hpp"
 #include "kinestat/framework/framework_analysis.hpp"

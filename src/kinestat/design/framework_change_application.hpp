@@ -21,7 +21,7 @@ inline constexpr const char* kBarNodeSeparator = "–";
 ///
 /// | action    | target_kind            | target            | becomes                                | effect |
 /// | --------- | ---------------------- | ----------------- | -------------------------------------- | ------ |
-/// | `add`     | `bar`                  | `B–F`             | `bar`                                  | a truss element between nodes B and F (rigid elongation), named "B–F" (with a suffix if taken), appended |
+/// | `add`     | `bar`                  | `B–F`             | words ("a bar of length 1.414"), ignored | a truss element between nodes B and F (rigid elongation), named "B–F" (with a suffix if taken), appended |
 /// | `support` | `coordinate`           | `C.z`             | `fixed`, `independent` or `dependent`  | the coordinate's role: a support, a driven input, or freed (a support moved away) |
 /// | `remove`  | `bar`                  | element name      | `removed`                              | the element is erased |
 /// | `release` | `deformation`, `rigid body` | `element.deformation` (`body.P2.rz`) | `released` or `fixed` | the deformation's role |

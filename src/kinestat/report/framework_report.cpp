@@ -12,6 +12,8 @@
 #include <string>
 #include <utility>
 
+#include "kinestat/design/screw_text.hpp"
+#include "kinestat/framework/body_motions.hpp"
 #include "kinestat/io/printable_text.hpp"
 #include "kinestat/report/generic_text.hpp"
 #include "kinestat/report/rank_status_text.hpp"
@@ -62,6 +64,35 @@ std::string deformation_name(const FrameworkModel& model, const framework::Defor
 
 // Large models (the sparse path) write vectors compactly: only their non-zero components.
 bool compact(const FrameworkResult& a) { return a.method == framework::RankMethod::sparse_qr; }
+
+// Rigid parts of a mode listed in the text detail; all of them in the JSON.
+constexpr std::size_t kTextParts = 6;
+
+// "body 'stage': C, P1, P2" or "B, C": a rigid part of a mode by its body and nodes.
+std::string part_label(const FrameworkModel& model, const framework::MovingPart& part) {
+  std::vector<std::string> names;
+  for (std::size_t n : part.nodes) names.push_back(io::printable_text(model.nodes[n].name));
+  const std::string nodes = fmt::format("{}", fmt::join(names, ", "));
+  return part.body.empty() ? nodes : fmt::format("body '{}': {}", io::printable_text(part.body), nodes);
+}
+
+// The rigid parts of a mode (framework/body_motions.hpp): nodes, body, motion in words, twist
+// (angular velocity; velocity at the origin, file units, per unit mode amplitude), share.
+nlohmann::ordered_json parts_json(const FrameworkModel& model, const FrameworkResult& a, const Eigen::VectorXd& velocities) {
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  for (const auto& part : framework::moving_parts(model, a, velocities)) {
+    nlohmann::ordered_json p = json_object(5);
+    p["nodes"] = nlohmann::ordered_json::array();
+    for (std::size_t n : part.nodes) p["nodes"].push_back(model.nodes[n].name);
+    if (!part.body.empty()) p["body"] = part.body;
+    p["motion"] = design::motion_text(part.twist, a.length);
+    p["twist"] = nlohmann::ordered_json::array();
+    for (Eigen::Index i = 0; i < 6; ++i) p["twist"].push_back(rounded(part.twist(i)));
+    p["share"] = rounded(part.share);
+    list.push_back(std::move(p));
+  }
+  return list;
+}
 
 // Mode velocities grouped by node, in node order, coordinates in slot order.
 nlohmann::ordered_json velocities_by_node(const FrameworkModel& model, const FrameworkResult& a, const Eigen::VectorXd& v) {
@@ -324,6 +355,7 @@ nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const 
       j["modes"].push_back(std::move(m));
       continue;
     }
+    m["parts"] = parts_json(model, a, mode.velocities);
     if (generic && k < generic->mode_causes.size()) m["cause"] = linalg::cause_name(generic->mode_causes[k]);
     if (k < a.orders.size()) {
       const framework::ModeOrder& o = a.orders[k];
@@ -405,15 +437,19 @@ std::string framework_report_text(const FrameworkModel& model, const FrameworkRe
                                                : std::string(),
                    evidence(a.decision.largest_dropped)));
   line(fmt::format("  {}", rank_status_text(a.decision)));
-  if (a.decision.threshold == a.decision.rounding_level && kInputRoundingFactor * a.decision.input_rounding > kEpsilon)
-    line(fmt::format("threshold raised to the rounding of the input: the coordinates, far from the origin against the "
-                     "model's size, fix its geometry only to {} of that size",
-                     evidence(a.decision.input_rounding)));
+  // Said only when it is so (issue 35): the coordinates reach several sizes of the model from
+  // the origin (input_rounding = ε × largest coordinate / size), not for a model centred there.
+  constexpr double kFarFromOrigin = 4.0;
+  if (a.decision.threshold == a.decision.rounding_level && a.decision.input_rounding > kFarFromOrigin * kEpsilon)
+    line(fmt::format("threshold raised to the rounding of the input: the coordinates, {:.3g} times the model's size from the "
+                     "origin, fix its geometry only to {} of that size",
+                     a.decision.input_rounding / kEpsilon, evidence(a.decision.input_rounding)));
   if (a.singular_values.size() > 0)
     line(fmt::format("smallest/largest singular value: {}", evidence(a.relative_smallest_singular_value())));
   line(fmt::format("classification: {}", framework_classification(a)));
-  line(fmt::format("{} kinematically indeterminate mode(s), {} statically indeterminate stress state(s){}", a.mechanisms,
-                   a.self_stresses, a.exactly_constrained() ? ": exactly constrained" : ""));
+  line(fmt::format("{} extra motion(s) (mechanisms: the seed's kinematically indeterminate modes), {} redundant constraint(s) "
+                   "(self-stresses){}",
+                   a.mechanisms, a.self_stresses, a.exactly_constrained() ? ": exactly constrained" : ""));
   if (generic) {
     line(fmt::format("generic answer (the same nodes, elements and supports at a random realisation): {} mode(s), {} stress state(s); {}",
                      generic->mechanisms, generic->self_stresses, generic_method(*generic)));
@@ -443,6 +479,12 @@ std::string framework_report_text(const FrameworkModel& model, const FrameworkRe
                               : generic && k < generic->mode_causes.size() ? ", from the " + linalg::cause_name(generic->mode_causes[k])
                                                                            : "";
     line(fmt::format("mode {} (velocities; translations per characteristic length){}{}", k + 1, cause, rigid ? "" : ":"));
+    if (!rigid) {
+      const auto parts = framework::moving_parts(model, a, a.modes[k].velocities);
+      for (std::size_t p = 0; p < parts.size() && p < kTextParts; ++p)
+        line(fmt::format("  rigid part {}: {}", part_label(model, parts[p]), design::motion_text(parts[p].twist, a.length)));
+      if (parts.size() > kTextParts) line(fmt::format("  ... and {} more rigid parts (see --json)", parts.size() - kTextParts));
+    }
     for (Eigen::Index col : a.modes[k].moving)
       line(fmt::format("  {:>16} {:>12}", column_label(col), number(a.modes[k].velocities(col))));
     if (rigid || k >= a.orders.size()) continue;
