@@ -31,7 +31,7 @@
 #include "kinestat/io/output_file.hpp"
 #include "kinestat/io/printable_text.hpp"
 #include "kinestat/network/sparse_network.hpp"
-#include "kinestat/report/analysis_report.hpp"
+#include "kinestat/pipeline/network_pipeline.hpp"
 #include "kinestat/report/framework_report.hpp"
 #include "kinestat/report/json_text.hpp"
 #include "kinestat/report/verdict_report.hpp"
@@ -64,15 +64,10 @@ Judged judge_network(const io::LoadedNetwork& loaded, const std::string& path, c
   Judged judged;
   judged.network = loaded.model;
   try {
-    if (static_cast<int>(loaded.model.couplings.size()) > network::kDenseNetworkLimit) {
-      judged.verdict = report::analyse_sparse_network_as_reported(loaded.model, Tolerances::with_rank(o.tolerance)).verdict;
-      return judged;
-    }
-    network::AnalysisOptions options;
-    options.tolerances = Tolerances::with_rank(o.tolerance);
-    report::NetworkAnalysisParts parts;
-    parts.second_order = false;  // the verdict does not depend on it
-    judged.verdict = report::analyse_network_as_reported(loaded.model, options, parts).verdict;
+    pipeline::NetworkRequest request;  // the path `analyze` takes (pipeline::network_path)
+    request.options.tolerances = Tolerances::with_rank(o.tolerance);
+    request.second_order = false;  // the verdict does not depend on it
+    judged.verdict = pipeline::analyse_network(loaded.model, request).verdict();
   } catch (const network::ModelError& error) {
     throw io::locate(error, loaded, path);
   }
@@ -225,11 +220,12 @@ int run_fix(const FixOptions& o) {
     j["fix"] = fix_json(o, was, std::nullopt);
     std::cout << report::json_text(j);
   } else {
-    std::string t = fmt::format("Fixed: wrote {}, {} with the verdict's first verified change set:\n", io::printable_text(o.output_path),
-                                io::printable_text(o.model_path));
+    std::string t = fmt::format("Fixed: wrote {}: {} with the verdict's first verified change set applied:\n",
+                                io::printable_text(o.output_path), io::printable_text(o.model_path));
     for (const auto& change : was.changes) t += "  - " + io::printable_text(change_words(change)) + "\n";
     t += fmt::format("  was: {}\n", io::printable_text(was.summary));
-    for (const auto& line : was.verification) t += fmt::format("  kept: {}\n", io::printable_text(line));
+    for (std::size_t i = 0; i < was.verification.size(); ++i)
+      t += fmt::format("  {} {}\n", i == 0 ? "checked:" : "        ", io::printable_text(was.verification[i]));
     t += fmt::format("The written file, read back and analysed:\n{}", report::verdict_text(v));
     std::cout << t;
   }
