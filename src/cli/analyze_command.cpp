@@ -14,7 +14,8 @@ void register_analyze(CLI::App& app, Action& action) {
   auto options = std::make_shared<CommonOptions>();
   CLI::App* command = app.add_subcommand(
       "analyze", "Nett degree of freedom and of constraint of a model (kind: network or framework)");
-  command->add_option("model", options->model_path, "Model file: kinestat YAML / JSON, SPACAR .dat, URDF .urdf, SDFormat .sdf or MJCF .xml")->required();
+  command->add_option("model", options->model_path, "Model file: kinestat YAML / JSON, SPACAR .dat, URDF .urdf, SDFormat .sdf or MJCF .xml; '-': "
+                      "kinestat YAML / JSON on standard input")->required();
   command->add_flag("--json", options->json, "Machine-readable JSON instead of text");
   command->add_flag("--brief", options->brief, "Print the verdict block alone (with --json: the verdict object alone)");
   command->add_option("-o,--output", options->output_path, "Write the report to this file instead of standard output");
@@ -29,10 +30,13 @@ void register_analyze(CLI::App& app, Action& action) {
   command->add_flag("--timings", options->timings,
                     "With --backend petsc: add each stage's wall time and every process's peak memory to the report "
                     "(they change from run to run, so the report is then not reproducible byte for byte)");
+  add_fail_unless_option(*command, options->fail_unless);
   register_network_options(*command);
   register_framework_options(*command);
   command->callback([options, &action] {
     action = [options] {
+      if (options->backend == "petsc" && !options->fail_unless.empty())
+        throw io::InputError({"--fail-unless", 0, 0}, "--fail-unless needs the serial backend's verdict; drop --backend petsc");
       if (options->backend == "petsc") return run_petsc_analysis(*options);
       const io::ModelFormat format = io::model_format(options->model_path);
       if (format == io::ModelFormat::spacar) return run_framework_analysis(*options, read_spacar_model(options->model_path), options->model_path);

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "kinestat/framework/framework_model.hpp"
+#include "kinestat/io/model_file.hpp"
 #include "kinestat/io/model_format.hpp"
 #include "kinestat/io/network_reader.hpp"
 #include "kinestat/io/yaml_support.hpp"
@@ -33,6 +34,7 @@ struct CommonOptions {
   std::string backend = "serial";  ///< `analyze --backend`: serial, or petsc (under mpirun)
   bool timings = false;            ///< `analyze --timings`: the petsc backend's times and memory in the report
   bool brief = false;              ///< `--brief`: the verdict block alone (JSON: the `verdict` object alone)
+  std::string fail_unless;         ///< `--fail-unless exactly-constrained`: exit 1 on any other verdict
 };
 
 /// Parses the command line, runs the chosen subcommand and returns the exit code: 0 success,
@@ -50,9 +52,17 @@ void register_report(CLI::App& app, Action& action);
 void register_convert(CLI::App& app, Action& action);
 void register_move(CLI::App& app, Action& action);
 void register_sweep(CLI::App& app, Action& action);
+void register_export(CLI::App& app, Action& action);
 /// `kinestat fix MODEL -o FIXED` (fix_command.cpp): the verdict's first verified change set applied and
 /// written as a kinestat YAML model; exit 4 when already exactly constrained, 5 without a verified set.
 void register_fix(CLI::App& app, Action& action);
+
+/// Prints the notices of kinestat model files (older spellings read) to standard error as they
+/// are read, one line each (io::set_notice_handler).
+void print_model_notices();
+/// Reads a model file of any format and kind ("-": a kinestat YAML / JSON model on standard
+/// input); notices go to standard error.
+io::ModelFile read_model(const std::string& path);
 
 /// Adds `--allow-outside-includes` to `command`: SDFormat and MJCF files may then include files
 /// outside the model's folder (io::ImportOptions::allow_includes_outside_folder).

@@ -85,7 +85,7 @@ void register_convert(CLI::App& app, Action& action) {
   CLI::App* command = app.add_subcommand(
       "convert", "Write a model read from SPACAR, URDF, SDFormat or MJCF as kinestat YAML (OUT.yaml), or a framework as "
                  "a SPACAR input file with kinestat's release proposal (OUT.dat)");
-  command->add_option("input", options->input, "Model file: SPACAR .dat, URDF .urdf, SDFormat .sdf, MJCF .xml, or kinestat YAML (kind: framework)")->required();
+  command->add_option("input", options->input, "Model file: SPACAR .dat, URDF .urdf, SDFormat .sdf, MJCF .xml, or kinestat YAML / JSON (kind: framework; '-': on standard input)")->required();
   command->add_option("output", options->output, "Output file: .yaml (kinestat) or .dat (SPACAR)")->required();
   command->add_flag("--apply-proposal", options->apply_proposal,
                     "SPACAR output: write the proposed releases as RLSE / INPUTX lines instead of commented lines to paste");

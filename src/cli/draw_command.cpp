@@ -61,7 +61,7 @@ int run(const DrawOptions& options) {
 void register_draw(CLI::App& app, Action& action) {
   auto options = std::make_shared<DrawOptions>();
   CLI::App* command = app.add_subcommand("draw", "Draw a model as an SVG picture (coupling graph, mechanism, structural diagram)");
-  command->add_option("model", options->common.model_path, "Model file (YAML or JSON, any kind)")->required();
+  command->add_option("model", options->common.model_path, "Model file of any kind: kinestat YAML / JSON, SPACAR .dat, URDF .urdf, SDFormat .sdf or MJCF .xml; '-': kinestat YAML / JSON on standard input")->required();
   command->add_option("--what", options->what,
                       "graph: coupling graph with motion and action graphs; mechanism: the model with a mode and a "
                       "self-stress; structure: the structural diagram (default: mechanism for frameworks, graph otherwise)")

@@ -68,7 +68,7 @@ int run_framework_analysis(const CommonOptions& options, const framework::Framew
   } else {
     emit(options, report::framework_report_text(model, analysis, &verdict, shown));
   }
-  return 0;
+  return verdict_exit_code(options.fail_unless, verdict);
 }
 
 }  // namespace kinestat::cli

@@ -8,6 +8,7 @@
 #include "cli/commands.hpp"
 #include "kinestat/io/model_file.hpp"
 #include "kinestat/io/printable_text.hpp"
+#include "kinestat/io/yaml_support.hpp"
 
 namespace kinestat::cli {
 
@@ -33,6 +34,12 @@ void add_import_options(CLI::App& command) {
                    "SDFormat and MJCF: also read included files outside the model's folder (never the working directory's "
                    "or system folders unless named)");
 }
+
+void print_model_notices() {
+  io::set_notice_handler([](const std::string& notice) { std::cerr << io::printable_text(notice) << '\n'; });
+}
+
+io::ModelFile read_model(const std::string& path) { return read_with_notices(path); }
 
 framework::FrameworkModel read_spacar_model(const std::string& path) { return std::move(*read_with_notices(path).framework); }
 

@@ -232,7 +232,7 @@ void register_move(CLI::App& app, Action& action) {
   CLI::App* command = app.add_subcommand(
       "move", "Finite motion: trace a framework's kinematic mode or a network's primary motion, or solve a planar mechanism's "
               "positions at given inputs");
-  command->add_option("model", options->common.model_path, "Model file (kind: framework or network)")->required();
+  command->add_option("model", options->common.model_path, "Model file (kind: framework or network): kinestat YAML / JSON, SPACAR .dat, URDF .urdf, SDFormat .sdf or MJCF .xml; '-': kinestat YAML / JSON on standard input")->required();
   command->add_flag("--json", options->common.json, "Machine-readable JSON instead of text");
   command->add_option("-o,--output", options->common.output_path, "Write to this file instead of standard output");
   command->add_option("--tolerance", options->common.tolerance,

@@ -137,7 +137,7 @@ int run_network_analysis(const CommonOptions& common, const io::LoadedNetwork& l
     const auto* listed = sparse.listed_pairs ? &sparse.pairs : nullptr;
     emit(common, common.json ? report::json_text(report::sparse_network_report_json(loaded.model, sparse.result, &sparse.verdict, listed))
                              : report::sparse_network_report_text(loaded.model, sparse.result, &sparse.verdict, listed));
-    return 0;
+    return verdict_exit_code(common.fail_unless, sparse.verdict);
   }
   if (!o.pairs.empty())
     throw io::InputError({"--pair", 0, 0}, "--pair chooses pairs on the sparse path; the dense path lists every pair of "
@@ -167,7 +167,7 @@ int run_network_analysis(const CommonOptions& common, const io::LoadedNetwork& l
   report_options.matrices = o.matrices;
   emit(common, common.json ? report::json_text(report::network_report_json(loaded.model, analysis.result, report_options))
                            : report::network_report_text(loaded.model, analysis.result, report_options));
-  return 0;
+  return verdict_exit_code(common.fail_unless, analysis.verdict);
 }
 
 }  // namespace kinestat::cli

@@ -63,6 +63,19 @@ CLI::Validator non_negative_whole_number() {
       "COUNT");
 }
 
+void add_fail_unless_option(CLI::App& command, std::string& condition) {
+  command
+      .add_option("--fail-unless", condition,
+                  "Exit with status 1 (after the report) unless the verdict is this: exactly-constrained (for design "
+                  "checks in CI; 0 then means exactly constrained, 2 bad input)")
+      ->check(CLI::IsMember({"exactly-constrained"}));
+}
+
+int verdict_exit_code(const std::string& condition, const design::Verdict& verdict) {
+  if (condition == "exactly-constrained" && !verdict.exactly_constrained) return kExitVerdictNotAsRequired;
+  return 0;
+}
+
 std::optional<std::string> first_non_finite_result(const network::NetworkResult& result) {
   if (result.motion_values && !no_infinity(*result.motion_values)) return "a motion magnitude";
   if (result.action_values && !no_infinity(*result.action_values)) return "an action magnitude";

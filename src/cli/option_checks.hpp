@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "kinestat/design/verdict.hpp"
 #include "kinestat/network/network_result.hpp"
 
 namespace kinestat::cli {
@@ -16,6 +17,18 @@ namespace kinestat::cli {
 CLI::Validator positive_finite_number();
 /// A whole number >= 0 (counts and 1-based indices, 0 meaning "none").
 CLI::Validator non_negative_whole_number();
+
+/// Exit status of a command whose verdict failed `--fail-unless` (0 success, 2 bad input or
+/// usage, 3 internal error or out of memory; docs/report.md, "Exit status").
+inline constexpr int kExitVerdictNotAsRequired = 1;
+
+/// Adds `--fail-unless exactly-constrained` to `command` (analyze, structure), stored in
+/// `condition`: the command then exits kExitVerdictNotAsRequired when the design's verdict is
+/// anything else, after writing its report as usual (a design check in CI).
+void add_fail_unless_option(CLI::App& command, std::string& condition);
+/// The exit status for `verdict` under `--fail-unless condition` ("" when not given): 0, or
+/// kExitVerdictNotAsRequired when the verdict is not exactly constrained.
+int verdict_exit_code(const std::string& condition, const design::Verdict& verdict);
 
 /// The name of the first numeric result of a network analysis that is not finite (the values
 /// given, or the model's geometry, overflowed a double), or nothing when all are finite.

@@ -18,7 +18,7 @@ void register_report(CLI::App& app, Action& action) {
   auto options = std::make_shared<CommonOptions>();
   CLI::App* command = app.add_subcommand(
       "report", "Write a self-contained interactive HTML report (summary, 3D view, modes, self-stress)");
-  command->add_option("model", options->model_path, "Model file (YAML or JSON, any kind)")->required();
+  command->add_option("model", options->model_path, "Model file of any kind: kinestat YAML / JSON, SPACAR .dat, URDF .urdf, SDFormat .sdf or MJCF .xml; '-': kinestat YAML / JSON on standard input")->required();
   command->add_option("-o,--output", options->output_path, "Write the HTML to this file instead of standard output");
   command->add_option("--tolerance", options->tolerance, "Relative rank tolerance (as for analyze)")->check(positive_finite_number());
   command->callback([options, &action] {

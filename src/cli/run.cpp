@@ -6,6 +6,7 @@
 #include <string>
 #include <string_view>
 
+#include "cli/command_suggestion.hpp"
 #include "cli/commands.hpp"
 #include "kinestat/io/input_error.hpp"
 #include "kinestat/io/model_format.hpp"
@@ -81,8 +82,14 @@ int run(int argc, const char* const* argv) {
   register_move(app, action);
   register_sweep(app, action);
   register_fix(app, action);
+  register_export(app, action);
   for (CLI::App* command : app.get_subcommands({}))
     if (command->get_name() != "sweep") add_import_options(*command);
+  if (const auto unknown = unknown_command_message(app, argc, argv)) {
+    std::cerr << *unknown << '\n';
+    return 2;
+  }
+  print_model_notices();
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& success) {

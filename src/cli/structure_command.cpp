@@ -99,7 +99,7 @@ int run(const StructureOptions& options) {
   const design::Verdict verdict = design::structure_verdict(model, decomposition);
   const report::StructureReport report{model, decomposition, transformations.get(), method, &verdict, model.units};
   emit(options.common, options.common.json ? report::structure_report_json(report) : report::structure_report_text(report));
-  return 0;
+  return verdict_exit_code(options.common.fail_unless, verdict);
 }
 
 }  // namespace
@@ -109,11 +109,13 @@ void register_structure(CLI::App& app, Action& action) {
   CLI::App* command = app.add_subcommand(
       "structure", "Decompose a mechanism into structural groups (Assur groups) and rank the placements of its inputs");
   command->add_option("model", options->common.model_path,
-                      "Model file (kind: structure), or '-' for a matrix or model on standard input");
+                      "Model file (kind: structure or network: kinestat YAML / JSON, URDF .urdf, SDFormat .sdf or MJCF .xml), or '-' for "
+                      "a matrix or model on standard input");
   command->add_flag("--stdin", options->from_stdin, "Read a whitespace-separated adjacency matrix (or a YAML model) from standard input");
   command->add_flag("--json", options->common.json, "Machine-readable JSON instead of text");
   command->add_flag("--brief", options->common.brief, "Print the verdict block alone (with --json: the verdict object alone)");
   command->add_option("-o,--output", options->common.output_path, "Write to this file instead of standard output");
+  add_fail_unless_option(*command, options->common.fail_unless);
   command->add_option("--diagram", options->diagram, "Write the structural diagram instead of the report")
       ->check(CLI::IsMember({"dot", "svg"}));
   command->add_option("--method", options->method,

@@ -155,7 +155,7 @@ void register_sweep(CLI::App& app, Action& action) {
   CLI::App* command = app.add_subcommand(
       "sweep", "Design sweep: analyse every variant of a spec (parameter ranges or variant files), one JSON line each; "
                "--shard I/N for one slice, --merge to put the slices together");
-  command->add_option("files", options->inputs, "The sweep spec (kind: sweep); with --merge, the shard outputs to merge");
+  command->add_option("files", options->inputs, "The sweep spec (kind: sweep, YAML / JSON; '-': on standard input, its model paths then relative to the working folder); with --merge, the shard outputs to merge");
   command->add_flag("--merge", options->merge, "Merge shard outputs: every line once, sorted by variant");
   command->add_option("--shard", options->shard, "Only the variants v with v mod N = I (0 <= I < N)")->check(shard_format());
   command->add_flag("--full", options->full, "Each line carries the whole analysis report, not only the verdict and counts");

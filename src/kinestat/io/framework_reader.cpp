@@ -83,7 +83,7 @@ class FrameworkReader {
   FrameworkModel read() {
     const TreeNode& root = file_.root();
     file_.check_keys(root, "the framework model",
-                     {"kinestat", "kind", "name", "description", "dimension", "units", "nodes", "supports", "independent", "elements"});
+                     {"kinestat", kSchemaKey, "kind", "name", "description", "dimension", "units", "nodes", "supports", "independent", "elements"});
     if (auto name = file_.optional(root, "name"); name.defined()) model_.name = file_.string(name, "'name'");
     model_.dimension = read_planar(file_, root, "framework", false) ? 2 : 3;
     model_.units = read_units(file_, root);

@@ -11,8 +11,21 @@ bool read_planar(const YamlFile& file, const TreeNode& root, std::string_view ki
   const std::string text(dimension.is_scalar() ? dimension.scalar() : "");
   if (text == "spatial") return false;
   if (text == "planar") return true;
-  // The old numbers meant different things in different kinds (3 was planar for a network,
-  // spatial for a framework), so none is guessed at.
+  // Files of format version 1 wrote numbers before the words, each kind its own: a network its
+  // screw dimension (6 spatial, 3 planar), a framework its coordinate dimension (3 spatial, 2
+  // planar). Such a file is read as it was written, with a notice naming the word. A structure
+  // file wrote `space:` instead (structure_reader.cpp), so numbers there are no old spelling.
+  const bool network = kind == "network", framework = kind == "framework";
+  if ((network && (text == "6" || text == "3")) || (framework && (text == "3" || text == "2"))) {
+    const bool planar = text == (network ? "3" : "2");
+    const char* word = planar ? "planar" : "spatial";
+    file.notice(dimension, fmt::format("'dimension: {}' is the older spelling of 'dimension: {}' in a {} model (read as such); "
+                                       "write 'dimension: {}'",
+                                       text, word, kind, word));
+    return planar;
+  }
+  // Otherwise a number is not guessed at: the old numbers meant different things in different
+  // kinds (3 was planar for a network, spatial for a framework).
   if (text == "6")
     file.fail(dimension, "'dimension' takes a word: write 'dimension: spatial' (motion in space, d = 6)");
   if (text == "2")

@@ -27,7 +27,7 @@ class NetworkReader {
   LoadedNetwork read() {
     const TreeNode& root = file_.root();
     file_.check_keys(root, "the model file",
-                     {"kinestat", "kind", "name", "description", "dimension", "units", "ground", "bodies", "couplings", "chords",
+                     {"kinestat", kSchemaKey, "kind", "name", "description", "dimension", "units", "ground", "bodies", "couplings", "chords",
                       "primary", "values", "inputs"});
     network::Model& model = loaded_.model;
     if (auto name = file_.optional(root, "name"); name.defined()) model.name = file_.string(name, "'name'");

@@ -224,13 +224,23 @@ StructureModel read_pairs(const YamlFile& file, const TreeNode& bodies_node, con
 StructureModel read_structure_model(const YamlFile& file) {
   const TreeNode& root = file.root();
   file.check_keys(root, "a structure model",
-                  {"kinestat", "kind", "name", "description", "dimension", "space", "units", "bodies", "adjacency", "pairs"});
+                  {"kinestat", kSchemaKey, "kind", "name", "description", "dimension", "space", "units", "bodies", "adjacency", "pairs"});
   if (model_kind(file) != "structure") file.fail(root, "expected 'kind: structure'");
-  const TreeNode space = file.optional(root, "dimension");
-  if (const TreeNode old = file.optional(root, "space"); old.defined())
-    file.fail(old, fmt::format("'space' is now 'dimension', as in every model kind: write 'dimension: {}'",
-                               old.is_scalar() && old.scalar() == "spatial" ? "spatial" : "planar"));
-  const int dimension = read_planar(file, root, "structure", true) ? 3 : 6;
+  TreeNode space = file.optional(root, "dimension");
+  int dimension = 0;
+  if (const TreeNode old = file.optional(root, "space"); old.defined()) {
+    // `space: planar|spatial` is how structure files of format version 1 first wrote
+    // `dimension:`; read as written, with a notice naming the new spelling.
+    const std::string word(old.is_scalar() ? old.scalar() : "");
+    if (word != "planar" && word != "spatial") file.fail(old, "'space' (now written 'dimension') must be 'planar' or 'spatial'");
+    if (space.defined()) file.fail(old, "'space' is the older spelling of 'dimension': give 'dimension' alone");
+    file.notice(old, fmt::format("'space: {}' is the older spelling of 'dimension: {}' (read as such); write 'dimension: {}'", word,
+                                 word, word));
+    dimension = word == "planar" ? 3 : 6;
+    space = old;
+  } else {
+    dimension = read_planar(file, root, "structure", true) ? 3 : 6;
+  }
   const std::string units = read_units(file, root);
   const TreeNode adjacency = file.optional(root, "adjacency");
   const TreeNode pairs = file.optional(root, "pairs");

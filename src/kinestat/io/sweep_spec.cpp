@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <iostream>
 
 #include "kinestat/design/sweep_grid.hpp"
 #include "kinestat/io/yaml_support.hpp"
@@ -29,7 +30,7 @@ class SweepSpecReader {
 
   SweepSpec read() {
     const TreeNode root = file_.root();
-    file_.check_keys(root, "the sweep spec", {"kinestat", "kind", "name", "description", "model", "parameters", "variants"});
+    file_.check_keys(root, "the sweep spec", {"kinestat", kSchemaKey, "kind", "name", "description", "model", "parameters", "variants"});
     const TreeNode version = file_.required(root, "kinestat", "the sweep spec");
     if (file_.integer(version, "the format version 'kinestat'") != 1) file_.fail(version, "unsupported format version: expected 'kinestat: 1'");
     const TreeNode kind = file_.required(root, "kind", "the sweep spec");
@@ -176,7 +177,10 @@ SweepSpec parse_sweep_spec(const std::string& path, const std::string& text) {
   return SweepSpecReader(file).read();
 }
 
-SweepSpec read_sweep_spec(const std::string& path) { return parse_sweep_spec(path, read_model_text(path)); }
+SweepSpec read_sweep_spec(const std::string& path) {
+  if (path == "-") return parse_sweep_spec("<stdin>", read_model_text(std::cin, "<stdin>"));
+  return parse_sweep_spec(path, read_model_text(path));
+}
 
 std::string spec_relative_path(const std::string& spec_path, const std::string& written) {
   const std::filesystem::path path(written);

@@ -36,7 +36,7 @@ struct SweepSpec {
 /// Reads the spec from `text` (YAML or JSON; checks `kinestat: 1` and `kind: sweep`); `path` names
 /// it in messages and is the folder its paths are relative to.
 SweepSpec parse_sweep_spec(const std::string& path, const std::string& text);
-/// Reads the spec file at `path` (bounded, as model files).
+/// Reads the spec file at `path` (bounded, as model files; "-": standard input, named "<stdin>").
 SweepSpec read_sweep_spec(const std::string& path);
 
 /// `written` (a path in the spec) as a path from the working directory: unchanged when absolute,

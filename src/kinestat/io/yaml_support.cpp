@@ -16,6 +16,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstring>
+#include <iostream>
 #include <istream>
 #include <new>
 #include <set>
@@ -799,7 +800,24 @@ YamlFile YamlFile::parse(std::string path, const std::string& text, const Readin
 }
 
 YamlFile YamlFile::load(const std::string& path, const ReadingLimits& limits) {
+  if (path == "-") return parse("<stdin>", read_model_text(std::cin, "<stdin>", limits), limits);
   return parse(path, read_model_text(path, limits), limits);
+}
+
+namespace {
+NoticeHandler& notice_handler() {
+  static NoticeHandler handler;
+  return handler;
+}
+}  // namespace
+
+void set_notice_handler(NoticeHandler handler) { notice_handler() = std::move(handler); }
+
+void YamlFile::notice(const TreeNode& node, const std::string& problem) const {
+  const SourceLocation at = where(node);
+  const std::string line = fmt::format("{}:{}:{}: note: {}", printable_text(at.file), at.line, at.column, problem);
+  if (notice_handler()) notice_handler()(line);
+  else notices_->push_back(line);
 }
 
 SourceLocation YamlFile::where(const TreeNode& node) const {

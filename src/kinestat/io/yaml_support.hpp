@@ -9,6 +9,7 @@
 #include <gmpxx.h>
 
 #include <cstddef>
+#include <functional>
 #include <initializer_list>
 #include <iosfwd>
 #include <memory>
@@ -45,6 +46,14 @@ std::string read_model_text(const std::string& path, const ReadingLimits& limits
 /// The same for an open stream (standard input); `source` names it in messages.
 std::string read_model_text(std::istream& in, const std::string& source, const ReadingLimits& limits = {});
 
+/// Receives the notices of model files as they are read (one line each, "file:line:column:
+/// note: ..."): older spellings read as their new ones. Without a handler (the default: the
+/// library and Python) each file keeps its notices (YamlFile::notices, io::ModelFile::notices);
+/// with one (the command line: standard error) they go to it and are not kept. Set it before
+/// reading begins; it is called from the reading thread.
+using NoticeHandler = std::function<void(const std::string& notice)>;
+void set_notice_handler(NoticeHandler handler);
+
 /// The file being read, so that every helper can say where a problem is.
 class YamlFile {
  public:
@@ -52,7 +61,8 @@ class YamlFile {
   /// an empty document, more than one document, a string with control characters (checked
   /// after unescaping), or input over the limits.
   static YamlFile parse(std::string path, const std::string& text, const ReadingLimits& limits = {});
-  /// Reads (bounded) and parses the file at `path`. Throws InputError if it cannot be read.
+  /// Reads (bounded) and parses the file at `path`; "-" is standard input (named "<stdin>" in
+  /// messages). Throws InputError if it cannot be read.
   static YamlFile load(const std::string& path, const ReadingLimits& limits = {});
 
   TreeNode root() const { return tree_->root(); }
@@ -64,6 +74,12 @@ class YamlFile {
   SourceLocation where(const TreeNode& node) const;
   /// Throws InputError at `node` with `problem`.
   [[noreturn]] void fail(const TreeNode& node, const std::string& problem) const;
+  /// A notice at `node` ("file:line:column: note: problem"): something read that the user
+  /// should write differently, which does not change the model. To the notice handler when one
+  /// is set, else kept in notices().
+  void notice(const TreeNode& node, const std::string& problem) const;
+  /// The notices of this file kept so far (copies of a YamlFile share them).
+  const std::vector<std::string>& notices() const { return *notices_; }
 
   /// A map whose keys must all be in `allowed`; duplicate keys are errors.
   void check_keys(const TreeNode& map, std::string_view what, std::initializer_list<std::string_view> allowed) const;
@@ -95,9 +111,11 @@ class YamlFile {
   void expect_map(const TreeNode& node, std::string_view what) const;
 
  private:
-  YamlFile(std::string path, std::shared_ptr<const ModelTree> tree) : path_(std::move(path)), tree_(std::move(tree)) {}
+  YamlFile(std::string path, std::shared_ptr<const ModelTree> tree)
+      : path_(std::move(path)), tree_(std::move(tree)), notices_(std::make_shared<std::vector<std::string>>()) {}
   std::string path_;
   std::shared_ptr<const ModelTree> tree_;
+  std::shared_ptr<std::vector<std::string>> notices_;
 };
 
 /// Significant digits of a decimal literal ("0.8660254" -> 7, "-1.50e3" -> 3, "0" -> 1).
@@ -115,5 +133,9 @@ std::optional<double> decimal_toward_zero(std::string_view literal);
 
 /// The `kind:` of a model document ("network" when absent). Checks `kinestat: 1`.
 std::string model_kind(const YamlFile& file);
+
+/// The key `"$schema"` that a model or sweep spec may carry at its root (the JSON Schema it
+/// follows, for editors and validators); readers accept it and ignore its value.
+inline constexpr std::string_view kSchemaKey = "$schema";
 
 }  // namespace kinestat::io

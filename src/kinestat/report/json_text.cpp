@@ -15,6 +15,16 @@ std::string json_text(const nlohmann::ordered_json& value, int indent) {
   return text;
 }
 
+std::string_view kinestat_version() { return KINESTAT_PROJECT_VERSION; }
+
+void add_versions(nlohmann::ordered_json& report) {
+  if (!report.is_object()) return;
+  report.erase("kinestat_version");  // a report copied into another (sweep --full) keeps one pair, last
+  report.erase("report_version");
+  report["kinestat_version"] = kinestat_version();
+  report["report_version"] = kReportVersion;
+}
+
 nlohmann::ordered_json json_object(std::size_t keys) {
   nlohmann::ordered_json object = nlohmann::ordered_json::object();
   object.get_ref<nlohmann::ordered_json::object_t&>().reserve(keys);

@@ -5,8 +5,21 @@
 #include <nlohmann/json.hpp>
 
 #include <string>
+#include <string_view>
 
 namespace kinestat::report {
+
+/// The version of the JSON report formats (analyze, structure, move, sweep lines): their keys and
+/// what they mean (docs/report.md, schemas/report-v1.schema.json). Raised when a key is removed
+/// or changes its meaning; a new key does not raise it.
+inline constexpr int kReportVersion = 1;
+
+/// kinestat's version, e.g. "0.1.0" (the project version CMake was given).
+std::string_view kinestat_version();
+
+/// Appends `kinestat_version` and `report_version` (kReportVersion) to the top level of a JSON
+/// report, after its other keys (the verdict stays first). Replaces them when present.
+void add_versions(nlohmann::ordered_json& report);
 
 /// `value` as text with `indent` spaces per level (-1: one line), and a final newline when
 /// indented. Bytes that are not UTF-8 (model readers reject them, but names can also come

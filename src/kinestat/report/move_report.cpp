@@ -134,6 +134,7 @@ nlohmann::ordered_json framework_move_json(const framework::FrameworkModel& mode
     point["positions"] = std::move(positions);
     j["path"].push_back(std::move(point));
   }
+  add_versions(j);
   return j;
 }
 
@@ -234,6 +235,7 @@ nlohmann::ordered_json network_move_json(const network::Model& model, const netw
     point["coordinates"] = std::move(coordinates);
     j["path"].push_back(std::move(point));
   }
+  add_versions(j);
   return j;
 }
 
@@ -423,6 +425,7 @@ std::string positions_json_text(const network::Model& model, const PositionSweep
   }
   j["steps"] = nlohmann::ordered_json::array();
   j["not_assembled"] = nlohmann::ordered_json::array();
+  add_versions(j);
   // Each step is dumped on its own and the text spliced in: the steps of a long sweep (10^7) are
   // never one JSON tree, whose destruction under memory exhaustion would allocate and abort.
   std::string steps;

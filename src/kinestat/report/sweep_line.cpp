@@ -29,16 +29,18 @@ nlohmann::ordered_json sweep_line(const SweepVariant& variant, const nlohmann::o
   nlohmann::ordered_json line = identity(variant);
   if (full) {
     for (const auto& [key, value] : report.items()) line[key] = value;
-    return line;
+  } else {
+    for (const std::string& key : sweep_report_keys())
+      if (const auto it = report.find(key); it != report.end()) line[key] = *it;
   }
-  for (const std::string& key : sweep_report_keys())
-    if (const auto it = report.find(key); it != report.end()) line[key] = *it;
+  add_versions(line);
   return line;
 }
 
 nlohmann::ordered_json sweep_error_line(const SweepVariant& variant, const std::string& error) {
   nlohmann::ordered_json line = identity(variant);
   line["error"] = error;
+  add_versions(line);
   return line;
 }
 

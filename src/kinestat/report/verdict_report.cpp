@@ -137,6 +137,7 @@ Json lead_with_verdict(const design::Verdict& verdict, Json report, const std::s
   j["verdict"] = verdict_json(verdict);
   if (!units.empty()) j["units"] = units;
   for (auto it = report.begin(); it != report.end(); ++it) j[it.key()] = std::move(it.value());
+  add_versions(j);  // every report that leads with a verdict is a whole report: analyze, structure
   return j;
 }
 

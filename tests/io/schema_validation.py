@@ -1,0 +1,165 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
+"""Validates every example and every JSON report against the schemas in schemas/ (issue 39, item 4).
+
+  * Each schema is a valid JSON Schema (draft 2020-12).
+  * Every kinestat model in examples/ (YAML and JSON; network, framework, structure) validates against
+    model-v1 (and so against its kind's schema), every sweep spec in examples/sweeps/ against sweep-v1,
+    and the files of every earlier spelling in tests/io/data/ too.
+  * The JSON report of every example (`analyze --json`, `structure --json`; a network also on the sparse
+    path) validates against report-v1, every line of every example sweep against sweep-line-v1, and all
+    of them carry the version `kinestat --version` prints and report_version 1.
+  * Bad documents are refused (the schemas are not vacuous): a report without its verdict, a model with
+    an unknown key, a sweep line without its version.
+
+Needs Debian's python3-jsonschema and python3-yaml; without them exits 77 (skipped) unless
+KINESTAT_REQUIRE_SCHEMAS=1. Usage: schema_validation.py --cli build/release/kinestat --source .
+"""
+import argparse
+import copy
+import glob
+import json
+import os
+import subprocess
+import sys
+
+try:
+    import jsonschema
+    import yaml
+except ImportError as missing:
+    print(f"schema_validation: skipped: {missing} (install python3-jsonschema and python3-yaml)")
+    sys.exit(1 if os.environ.get("KINESTAT_REQUIRE_SCHEMAS") == "1" else 77)
+
+
+def load_schemas(folder):
+    schemas = {}
+    for path in sorted(glob.glob(os.path.join(folder, "*.schema.json"))):
+        with open(path, encoding="utf-8") as f:
+            schema = json.load(f)
+        jsonschema.Draft202012Validator.check_schema(schema)
+        schemas[os.path.basename(path)] = schema
+    return schemas
+
+
+def validator(schemas, name):
+    store = {schema["$id"]: schema for schema in schemas.values()}
+    resolver = jsonschema.RefResolver.from_schema(schemas[name], store=store)
+    return jsonschema.Draft202012Validator(schemas[name], resolver=resolver)
+
+
+def as_json(document):
+    """A YAML document as JSON would carry it (keys as strings)."""
+    return json.loads(json.dumps(document, default=str))
+
+
+def read_document(path):
+    with open(path, encoding="utf-8") as f:
+        return as_json(yaml.safe_load(f))
+
+
+def run(cli, *args):
+    done = subprocess.run([cli, *args], capture_output=True, text=True, timeout=600)
+    return done.returncode, done.stdout, done.stderr
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--cli", required=True)
+    parser.add_argument("--source", required=True)
+    options = parser.parse_args()
+    failures = []
+    schemas = load_schemas(os.path.join(options.source, "schemas"))
+    expected = {"model-v1.schema.json", "network-v1.schema.json", "framework-v1.schema.json", "structure-v1.schema.json",
+                "sweep-v1.schema.json", "report-v1.schema.json", "sweep-line-v1.schema.json"}
+    if set(schemas) != expected:
+        failures.append(f"schemas/ holds {sorted(schemas)}, expected {sorted(expected)}")
+    model, sweep, report, line = (validator(schemas, f"{n}-v1.schema.json") for n in ("model", "sweep", "report", "sweep-line"))
+    version = run(options.cli, "--version")[1].split("\n")[0].split(" ")[-1]
+
+    def check(valid, document, what):
+        errors = sorted(valid.iter_errors(document), key=lambda e: list(e.path))
+        for error in errors[:3]:
+            failures.append(f"{what}: {'/'.join(map(str, error.path)) or '(root)'}: {error.message[:200]}")
+        return not errors
+
+    def check_report(document, what):
+        check(report, document, what)
+        if document.get("kinestat_version") != version or document.get("report_version") != 1:
+            failures.append(f"{what}: versions {document.get('kinestat_version')!r}, {document.get('report_version')!r}; "
+                            f"expected {version!r}, 1")
+
+    examples = os.path.join(options.source, "examples")
+    models = sorted(glob.glob(os.path.join(examples, "*.yaml")) + glob.glob(os.path.join(examples, "json", "*.json")))
+    old_spellings = sorted(glob.glob(os.path.join(options.source, "tests", "io", "data", "format-1-*.yaml")))
+    counted = {"network": 0, "framework": 0, "structure": 0}
+    for path in models + old_spellings:
+        name = os.path.relpath(path, options.source)
+        document = read_document(path)
+        check(model, document, name)
+        kind = document.get("kind", "network")
+        counted[kind] += 1
+        if path in old_spellings:
+            continue
+        command = ["structure", "--json", path] if kind == "structure" else ["analyze", "--json", path]
+        code, out, err = run(options.cli, *command)
+        if code != 0:
+            failures.append(f"{name}: kinestat {' '.join(command[:2])} exit {code}: {err.strip()[:200]}")
+            continue
+        check_report(json.loads(out), f"report of {name}")
+        if kind == "network":
+            code, out, err = run(options.cli, "analyze", "--json", "--sparse", path)
+            if code == 0:
+                check_report(json.loads(out), f"sparse report of {name}")
+            else:
+                failures.append(f"{name}: analyze --sparse exit {code}: {err.strip()[:200]}")
+    if min(counted.values()) == 0:
+        failures.append(f"examples of every kind expected, found {counted}")
+
+    for path in sorted(glob.glob(os.path.join(examples, "sweeps", "*.yaml"))):
+        document = read_document(path)
+        if document.get("kind") != "sweep":
+            continue
+        name = os.path.relpath(path, options.source)
+        check(sweep, document, name)
+        # Every variant of the small sweeps, one shard in a hundred of the large one.
+        code, out, err = run(options.cli, "sweep", path, "--shard", "0/100") if "guide-6" in path else run(options.cli, "sweep", path)
+        if code not in (0, 1) or not out.strip():  # 1: some variants failed (their lines say why)
+            failures.append(f"{name}: kinestat sweep exit {code}: {err.strip()[:200]}")
+            continue
+        for k, text in enumerate(out.strip().split("\n")):
+            document = json.loads(text)
+            check(line, document, f"{name} line {k + 1}")
+            if document.get("kinestat_version") != version:
+                failures.append(f"{name} line {k + 1}: kinestat_version {document.get('kinestat_version')!r}")
+
+    # The schemas refuse what they must.
+    code, out, _ = run(options.cli, "analyze", "--json", os.path.join(examples, "four-bar-planar.yaml"))
+    good = json.loads(out)
+    for broken, what in ((lambda d: d.pop("verdict"), "a report without its verdict"),
+                         (lambda d: d.pop("report_version"), "a report without report_version"),
+                         (lambda d: d.update(report_version=2), "a report of version 2"),
+                         (lambda d: d["verdict"].pop("exactly_constrained"), "a verdict without exactly_constrained")):
+        document = copy.deepcopy(good)
+        broken(document)
+        if report.is_valid(document):
+            failures.append(f"report-v1 accepts {what}")
+    four_bar = read_document(os.path.join(examples, "four-bar-planar.yaml"))
+    for broken, what in ((lambda d: d.update(spelling_mistake=1), "a model with an unknown key"),
+                         (lambda d: d.update(kinestat=2), "a model of format version 2"),
+                         (lambda d: d["couplings"][0].update(type="hinge"), "an unknown coupling type")):
+        document = copy.deepcopy(four_bar)
+        broken(document)
+        if model.is_valid(document):
+            failures.append(f"model-v1 accepts {what}")
+    if line.is_valid({"variant": 0, "of": 1, "parameters": {}, "kind": "network", "verdict": {"exactly_constrained": True, "summary": "x"}}):
+        failures.append("sweep-line-v1 accepts a line without versions")
+
+    for failure in failures:
+        print(failure)
+    print(f"schema_validation: {len(models)} example models ({counted}), {len(old_spellings)} files of earlier spellings, "
+          f"{len(failures)} failures")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
