@@ -49,8 +49,12 @@ void check_properties(const Model& model, int seed) {
   EXPECT_TRUE(r.identities_hold);
   EXPECT_TRUE(r.motion_methods_agree);
   EXPECT_TRUE(r.action_methods_agree);
-  EXPECT_GE(r.FN, 0);
-  EXPECT_GE(r.CN, 0);
+  // Kirchhoff's count (seed 000): FN − CN = F − d·l, with l = e − n + 1 circuits of the connected
+  // coupling graph, counted here from the model; and neither nett count exceeds its gross one.
+  const int circuits = static_cast<int>(model.couplings.size()) - static_cast<int>(model.bodies.size()) + 1;
+  EXPECT_EQ(r.FN - r.CN, r.F - model.space.dimension() * circuits);
+  EXPECT_TRUE(r.FN >= 0 && r.FN <= r.F) << r.FN << " of " << r.F;
+  EXPECT_TRUE(r.CN >= 0 && r.CN <= r.C) << r.CN << " of " << r.C;
   const auto freedoms = pair_freedoms(model, r);
 
   const NetworkResult f = analyse_network(model, floating);
