@@ -250,6 +250,23 @@ TEST(FixCommand, RefusalsWriteNothing) {
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 
+// A ring of 62 revolutes parallel to z, analysed in space: a planar loop, so CN = 3 (the moments
+// about x and y and the force along z, as the four-bar's); beyond the change search's 60
+// couplings the verdict has no change set: exit 5, nothing written.
+TEST(FixCommand, NoVerifiedChangeSetWritesNothing) {
+  std::string yaml = "kinestat: 1\nground: b0\ncouplings:\n";
+  for (int i = 0; i < 62; ++i)
+    yaml += "  - {name: J" + std::to_string(i) + ", type: revolute, between: [b" + std::to_string(i) + ", b" + std::to_string((i + 1) % 62) +
+            "], point: [" + std::to_string(i) + ", " + std::to_string(i * i % 7) + ", 0], axis: [0, 0, 1]}\n";
+  const std::string model = testing::write_temp_file("ring-62.yaml", yaml);
+  const std::string out = (scratch_folder() / "ring-62-fixed.yaml").string();
+  const auto run = run_cli("fix " + model + " -o " + out);
+  EXPECT_EQ(run.exit_code, 5) << run.out << run.err;
+  EXPECT_NE(run.out.find("no verified change set"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("3 redundant constraints"), std::string::npos) << run.out;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
 // --json: the fixed model's verdict first, then what was done.
 TEST(FixCommand, JsonReport) {
   const std::string out = (scratch_folder() / "json-fixed.yaml").string();
