@@ -33,6 +33,16 @@ void add_import_options(CLI::App& command) {
   command.add_flag("--allow-outside-includes", import_options().allow_includes_outside_folder,
                    "SDFormat and MJCF: also read included files outside the model's folder (never the working directory's "
                    "or system folders unless named)");
+  command
+      .add_option_function<std::string>(
+          "--base",
+          [](const std::string& base) {
+            import_options().base = base == "fixed" ? io::ImportOptions::Base::fixed : io::ImportOptions::Base::floating;
+          },
+          "URDF and SDFormat: the robot's base (URDF root link, SDFormat model without a joint to the world) is the ground "
+          "(fixed, the default) or floats (floating, as a legged or mobile robot, and a model in Gazebo); a link joined to "
+          "nothing else floats unless fixed is given (docs/formats.md)")
+      ->check(CLI::IsMember({"fixed", "floating"}));
 }
 
 void print_model_notices() {

@@ -168,8 +168,9 @@ TEST(SdformatRealFiles, ElementsWithoutKinematicMeaningNeverStopTheImport) {
   const network::NetworkResult r = network::analyse_network(imported.loaded.model);
   EXPECT_EQ(r.FN, 1);
   EXPECT_EQ(r.CN, 0);
-  ASSERT_EQ(imported.notices.size(), 1u);
+  ASSERT_EQ(imported.notices.size(), 3u);  // what was ignored, then units and base
   EXPECT_TRUE(has(imported.notices[0], "note: ignored 1 <collision>, 1 <visual> (no kinematic meaning)")) << imported.notices[0];
+  EXPECT_TRUE(has(imported.notices[2], "note: base: ")) << imported.notices[2];
 }
 
 // MJCF: main.xml includes parts/arm.xml (MuJoCo resolves it in the main file's folder): one body
@@ -252,7 +253,7 @@ TEST(MjcfRealFiles, WeldWithTorquescaleZeroIsAConnect) {
 }
 
 // Issue 37 item 3: '%' comments (SPACAR's own) and DYNX, read and noted: a truss triangle of three
-// nodes and three trusses, whatever the comments say.
+// nodes and three trusses, whatever the comments say; DYNX's coordinate independent.
 TEST(SpacarRealFiles, PercentCommentsAndDynxAreRead) {
   const std::string text =
       "% a comment line as SPACAR writes them\nX 1 0 0 0 % after a node\nX 2 1 0 0\nX 3 0 1 0\n"
@@ -263,6 +264,9 @@ TEST(SpacarRealFiles, PercentCommentsAndDynxAreRead) {
   bool noted = false;
   for (const auto& notice : imported.notices) noted = noted || has(notice, "p.dat:10:1: note: DYNX");
   EXPECT_TRUE(noted);
+  // DYNX 3 1: x of node 3 is one of SPACAR's dynamic degrees of freedom, read as independent.
+  EXPECT_EQ(imported.model.nodes[2].roles[0], framework::CoordinateRole::independent);
+  EXPECT_EQ(imported.model.nodes[2].roles[1], framework::CoordinateRole::dependent);
   const std::string bad = error_of([] { (void)parse_spacar("p.dat", "X 1 0 0 0\nX 2 1 0 0\nTRUSS 1 1 2\nDYNX 9\nEND\n"); });
   EXPECT_TRUE(has(bad, "p.dat:4:6: error: DYNX: node 9 is neither")) << bad;
 }

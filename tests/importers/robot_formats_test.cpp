@@ -249,10 +249,13 @@ TEST(UrdfReader, EveryJointTypeGivesTheHandDerivedCoupling) {
   const auto& close = coupling(m, "close");
   EXPECT_EQ(body(m, close.from), "e");
   EXPECT_EQ(body(m, close.to), "a");
-  ASSERT_EQ(imported.notices.size(), 3u);
-  EXPECT_NE(imported.notices[0].find("mimic joint(s) cont"), std::string::npos) << imported.notices[0];
-  EXPECT_NE(imported.notices[1].find("transmission(s) t1"), std::string::npos) << imported.notices[1];
-  EXPECT_NE(imported.notices[2].find("<gazebo>, <material>"), std::string::npos) << imported.notices[2];
+  // What was assumed (units, base), then what was ignored.
+  ASSERT_EQ(imported.notices.size(), 5u);
+  EXPECT_NE(imported.notices[0].find("lengths in metres; joint limits"), std::string::npos) << imported.notices[0];
+  EXPECT_NE(imported.notices[1].find("base: the root link 'world' is the ground"), std::string::npos) << imported.notices[1];
+  EXPECT_NE(imported.notices[2].find("mimic joint(s) cont"), std::string::npos) << imported.notices[2];
+  EXPECT_NE(imported.notices[3].find("transmission(s) t1"), std::string::npos) << imported.notices[3];
+  EXPECT_NE(imported.notices[4].find("<gazebo>, <material>"), std::string::npos) << imported.notices[4];
 }
 
 std::string urdf_error(const std::string& text) {
@@ -276,9 +279,6 @@ TEST(UrdfReader, ErrorsNameLineAndColumn) {
   EXPECT_EQ(urdf_error("<robot>\n <link name='a'/>\n <link name='b'/>\n <joint name='j' type='revolute'>\n  <origin xyz='1 2'/>\n"
                        "  <parent link='a'/><child link='b'/>\n </joint>\n</robot>\n"),
             "bad.urdf:5:3: error: attribute xyz=\"1 2\" of <origin> must be three finite numbers");
-  EXPECT_EQ(urdf_error("<robot>\n <link name='a'/>\n <link name='b'/>\n</robot>\n"),
-            "bad.urdf:3:2: error: links 'a' and 'b' are both roots (neither is the child of a joint): a URDF tree has one root, "
-            "the ground");
   EXPECT_EQ(urdf_error("<robot><link name='a'/>\n<joint name='j'"), "bad.urdf:2:1: error: malformed XML: Error=XML_ERROR_PARSING_ELEMENT ErrorID=6 (0x6) Line number=2: XMLElement name=joint");
   EXPECT_EQ(urdf_error("<model/>"), "bad.urdf:1:1: error: a URDF file has a <robot> root element");
 }
@@ -311,7 +311,7 @@ TEST(UrdfReader, DrakeLoopJointClosesAtLink1sFrame) {
   EXPECT_EQ(c.geometry.point, v("1", "5", "0"));
   EXPECT_EQ(*c.geometry.axis, v("-1", "0", "0"));
   EXPECT_EQ(coupling(m, "B").geometry.point, v("1", "2", "0"));
-  EXPECT_TRUE(imported.notices.empty());
+  EXPECT_EQ(imported.notices.size(), 2u);  // units and base only: nothing ignored
 }
 
 TEST(SdformatReader, EveryJointTypeGivesTheHandDerivedCoupling) {

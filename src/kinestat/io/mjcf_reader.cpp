@@ -9,11 +9,15 @@
 #include <mujoco/mujoco.h>
 #include <tinyxml2.h>
 
+#include <Eigen/Geometry>
+
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
+#include <numbers>
+#include <optional>
 #include <regex>
 #include <set>
 #include <string_view>
@@ -156,6 +160,9 @@ class MjcfDocument {
       notices.push_back(fmt::format("{}: note: ignored {} mesh, texture, heightfield, skin and material asset(s), and mesh geoms "
                                     "read as small spheres: geometry has no kinematic meaning, so no asset file is read",
                                     path_, stripped));
+    strip_dynamics(root);
+    read_compiler(root);
+    flatten_frames(root);
     connect_sites(root);
     read_welds(root);
     print();
@@ -298,49 +305,262 @@ class MjcfDocument {
     return top;
   }
 
-  // A connect between two sites (MuJoCo 2.3.3 and later: site1, site2) -> the body-based connect
-  // MuJoCo 2.2.2 reads: body1 the body of site1, its anchor the site's position in that body,
-  // body2 the body of site2 (the world when the site is in <worldbody>). The sites coincide in
-  // the assembled mechanism, which is where kinestat reads it.
+  // Elements MuJoCo 3 files fill with options that MuJoCo 2.2.2 refuses ("implicitfast",
+  // actuatorfrcrange, assetdir, ...) and that have no kinematic meaning: removed before MuJoCo
+  // compiles, with one note. Tendons stay: equalities may name them (and are then ignored).
+  void strip_dynamics(tinyxml2::XMLElement* root) {
+    std::set<std::string> names;
+    for (tinyxml2::XMLElement* e = root->FirstChildElement(); e;) {
+      tinyxml2::XMLElement* next = e->NextSiblingElement();
+      const std::string_view tag = e->Name();
+      if (tag == "option" || tag == "actuator" || tag == "sensor" || tag == "keyframe" || tag == "contact" || tag == "visual" ||
+          tag == "statistic" || tag == "custom" || tag == "extension") {
+        names.insert("<" + std::string(tag) + ">");
+        root->DeleteChild(e);
+      } else if (tag == "compiler") {
+        for (const char* dir : {"assetdir", "meshdir", "texturedir"}) e->DeleteAttribute(dir);
+      }
+      e = next;
+    }
+    // Joint attributes of actuation (MuJoCo 3: actuatorfrcrange, actuatorfrclimited,
+    // actuatorgravcomp), in bodies and in default classes.
+    std::vector<tinyxml2::XMLElement*> stack{root};
+    while (!stack.empty()) {
+      tinyxml2::XMLElement* e = stack.back();
+      stack.pop_back();
+      if (std::string_view(e->Name()) == "joint")
+        for (const char* a : {"actuatorfrcrange", "actuatorfrclimited", "actuatorgravcomp"})
+          if (e->Attribute(a)) {
+            names.insert(std::string("joint ") + a);
+            e->DeleteAttribute(a);
+          }
+      for (tinyxml2::XMLElement* child = e->FirstChildElement(); child; child = child->NextSiblingElement()) stack.push_back(child);
+    }
+    if (!names.empty()) {
+      std::string list;
+      for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+      notices.push_back(fmt::format("{}: note: ignored {} (actuation, sensing, contact, simulation options: no kinematic "
+                                    "meaning; removed before MuJoCo compiles the model)", path_, list));
+    }
+  }
+
+  // The compiler's angle unit and Euler sequence, which <frame> orientations are written in.
+  void read_compiler(const tinyxml2::XMLElement* root) {
+    for (const tinyxml2::XMLElement* c = root->FirstChildElement("compiler"); c; c = c->NextSiblingElement("compiler")) {
+      if (const char* angle = c->Attribute("angle")) degrees_ = std::string_view(angle) != "radian";
+      if (const char* seq = c->Attribute("eulerseq")) euler_sequence_ = seq;
+    }
+  }
+
+  // The numbers of attribute `name` of `e` (exactly `count` of them), or nothing when absent.
+  std::optional<std::vector<double>> numbers(const tinyxml2::XMLElement* e, const char* name, std::size_t count) const {
+    const char* text = e->Attribute(name);
+    if (!text) return std::nullopt;
+    std::vector<double> out;
+    for (const char* p = text;;) {
+      char* end = nullptr;
+      const double x = std::strtod(p, &end);
+      if (end == p) break;
+      out.push_back(x);
+      p = end;
+    }
+    if (out.size() != count)
+      throw InputError(where(e), fmt::format("attribute {}=\"{}\" of <{}> must hold {} numbers", name,
+                                             printable_text(std::string_view(text).substr(0, 60)), e->Name(), count));
+    return out;
+  }
+
+  // The orientation an element writes (quat, axisangle, euler, xyaxes or zaxis), as MuJoCo
+  // reads it (angles in the compiler's unit, Euler angles in its sequence).
+  Eigen::Quaterniond orientation(const tinyxml2::XMLElement* e) const {
+    const double unit = degrees_ ? std::numbers::pi / 180.0 : 1.0;
+    if (const auto q = numbers(e, "quat", 4)) return Eigen::Quaterniond((*q)[0], (*q)[1], (*q)[2], (*q)[3]).normalized();
+    if (const auto a = numbers(e, "axisangle", 4))
+      return Eigen::Quaterniond(Eigen::AngleAxisd((*a)[3] * unit, Eigen::Vector3d((*a)[0], (*a)[1], (*a)[2]).normalized()));
+    if (const auto angles = numbers(e, "euler", 3)) {
+      Eigen::Quaterniond q = Eigen::Quaterniond::Identity();
+      if (euler_sequence_.size() != 3) throw InputError(where(e), "the compiler's eulerseq must have three letters");
+      for (std::size_t i = 0; i < 3; ++i) {
+        const char axis = euler_sequence_[i];
+        const int k = std::tolower(static_cast<unsigned char>(axis)) - 'x';
+        if (k < 0 || k > 2) throw InputError(where(e), "the compiler's eulerseq holds only x, y, z, X, Y, Z");
+        const Eigen::Quaterniond r(Eigen::AngleAxisd((*angles)[i] * unit, Eigen::Vector3d::Unit(k)));
+        // Lower case: about the moving axes (intrinsic); upper case: about the fixed ones.
+        q = std::islower(static_cast<unsigned char>(axis)) ? q * r : r * q;
+      }
+      return q;
+    }
+    if (const auto xy = numbers(e, "xyaxes", 6)) {
+      const Eigen::Vector3d x = Eigen::Vector3d((*xy)[0], (*xy)[1], (*xy)[2]).normalized();
+      Eigen::Vector3d y((*xy)[3], (*xy)[4], (*xy)[5]);
+      y = (y - y.dot(x) * x).normalized();
+      Eigen::Matrix3d r;
+      r << x, y, x.cross(y);
+      return Eigen::Quaterniond(r);
+    }
+    if (const auto z = numbers(e, "zaxis", 3))
+      return Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), Eigen::Vector3d((*z)[0], (*z)[1], (*z)[2]));
+    return Eigen::Quaterniond::Identity();
+  }
+
+  static std::string text_of(const Eigen::Vector3d& v) { return fmt::format("{:.17g} {:.17g} {:.17g}", v.x(), v.y(), v.z()); }
+
+  // <frame> (MuJoCo 3): a pose applied to the elements in it, which MuJoCo 2.2.2 does not know.
+  // Each frame's pose is composed into its children's (pos, orientation, joint axes, fromto),
+  // which then take its place, in order; a frame's childclass becomes their class (childclass
+  // of a body). A child that takes its position from a default class is placed at the frame.
+  void flatten_frames(tinyxml2::XMLElement* root) {
+    std::vector<tinyxml2::XMLElement*> stack{root};
+    while (!stack.empty()) {
+      tinyxml2::XMLElement* e = stack.back();
+      stack.pop_back();
+      for (tinyxml2::XMLElement* child = e->FirstChildElement(); child;) {
+        tinyxml2::XMLElement* next = child->NextSiblingElement();
+        if (std::string_view(child->Name()) == "frame" && std::string_view(e->Name()) != "default") {
+          tinyxml2::XMLElement* first = lift_frame(e, child);
+          ++frames_;
+          next = first ? first : next;  // the lifted children are visited (a nested frame in turn)
+        } else {
+          stack.push_back(child);
+        }
+        child = next;
+      }
+    }
+    if (frames_ > 0)
+      notices.push_back(fmt::format("{}: note: {} <frame>(s) (MuJoCo 3) read by composing each frame's pose into the elements "
+                                    "it holds (MuJoCo 2.2.2 knows no frames)", path_, frames_));
+  }
+
+  // Moves the children of `frame` into `parent` in its place, poses composed; returns the first.
+  tinyxml2::XMLElement* lift_frame(tinyxml2::XMLElement* parent, tinyxml2::XMLElement* frame) {
+    const Eigen::Quaterniond q = orientation(frame);
+    const auto frame_pos = numbers(frame, "pos", 3);
+    const Eigen::Vector3d p = frame_pos ? Eigen::Vector3d((*frame_pos)[0], (*frame_pos)[1], (*frame_pos)[2]) : Eigen::Vector3d::Zero();
+    const auto vector = [&](const tinyxml2::XMLElement* e, const char* name, const Eigen::Vector3d& otherwise) {
+      const auto v = numbers(e, name, 3);
+      return v ? Eigen::Vector3d((*v)[0], (*v)[1], (*v)[2]) : otherwise;
+    };
+    const char* childclass = frame->Attribute("childclass");
+    tinyxml2::XMLNode* after = frame;
+    tinyxml2::XMLElement* first = nullptr;
+    for (tinyxml2::XMLElement* child = frame->FirstChildElement(); child;) {
+      tinyxml2::XMLElement* next = child->NextSiblingElement();
+      const std::string_view tag = child->Name();
+      if (const auto ft = numbers(child, "fromto", 6)) {  // a geom or site between two points
+        child->SetAttribute("fromto", (text_of(p + q * Eigen::Vector3d((*ft)[0], (*ft)[1], (*ft)[2])) + " " +
+                                       text_of(p + q * Eigen::Vector3d((*ft)[3], (*ft)[4], (*ft)[5]))).c_str());
+      } else if (tag == "joint") {  // a point and an axis (MuJoCo's default axis: z)
+        child->SetAttribute("pos", text_of(p + q * vector(child, "pos", Eigen::Vector3d::Zero())).c_str());
+        child->SetAttribute("axis", text_of(q * vector(child, "axis", Eigen::Vector3d::UnitZ())).c_str());
+      } else if (tag == "light") {  // a point and a direction
+        child->SetAttribute("pos", text_of(p + q * vector(child, "pos", Eigen::Vector3d::Zero())).c_str());
+        child->SetAttribute("dir", text_of(q * vector(child, "dir", -Eigen::Vector3d::UnitZ())).c_str());
+      } else if (tag != "freejoint") {  // a pose: body, geom, site, camera, frame
+        child->SetAttribute("pos", text_of(p + q * vector(child, "pos", Eigen::Vector3d::Zero())).c_str());
+        const Eigen::Quaterniond turned = q * orientation(child);
+        for (const char* a : {"axisangle", "euler", "xyaxes", "zaxis"}) child->DeleteAttribute(a);
+        child->SetAttribute("quat", fmt::format("{:.17g} {:.17g} {:.17g} {:.17g}", turned.w(), turned.x(), turned.y(), turned.z()).c_str());
+      }
+      if (childclass) {
+        const char* attribute = tag == "body" ? "childclass" : "class";
+        if (!child->Attribute(attribute)) child->SetAttribute(attribute, childclass);
+      }
+      parent->InsertAfterChild(after, child);
+      after = child;
+      if (!first) first = child;
+      child = next;
+    }
+    parent->DeleteChild(frame);
+    return first;
+  }
+
+  // Equalities between two sites (MuJoCo 2.3.3 and later: connect and weld with site1, site2)
+  // -> the body-based ones MuJoCo 2.2.2 reads. A connect: body1 the body of site1, its anchor
+  // the site's position in that body, body2 the body of site2 (the world when the site is in
+  // <worldbody>). A weld: its bodies, anchor site2's position in body2 (where a weld with
+  // torquescale 0 holds a point). The sites coincide in the assembled mechanism, which is where
+  // kinestat reads it. A site's unnamed body is named as kinestat names it ("body<N>").
   void connect_sites(tinyxml2::XMLElement* root) {
+    int welds = 0;
     for (tinyxml2::XMLElement* equality = root->FirstChildElement("equality"); equality;
          equality = equality->NextSiblingElement("equality"))
-      for (tinyxml2::XMLElement* e = equality->FirstChildElement("connect"); e; e = e->NextSiblingElement("connect")) {
+      for (tinyxml2::XMLElement* e = equality->FirstChildElement(); e; e = e->NextSiblingElement()) {
+        const std::string_view tag = e->Name();
+        if (tag != "connect" && tag != "weld") continue;
         const char* site1 = e->Attribute("site1");
         const char* site2 = e->Attribute("site2");
         if (!site1 && !site2) continue;
-        if (!site1 || !site2) throw InputError(where(e), "a site-based <connect> names both site1 and site2");
-        std::string body1 = body_of(site1, e), body2 = body_of(site2, e);
-        const tinyxml2::XMLElement* anchor_site = sites_.at(site1);
-        if (body1 == "world") {  // the anchor goes on a body
+        if (!site1 || !site2) throw InputError(where(e), fmt::format("a site-based <{}> names both site1 and site2", tag));
+        std::string body1 = body_of(site1, e, root), body2 = body_of(site2, e, root);
+        const tinyxml2::XMLElement* anchor_site = sites_.at(tag == "weld" ? site2 : site1);
+        if (tag == "connect" && body1 == "world") {  // the anchor goes on a body
           std::swap(body1, body2);
           anchor_site = sites_.at(site2);
         }
-        if (body1 == "world") throw InputError(where(e), "both sites of this <connect> are in <worldbody>: it joins nothing");
+        if (body1 == "world" && body2 == "world")
+          throw InputError(where(e), fmt::format("both sites of this <{}> are in <worldbody>: it joins nothing", tag));
         e->DeleteAttribute("site1");
         e->DeleteAttribute("site2");
         e->SetAttribute("body1", body1.c_str());
         if (body2 != "world") e->SetAttribute("body2", body2.c_str());
         e->SetAttribute("anchor", anchor_site->Attribute("pos") ? anchor_site->Attribute("pos") : "0 0 0");
-        ++site_connects_;
+        if (tag == "weld") {
+          e->DeleteAttribute("relpose");  // MuJoCo ignores it for sites: the sites' frames coincide
+          ++welds;
+        } else {
+          ++site_connects_;
+        }
       }
-    if (site_connects_ > 0)
-      notices.push_back(fmt::format("{}: note: {} site-based <connect>(s) read as connects of the sites' bodies at site1 (MuJoCo "
-                                    "2.2.2 knows only body-based ones)", path_, site_connects_));
+    if (site_connects_ + welds > 0)
+      notices.push_back(fmt::format("{}: note: {} site-based <connect>(s) and {} <weld>(s) read as equalities of the sites' "
+                                    "bodies (MuJoCo 2.2.2 knows only body-based ones)", path_, site_connects_, welds));
   }
 
-  // The name of the body that holds site `site` ("world" for <worldbody>).
-  std::string body_of(const char* site, const tinyxml2::XMLElement* at) const {
+  // The name of the body that holds site `site` ("world" for <worldbody>); an unnamed body is
+  // given the name kinestat reports it by, body<N> with N its number in MuJoCo's order.
+  std::string body_of(const char* site, const tinyxml2::XMLElement* at, tinyxml2::XMLElement* root) {
     const auto found = sites_.find(site);
     if (found == sites_.end())
-      throw InputError(where(at), fmt::format("no <site name=\"{}\"> for this <connect>", printable_text(std::string_view(site).substr(0, 60))));
-    const tinyxml2::XMLElement* parent = found->second->Parent() ? found->second->Parent()->ToElement() : nullptr;
+      throw InputError(where(at), fmt::format("no <site name=\"{}\"> for this <{}>", printable_text(std::string_view(site).substr(0, 60)),
+                                              at->Name()));
+    tinyxml2::XMLElement* parent = found->second->Parent() ? found->second->Parent()->ToElement() : nullptr;
     if (parent && std::string_view(parent->Name()) == "worldbody") return "world";
-    if (!parent || std::string_view(parent->Name()) != "body" || !parent->Attribute("name"))
-      throw InputError(where(found->second), "a site that a <connect> names must be directly in a named <body> (or in <worldbody>)");
+    if (!parent || std::string_view(parent->Name()) != "body")
+      throw InputError(where(found->second), "a site that an equality names must be in a <body> (or in <worldbody>)");
     if (found->second->Attribute("fromto"))
-      throw InputError(where(found->second), "a site that a <connect> names is placed by pos, not fromto");
+      throw InputError(where(found->second), "a site that an equality names is placed by pos, not fromto");
+    if (!parent->Attribute("name")) {
+      // MuJoCo numbers bodies depth first in the order written, the world 0.
+      int number = 0, id = 0;
+      std::vector<const tinyxml2::XMLElement*> stack;
+      for (const tinyxml2::XMLElement* w = root->LastChildElement("worldbody"); w; w = w->PreviousSiblingElement("worldbody"))
+        stack.push_back(w);
+      while (!stack.empty() && id == 0) {
+        const tinyxml2::XMLElement* e = stack.back();
+        stack.pop_back();
+        if (std::string_view(e->Name()) == "body") {
+          ++number;
+          if (e == parent) id = number;
+        }
+        for (const tinyxml2::XMLElement* c = e->LastChildElement("body"); c; c = c->PreviousSiblingElement("body")) stack.push_back(c);
+      }
+      const std::string name = "body" + std::to_string(id);
+      if (named_anywhere(root, name))
+        throw InputError(where(parent), fmt::format("this body holds a site that an equality names: give it a name ('{}' is taken)", name));
+      parent->SetAttribute("name", name.c_str());
+    }
     return parent->Attribute("name");
+  }
+
+  static bool named_anywhere(const tinyxml2::XMLElement* root, const std::string& name) {
+    std::vector<const tinyxml2::XMLElement*> stack{root};
+    while (!stack.empty()) {
+      const tinyxml2::XMLElement* e = stack.back();
+      stack.pop_back();
+      if (const char* n = e->Attribute("name"); n && name == n) return true;
+      for (const tinyxml2::XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) stack.push_back(c);
+    }
+    return false;
   }
 
   void read_welds(const tinyxml2::XMLElement* root) {
@@ -395,8 +615,11 @@ class MjcfDocument {
   std::vector<Origin> printed_lines_;
   std::unordered_map<std::string, Origin> named_;
   std::unordered_map<std::string, std::unique_ptr<FileText>> texts_;  ///< by the file names in Origin
-  std::unordered_map<std::string, const tinyxml2::XMLElement*> sites_;  ///< by name, for site-based connects
+  std::unordered_map<std::string, tinyxml2::XMLElement*> sites_;  ///< by name, for site-based equalities
   int site_connects_ = 0;
+  int frames_ = 0;
+  bool degrees_ = true;              ///< the compiler's angle unit (MuJoCo's default: degree)
+  std::string euler_sequence_ = "xyz";  ///< the compiler's eulerseq (MuJoCo's default)
 };
 
 class MjcfReader {

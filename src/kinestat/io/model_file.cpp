@@ -56,7 +56,7 @@ ModelFile read_model_file(const std::string& path, const ImportOptions& options)
     model.notices = std::move(imported.notices);
     return model;
   }
-  ImportedNetwork imported = format == ModelFormat::urdf       ? read_urdf(path)
+  ImportedNetwork imported = format == ModelFormat::urdf       ? read_urdf(path, options)
                              : format == ModelFormat::sdformat ? read_sdformat(path, options)
                                                                : read_mjcf(path, options);
   model.kind = ModelKind::network;

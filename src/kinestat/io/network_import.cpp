@@ -127,8 +127,50 @@ void NetworkBuilder::couple(const std::string& name, screw::CouplingType type, c
   loaded_.model.couplings.push_back(std::move(coupling));
 }
 
+void NetworkBuilder::float_base(const std::string& base, const SourceLocation& where) {
+  const std::string world = bodies_.count("world") ? "world (ground)" : "world";
+  set_ground(world);
+  couple(base + " (floating base)", screw::CouplingType::free, world, base, JointGeometry{}, where);
+}
+
+std::string NetworkBuilder::mount_loose_groups(bool grounded) {
+  // Groups of bodies joined by couplings (union-find over the coupling list).
+  const std::size_t n = loaded_.model.bodies.size();
+  std::vector<std::size_t> group(n);
+  for (std::size_t b = 0; b < n; ++b) group[b] = b;
+  const auto find = [&](std::size_t b) {
+    while (group[b] != b) b = group[b] = group[group[b]];
+    return b;
+  };
+  for (const network::Coupling& c : loaded_.model.couplings)
+    group[find(static_cast<std::size_t>(c.from))] = find(static_cast<std::size_t>(c.to));
+  if (!loaded_.model.ground) return {};
+  std::vector<std::string> mounted;
+  std::vector<bool> done(n, false);
+  const auto ground = static_cast<std::size_t>(*loaded_.model.ground);
+  done[find(ground)] = true;
+  const std::string ground_name = loaded_.model.bodies[ground];
+  const SourceLocation at{path_, 0, 0};
+  for (std::size_t b = 0; b < n; ++b) {  // bodies in file order: each group at its first body
+    const std::size_t g = find(b);
+    if (done[g]) continue;
+    done[g] = true;
+    const std::string body_name = loaded_.model.bodies[b];
+    couple(body_name + (grounded ? " (grounded)" : " (floating)"), grounded ? screw::CouplingType::rigid : screw::CouplingType::free,
+           ground_name, body_name, JointGeometry{}, at);
+    mounted.push_back(body_name);
+  }
+  if (mounted.empty()) return {};
+  std::string names;
+  for (std::size_t k = 0; k < mounted.size() && k < 8; ++k) names += (k ? ", '" : "'") + mounted[k] + "'";
+  if (mounted.size() > 8) names += fmt::format(" and {} more", mounted.size() - 8);
+  return fmt::format("{}: note: {} link(s) or group(s) of links joined to nothing else ({}) {}", path_, mounted.size(), names,
+                     grounded ? "welded to the ground, as --base fixed asks (a rigid coupling each)"
+                              : "float (a free coupling to the ground each), as in a simulator; --base fixed welds them to the ground");
+}
+
 LoadedNetwork NetworkBuilder::finish() {
-  if (loaded_.model.couplings.empty()) throw InputError({path_, 0, 0}, "the model has no joints between links");
+  if (loaded_.model.couplings.empty()) throw InputError({path_, 0, 0}, "the model has no joints between links (one link alone: --base floating lets it float)");
   loaded_.model.max_significant_digits = digits_;
   loaded_.field_locations["couplings"] = {path_, 0, 0};
   return std::move(loaded_);

@@ -31,6 +31,14 @@ struct ImportOptions {
   /// folder of the file given and its subfolders. Off by default: a model cannot make kinestat
   /// read files elsewhere (/etc, a home folder) unless the user allows it.
   bool allow_includes_outside_folder = false;
+  /// How the model is placed in the world (URDF's root link, an SDFormat model without a joint to
+  /// the world, a link or group of links that no joint connects to the rest).
+  enum class Base {
+    format_default,  ///< the base is the ground; a loose link or group floats (with a notice)
+    fixed,           ///< the base is the ground; a loose link or group is welded to the ground
+    floating,        ///< the base and every loose link or group float (a free coupling to the world)
+  };
+  Base base = Base::format_default;
 };
 
 /// Deepest chain of includes read (a file that includes a file that includes ...).
@@ -67,6 +75,13 @@ class NetworkBuilder {
   /// `where` for a duplicate name, a self-coupling or a degenerate geometry.
   void couple(const std::string& name, screw::CouplingType type, const std::string& from, const std::string& to,
               const JointGeometry& geometry, const SourceLocation& where);
+  /// Lets the ground body `base` float: a new ground named "world" (or "world (ground)" when a link
+  /// is named "world") is joined to `base` by a free coupling "<base> (floating base)" at the origin.
+  void float_base(const std::string& base, const SourceLocation& where);
+  /// Joins each group of bodies that no chain of couplings connects to the ground to the ground,
+  /// at its first body in file order: a free coupling "<body> (floating)" or, when `grounded`, a
+  /// rigid one "<body> (grounded)". Returns a notice naming them (empty when there were none).
+  std::string mount_loose_groups(bool grounded);
   /// The finished model; throws InputError (at the file) when it has no couplings.
   LoadedNetwork finish();
 

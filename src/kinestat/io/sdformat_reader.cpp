@@ -125,9 +125,14 @@ std::string trimmed(const char* text) {
 // Elements whose content never changes which links and joints a model has or where they are:
 // they are removed before libsdformat reads the model, so that an error in one (a material
 // script without <uri>, a friction <mu> of -1, which make libsdformat drop the whole document)
-// cannot stop the import (issue 37), and no mesh or texture is ever looked for.
+// cannot stop the import (issue 37), and no mesh or texture is ever looked for. <inertial> too:
+// libsdformat refuses a link whose inertia is not physical (Gazebo's simple_arm), which says
+// nothing about its joints.
+// The name a joint named "world" has while libsdformat reads it (no SDFormat name can hold a space).
+constexpr const char* kRenamedWorldJoint = "joint named world";
+
 bool without_kinematic_meaning(std::string_view tag) {
-  for (const char* name : {"visual", "collision", "material", "sensor", "plugin", "audio_sink", "audio_source", "battery",
+  for (const char* name : {"visual", "collision", "inertial", "material", "sensor", "plugin", "audio_sink", "audio_source", "battery",
                            "light", "actor", "projector", "particle_emitter", "gui", "scene", "physics", "atmosphere", "wind",
                            "spherical_coordinates"})
     if (tag == name) return true;
@@ -145,6 +150,8 @@ class ModelFiles {
   ModelFiles(std::string path, const ImportOptions& options, bool folder_known)
       : path_(std::move(path)), options_(options), folder_known_(folder_known) {}
   ModelFiles(const ModelFiles&) = delete;
+  /// What the user allows and asks (includes outside the folder, the base).
+  const ImportOptions& options() const { return options_; }
   ModelFiles& operator=(const ModelFiles&) = delete;
   ~ModelFiles() {
     std::error_code ignored;
@@ -267,6 +274,15 @@ class ModelFiles {
         continue;
       }
       if (name == "link" || name == "joint") ++file.links_and_joints;
+      // SDFormat reserves the name "world" for the world frame; libsdformat refuses a joint so
+      // named (Gazebo's fire_hose_long_curled has one), though the name says nothing of the
+      // joint: it reaches libsdformat renamed and is reported under its own name.
+      if (const char* joint_name = e->Attribute("name"); name == "joint" && joint_name && std::string_view(joint_name) == "world") {
+        e->SetAttribute("name", kRenamedWorldJoint);
+        if (renamed_world_joints_++ == 0)
+          notices_.push_back(fmt::format("{}:{}: note: a joint named 'world' (a name SDFormat reserves for the world frame, "
+                                         "which libsdformat refuses) read under its own name", shown, e->GetLineNum()));
+      }
       if (name == "include") includes.push_back(e);
       if (const char* element_name = e->Attribute("name"))
         named_.emplace(std::string(name) + ":" + element_name, SourceLocation{shown, e->GetLineNum(), 1});
@@ -426,13 +442,15 @@ class ModelFiles {
   std::map<std::string, File> files_;  ///< by canonical path
   const File* main_ = nullptr;
   std::map<std::string, int> stripped_;  ///< elements without kinematic meaning removed, by name
+  int renamed_world_joints_ = 0;
   std::unordered_map<std::string, SourceLocation> named_;  ///< "joint:j" -> where the first such element is
   std::vector<std::string> notices_;
 };
 
 class SdformatReader {
  public:
-  SdformatReader(std::string path, const ModelFiles& files) : path_(std::move(path)), files_(files) {}
+  SdformatReader(std::string path, const ModelFiles& files, const ImportOptions& options)
+      : path_(std::move(path)), files_(files), options_(options) {}
 
   ImportedNetwork read(const sdf::Root& root, const sdf::Errors& errors) {
     if (!errors.empty()) fail(errors.front());
@@ -458,9 +476,25 @@ class SdformatReader {
     if (models.empty()) throw InputError({path_, 1, 1}, "the file holds no <model>");
     NetworkBuilder builder(path_, name, "m");  // SDFormat lengths are metres
     for (const auto& [model, placed] : models) read_model(builder, *model, placed, world_ ? model->Name() + "::" : "");
-    if (grounded_.empty()) grounded_ = ground_candidate_;
+    const bool world_joint = !grounded_.empty();
+    if (!world_joint) grounded_ = ground_candidate_;
     builder.set_ground(grounded_);
-    ImportedNetwork out{builder.finish(), files_.notices()};
+    ImportedNetwork out{{}, files_.notices()};
+    out.notices.push_back(fmt::format("{}: note: lengths in metres; joint limits, dynamics, inertia and geometry are not read "
+                                      "(no kinematic meaning)", path_));
+    if (world_joint) {
+      out.notices.push_back(fmt::format("{}: note: base: a joint to the world holds the model; the world is the ground", path_));
+    } else if (options_.base == ImportOptions::Base::floating) {
+      builder.float_base(grounded_, {path_, 0, 0});
+      out.notices.push_back(fmt::format("{}: note: base: no joint to the world: the canonical link '{}' floats (a free coupling "
+                                        "to the world), as --base floating asks and as in Gazebo", path_, grounded_));
+    } else {
+      out.notices.push_back(fmt::format("{}: note: base: no joint to the world: the canonical link '{}' is the ground (kinestat's "
+                                        "default; in Gazebo the model floats: --base floating)", path_, grounded_));
+    }
+    if (std::string loose = builder.mount_loose_groups(options_.base == ImportOptions::Base::fixed); !loose.empty())
+      out.notices.push_back(std::move(loose));
+    out.loaded = builder.finish();
     return out;
   }
 
@@ -568,11 +602,12 @@ class SdformatReader {
         throw InputError(where(joint.Element()), fmt::format("joint '{}': gearbox joints couple two rotations by a ratio, "
                                                              "which a coupling network cannot express", joint.Name()));
     }
-    builder.couple(scope + joint.Name(), type, link(joint, true, scope), link(joint, false, scope), g, where(joint.Element()));
+    builder.couple(scope + (joint.Name() == kRenamedWorldJoint ? std::string("world") : joint.Name()), type, link(joint, true, scope), link(joint, false, scope), g, where(joint.Element()));
   }
 
   std::string path_;
   const ModelFiles& files_;
+  ImportOptions options_;
   bool world_ = false;
   std::string grounded_, ground_candidate_;
 };
@@ -633,7 +668,7 @@ ImportedNetwork load(const std::string& path, const ModelFiles& files, ReadInto 
       errors.push_back(unreadable);
     }
   }
-  return SdformatReader(path, files).read(root, errors);
+  return SdformatReader(path, files, files.options()).read(root, errors);
 }
 
 }  // namespace

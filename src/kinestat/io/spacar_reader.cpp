@@ -497,19 +497,18 @@ class SpacarReader {
     }
   }
 
-  // DYNX: nodal coordinates that SPACAR's dynamic analysis integrates. Neither fixed nor
-  // prescribed, they are free in the kinematic analysis, which finds the free motions itself:
-  // the node is checked and the card noted once.
+  // DYNX: the nodal coordinates that SPACAR's dynamic analysis integrates, its degrees of
+  // freedom. SPACAR requires the input (INPUTX, INPUTE) and dynamic coordinates together to
+  // determine the configuration, so they are read as kinestat's independent coordinates: a
+  // model SPACAR accepts then has no free motion left and no redundant constraint (0/0).
   void read_dynamic(const Record& r) {
     const std::string& k = r.keyword.text;
     if (r.values.empty()) fail(r.keyword, fmt::format("{} expects a node number", k));
-    const long n = integer(r.values[0], "a node number");
-    if (!position_index_.count(n) && !orientation_index_.count(n) && !warping_nodes_.count(n))
-      fail(r.values[0], fmt::format("{}: node {} is neither an X position node nor an orientation node of an element", k, n));
-    for (std::size_t i = 1; i < r.values.size(); ++i) (void)integer(r.values[i], "a coordinate number");
+    read_coordinates(r, CoordinateRole::independent);
     if (ignored_kinematic_.insert(k).second)
-      notices_.push_back(fmt::format("{}:{}:{}: note: {} (the dynamic degrees of freedom of SPACAR's dynamic analysis) read: it "
-                                     "neither fixes nor prescribes a coordinate, so it changes nothing in a kinematic analysis",
+      notices_.push_back(fmt::format("{}:{}:{}: note: {} coordinates (the degrees of freedom of SPACAR's dynamic analysis) read "
+                                     "as independent coordinates, as INPUTX: SPACAR needs them and the inputs to determine the "
+                                     "configuration, so a model it accepts has 0 extra motions",
                                      path_, r.keyword.line, r.keyword.column, k));
   }
 

@@ -45,7 +45,8 @@ struct UrdfJoint {
 
 class UrdfReader {
  public:
-  UrdfReader(std::string path, const std::string& text) : path_(std::move(path)), text_(text), lines_(text_) {}
+  UrdfReader(std::string path, const std::string& text, const ImportOptions& options)
+      : path_(std::move(path)), text_(text), lines_(text_), options_(options) {}
 
   ImportedNetwork read() {
     tinyxml2::XMLDocument document;
@@ -84,8 +85,20 @@ class UrdfReader {
     for (const std::string& name : link_order_) builder.body(name);
     builder.set_ground(root_);
     for (const UrdfJoint& j : joints_) couple(builder, j);
-
-    ImportedNetwork out{builder.finish(), {}};
+    ImportedNetwork out;
+    out.notices.push_back(fmt::format("{}: note: lengths in metres; joint limits, dynamics, inertia and geometry are not read "
+                                      "(no kinematic meaning)", path_));
+    if (options_.base == ImportOptions::Base::floating) {
+      builder.float_base(root_, where(links_.at(root_)));
+      out.notices.push_back(fmt::format("{}: note: base: the root link '{}' floats (a free coupling to the world), as --base "
+                                        "floating asks", path_, root_));
+    } else {
+      out.notices.push_back(fmt::format("{}: note: base: the root link '{}' is the ground (URDF's convention for a fixed-base "
+                                        "robot; --base floating lets it float, as a legged or mobile robot does)", path_, root_));
+    }
+    if (std::string loose = builder.mount_loose_groups(options_.base == ImportOptions::Base::fixed); !loose.empty())
+      out.notices.push_back(std::move(loose));
+    out.loaded = builder.finish();
     if (!mimics_.empty())
       out.notices.push_back(fmt::format("{}: note: mimic joint(s) {} read as independent joints: a mimic relation is a "
                                         "control law, not a constraint of the mechanism", path_, mimics_));
@@ -283,16 +296,14 @@ class UrdfReader {
     for (const std::string& name : link_order_)
       if (!tree_joint.count(name)) roots.push_back(name);
     if (roots.empty()) fail(joints_.front().element, "every link is the child of a joint: the tree has no root link (the ground)");
-    if (roots.size() > 1) {
-      fail(links_.at(roots[1]), fmt::format("links '{}' and '{}' are both roots (neither is the child of a joint): a URDF "
-                                            "tree has one root, the ground", roots[0], roots[1]));
-    }
+    // The first root is the robot's base; a later one is a loose link (or the base of a loose
+    // group), placed at the base's frame, as URDF gives it no pose: the builder mounts it.
     root_ = roots[0];
-    frames_[root_] = Frame{};
-    // Resolve frames from the root down, breadth first: each tree joint once.
+    for (const std::string& root : roots) frames_[root] = Frame{};
+    // Resolve frames from the roots down, breadth first: each tree joint once.
     std::map<std::string, std::vector<std::size_t>> children;
     for (const auto& [child, k] : tree_joint) children[joints_[k].parent].push_back(k);
-    std::vector<std::string> queue{root_};
+    std::vector<std::string> queue = roots;
     for (std::size_t next = 0; next < queue.size(); ++next) {
       const auto found = children.find(queue[next]);
       if (found == children.end()) continue;
@@ -344,6 +355,7 @@ class UrdfReader {
   std::string path_;
   const std::string& text_;
   LineIndex lines_;  // built once: every joint is located (linear time in the joints)
+  ImportOptions options_;
   std::map<std::string, const XMLElement*> links_;
   std::vector<std::string> link_order_;  // bodies in file order
   std::vector<UrdfJoint> joints_;
@@ -358,18 +370,22 @@ class UrdfReader {
 
 bool urdf_reader_built_in() { return true; }
 
-ImportedNetwork parse_urdf(const std::string& path, const std::string& text) { return UrdfReader(path, text).read(); }
+ImportedNetwork parse_urdf(const std::string& path, const std::string& text, const ImportOptions& options) {
+  return UrdfReader(path, text, options).read();
+}
 
 #else
 
 bool urdf_reader_built_in() { return false; }
 
-ImportedNetwork parse_urdf(const std::string& path, const std::string&) {
+ImportedNetwork parse_urdf(const std::string& path, const std::string&, const ImportOptions&) {
   throw InputError({path, 0, 0}, "URDF is not built in: rebuild kinestat with libtinyxml2-dev installed (docs/formats.md)");
 }
 
 #endif
 
-ImportedNetwork read_urdf(const std::string& path) { return parse_urdf(path, read_text_file(path)); }
+ImportedNetwork read_urdf(const std::string& path, const ImportOptions& options) {
+  return parse_urdf(path, read_text_file(path), options);
+}
 
 }  // namespace kinestat::io

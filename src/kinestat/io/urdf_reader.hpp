@@ -15,10 +15,11 @@ namespace kinestat::io {
 /// True when this kinestat was built with tinyxml2 (needed for URDF and to recognise MJCF).
 bool urdf_reader_built_in();
 
-/// Reads URDF `text` that came from `path` (used in messages only).
-ImportedNetwork parse_urdf(const std::string& path, const std::string& text);
+/// Reads URDF `text` that came from `path` (used in messages only). `options.base` says whether
+/// the root link is the ground (the default) or floats, and how a loose link is mounted.
+ImportedNetwork parse_urdf(const std::string& path, const std::string& text, const ImportOptions& options = {});
 
 /// Reads the URDF file at `path`.
-ImportedNetwork read_urdf(const std::string& path);
+ImportedNetwork read_urdf(const std::string& path, const ImportOptions& options = {});
 
 }  // namespace kinestat::io
