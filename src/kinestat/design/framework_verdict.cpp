@@ -11,6 +11,7 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <tuple>
 
 #include "kinestat/design/framework_change_application.hpp"
 #include "kinestat/design/screw_text.hpp"
@@ -167,28 +168,36 @@ std::vector<int> carrier_weights(const FrameworkModel& model) {
   return weight;
 }
 
-// `count` columns of D(c) to support so that none of `basis`'s motions is left: greedily, among
-// the coordinates that move at least kUsefulShare of the most moving one, the heaviest carrier
-// (translations before rotations), ties to the earlier coordinate.
-std::vector<Eigen::Index> choose_supports(const FrameworkModel& model, const FrameworkResult& a, Eigen::MatrixXd basis, Eigen::Index count) {
+// `count` columns of D(c) to support, each stopping one more of `basis`'s motions: greedily,
+// among the coordinates that move at least kUsefulShare of the most moving one, the heaviest
+// carrier (translations before rotations), then one of a node already supported (so that a
+// free body is held 3-2-1 at few nodes), then the largest motion, ties to the earlier
+// coordinate. `basis` is left with the motions the chosen supports do not stop.
+std::vector<Eigen::Index> choose_supports(const FrameworkModel& model, const FrameworkResult& a, Eigen::MatrixXd& basis, Eigen::Index count,
+                                          std::vector<bool>& supported_node) {
   const auto weight = carrier_weights(model);
   std::vector<Eigen::Index> chosen;
   for (Eigen::Index t = 0; t < count; ++t) {
-    Eigen::VectorXd norms = basis.rowwise().norm();
+    const Eigen::VectorXd norms = basis.rowwise().norm();
     if (norms.size() == 0 || norms.maxCoeff() <= kRigidMotionZero) break;
     const double most = norms.maxCoeff();
     Eigen::Index best = -1;
-    std::pair<int, double> best_key{-1, 0.0};
+    std::tuple<int, int, double> best_key{-1, -1, 0.0};
     for (Eigen::Index c = 0; c < norms.size(); ++c) {
       if (norms(c) < kUsefulShare * most) continue;
       const auto& ref = column_coordinate(a, c);
-      const int w = weight[ref.node] * (framework::is_translation(ref.slot) ? 2 : 1);
-      if (w > best_key.first || (w == best_key.first && norms(c) > best_key.second * (1.0 + kPivotTie))) {
-        best_key = {w, norms(c)};
+      const std::tuple<int, int, double> key{weight[ref.node] * (framework::is_translation(ref.slot) ? 2 : 1),
+                                             supported_node[ref.node] ? 1 : 0, norms(c)};
+      const bool heavier = std::get<0>(key) != std::get<0>(best_key) ? std::get<0>(key) > std::get<0>(best_key)
+                           : std::get<1>(key) != std::get<1>(best_key) ? std::get<1>(key) > std::get<1>(best_key)
+                                                                        : std::get<2>(key) > std::get<2>(best_key) * (1.0 + kPivotTie);
+      if (best < 0 || heavier) {
+        best_key = key;
         best = c;
       }
     }
     chosen.push_back(best);
+    supported_node[column_coordinate(a, best).node] = true;
     basis = without(basis, Eigen::VectorXd::Unit(basis.rows(), best));
   }
   return chosen;
@@ -440,19 +449,28 @@ Verdict framework_verdict(const FrameworkModel& model, const FrameworkResult& a,
     all << rigid_basis, internal_basis;
     all = orthonormal(all);
 
+    // Supports for the rigid motions of the whole model first (bars cannot stop them); the
+    // motions left are then stopped by bars or by more supports.
+    std::vector<bool> supported_node(model.nodes.size(), false);
+    Eigen::MatrixXd rigid_left = rigid_basis;
+    const auto rigid_columns = choose_supports(model, a, rigid_left, rigid_basis.cols(), supported_node);
     std::vector<DesignChange> rigid_supports;
-    for (Eigen::Index c : choose_supports(model, a, rigid_basis, rigid_basis.cols())) rigid_supports.push_back(support_change(model, a, c, true));
+    Eigen::MatrixXd left = all;
+    for (Eigen::Index c : rigid_columns) {
+      rigid_supports.push_back(support_change(model, a, c, true));
+      left = without(left, Eigen::VectorXd::Unit(a.n, c));
+    }
     std::vector<DesignChange> with_bars = releases;
-    const auto bars = choose_bars(model, a, internal_basis, internal_basis.cols());
-    if (internal_basis.cols() > 0 && static_cast<Eigen::Index>(bars.size()) == internal_basis.cols()) {
-      for (const auto& bar : bars) with_bars.push_back(bar_change(model, bar));
+    const auto bars = choose_bars(model, a, left, left.cols());
+    if (left.cols() > 0 && static_cast<Eigen::Index>(bars.size()) == left.cols()) {
       with_bars.insert(with_bars.end(), rigid_supports.begin(), rigid_supports.end());
+      for (const auto& bar : bars) with_bars.push_back(bar_change(model, bar));
     } else {
       with_bars.clear();
     }
     std::vector<DesignChange> with_supports = releases;
     with_supports.insert(with_supports.end(), rigid_supports.begin(), rigid_supports.end());
-    for (Eigen::Index c : choose_supports(model, a, internal_basis, internal_basis.cols()))
+    for (Eigen::Index c : choose_supports(model, a, left, left.cols(), supported_node))
       with_supports.push_back(support_change(model, a, c, false));
     const bool bar_framework = std::all_of(model.elements.begin(), model.elements.end(),
                                            [](const Element& e) { return e.type == ElementType::truss; });
