@@ -18,8 +18,10 @@ set(CPACK_GENERATOR DEB)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)  # kinestat_0.1.0_amd64.deb
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
-# The package's own libkinestat.so.0: dpkg-shlibdeps looks for it in the package being made.
+# The package's own libkinestat.so.0: its shlibs file is generated, and dpkg-shlibdeps finds the
+# library (needed by the command and the Python module) in the build tree.
 set(CPACK_DEBIAN_PACKAGE_GENERATE_SHLIBS ON)
+set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS_PRIVATE_DIRS ${CMAKE_BINARY_DIR}/src/kinestat)
 set(kinestat_depends "")
 if(KINESTAT_PYTHON_BUILT)
   set(kinestat_depends "python3, python3-numpy")
