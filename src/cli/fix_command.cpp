@@ -20,19 +20,14 @@
 #include "cli/commands.hpp"
 #include "cli/option_checks.hpp"
 #include "kinestat/design/framework_change_application.hpp"
-#include "kinestat/design/framework_verdict.hpp"
 #include "kinestat/design/network_change_application.hpp"
-#include "kinestat/framework/generic_framework.hpp"
-#include "kinestat/io/framework_reader.hpp"
 #include "kinestat/io/framework_yaml_writer.hpp"
 #include "kinestat/io/model_file.hpp"
-#include "kinestat/io/network_reader.hpp"
 #include "kinestat/io/network_yaml_writer.hpp"
 #include "kinestat/io/output_file.hpp"
 #include "kinestat/io/printable_text.hpp"
-#include "kinestat/network/sparse_network.hpp"
+#include "kinestat/pipeline/framework_pipeline.hpp"
 #include "kinestat/pipeline/network_pipeline.hpp"
-#include "kinestat/report/framework_report.hpp"
 #include "kinestat/report/json_text.hpp"
 #include "kinestat/report/verdict_report.hpp"
 
@@ -77,11 +72,8 @@ Judged judge_network(const io::LoadedNetwork& loaded, const std::string& path, c
 Judged judge_framework(const framework::FrameworkModel& model, const FixOptions& o) {
   framework::AnalysisOptions options;
   options.tolerances = Tolerances::with_rank(o.tolerance);
-  std::optional<framework::GenericFramework> generic;
-  const framework::FrameworkResult analysis = framework::analyse_framework_as_reported(model, options, &generic);
   Judged judged;
-  judged.verdict = design::framework_verdict(model, analysis, options);
-  if (generic) judged.verdict.generic = report::framework_generic_sentences(model, analysis, *generic);
+  judged.verdict = pipeline::analyse_framework(model, options).verdict;
   judged.framework = model;
   return judged;
 }
@@ -92,34 +84,6 @@ Judged judge(const io::ModelFile& file, const FixOptions& o) {
   throw io::InputError({file.path, 1, 1},
                        "'kinestat fix' writes networks and frameworks; a model of kind 'structure' has no geometry to change "
                        "(its verdict counts structural groups: change its 'inputs:' and pairs as 'kinestat structure' proposes)");
-}
-
-// The model file as `analyze` reads it (imported formats with their notices on standard error).
-io::ModelFile read_fix_model(const std::string& path) {
-  io::ModelFile file;
-  file.path = path;
-  file.format = io::model_format(path);
-  if (file.format == io::ModelFormat::spacar) {
-    file.kind = io::ModelKind::framework;
-    file.framework = read_spacar_model(path);
-    return file;
-  }
-  if (file.format != io::ModelFormat::kinestat) {
-    file.kind = io::ModelKind::network;
-    file.network = read_imported_network(path);
-    return file;
-  }
-  const io::YamlFile yaml = io::YamlFile::load(path);
-  const std::string kind = io::model_kind(yaml);
-  if (kind == "network") {
-    file.network = io::read_network_model(yaml);
-  } else if (kind == "framework") {
-    file.kind = io::ModelKind::framework;
-    file.framework = io::read_framework_model(yaml);
-  } else {
-    file.kind = io::ModelKind::structure;
-  }
-  return file;
 }
 
 std::string lower_extension(const std::string& path) {
@@ -191,7 +155,7 @@ int run_fix(const FixOptions& o) {
   const std::string ext = lower_extension(o.output_path);
   if (ext != "yaml" && ext != "yml")
     throw io::InputError({o.output_path, 0, 0}, "the fixed model is written as kinestat YAML: name the output file .yaml or .yml");
-  const io::ModelFile file = read_fix_model(o.model_path);
+  const io::ModelFile file = read_model(o.model_path);  // any format and kind, notices on standard error
   const Judged judged = judge(file, o);
   const design::Verdict& was = judged.verdict;
   if (was.exactly_constrained)
