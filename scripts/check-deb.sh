@@ -50,7 +50,7 @@ mount -t proc proc "$work/proc"
 chroot "$work" env DEBIAN_FRONTEND=noninteractive apt-get update -qq
 chroot "$work" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends /tmp/kinestat.deb >/dev/null
 step "apt install into the clean root" $((SECONDS - start))
-echo "installed: $(chroot "$work" dpkg-query -W kinestat), root now $(du -sm "$work" | cut -f1) MB (clean: $(du -sm "$root" | cut -f1) MB)"
+echo "installed: $(chroot "$work" dpkg-query -W kinestat), root now $(du -smx "$work" | cut -f1) MB (clean: $(du -smx "$root" | cut -f1) MB)"
 out=$(chroot "$work" kinestat analyze /tmp/davies-2-circuit.yaml)
 echo "$out" | head -3
 # Davies' 2-circuit network (seed 000): FN = 3, CN = 2.
