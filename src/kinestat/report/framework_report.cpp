@@ -295,20 +295,7 @@ nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const 
   j["method"] = a.method == framework::RankMethod::dense_svd ? "dense_svd" : "sparse_qr";
   j["characteristic_length"] = rounded(a.length);
   j["length_scaling"] = {{"row_factors", factor_range(a.row_scale)}, {"column_factors", factor_range(a.column_scale)}};
-  const auto& d = a.decision;
-  nlohmann::ordered_json decision;
-  decision["largest"] = significant(d.largest);
-  decision["threshold"] = significant(d.threshold);
-  decision["smallest_kept"] = significant(d.smallest_kept);
-  if (d.factor_estimated) decision["r11_smallest_singular_value"] = significant(d.factor_smallest);
-  decision["largest_dropped"] = significant(d.largest_dropped);
-  // ε × largest coordinate / size: how precisely the written coordinates fix the geometry.
-  decision["input_rounding"] = significant(d.input_rounding);
-  if (std::isfinite(d.gap())) decision["gap"] = significant(d.gap());
-  else decision["gap"] = nullptr;
-  decision["close"] = d.close();
-  add_rank_status_json(decision, d);
-  j["rank_decision"] = decision;
+  j["rank_decision"] = rank_decision_json(a.decision, EvidenceDigits::ten_significant);
   // Unknown (null) on the sparse path, which computes no singular values.
   if (a.singular_values.size() == 0 && a.m > 0 && a.n > 0) j["relative_smallest_singular_value"] = nullptr;
   else j["relative_smallest_singular_value"] = significant(a.relative_smallest_singular_value());

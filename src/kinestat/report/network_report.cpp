@@ -97,23 +97,7 @@ Json pair_counts_json(const network::Model& model, const Pair& p) {
   return pair;
 }
 
-Json rank_json(const linalg::RankDecision& rank) {
-  Json j;
-  j["rank"] = rank.rank;
-  j["exact"] = rank.exact;
-  if (!rank.exact) {
-    j["largest_singular_value"] = rank.largest;
-    j["threshold"] = rank.threshold;
-    j["smallest_kept"] = rank.smallest_kept;
-    if (rank.factor_estimated) j["r11_smallest_singular_value"] = rank.factor_smallest;
-    j["largest_dropped"] = rank.largest_dropped;
-    if (rank.input_rounding > 0) j["input_rounding"] = rank.input_rounding;
-    j["gap"] = std::isinf(rank.gap()) ? Json(nullptr) : Json(rank.gap());
-    j["close"] = rank.close();
-  }
-  add_rank_status_json(j, rank);
-  return j;
-}
+Json rank_json(const linalg::RankDecision& rank) { return rank_decision_json(rank); }
 
 Json expressions_json(const LinearForms& forms, Index first_row, Index rows, const std::vector<std::string>& primaries) {
   Json list = Json::array();

@@ -45,6 +45,30 @@ std::string rank_status_text(const linalg::RankDecision& d) {
   return text;
 }
 
+nlohmann::ordered_json rank_decision_json(const linalg::RankDecision& d, EvidenceDigits digits) {
+  // Ten significant digits keep tiny values (a dropped singular value of 1e-16 is information).
+  const auto number = [digits](double value) {
+    if (digits == EvidenceDigits::as_computed || !std::isfinite(value) || value == 0.0) return value;
+    return std::strtod(fmt::format("{:.10g}", value).c_str(), nullptr);
+  };
+  nlohmann::ordered_json j;
+  j["rank"] = d.rank;
+  j["exact"] = d.exact;
+  if (!d.exact) {
+    j["largest_singular_value"] = number(d.largest);
+    j["threshold"] = number(d.threshold);
+    j["smallest_kept"] = number(d.smallest_kept);
+    if (d.factor_estimated) j["r11_smallest_singular_value"] = number(d.factor_smallest);
+    j["largest_dropped"] = number(d.largest_dropped);
+    // ε × largest coordinate / size: how precisely the written coordinates fix the geometry.
+    if (d.input_rounding > 0) j["input_rounding"] = number(d.input_rounding);
+    j["gap"] = std::isfinite(d.gap()) ? nlohmann::ordered_json(number(d.gap())) : nlohmann::ordered_json(nullptr);
+    j["close"] = d.close();
+  }
+  add_rank_status_json(j, d);
+  return j;
+}
+
 void add_rank_status_json(nlohmann::ordered_json& j, const linalg::RankDecision& d) {
   j["status"] = linalg::rank_status_name(d.status());
   const auto distance = d.distance();

@@ -25,6 +25,19 @@ std::string rank_status_text(const linalg::RankDecision& decision);
 /// absent for sparse QR). Numbers to three significant digits.
 void add_rank_status_json(nlohmann::ordered_json& object, const linalg::RankDecision& decision);
 
+/// How the numbers of rank_decision_json are written: as computed (every digit of the double),
+/// or to ten significant digits (frameworks: the last digits of a large SVD vary with the BLAS).
+enum class EvidenceDigits { as_computed, ten_significant };
+
+/// The one JSON shape of a rank decision's evidence, in every report (networks'
+/// `rank_evidence.motion` / `.action` / `.body_twist`, frameworks' `rank_decision`): `rank`,
+/// `exact`; for floating-point decisions `largest_singular_value`, `threshold`, `smallest_kept`,
+/// `r11_smallest_singular_value` (when estimated), `largest_dropped`, `input_rounding` (when
+/// known), `gap` (smallest kept / largest dropped, null when nothing is dropped), `close`; then
+/// add_rank_status_json's keys. Singular values in the units of the matrix decided.
+nlohmann::ordered_json rank_decision_json(const linalg::RankDecision& decision,
+                                          EvidenceDigits digits = EvidenceDigits::as_computed);
+
 /// A distance or relative value to three significant digits, as the reports print it.
 double rank_evidence_number(double value);
 
