@@ -22,6 +22,9 @@ install(TARGETS kinestat_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONE
 if(TARGET kinestat_mpi_cli)
   install(TARGETS kinestat_mpi_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT Runtime)
 endif()
+# The JSON Schemas of model files and reports (schemas/; docs/report.md, "Schemas and versions").
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/schemas/ DESTINATION ${CMAKE_INSTALL_DATADIR}/kinestat/schemas COMPONENT Runtime
+        FILES_MATCHING PATTERN "*.schema.json")
 # A shared libkinestat installed outside /usr: the commands find it beside them ($ORIGIN is
 # where the program is); in /usr the dynamic linker finds it without a search path, as Debian wants.
 if(KINESTAT_SHARED AND NOT CMAKE_INSTALL_PREFIX STREQUAL "/usr")
