@@ -202,6 +202,12 @@ TEST(FixCommand, OverConstrainedFourBar) {
   EXPECT_EQ(after.at("FN"), 1);
   EXPECT_EQ(after.at("CN"), 0);
   EXPECT_EQ(pair_fij(after, "ground", "coupler"), 1);
+  // The written design needs no further fix, and the same input gives the same file, byte for byte.
+  const std::string written = fixed_path(example_path("four-bar-spatial.yaml"));
+  const std::string again = (scratch_folder() / "four-bar-again.yaml").string();
+  EXPECT_EQ(run_cli("fix " + written + " -o " + again).exit_code, 4);
+  EXPECT_EQ(run_cli("fix " + example_path("four-bar-spatial.yaml") + " -o " + again).exit_code, 0);
+  EXPECT_EQ(read_text(again), read_text(written));
 }
 
 // The parallel leaf-spring guide (examples/parallel-leaf-spring-guide.yaml, by hand): 12 fixed
