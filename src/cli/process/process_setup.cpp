@@ -3,13 +3,10 @@
 
 #include <malloc.h>
 
-#include <algorithm>
 #include <cstdlib>
 #include <mutex>
-#include <thread>
 
 #include "cli/process/huge_pages.hpp"
-#include "cli/process/thread_local_rand.hpp"
 
 extern "C" void openblas_set_num_threads(int num_threads);
 // OpenBLAS (pthreads build) starts its worker threads when it is loaded, from
@@ -22,8 +19,6 @@ extern "C" int blas_thread_shutdown_(void) __attribute__((weak));
 namespace kinestat::cli::process {
 
 namespace {
-
-int chosen_factor_threads = 1;
 
 // glibc maps every block above 128 KiB (raised by frees, up to 32 MiB) separately and unmaps it
 // when freed, and trims the heap top above 128 KiB, so each analysis stage touched fresh pages
@@ -38,7 +33,8 @@ int chosen_factor_threads = 1;
 // thread of a network's two factorisations otherwise gets an arena of its own, in fresh mappings
 // that neither reuse what the first factorisation frees nor lie on the huge pages of the main
 // heap (ladder of 10^5 couplings: 44,100 -> 2,500 page faults, peak RSS 1.17 -> 0.92 GB;
-// bench/README.md, session 17).
+// bench/README.md, session 17); the library starts no thread since issue 36, but other threads
+// (OpenBLAS's, when KINESTAT_BLAS_THREADS asks for them) then share the main heap too.
 void keep_freed_memory_for_reuse() {
   mallopt(M_MMAP_MAX, 0);
   mallopt(M_TRIM_THRESHOLD, 1 << 30);
@@ -68,13 +64,6 @@ void set_up_process(int argc, char** argv) {
   // Before anything else runs: OpenBLAS's workers, started when it was loaded, stop before they spin.
   pin_blas_threads();
   keep_freed_memory_for_reuse();
-  // METIS draws from rand(): two orderings at once give the answer of one after the other only
-  // when each thread has its own state (thread_local_rand.cpp). Two threads gave the ladder and
-  // the R-S-S chain of 10^5 couplings 15-20 % of their wall time (bench/README.md, session 16).
-  const int most = thread_local_rand_bound() && std::thread::hardware_concurrency() >= 2 ? 2 : 1;
-  chosen_factor_threads = std::min(positive_or("KINESTAT_FACTOR_THREADS", most), most);
 }
-
-int factor_threads() { return chosen_factor_threads; }
 
 }  // namespace kinestat::cli::process

@@ -1,23 +1,15 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The `kinestat` command's process: everything it sets for the whole process, in one place, before
-// any work. The library never sets process-wide state nor reads the environment; it takes thread
-// counts as options (pipeline::NetworkRequest::threads), which the commands fill from here.
+// any work. The library never sets process-wide state, reads the environment or starts threads.
 
 namespace kinestat::cli::process {
 
 /// Sets up the command's process, first thing in main(): a restart on transparent huge pages for
 /// an input file of 1 MiB or more (huge_pages.cpp), OpenBLAS on KINESTAT_BLAS_THREADS threads
-/// (default 1, its idle workers ended), glibc's heap keeping freed memory for reuse in one arena,
-/// and rand() with one state per thread when the dynamic linker binds METIS to it. May not return
-/// (the restart replaces the process).
+/// (default 1, its idle workers ended) and glibc's heap keeping freed memory for reuse in one
+/// arena. May not return (the restart replaces the process).
 void set_up_process(int argc, char** argv);
-
-/// Threads for the two sparse factorisations of a large network (K and Kᵀ side by side): 2 when
-/// set_up_process found rand() kept per thread and the machine has two cores or more, else 1;
-/// KINESTAT_FACTOR_THREADS=1 chooses one after the other. 1 in a process not set up (fuzz
-/// harnesses calling run()).
-int factor_threads();
 
 /// OpenBLAS's thread count, once per process: KINESTAT_BLAS_THREADS when a positive number, else
 /// 1 (machines are often shared, and a fixed count keeps results independent of the machine).

@@ -10,10 +10,7 @@
 #include <cmath>
 #include <exception>
 #include <functional>
-#include <future>
 #include <numeric>
-#include <system_error>
-#include <thread>
 
 #include "kinestat/linalg/sparse_qr.hpp"
 #include "kinestat/linalg/sparse_rank.hpp"
@@ -246,7 +243,7 @@ void finish_sparse_network(SparseNetworkResult& r, const std::vector<bool>& stre
 }
 
 SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances& tolerances, Index vectors, bool pair_vectors,
-                                           const std::function<void(const SparseNetworkResult&)>& alongside, int threads) {
+                                           const std::function<void(const SparseNetworkResult&)>& alongside) {
   double input_rounding = 0.0;
   SparseNetworkResult r = build_body_twist_matrix(model, input_rounding);
   // The rank rule of build_body_twist_system (the threshold rises with the rounding of the
@@ -256,43 +253,20 @@ SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances&
   const Index d = r.d;
   std::vector<bool> stressed(static_cast<std::size_t>(r.e), false), moving(static_cast<std::size_t>(r.e), false);
   if (k.rows() > 0 && k.cols() > 0) {
-    // The self-stresses' factor (of K) runs beside the motions' (of Kᵀ) on large networks when the
-    // caller gives two threads (and with them a rand() per thread, for METIS): the two are
-    // independent, each with its own SuiteSparse workspace, and their results are merged below
-    // in a fixed order, so the answer is the same as one after the other. K's starts first: it
-    // orders K while this thread finds σ_max for the threshold, which K's factor asks for only
-    // once its order and symbolic analysis are done (linalg::SparseQr). Until the merge `r`
-    // stays as build_body_twist_system leaves it, for `alongside`.
-    std::promise<linalg::RankDecision> threshold;
-    std::future<linalg::RankDecision> threshold_for_stresses = threshold.get_future();
-    // Self-stresses: generic action magnitudes λ with Kᵀ λ = 0 (every body in equilibrium),
-    // from the QR of K; its null vectors are motions.
-    auto stress_side = [&k, &threshold_for_stresses, vectors, pair_vectors, d]() {
-      return factor_side(k, [&threshold_for_stresses] { return threshold_for_stresses.get(); }, vectors, pair_vectors, d);
-    };
-    bool concurrent = k.nonZeros() >= kConcurrentFactorNonZeros && threads >= 2;
-    std::future<FactorSide> stress_future;
-    if (concurrent) {
-      try {
-        stress_future = std::async(std::launch::async, stress_side);
-      } catch (const std::system_error&) {
-        concurrent = false;  // no thread to be had (a process limit): one after the other
-      }
-    }
-    try {
-      r.rank = linalg::sparse_rank_threshold(k, rank_tolerance);
-    } catch (...) {
-      threshold.set_exception(std::current_exception());  // K's factor, waiting for it, ends too
-      throw;
-    }
-    threshold.set_value(r.rank);
+    // The two factorisations one after the other, on the calling thread (issue 36: side by side
+    // on two threads they saved at most a tenth of the wall time on a busy machine, at a fifth
+    // more memory, and needed a rand() per thread for METIS). Until the merge below `r` stays as
+    // build_body_twist_system leaves it, for `alongside`.
+    r.rank = linalg::sparse_rank_threshold(k, rank_tolerance);
     const linalg::RankDecision undecided = r.rank;
     const Eigen::SparseMatrix<double> kt = k.transpose();
     // Motions: a generic body-twist vector with K T = 0 (the null space of (Kᵀ)ᵀ, from the QR
     // of Kᵀ; its null vectors are self-stresses); a coupling moves when T_to ≠ T_from.
     FactorSide motions = factor_side(kt, [&undecided] { return undecided; }, vectors, pair_vectors, d);
     if (alongside) alongside(r);
-    FactorSide stresses = concurrent ? stress_future.get() : stress_side();
+    // Self-stresses: generic action magnitudes λ with Kᵀ λ = 0 (every body in equilibrium),
+    // from the QR of K; its null vectors are motions.
+    FactorSide stresses = factor_side(k, [&undecided] { return undecided; }, vectors, pair_vectors, d);
 
     r.rank = motions.rank;
     r.motion_support_zero = motions.support_zero;

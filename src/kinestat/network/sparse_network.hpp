@@ -80,12 +80,6 @@ struct SparseNetworkResult {
 /// Couplings above which the `analyze` command takes the sparse path.
 inline constexpr int kDenseNetworkLimit = 300;
 
-/// Nonzeros of K from which analyse_network_sparse factors K and Kᵀ on two threads, when the
-/// caller gives it two: below it (a few
-/// thousand couplings) a factorisation takes tens of milliseconds, less than a thread's start
-/// and a second SuiteSparse workspace are worth. The answer is the same either way.
-inline constexpr Eigen::Index kConcurrentFactorNonZeros = 200000;
-
 /// The first stage of analyse_network_sparse, without factoring: K (C × d(n − 1), conditioned
 /// analysis frame, in `K`), the coupling and unit action of each row, d, n, e, l, F, C, the
 /// ground, the frame, and the rank rule's threshold and σ_max in `rank` (rank itself 0; the
@@ -123,23 +117,18 @@ void finish_sparse_network(SparseNetworkResult& r, const std::vector<bool>& stre
 /// unless the factor's live block is ill-conditioned) of the largest: a generic combination
 /// vanishes only where every null vector does. Both factors' σ_min(R11) are estimated
 /// (`rank.factor_smallest`, `motion_factor_rank.factor_smallest`). Throws ModelError.
-/// With `threads` ≥ 2 the two factorisations run side by side from kConcurrentFactorNonZeros
-/// nonzeros of K (twice the peak memory of one). METIS, inside both, draws from the C library's
-/// rand(): pass 2 only when every thread of the process has its own rand() state (the command
-/// defines it so, cli/process/thread_local_rand.cpp); then the answer is the same as with 1,
-/// otherwise it may depend on timing. The library starts no other thread and sets no process state.
+/// The two factorisations run one after the other on the calling thread (the library starts no
+/// thread and sets no process state).
 /// With `vectors` > 0 also the first `vectors` basis vectors of the motions and of the
 /// self-stresses (motion_basis, stress_basis), at the cost of one triangular solve each. With
 /// `pair_vectors` also generic_motions and generic_stresses (2d least-squares solves).
-/// `alongside`, when given, is called once on the calling thread with the system exactly as
-/// build_body_twist_system leaves it (K in `K`, the frame, the threshold; nothing factored: rank
-/// 0, no supports), after the factor of Kᵀ and while the factor of K may still run on the other
-/// thread: work that needs only the system (the verdict's idle spins,
-/// design::sparse_idle_spins) then fills the wait instead of following it.
+/// `alongside`, when given, is called once with the system exactly as build_body_twist_system
+/// leaves it (K in `K`, the frame, the threshold; nothing factored: rank 0, no supports), between
+/// the two factorisations. Kept for callers that still pass it; it no longer overlaps anything
+/// (design::sparse_network_verdict finds the idle spins itself).
 SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances& tolerances = {},
                                            Eigen::Index vectors = 0, bool pair_vectors = false,
-                                           const std::function<void(const SparseNetworkResult&)>& alongside = {},
-                                           int threads = 1);
+                                           const std::function<void(const SparseNetworkResult&)>& alongside = {});
 
 
 }  // namespace kinestat::network
