@@ -14,7 +14,7 @@
 #include "kinestat/io/model_file.hpp"
 #include "kinestat/io/sweep_model.hpp"
 #include "kinestat/io/sweep_spec.hpp"
-#include "kinestat/report/analysis_report.hpp"
+#include "kinestat/pipeline/model_pipeline.hpp"
 #include "kinestat/report/sweep_line.hpp"
 
 namespace {
@@ -58,7 +58,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       const kinestat::report::SweepVariant variant{v, spec.count, nlohmann::ordered_json::object(), {}};
       try {
         const auto read = kinestat::io::parse_model_text("model.yaml", kinestat::io::variant_text(model, literals));
-        (void)kinestat::report::sweep_line_text(kinestat::report::sweep_line(variant, kinestat::report::analysis_report_json(read), false));
+        (void)kinestat::report::sweep_line_text(kinestat::report::sweep_line(variant, kinestat::pipeline::analyze_report_json(read), false));
       } catch (const kinestat::Error& error) {
         (void)kinestat::report::sweep_line_text(kinestat::report::sweep_error_line(variant, error.what()));
       }

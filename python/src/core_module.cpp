@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// kinestat._core: the C++ library seen from Python. Thin: it reads models with io/, runs the
-// pure analyses and hands back their numbers (Eigen -> numpy) and the report layer's texts
-// (the JSON report is written by the command's own report functions from the same analysis and
-// verdict; python/tests checks `to_dict()` against `--json` for every example).
+// kinestat._core: the C++ library seen from Python. Thin: it reads models with io/, has the
+// pipeline (src/kinestat/pipeline/) analyse them exactly as the command does, and hands back
+// their numbers (Eigen -> numpy) and the report layer's texts (python/tests checks `to_dict()`
+// against `--json` for every example).
 // The Python classes users meet are in python/kinestat/__init__.py.
 //
 // Everything that may take long (reading, analysing, reports, traces, sweeps) runs without the
@@ -25,9 +25,6 @@
 #include <utility>
 #include <vector>
 
-#include "kinestat/design/framework_verdict.hpp"
-#include "kinestat/design/network_verdict.hpp"
-#include "kinestat/design/structure_verdict.hpp"
 #include "kinestat/framework/framework_analysis.hpp"
 #include "kinestat/framework/framework_jacobian.hpp"
 #include "kinestat/framework/finite_motion.hpp"
@@ -36,22 +33,23 @@
 #include "kinestat/kinematics/position_solver.hpp"
 #include "kinestat/io/model_file.hpp"
 #include "kinestat/io/network_structure.hpp"
+#include "kinestat/pipeline/model_pipeline.hpp"
+#include "kinestat/pipeline/sweep_run.hpp"
 #include "kinestat/linalg/factorisation_memory.hpp"
 #include "kinestat/network/analyse_network.hpp"
 #include "kinestat/network/analysis_frame.hpp"
 #include "kinestat/network/second_order.hpp"
 #include "kinestat/network/generic_network.hpp"
-#include "kinestat/report/analysis_report.hpp"
 #include "kinestat/report/framework_report.hpp"
 #include "kinestat/report/html_writer.hpp"
 #include "kinestat/report/json_text.hpp"
 #include "kinestat/report/move_report.hpp"
 #include "kinestat/report/position_solving.hpp"
+#include "kinestat/report/rank_status_text.hpp"
 #include "kinestat/report/network_report.hpp"
 #include "kinestat/report/scene.hpp"
 #include "kinestat/report/structure_report.hpp"
 #include "kinestat/report/svg_writer.hpp"
-#include "kinestat/report/sweep_run.hpp"
 #include "kinestat/structure/decomposition.hpp"
 #include "kinestat/structure/transformations.hpp"
 #include "interruptible_call.hpp"
@@ -66,46 +64,16 @@ namespace {
 // placements of the inputs.
 constexpr std::uint64_t kTransformationLimit = 1000;
 
-/// A model file read, and its analysis once run. Results keep their model alive.
+/// A model file read, and its analysis once run (pipeline::analyse_model or decompose_model).
+/// Results keep their model alive.
 struct Analysed {
   io::ModelFile file;
-  std::optional<network::NetworkResult> network;
-  /// Networks on the sparse body-twist path (above network::kDenseNetworkLimit couplings, as
-  /// `kinestat analyze`, or method="sparse"): counts, supports and the verdict, no Davies matrices.
-  std::optional<report::SparseNetworkAnalysis> sparse_network;
-  std::optional<framework::FrameworkResult> framework;
-  std::optional<structure::StructureModel> structure_model;  ///< networks (from the couplings) and structures
-  std::optional<structure::StructureResult> decomposition;
-  std::optional<structure::TransformationSet> transformations;
-  design::Verdict verdict;  ///< what every report leads with (design layer)
-  std::optional<network::NetworkSecondOrder> network_second_order;  ///< as `kinestat analyze`
-  std::optional<network::GenericNetwork> network_generic;        ///< the generic answer, as `kinestat analyze`
-  std::optional<framework::GenericFramework> framework_generic;
-  /// Frameworks: the options of the analysis (without its stop request, which belonged to the call).
-  framework::AnalysisOptions framework_options;
+  pipeline::ModelAnalysis analysis;
 
-  /// The scene of `kinestat draw` and `kinestat report` (src/cli/scene_loading.cpp); with
-  /// `traced_motion`, frameworks carry their finite modes traced both ways, as the report does.
-  report::Scene scene(bool traced_motion = false) const {
-    report::Scene scene;
-    if (network) {
-      scene = report::network_scene(file.network->model, *network);
-      scene.units = file.network->model.units;
-    } else if (sparse_network) {
-      scene = report::sparse_network_scene(file.network->model, sparse_network->result);
-      scene.units = file.network->model.units;
-    } else if (framework) {
-      std::vector<std::optional<framework::TwoWayTrace>> traces;
-      if (traced_motion) traces = framework::animation_traces(*file.framework, *framework, framework_options);
-      scene = report::framework_scene(*file.framework, *framework, traces);
-      scene.units = file.framework->units;
-    } else {
-      scene = report::structure_scene(*structure_model, *decomposition);
-      scene.units = structure_model->units;
-    }
-    scene.verdict = verdict;
-    return scene;
-  }
+  const design::Verdict& verdict() const { return analysis.verdict(); }
+  /// The scene of `kinestat draw` and `kinestat report`; with `traced_motion`, frameworks carry
+  /// their finite modes traced both ways, as the report does.
+  report::Scene scene(bool traced_motion = false) const { return pipeline::model_scene(file, analysis, traced_motion); }
 };
 
 std::shared_ptr<Analysed> read(const std::string& path, const std::optional<std::string>& text) {
@@ -114,67 +82,30 @@ std::shared_ptr<Analysed> read(const std::string& path, const std::optional<std:
   return analysed;
 }
 
-/// Runs without the GIL: checks `stop` between its stages.
+/// Runs without the GIL: the pipeline checks `stop` between its stages.
 std::shared_ptr<Analysed> analyse_model(const std::string& path, const std::optional<std::string>& text,
                                         std::optional<double> tolerance, const std::string& arithmetic,
                                         const std::vector<std::string>& primary, const std::string& method,
                                         const StopRequest& stop) {
   std::shared_ptr<Analysed> analysed = read(path, text);
   stop.throw_if_requested();
-  const io::ModelFile& file = analysed->file;
-  if (file.network) {
-    network::AnalysisOptions options;
-    options.tolerances = Tolerances::with_rank(tolerance);
-    options.stop = stop;
-    // As `kinestat analyze`: the sparse path above kDenseNetworkLimit couplings unless something
-    // only Davies' dense matrices give is asked for (their memory grows as the cube of the network).
-    const bool dense_request = method == "dense" || arithmetic == "exact" || !primary.empty();
-    if (method == "sparse" && dense_request)
+  pipeline::AnalysisRequest request;  // as `kinestat analyze`
+  request.tolerance = tolerance;
+  request.stop = stop;
+  request.structure.max_transformations = 0;
+  pipeline::NetworkRequest& network = request.network;
+  if (arithmetic == "exact") network.options.arithmetic = network::Arithmetic::exact;
+  else if (arithmetic == "float") network.options.arithmetic = network::Arithmetic::floating;
+  if (!primary.empty()) network.options.primary = primary;
+  if (method == "sparse") {
+    if (pipeline::needs_dense_path(network))
       throw py::value_error("method='sparse' gives counts and supports in floating point: arithmetic='exact' and primary "
                             "variables need method='dense'");
-    if (method == "sparse" ||
-        (!dense_request && static_cast<int>(file.network->model.couplings.size()) > network::kDenseNetworkLimit)) {
-      try {
-        analysed->sparse_network = report::analyse_sparse_network_as_reported(file.network->model, options.tolerances);
-      } catch (const network::ModelError& error) {
-        throw io::locate(error, *file.network, file.path);
-      }
-      stop.throw_if_requested();
-      analysed->verdict = analysed->sparse_network->verdict;
-      return analysed;
-    }
-    if (arithmetic == "exact") options.arithmetic = network::Arithmetic::exact;
-    else if (arithmetic == "float") options.arithmetic = network::Arithmetic::floating;
-    if (!primary.empty()) options.primary = primary;
-    report::NetworkAnalysis analysis;  // as `kinestat analyze`
-    try {
-      analysis = report::analyse_network_as_reported(file.network->model, options);
-    } catch (const network::ModelError& error) {
-      throw io::locate(error, *file.network, file.path);
-    }
-    stop.throw_if_requested();
-    analysed->network = std::move(analysis.result);
-    analysed->verdict = std::move(analysis.verdict);
-    analysed->network_generic = std::move(analysis.generic);
-    analysed->network_second_order = std::move(analysis.second_order);
-  } else if (file.framework) {
-    framework::AnalysisOptions options;
-    options.tolerances = Tolerances::with_rank(tolerance);
-    analysed->framework_options = options;  // without the stop request: it belongs to this call
-    options.stop = stop;
-    // As src/cli/framework_command.cpp: the generic answer may re-choose the basis first.
-    analysed->framework = framework::analyse_framework_as_reported(*file.framework, options, &analysed->framework_generic);
-    stop.throw_if_requested();
-    analysed->verdict = design::framework_verdict(*file.framework, *analysed->framework, options);
-    stop.throw_if_requested();
-    if (analysed->framework_generic)
-      analysed->verdict.generic = report::framework_generic_sentences(*file.framework, *analysed->framework, *analysed->framework_generic);
-  } else {
-    analysed->structure_model = *file.structure;
-    analysed->decomposition = structure::analyse_structure(*file.structure);
-    stop.throw_if_requested();
-    analysed->verdict = design::structure_verdict(*analysed->structure_model, *analysed->decomposition);
+    network.path = pipeline::NetworkRequest::Path::sparse;
+  } else if (method == "dense") {
+    network.path = pipeline::NetworkRequest::Path::dense;
   }
+  analysed->analysis = pipeline::analyse_model(analysed->file, request);
   return analysed;
 }
 
@@ -190,21 +121,14 @@ std::shared_ptr<Analysed> analyse(const std::string& path, std::optional<std::st
 }
 
 /// The structural groups of a network or structure model (seed 004), as `kinestat structure`.
-/// Runs without the GIL: checks `stop` between its stages.
+/// Runs without the GIL: the pipeline checks `stop` between its stages.
 std::shared_ptr<Analysed> decompose_model(const std::string& path, const std::optional<std::string>& text, const StopRequest& stop) {
   std::shared_ptr<Analysed> analysed = read(path, text);
   stop.throw_if_requested();
-  const io::ModelFile& file = analysed->file;
-  if (file.framework) {
-    throw io::InputError({file.path, 1, 1}, "structural groups are found for models of kind 'structure' or 'network', "
-                                            "not 'framework'");
-  }
-  analysed->structure_model = file.network ? io::structure_of_network(*file.network, file.path) : *file.structure;
-  analysed->decomposition = structure::analyse_structure(*analysed->structure_model);
-  stop.throw_if_requested();
-  analysed->transformations = structure::structural_transformations(*analysed->structure_model, kTransformationLimit);
-  stop.throw_if_requested();
-  analysed->verdict = design::structure_verdict(*analysed->structure_model, *analysed->decomposition);
+  pipeline::AnalysisRequest request;
+  request.stop = stop;
+  request.structure.max_transformations = kTransformationLimit;
+  analysed->analysis = pipeline::decompose_model(analysed->file, request);
   return analysed;
 }
 
@@ -231,34 +155,20 @@ auto without_gil(Result (*function)(const Analysed&, Arguments...)) {
 }
 
 std::string json_report(const Analysed& a) {
-  // As src/cli/network_command.cpp, framework_command.cpp and structure_command.cpp write them.
-  if (a.sparse_network)
-    return report::json_text(report::sparse_network_report_json(a.file.network->model, a.sparse_network->result, &a.verdict, nullptr));
-  if (a.network) {
-    report::NetworkReportOptions options;
-    options.verdict = &a.verdict;
-    if (a.network_generic) options.generic = &*a.network_generic;
-    if (a.network_second_order) options.second_order = &*a.network_second_order;
-    return report::json_text(report::network_report_json(a.file.network->model, *a.network, options));
-  }
-  if (a.framework)
-    return report::json_text(report::framework_report_json(*a.file.framework, *a.framework, &a.verdict,
-                                                           a.framework_generic ? &*a.framework_generic : nullptr));
-  if (!a.decomposition) throw py::value_error("the model has not been analysed");
-  const report::StructureReport structure_report{*a.structure_model, *a.decomposition,
-                                                 a.transformations ? &*a.transformations : nullptr,
-                                                 structure::SearchMethod::matching, &a.verdict, a.structure_model->units};
-  return report::structure_report_json(structure_report);
+  const pipeline::ModelAnalysis& r = a.analysis;
+  if (!r.network && !r.sparse_network && !r.framework && !r.structure) throw py::value_error("the model has not been analysed");
+  return pipeline::report_json_text(a.file, r);  // as `kinestat analyze --json` (or `structure --json`)
 }
 
 /// The self-contained HTML report, as `kinestat report` writes it; empty without the viewer.
 std::string html_report(const Analysed& a) {
   if (!report::html_report_built_in()) return {};
   const report::Scene scene = a.scene(/*traced_motion=*/true);
-  const bool network = a.network || a.sparse_network;
+  const pipeline::ModelAnalysis& r = a.analysis;
+  const bool network = r.network || r.sparse_network;
   if (network && !scene.large) return report::html_report(scene, report::graph_svg(scene), "Coupling, motion and action graphs");
-  if (!network && a.decomposition && !scene.large)
-    return report::html_report(scene, report::structure_svg(*a.structure_model, *a.decomposition), "Structural diagram");
+  if (!network && r.structure && !scene.large)
+    return report::html_report(scene, report::structure_svg(r.structure->model, r.structure->decomposition), "Structural diagram");
   return report::html_report(scene);
 }
 
@@ -266,53 +176,50 @@ std::string html_report(const Analysed& a) {
 /// 1-based, 0 for none) or "structure".
 std::string svg(const Analysed& a, const std::string& what, int mode, int stress) {
   if (what == "structure") {
-    if (!a.structure_model) throw py::value_error("only networks and structures have a structural diagram");
-    return report::structure_svg(*a.structure_model, a.decomposition ? *a.decomposition : structure::analyse_structure(*a.structure_model));
+    if (a.analysis.structure) return report::structure_svg(a.analysis.structure->model, a.analysis.structure->decomposition);
+    if (!a.file.network && !a.file.structure) throw py::value_error("only networks and structures have a structural diagram");
+    const structure::StructureModel model = a.file.network ? io::structure_of_network(*a.file.network, a.file.path) : *a.file.structure;
+    return report::structure_svg(model, pipeline::decompose(model));
   }
   const report::Scene scene = a.scene();
   if (what == "graph") {
-    if (a.framework) throw py::value_error("a framework has no coupling graph; draw it with what='mechanism'");
+    if (a.analysis.framework) throw py::value_error("a framework has no coupling graph; draw it with what='mechanism'");
     return report::graph_svg(scene);
   }
   if (what == "mechanism") {
-    if (!a.network && !a.sparse_network && !a.framework) throw py::value_error("a model of kind 'structure' has no geometry to draw");
+    if (!a.analysis.network && !a.analysis.sparse_network && !a.analysis.framework) throw py::value_error("a model of kind 'structure' has no geometry to draw");
     return report::mechanism_svg(scene, {mode, stress});
   }
   throw py::value_error("what is 'graph', 'mechanism' or 'structure'");
 }
 
 const network::NetworkResult& network_of(const Analysed& a) {
-  if (a.sparse_network)
+  if (a.analysis.sparse_network)
     throw py::value_error(fmt::format("this comes from Davies' dense matrices, and this network of {} couplings took the sparse "
                                       "path (above {} couplings: FN, CN, the stressed and moving couplings, the verdict); "
                                       "analyze(model, method='dense') builds them, in time and memory that grow as the cube "
                                       "of the network",
-                                      a.sparse_network->result.e, network::kDenseNetworkLimit));
-  if (!a.network) throw py::value_error("not a coupling-network result");
-  return *a.network;
+                                      a.analysis.sparse_network->result.e, network::kDenseNetworkLimit));
+  if (!a.analysis.network) throw py::value_error("not a coupling-network result");
+  return a.analysis.network->result;
 }
 const framework::FrameworkResult& framework_of(const Analysed& a) {
-  if (!a.framework) throw py::value_error("not a framework result");
-  return *a.framework;
+  if (!a.analysis.framework) throw py::value_error("not a framework result");
+  return a.analysis.framework->result;
 }
 
+/// The rank decision's evidence in the one shape every JSON report gives it
+/// (report::rank_decision_json; docs/architecture.md, "Rank decisions"), as a dict.
 py::dict rank_evidence(const linalg::RankDecision& d) {
   py::dict evidence;
-  evidence["rank"] = d.rank;
-  evidence["exact"] = d.exact;
-  evidence["largest"] = d.largest;
-  evidence["threshold"] = d.threshold;
-  evidence["smallest_kept"] = d.smallest_kept;
-  evidence["largest_dropped"] = d.largest_dropped;
-  evidence["rounding_level"] = d.rounding_level;
-  evidence["input_rounding"] = d.input_rounding;
-  // Status and distance to another rank (docs/architecture.md, "Rank decisions").
-  evidence["status"] = linalg::rank_status_name(d.status());
-  const auto distance = d.distance();
-  evidence["distance"] = distance ? py::object(py::float_(*distance)) : py::object(py::none());
-  evidence["error_bound"] = d.error_bound;
-  // Sparse factors: σ_min of the kept block R11 (None when not estimated).
-  evidence["r11_smallest_singular_value"] = d.factor_estimated ? py::object(py::float_(d.factor_smallest)) : py::object(py::none());
+  const nlohmann::ordered_json json = report::rank_decision_json(d);  // outlives the loop over its items
+  for (const auto& [key, value] : json.items()) {
+    if (value.is_null()) evidence[py::str(key)] = py::none();
+    else if (value.is_boolean()) evidence[py::str(key)] = value.get<bool>();
+    else if (value.is_number_integer()) evidence[py::str(key)] = value.get<long long>();
+    else if (value.is_number()) evidence[py::str(key)] = value.get<double>();
+    else evidence[py::str(key)] = value.get<std::string>();
+  }
   return evidence;
 }
 
@@ -346,7 +253,7 @@ std::string trace_json(const Analysed& a, long long mode, double amplitude, long
   framework::TraceOptions trace;
   trace.amplitude_fraction = amplitude;
   trace.steps = move.steps;
-  trace.tolerance = linalg::RankTolerance{a.framework_options.tolerances.rank};
+  trace.tolerance = linalg::RankTolerance{a.analysis.framework->options.tolerances.rank};
   trace.stop = stop;
   move.trace = framework::trace_motion(model, analysis, analysis.modes[move.mode].velocities, trace);
   return report::json_text(report::framework_move_json(model, analysis, move));
@@ -389,14 +296,14 @@ std::vector<std::string> all_names(const std::vector<network::Magnitude>& magnit
 std::pair<std::vector<std::string>, std::uint64_t> sweep_lines(const std::string& spec, std::uint64_t index, std::uint64_t count,
                                                                std::optional<double> tolerance, bool full) {
   if (count < 1 || index >= count) throw py::value_error("shard: 0 <= index < count");
-  report::SweepRunOptions options;
+  pipeline::SweepRunOptions options;
   options.shard = {index, count};
   options.tolerance = tolerance;
   options.full = full;
   return call_interruptibly<std::pair<std::vector<std::string>, std::uint64_t>>([spec, options](const StopRequest& stop) {
     std::vector<std::string> lines;
     // Between variants: each line's callback is a stage boundary.
-    const std::uint64_t failed = report::run_sweep(io::read_sweep_spec(spec), options, [&lines, &stop](const std::string& line) {
+    const std::uint64_t failed = pipeline::run_sweep(io::read_sweep_spec(spec), options, [&lines, &stop](const std::string& line) {
       lines.push_back(line);
       stop.throw_if_requested();
     });
@@ -441,17 +348,17 @@ PYBIND11_MODULE(_core, m) {
       .def_property_readonly("path", [](const Analysed& a) { return a.file.path; })
       .def_property_readonly("notices", [](const Analysed& a) { return a.file.notices; })
       // The verdict every report leads with: its sentence and whether the design is exactly constrained.
-      .def_property_readonly("verdict_summary", [](const Analysed& a) { return a.verdict.summary; })
-      .def_property_readonly("exactly_constrained", [](const Analysed& a) { return a.verdict.exactly_constrained; })
+      .def_property_readonly("verdict_summary", [](const Analysed& a) { return a.verdict().summary; })
+      .def_property_readonly("exactly_constrained", [](const Analysed& a) { return a.verdict().exactly_constrained; })
       .def("json", without_gil(&json_report), "The JSON report of `kinestat analyze --json` (or `structure --json`)")
       .def("html", without_gil(&html_report), "The self-contained HTML report; empty when the viewer is not built in")
       .def("svg", without_gil(&svg), py::arg("what"), py::arg("mode") = 1, py::arg("stress") = 1)
       // Coupling networks (seed 000).
       .def("network_counts", [](const Analysed& a) {
         py::dict counts;
-        if (a.sparse_network) {
+        if (a.analysis.sparse_network) {
           // Davies' m and a are the ranks of [M^N] and [A^N]: F − FN and C − CN (seed 000, eq. 6).
-          const auto& r = a.sparse_network->result;
+          const auto& r = a.analysis.sparse_network->result;
           counts["d"] = r.d, counts["n"] = r.bodies, counts["e"] = r.e, counts["l"] = r.l, counts["k"] = r.bodies - 1;
           counts["F"] = r.F, counts["C"] = r.C, counts["m"] = r.F - r.FN, counts["a"] = r.C - r.CN;
           counts["FN"] = r.FN, counts["CN"] = r.CN, counts["exact"] = false, counts["method"] = "sparse";
@@ -476,10 +383,10 @@ PYBIND11_MODULE(_core, m) {
       .def("primary_actions", [](const Analysed& a) { return magnitude_names(network_of(a).actions, network_of(a).primary_action); })
       // The sparse path decides one rank, of K, from which both FN and CN follow.
       .def("motion_rank", [](const Analysed& a) {
-        return a.sparse_network ? rank_evidence(a.sparse_network->result.rank) : rank_evidence(network_of(a).circulation.solution.rank);
+        return a.analysis.sparse_network ? rank_evidence(a.analysis.sparse_network->result.rank) : rank_evidence(network_of(a).circulation.solution.rank);
       })
       .def("action_rank", [](const Analysed& a) {
-        return a.sparse_network ? rank_evidence(a.sparse_network->result.rank) : rank_evidence(network_of(a).cutset_law.solution.rank);
+        return a.analysis.sparse_network ? rank_evidence(a.analysis.sparse_network->result.rank) : rank_evidence(network_of(a).cutset_law.solution.rank);
       })
       // Frameworks (seed 002).
       .def("framework_counts", [](const Analysed& a) {
@@ -546,30 +453,30 @@ PYBIND11_MODULE(_core, m) {
       .def("row_labels", [](const Analysed& a) {
         std::vector<std::string> labels;
         for (Eigen::Index i = 0; i < framework_of(a).m; ++i)
-          labels.push_back(report::framework_row_label(*a.file.framework, *a.framework, i));
+          labels.push_back(report::framework_row_label(*a.file.framework, framework_of(a), i));
         return labels;
       })
       .def("column_labels", [](const Analysed& a) {
         std::vector<std::string> labels;
         for (Eigen::Index j = 0; j < framework_of(a).n; ++j)
-          labels.push_back(report::framework_column_label(*a.file.framework, *a.framework, j));
+          labels.push_back(report::framework_column_label(*a.file.framework, framework_of(a), j));
         return labels;
       })
       // Structural groups (seed 004).
       .def("groups", [](const Analysed& a) {
-        if (!a.decomposition) throw py::value_error("no structural decomposition");
+        if (!a.analysis.structure) throw py::value_error("no structural decomposition");
         py::list groups;
-        for (const auto& g : a.decomposition->groups) {
+        for (const auto& g : a.analysis.structure->decomposition.groups) {
           py::dict group;
           std::vector<std::string> names;
-          for (int body : g.bodies) names.push_back(structure::body_label(*a.structure_model, body));
+          for (int body : g.bodies) names.push_back(structure::body_label(a.analysis.structure->model, body));
           group["number"] = g.number, group["bodies"] = names, group["Nm"] = g.Nm, group["nc"] = g.nc;
           group["P"] = g.P, group["Sc"] = g.Sc, group["stage"] = g.stage, group["after"] = g.after;
           groups.append(group);
         }
         return groups;
       })
-      .def("complete", [](const Analysed& a) { return a.decomposition && a.decomposition->complete(); })
+      .def("complete", [](const Analysed& a) { return a.analysis.structure && a.analysis.structure->decomposition.complete(); })
       // Finite motion (issue 13): `kinestat move --json`.
       .def("trace",
            [](const std::shared_ptr<Analysed>& analysed, long long mode, double amplitude, long long steps) {

@@ -45,14 +45,14 @@ void register_analyze(CLI::App& app, Action& action) {
       // The parsed tree is let go once the model is read: it is not needed by the analysis
       // (about 0.2 GB for 10^6 bars).
       std::optional<io::YamlFile> model(io::YamlFile::load(options->model_path));
-      const std::string kind = io::model_kind(*model);
+      const io::ModelKind kind = model_kind_of(*model);
       const std::string path = model->path();
-      if (kind == "network") {
+      if (kind == io::ModelKind::network) {
         const auto network = io::read_network_model(*model);
         model.reset();
         return run_network_analysis(*options, network, path);
       }
-      if (kind == "framework") {
+      if (kind == io::ModelKind::framework) {
         const framework::FrameworkModel framework = io::read_framework_model(*model);
         model.reset();
         return run_framework_analysis(*options, framework, path);

@@ -17,6 +17,7 @@
 #include "kinestat/io/model_format.hpp"
 #include "kinestat/io/network_reader.hpp"
 #include "kinestat/io/yaml_support.hpp"
+#include "kinestat/pipeline/model_pipeline.hpp"
 #include "kinestat/report/scene.hpp"
 #include "kinestat/structure/structure_model.hpp"
 
@@ -52,10 +53,10 @@ void register_report(CLI::App& app, Action& action);
 void register_convert(CLI::App& app, Action& action);
 void register_move(CLI::App& app, Action& action);
 void register_sweep(CLI::App& app, Action& action);
-void register_export(CLI::App& app, Action& action);
 /// `kinestat fix MODEL -o FIXED` (fix_command.cpp): the verdict's first verified change set applied and
 /// written as a kinestat YAML model; exit 4 when already exactly constrained, 5 without a verified set.
 void register_fix(CLI::App& app, Action& action);
+void register_export(CLI::App& app, Action& action);
 
 /// Prints the notices of kinestat model files (older spellings read) to standard error as they
 /// are read, one line each (io::set_notice_handler).
@@ -72,18 +73,13 @@ framework::FrameworkModel read_spacar_model(const std::string& path);
 /// Reads a URDF, SDFormat or MJCF file; notices go to standard error, one line each.
 io::LoadedNetwork read_imported_network(const std::string& path);
 
-/// A model of any kind, analysed and turned into a scene for `draw` and `report`.
-struct LoadedScene {
-  std::string kind;
-  report::Scene scene;
-  std::optional<structure::StructureModel> structure_model;  ///< networks and structures
-  /// Why a network has no structure model (e.g. a rigid coupling is no pair): raised only when
-  /// the structural diagram is asked for, so the other pictures of the network still draw.
-  std::optional<io::InputError> structure_error;
-};
-/// `traced_motion`: frameworks also get the finite motion of their finite modes traced both ways
-/// (framework::animation_traces), which the HTML report animates; SVG drawings do not need it.
-LoadedScene load_scene(const std::string& path, std::optional<double> tolerance, bool traced_motion = false);
+/// The kind of the parsed model file `file` (its `kind:`, network when absent).
+io::ModelKind model_kind_of(const io::YamlFile& file);
+/// A model of any kind, analysed by the pipeline and turned into a scene for `draw` and
+/// `report`. `traced_motion`: frameworks also get the finite motion of their finite modes
+/// traced both ways (framework::animation_traces), which the HTML report animates; SVG drawings
+/// do not need it.
+pipeline::ModelPictures load_scene(const std::string& path, std::optional<double> tolerance, bool traced_motion = false);
 
 // `analyze` dispatches on the model's kind to one of these; each kind adds its own options.
 void register_network_options(CLI::App& analyze);

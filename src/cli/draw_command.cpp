@@ -10,7 +10,7 @@
 #include "kinestat/io/input_error.hpp"
 #include "kinestat/report/structure_report.hpp"
 #include "kinestat/report/svg_writer.hpp"
-#include "kinestat/structure/decomposition.hpp"
+#include "kinestat/pipeline/structure_pipeline.hpp"
 
 namespace kinestat::cli {
 
@@ -24,18 +24,18 @@ struct DrawOptions {
 };
 
 int run(const DrawOptions& options) {
-  const LoadedScene loaded = load_scene(options.common.model_path, options.common.tolerance);
-  const std::string& kind = loaded.kind;
+  const pipeline::ModelPictures loaded = load_scene(options.common.model_path, options.common.tolerance);
+  const io::ModelKind kind = loaded.kind;
   std::string what = options.what;
-  if (what.empty()) what = kind == "framework" ? "mechanism" : "graph";
+  if (what.empty()) what = kind == io::ModelKind::framework ? "mechanism" : "graph";
   const auto refuse = [&](const std::string& message) {
     throw io::InputError({options.common.model_path, 0, 0}, message);
   };
   if (what == "graph") {
-    if (kind == "framework") refuse("a framework has no coupling graph; draw it with --what mechanism");
+    if (kind == io::ModelKind::framework) refuse("a framework has no coupling graph; draw it with --what mechanism");
     emit(options.common, report::graph_svg(loaded.scene));
   } else if (what == "mechanism") {
-    if (kind == "structure")
+    if (kind == io::ModelKind::structure)
       refuse("a model of kind 'structure' has no geometry to draw; use --what graph or --what structure");
     // A sparse network's scene holds only the first basis vectors of its modes and self-stresses.
     const auto how_many = [](std::size_t drawn, std::size_t total, const std::string& states) {
@@ -51,7 +51,8 @@ int run(const DrawOptions& options) {
   } else {
     if (loaded.structure_error) throw *loaded.structure_error;
     if (!loaded.structure_model) refuse("a framework has no structural diagram; draw it with --what mechanism");
-    emit(options.common, report::structure_svg(*loaded.structure_model, structure::analyse_structure(*loaded.structure_model)));
+    emit(options.common, report::structure_svg(*loaded.structure_model, loaded.decomposition ? *loaded.decomposition
+                                                                                      : pipeline::decompose(*loaded.structure_model)));
   }
   return 0;
 }

@@ -7,9 +7,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/option_checks.hpp"
-#include "kinestat/design/framework_verdict.hpp"
-#include "kinestat/framework/framework_analysis.hpp"
-#include "kinestat/framework/generic_framework.hpp"
+#include "kinestat/pipeline/framework_pipeline.hpp"
 #include "kinestat/report/framework_report.hpp"
 #include "kinestat/report/json_text.hpp"
 
@@ -56,19 +54,13 @@ int run_framework_analysis(const CommonOptions& options, const framework::Framew
   analysis_options.tolerances = Tolerances::with_rank(options.tolerance);
   analysis_options.dense_limit = static_cast<Eigen::Index>(dense_limit);
   analysis_options.sparse_vectors = static_cast<Eigen::Index>(sparse_vectors);
-  // The generic answer first: where only some modes or stress states persist it re-chooses
-  // their basis (one cause per vector), and the verdict describes that basis.
-  std::optional<framework::GenericFramework> generic;
-  const framework::FrameworkResult analysis = framework::analyse_framework_as_reported(model, analysis_options, &generic);
-  const framework::GenericFramework* shown = generic ? &*generic : nullptr;
-  design::Verdict verdict = design::framework_verdict(model, analysis, analysis_options);
-  if (generic) verdict.generic = report::framework_generic_sentences(model, analysis, *generic);
+  const pipeline::FrameworkAnalysis analysis = pipeline::analyse_framework(model, analysis_options);
   if (options.json) {
-    emit(options, report::json_text(report::framework_report_json(model, analysis, &verdict, shown)));
+    emit(options, report::json_text(report::framework_report_json(model, analysis.result, &analysis.verdict, analysis.shown_generic())));
   } else {
-    emit(options, report::framework_report_text(model, analysis, &verdict, shown));
+    emit(options, report::framework_report_text(model, analysis.result, &analysis.verdict, analysis.shown_generic()));
   }
-  return verdict_exit_code(options.fail_unless, verdict);
+  return verdict_exit_code(options.fail_unless, analysis.verdict);
 }
 
 }  // namespace kinestat::cli

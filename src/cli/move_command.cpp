@@ -218,9 +218,9 @@ int run_move(const MoveOptions& options) {
   if (io::model_format(path) != io::ModelFormat::kinestat)
     throw io::InputError({path, 1, 1}, "'kinestat move' reads kinestat model files (kind: framework or network)");
   const io::YamlFile file = io::YamlFile::load(path);
-  const std::string kind = io::model_kind(file);
-  if (kind == "framework") return move_framework(options, io::read_framework_model(file), file.path());
-  if (kind == "network") return move_network(options, io::read_network_model(file), file.path());
+  const io::ModelKind kind = model_kind_of(file);
+  if (kind == io::ModelKind::framework) return move_framework(options, io::read_framework_model(file), file.path());
+  if (kind == io::ModelKind::network) return move_network(options, io::read_network_model(file), file.path());
   throw io::InputError({file.path(), 1, 1}, "a model of kind 'structure' has no geometry to move; write the mechanism as a network "
                                             "model (kind: network) with the points and axes of its couplings");
 }

@@ -10,8 +10,7 @@
 #include "cli/option_checks.hpp"
 #include "kinestat/io/network_reader.hpp"
 #include "kinestat/network/analyse_network.hpp"
-#include "kinestat/network/sparse_network.hpp"
-#include "kinestat/report/analysis_report.hpp"
+#include "kinestat/pipeline/model_pipeline.hpp"
 #include "kinestat/report/json_text.hpp"
 #include "kinestat/report/network_report.hpp"
 
@@ -117,57 +116,44 @@ std::vector<std::string> given_network_options() {
 int run_network_analysis(const CommonOptions& common, const io::LoadedNetwork& loaded, const std::string& path) {
   const NetworkOptions& o = network_options();
   reject_options(given_framework_options(), "a network", path);
-  network::AnalysisOptions options;
+  pipeline::NetworkRequest request;
+  network::AnalysisOptions& options = request.options;
   options.arithmetic = o.exact ? network::Arithmetic::exact
                                : (o.floating ? network::Arithmetic::floating : network::Arithmetic::automatic);
   options.tolerances = Tolerances::with_rank(common.tolerance);
   if (!o.primary.empty()) options.primary = o.primary;
   options.values = parse_values(o.values);
   options.all_pairs = !o.coupled_pairs_only;
-  // The sparse path for large networks unless something only the dense path gives was asked for.
-  const bool dense_request = o.dense || o.exact || o.matrices || !o.primary.empty() || !o.values.empty();
-  if (o.sparse || (!dense_request && static_cast<int>(loaded.model.couplings.size()) > network::kDenseNetworkLimit)) {
-    const std::vector<std::pair<int, int>> chosen = parse_pairs(o.pairs, loaded.model);
-    report::SparseNetworkAnalysis sparse;
-    try {
-      sparse = report::analyse_sparse_network_as_reported(loaded.model, options.tolerances, chosen, o.coupled_pairs_only);
-    } catch (const network::ModelError& error) {
-      throw io::locate(error, loaded, path);
-    }
-    const auto* listed = sparse.listed_pairs ? &sparse.pairs : nullptr;
-    emit(common, common.json ? report::json_text(report::sparse_network_report_json(loaded.model, sparse.result, &sparse.verdict, listed))
-                             : report::sparse_network_report_text(loaded.model, sparse.result, &sparse.verdict, listed));
-    return verdict_exit_code(common.fail_unless, sparse.verdict);
-  }
-  if (!o.pairs.empty())
+  request.path = o.sparse ? pipeline::NetworkRequest::Path::sparse
+                          : (o.dense ? pipeline::NetworkRequest::Path::dense : pipeline::NetworkRequest::Path::automatic);
+  request.matrices = o.matrices;
+  const pipeline::NetworkPath path_taken = pipeline::network_path(loaded.model, request);
+  if (path_taken == pipeline::NetworkPath::sparse) {
+    request.pairs = parse_pairs(o.pairs, loaded.model);
+    request.coupled_pairs = o.coupled_pairs_only;
+  } else if (!o.pairs.empty()) {
     throw io::InputError({"--pair", 0, 0}, "--pair chooses pairs on the sparse path; the dense path lists every pair of "
                                            "bodies (unless --coupled-pairs): drop --pair, or add --sparse");
-  // Results that overflow a double are refused before anything is derived from them.
-  report::NetworkAnalysisParts parts;
-  parts.check = [&o, &loaded, &path](const network::NetworkResult& result) {
-    if (const auto overflowing = first_non_finite_result(result)) {
-      const auto values = loaded.field_locations.find("values");
-      const io::SourceLocation where = !o.values.empty() ? io::SourceLocation{"--value", 0, 0}
-                                       : values != loaded.field_locations.end() ? values->second
-                                                                                : io::SourceLocation{path, 0, 0};
-      throw io::InputError(where, fmt::format("{} overflows a double (beyond about 1e308): the values or coordinates are "
-                                              "too large; scale them down (units do not change the counts)",
-                                              *overflowing));
-    }
-  };
-  report::NetworkAnalysis analysis;
+  }
+  pipeline::NetworkAnalyses analysis;
   try {
-    analysis = report::analyse_network_as_reported(loaded.model, options, parts);
+    analysis = pipeline::analyse_network_model(loaded, path, request);
   } catch (const network::ModelError& error) {
     if (error.field() == "primary" && !o.primary.empty()) throw io::InputError({"--primary", 0, 0}, error.what());
     if (error.field() == "values" && !o.values.empty()) throw io::InputError({"--value", 0, 0}, error.what());
     throw io::locate(error, loaded, path);
   }
-  report::NetworkReportOptions report_options = analysis.report_options();
+  if (analysis.sparse) {
+    const pipeline::SparseNetworkAnalysis& sparse = *analysis.sparse;
+    emit(common, common.json ? report::json_text(report::sparse_network_report_json(loaded.model, sparse.result, &sparse.verdict, sparse.listed()))
+                             : report::sparse_network_report_text(loaded.model, sparse.result, &sparse.verdict, sparse.listed()));
+    return verdict_exit_code(common.fail_unless, sparse.verdict);
+  }
+  report::NetworkReportOptions report_options = analysis.dense->report_options();
   report_options.matrices = o.matrices;
-  emit(common, common.json ? report::json_text(report::network_report_json(loaded.model, analysis.result, report_options))
-                           : report::network_report_text(loaded.model, analysis.result, report_options));
-  return verdict_exit_code(common.fail_unless, analysis.verdict);
+  emit(common, common.json ? report::json_text(report::network_report_json(loaded.model, analysis.dense->result, report_options))
+                           : report::network_report_text(loaded.model, analysis.dense->result, report_options));
+  return verdict_exit_code(common.fail_unless, analysis.dense->verdict);
 }
 
 }  // namespace kinestat::cli

@@ -10,7 +10,6 @@
 #include "kinestat/report/html_writer.hpp"
 #include "kinestat/report/structure_report.hpp"
 #include "kinestat/report/svg_writer.hpp"
-#include "kinestat/structure/decomposition.hpp"
 
 namespace kinestat::cli {
 
@@ -24,18 +23,18 @@ void register_report(CLI::App& app, Action& action) {
   command->callback([options, &action] {
     action = [options] {
       // The model first: a bad model is reported as such whether or not the viewer is built in.
-      const LoadedScene loaded = load_scene(options->model_path, options->tolerance, /*traced_motion=*/true);
+      const pipeline::ModelPictures loaded = load_scene(options->model_path, options->tolerance, /*traced_motion=*/true);
       if (!report::html_report_built_in()) {
         std::cerr << "kinestat: error: HTML output is not built in: this kinestat was built without npm, so three.js "
                      "could not be embedded (rebuild with npm available; 'kinestat draw' writes SVG)\n";
         return 2;
       }
       std::string figure, title;
-      if (loaded.kind == "network" && !loaded.scene.large) {
+      if (loaded.kind == io::ModelKind::network && !loaded.scene.large) {
         figure = report::graph_svg(loaded.scene);
         title = "Coupling, motion and action graphs";
-      } else if (loaded.kind == "structure" && loaded.structure_model && !loaded.scene.large) {
-        figure = report::structure_svg(*loaded.structure_model, structure::analyse_structure(*loaded.structure_model));
+      } else if (loaded.kind == io::ModelKind::structure && loaded.decomposition && !loaded.scene.large) {
+        figure = report::structure_svg(*loaded.structure_model, *loaded.decomposition);
         title = "Structural diagram";
       }
       emit(*options, report::html_report(loaded.scene, figure, title));

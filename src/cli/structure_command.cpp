@@ -5,17 +5,16 @@
 #include <iostream>
 #include <iterator>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include "cli/commands.hpp"
 #include "cli/option_checks.hpp"
-#include "kinestat/design/structure_verdict.hpp"
 #include "kinestat/io/network_reader.hpp"
 #include "kinestat/io/network_structure.hpp"
 #include "kinestat/io/structure_reader.hpp"
+#include "kinestat/pipeline/model_pipeline.hpp"
 #include "kinestat/report/structure_report.hpp"
-#include "kinestat/structure/decomposition.hpp"
-#include "kinestat/structure/transformations.hpp"
 
 namespace kinestat::cli {
 
@@ -46,60 +45,83 @@ bool starts_with_matrix(const std::string& text) {
   return true;  // empty input: the matrix reader says what is missing
 }
 
-structure::StructureModel read_model(const StructureOptions& options) {
+// A structure model, or the couplings of a network model with the network itself (whose
+// geometric verdict the report gives, as `analyze` does).
+struct StructureInput {
+  structure::StructureModel model;
+  std::optional<io::LoadedNetwork> network;
+  std::string path;
+};
+
+StructureInput read_input(const StructureOptions& options) {
   if (options.from_stdin || options.common.model_path == "-") {
     const std::string text = io::read_model_text(std::cin, "<stdin>");
     // A bare matrix starts with a code (after blank lines and '#' comments); anything else
     // is read as a YAML model.
     if (!starts_with_matrix(text)) {
       const io::YamlFile file = io::YamlFile::parse("<stdin>", text);
-      return io::read_structure_model(file);
+      return {io::read_structure_model(file), std::nullopt, "<stdin>"};
     }
-    return io::read_adjacency_text(text, "<stdin>");
+    return {io::read_adjacency_text(text, "<stdin>"), std::nullopt, "<stdin>"};
   }
-  const io::ModelFormat format = io::model_format(options.common.model_path);
-  if (format != io::ModelFormat::kinestat && format != io::ModelFormat::spacar)
-    return io::structure_of_network(read_imported_network(options.common.model_path), options.common.model_path);
+  const std::string& path = options.common.model_path;
+  const io::ModelFormat format = io::model_format(path);
   if (format == io::ModelFormat::spacar)
-    throw io::InputError({options.common.model_path, 1, 1}, "a SPACAR file is a framework of nodes and elements; "
-                                                            "'kinestat structure' reads mechanisms (kind: structure or network)");
-  const io::YamlFile file = io::YamlFile::load(options.common.model_path);
-  const std::string kind = io::model_kind(file);
-  if (kind == "network") return io::structure_of_network(io::read_network_model(file), file.path());
-  if (kind != "structure") {
-    throw io::InputError({file.path(), 1, 1}, "'kinestat structure' reads models of kind 'structure' or 'network', found kind '" +
-                                                   kind + "'");
+    throw io::InputError({path, 1, 1}, "a SPACAR file is a framework of nodes and elements; "
+                                       "'kinestat structure' reads mechanisms (kind: structure or network)");
+  if (format != io::ModelFormat::kinestat) {
+    io::LoadedNetwork network = read_imported_network(path);
+    structure::StructureModel model = io::structure_of_network(network, path);
+    return {std::move(model), std::move(network), path};
   }
-  return io::read_structure_model(file);
+  const io::YamlFile file = io::YamlFile::load(path);
+  const io::ModelKind kind = model_kind_of(file);
+  if (kind == io::ModelKind::network) {
+    io::LoadedNetwork network = io::read_network_model(file);
+    structure::StructureModel model = io::structure_of_network(network, file.path());
+    return {std::move(model), std::move(network), file.path()};
+  }
+  if (kind != io::ModelKind::structure) {
+    throw io::InputError({file.path(), 1, 1}, "'kinestat structure' reads models of kind 'structure' or 'network', found kind '" +
+                                                   std::string(io::kind_name(kind)) + "'");
+  }
+  return {io::read_structure_model(file), std::nullopt, file.path()};
 }
 
 int run(const StructureOptions& options) {
-  const structure::StructureModel model = read_model(options);
+  StructureInput input = read_input(options);
   const auto method = options.method == "seed" ? structure::SearchMethod::seed_search : structure::SearchMethod::matching;
-  if (method == structure::SearchMethod::seed_search && model.body_count() > kMaxSeedSearchBodies) {
+  if (method == structure::SearchMethod::seed_search && input.model.body_count() > kMaxSeedSearchBodies) {
     throw io::InputError({options.from_stdin ? "<stdin>" : options.common.model_path, 1, 1},
                          "--method seed enumerates chains and is limited to " + std::to_string(kMaxSeedSearchBodies) +
-                             " bodies; this model has " + std::to_string(model.body_count()) +
+                             " bodies; this model has " + std::to_string(input.model.body_count()) +
                              " (use the default --method matching)");
   }
-  const structure::StructureResult decomposition = structure::analyse_structure(model, method);
-  if (options.diagram == "dot") {
-    emit(options.common, report::structure_dot(model, decomposition));
+  if (!options.diagram.empty()) {
+    const structure::StructureResult decomposition = pipeline::decompose(input.model, method);
+    emit(options.common, options.diagram == "dot" ? report::structure_dot(input.model, decomposition)
+                                                  : report::structure_svg(input.model, decomposition));
     return 0;
   }
-  if (options.diagram == "svg") {
-    emit(options.common, report::structure_svg(model, decomposition));
-    return 0;
+  pipeline::StructureRequest request;
+  request.method = method;
+  request.max_transformations = options.max_transformations;
+  pipeline::StructureAnalysis analysis;
+  if (input.network) {
+    // One story across commands: the network's geometric verdict, as `analyze` gives it.
+    pipeline::NetworkAnalyses geometric;
+    try {
+      geometric = pipeline::analyse_network_model(*input.network, input.path, pipeline::NetworkRequest{});
+    } catch (const network::ModelError& error) {
+      throw io::locate(error, *input.network, input.path);
+    }
+    analysis = pipeline::analyse_network_structure(std::move(input.model), geometric, request);
+  } else {
+    analysis = pipeline::analyse_structure(std::move(input.model), request);
   }
-  std::unique_ptr<structure::TransformationSet> transformations;
-  if (options.max_transformations > 0) {
-    transformations = std::make_unique<structure::TransformationSet>(
-        structure::structural_transformations(model, options.max_transformations));
-  }
-  const design::Verdict verdict = design::structure_verdict(model, decomposition);
-  const report::StructureReport report{model, decomposition, transformations.get(), method, &verdict, model.units};
+  const report::StructureReport report = analysis.report();
   emit(options.common, options.common.json ? report::structure_report_json(report) : report::structure_report_text(report));
-  return verdict_exit_code(options.common.fail_unless, verdict);
+  return verdict_exit_code(options.common.fail_unless, analysis.verdict);
 }
 
 }  // namespace

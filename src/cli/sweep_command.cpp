@@ -18,7 +18,7 @@
 #include "kinestat/io/output_file.hpp"
 #include "kinestat/io/sweep_merge.hpp"
 #include "kinestat/io/sweep_spec.hpp"
-#include "kinestat/report/sweep_run.hpp"
+#include "kinestat/pipeline/sweep_run.hpp"
 
 namespace kinestat::cli {
 
@@ -109,7 +109,7 @@ int sweep_action(const SweepOptions& options) {
     throw io::InputError({"sweep", 0, 0}, fmt::format("give one sweep spec (found {} files); to merge shard outputs use "
                                                       "'kinestat sweep --merge FILES...'",
                                                       options.inputs.size()));
-  report::SweepRunOptions run;
+  pipeline::SweepRunOptions run;
   if (!options.shard.empty()) run.shard = *design::parse_shard(options.shard);
   run.tolerance = options.common.tolerance;
   run.full = options.full;
@@ -123,7 +123,7 @@ int sweep_action(const SweepOptions& options) {
   LineSink sink(options.common);
   ProgressBar progress(design::shard_size(spec.count, shard), sink.to_standard_output() && ::isatty(STDOUT_FILENO) == 1,
                        shard.count > 1 ? fmt::format("sweep {}/{}", shard.index, shard.count) : std::string("sweep"));
-  const std::uint64_t failed = report::run_sweep(spec, run, [&](const std::string& line) {
+  const std::uint64_t failed = pipeline::run_sweep(spec, run, [&](const std::string& line) {
     sink.add(line);
     progress.step();
   });

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // kinestat: every public header. Layers: screw, graph, linalg -> network, framework, structure,
-// kinematics, design -> io -> report (docs/architecture.md). The installed-package check
+// kinematics, design -> io -> report -> pipeline (docs/architecture.md). The installed-package check
 // (tests/consumer) fails when a public header is missing here.
 #include "kinestat/address_sanitizer.hpp"
 #include "kinestat/error.hpp"
@@ -33,6 +33,7 @@
 #include "kinestat/io/mjcf_reader.hpp"
 #include "kinestat/io/model_file.hpp"
 #include "kinestat/io/model_format.hpp"
+#include "kinestat/io/model_kind.hpp"
 #include "kinestat/io/model_tree.hpp"
 #include "kinestat/io/network_import.hpp"
 #include "kinestat/io/network_structure.hpp"
@@ -81,7 +82,11 @@
 #include "kinestat/network/sparse_network.hpp"
 #include "kinestat/network/sparse_pair_freedoms.hpp"
 #include "kinestat/network/unit_matrices.hpp"
-#include "kinestat/report/analysis_report.hpp"
+#include "kinestat/pipeline/framework_pipeline.hpp"
+#include "kinestat/pipeline/model_pipeline.hpp"
+#include "kinestat/pipeline/network_pipeline.hpp"
+#include "kinestat/pipeline/structure_pipeline.hpp"
+#include "kinestat/pipeline/sweep_run.hpp"
 #include "kinestat/report/framework_report.hpp"
 #include "kinestat/report/generic_text.hpp"
 #include "kinestat/report/html_writer.hpp"
@@ -96,7 +101,6 @@
 #include "kinestat/report/structure_report.hpp"
 #include "kinestat/report/svg_writer.hpp"
 #include "kinestat/report/sweep_line.hpp"
-#include "kinestat/report/sweep_run.hpp"
 #include "kinestat/report/verdict_report.hpp"
 #include "kinestat/screw/coupling_basis.hpp"
 #include "kinestat/screw/coupling_type.hpp"

@@ -67,7 +67,7 @@ TEST(HtmlReport, MissingModelIsExitTwo) {
 
 TEST(HtmlReport, ScriptTextCannotCloseTheScriptElement) {
   kinestat::report::Scene scene;
-  scene.kind = "framework";
+  scene.kind = kinestat::io::ModelKind::framework;
   scene.name = "evil </script><script>alert(1)</script>";
   const std::string json = kinestat::report::scene_json(scene).dump();
   EXPECT_NE(json.find("</script>"), std::string::npos);  // the raw JSON has it ...

@@ -59,16 +59,16 @@ void read_petsc_model(const CommonOptions& options, PetscModel& out) {
     out.network = read_imported_network(options.model_path);
   } else {
     std::optional<io::YamlFile> model(io::YamlFile::load(options.model_path));
-    const std::string kind = io::model_kind(*model);
+    const io::ModelKind kind = model_kind_of(*model);
     path = model->path();
-    if (kind == "framework") {
+    if (kind == io::ModelKind::framework) {
       out.framework = io::read_framework_model(*model);
       reject_options(pair_options, "a framework", path);
       return;
     }
-    if (kind != "network")
-      throw io::InputError({options.model_path, 0, 0},
-                           "--backend petsc analyses frameworks and coupling networks; this model is of kind '" + kind + "'");
+    if (kind != io::ModelKind::network)
+      throw io::InputError({options.model_path, 0, 0}, "--backend petsc analyses frameworks and coupling networks; this model "
+                                                       "is of kind '" + std::string(io::kind_name(kind)) + "'");
     out.network = io::read_network_model(*model);
   }
   out.pairs = requested_pairs(out.network->model);

@@ -39,6 +39,13 @@ struct DesignChange {
   std::vector<std::pair<std::string, std::vector<double>>> geometry;
 };
 
+/// A pair of counts: freedoms (FN) and constraints (CN).
+struct Counts {
+  int freedoms = 0;
+  int constraints = 0;
+  bool operator==(const Counts&) const = default;
+};
+
 struct Verdict {
   bool exactly_constrained = false;
   int extra_motions = 0;           ///< motions beyond the intended ones
@@ -68,6 +75,11 @@ struct Verdict {
   /// below kNearRankChange: the design is that near one with one more motion and one more
   /// self-stress, and `summary` says so. Empty otherwise.
   std::optional<double> near_rank_change;
+  /// Set only where the structural (generic) count — the one the structural groups use, from
+  /// the topology alone — differs from the geometric count of the analysis (issue 35: both
+  /// commands say so with both numbers): the geometric FN, CN and the structural ones.
+  std::optional<Counts> geometric_counts;
+  std::optional<Counts> generic_counts;
 };
 
 /// Participations are reported as multiples of 1 / kParticipationScale (four decimals).

@@ -13,16 +13,11 @@
 #include "kinestat/io/input_error.hpp"
 #include "kinestat/io/loaded_network.hpp"
 #include "kinestat/io/model_format.hpp"
+#include "kinestat/io/model_kind.hpp"
 #include "kinestat/io/network_import.hpp"
 #include "kinestat/structure/structure_model.hpp"
 
 namespace kinestat::io {
-
-/// The `kind:` of a model file.
-enum class ModelKind { network, framework, structure };
-
-/// The spelling of `kind` in model files and reports: "network", "framework" or "structure".
-std::string_view kind_name(ModelKind kind);
 
 /// A model file read and checked. Exactly one of `network`, `framework`, `structure` is set:
 /// the one named by `kind`. Lengths are in the file's units, positions in the file's frame.

@@ -133,7 +133,7 @@ bool html_report_built_in() { return viewer_assets::built_in(); }
 
 nlohmann::ordered_json scene_json(const Scene& scene) {
   nlohmann::ordered_json j;
-  j["kind"] = scene.kind;
+  j["kind"] = io::kind_name(scene.kind);
   j["name"] = scene.name;
   j["dimension"] = scene.dimension;
   j["screw_components"] = scene.screw_dimension == 3 ? std::vector<int>{2, 3, 4} : std::vector<int>{0, 1, 2, 3, 4, 5};

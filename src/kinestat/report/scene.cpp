@@ -136,7 +136,7 @@ double drawing_extent(const std::vector<SceneNode>& nodes) {
 /// about an axis through all its coupling points (Davies' sa, ta) would otherwise not visibly
 /// move. At most one arm lies along any axis, so every rotation moves the marker.
 NetworkLayout network_drawing(const network::Model& model, int ground, Scene& scene) {
-  scene.kind = "network";
+  scene.kind = io::ModelKind::network;
   scene.name = model.name;
   scene.screw_dimension = model.space.dimension();
   scene.dimension = model.space.is_planar() ? 2 : 3;
@@ -483,7 +483,7 @@ std::string first_order_reason(const framework::FrameworkResult& a, std::size_t 
 Scene framework_scene(const framework::FrameworkModel& model, const framework::FrameworkResult& a,
                       const std::vector<std::optional<framework::TwoWayTrace>>& traces) {
   Scene scene;
-  scene.kind = "framework";
+  scene.kind = io::ModelKind::framework;
   scene.name = model.name;
   scene.dimension = model.dimension;
   scene.screw_dimension = model.dimension == 2 ? 3 : 6;
@@ -602,7 +602,7 @@ Scene framework_scene(const framework::FrameworkModel& model, const framework::F
 
 Scene structure_scene(const structure::StructureModel& model, const structure::StructureResult& decomposition) {
   Scene scene;
-  scene.kind = "structure";
+  scene.kind = io::ModelKind::structure;
   scene.name = model.name;
   scene.dimension = 2;
   scene.screw_dimension = model.dimension;

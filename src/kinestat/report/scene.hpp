@@ -15,6 +15,7 @@
 #include "kinestat/framework/framework_analysis.hpp"
 #include "kinestat/framework/framework_model.hpp"
 #include "kinestat/framework/two_way_trace.hpp"
+#include "kinestat/io/model_kind.hpp"
 #include "kinestat/network/model.hpp"
 #include "kinestat/network/network_result.hpp"
 #include "kinestat/network/sparse_network.hpp"
@@ -157,7 +158,7 @@ struct ScenePair {
 };
 
 struct Scene {
-  std::string kind;  ///< "network", "framework" or "structure"
+  io::ModelKind kind = io::ModelKind::network;
   std::string name;
   int dimension = 3;  ///< 2: everything lies in the xy-plane; 3: spatial
   int screw_dimension = 6;

@@ -176,7 +176,7 @@ bool graph_names_drawn(const Scene& scene) { return scene.bodies.size() <= kName
 void draw_bodies(std::string& out, const Scene& scene, const std::vector<P>& at) {
   for (std::size_t b = 0; b < at.size(); ++b) {
     std::string fill = "white";
-    if (scene.kind == "structure" && b < scene.group_of.size() && scene.group_of[b] > 0)
+    if (scene.kind == io::ModelKind::structure && b < scene.group_of.size() && scene.group_of[b] > 0)
       fill = kGroupColours[static_cast<std::size_t>(1 + (scene.group_of[b] - 1) % 7)];
     const bool ground = static_cast<int>(b) == scene.ground;
     out += fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{}\" stroke=\"#222\" stroke-width=\"{}\"/>\n", f2(at[b].x),
@@ -205,7 +205,7 @@ void panel_title(std::string& out, P at, const std::string& title, const std::st
 void coupling_graph_panel(std::string& out, const Scene& scene, P origin, double size) {
   const P centre = origin + P{size / 2, size / 2 + 20};
   const auto at = body_layout(scene, centre, size * 0.32);
-  const bool network = scene.kind == "network";
+  const bool network = scene.kind == io::ModelKind::network;
   panel_title(out, origin + P{size / 2, 22}, network ? "coupling graph" : "bodies and pairs",
               !network        ? "pairs with freedoms f; colour: structural group"
               : scene.sparse  ? "tree from the ground: branches thick, chords thin"
@@ -423,7 +423,7 @@ std::vector<std::string> verdict_lines(const Scene& scene) {
 
 std::string graph_svg(const Scene& scene) {
   const double size = 380;
-  const bool network = scene.kind == "network";
+  const bool network = scene.kind == io::ModelKind::network;
   const double width = network ? 3 * size : size + 160;
   // The verdict, when the analysis gave one, under the model's name.
   const std::vector<std::string> verdict = scene.verdict ? verdict_lines(scene) : std::vector<std::string>{};
@@ -724,9 +724,9 @@ std::string mechanism_svg(const Scene& scene, const MechanismDrawing& drawing) {
   // (the four corners around the node), then element, coupling and screw labels.
   LabelSpace labels(2, top, width - 2, top + drawing_height - 4);
   const bool label_nodes = scene.nodes.size() <= 200;
-  const std::size_t labelled = scene.kind == "network" ? scene.bodies.size() : scene.nodes.size();
+  const std::size_t labelled = scene.kind == io::ModelKind::network ? scene.bodies.size() : scene.nodes.size();
   for (std::size_t i = 0; i < scene.nodes.size(); ++i)
-    if (scene.kind != "network" || i < scene.bodies.size()) labels.block(fit(at[i] + shift * arrow[i]), 4.5);
+    if (scene.kind != io::ModelKind::network || i < scene.bodies.size()) labels.block(fit(at[i] + shift * arrow[i]), 4.5);
   for (const auto& glyph : scene.glyphs) labels.block(fit(view.project(glyph.point)), 5.5);
   for (std::size_t e = 0; e < scene.elements.size(); ++e) {
     const auto ia = static_cast<std::size_t>(scene.elements[e].a), ib = static_cast<std::size_t>(scene.elements[e].b);
@@ -739,7 +739,7 @@ std::string mechanism_svg(const Scene& scene, const MechanismDrawing& drawing) {
                                  scene.nodes[i].name, 11);
   }
   // Element labels beside the element (mid-length first, then towards either end), for readable sizes.
-  if (scene.kind == "framework" && scene.elements.size() <= 60) {
+  if (scene.kind == io::ModelKind::framework && scene.elements.size() <= 60) {
     for (std::size_t e = 0; e < scene.elements.size(); ++e) {
       const auto& element = scene.elements[e];
       if (!element.label) continue;
@@ -822,8 +822,8 @@ std::string mechanism_svg(const Scene& scene, const MechanismDrawing& drawing) {
 
   for (std::size_t i = 0; i < scene.nodes.size(); ++i) {
     const P p = fit(at[i]);
-    if (scene.kind == "framework") draw_support(out, scene.nodes[i], p, view);
-    if (scene.kind == "network" && i >= scene.bodies.size()) continue;
+    if (scene.kind == io::ModelKind::framework) draw_support(out, scene.nodes[i], p, view);
+    if (scene.kind == io::ModelKind::network && i >= scene.bodies.size()) continue;
     const P q = fit(at[i] + shift * arrow[i]);
     out += fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"3.5\" fill=\"{}\" stroke=\"#222\" stroke-width=\"1.2\"/>\n", f2(q.x), f2(q.y),
                        scene.nodes[i].fixed ? "#222" : "white");

@@ -128,6 +128,10 @@ Json verdict_json(const design::Verdict& v) {
   if (!v.note.empty()) j["note"] = v.note;
   if (!v.generic.empty()) j["special_geometry"] = v.generic;
   if (v.near_rank_change) j["near_rank_change"] = rank_evidence_number(*v.near_rank_change);
+  if (v.geometric_counts && v.generic_counts) {
+    j["geometric_counts"] = {{"FN", v.geometric_counts->freedoms}, {"CN", v.geometric_counts->constraints}};
+    j["generic_counts"] = {{"FN", v.generic_counts->freedoms}, {"CN", v.generic_counts->constraints}};
+  }
   return j;
 }
 
@@ -143,7 +147,15 @@ Json lead_with_verdict(const design::Verdict& verdict, Json report, const std::s
 
 std::string verdict_text(const design::Verdict& v) {
   std::string t = fmt::format("Verdict: {}\n", printable_text(v.summary));
-  for (const auto& sentence : v.generic) t += fmt::format("  generic: {}\n", printable_text(sentence));
+  // Where the structural count differs, one line with both counts takes the place of the
+  // generic answer's sentences (they stay in the JSON and the detail): the block stays short.
+  if (!v.geometric_counts || !v.generic_counts)
+    for (const auto& sentence : v.generic) t += fmt::format("  generic: {}\n", printable_text(sentence));
+  else
+    t += fmt::format("  counts differ: FN = {}, CN = {} from the geometry; FN = {}, CN = {} by the structural (generic) count "
+                     "the structural groups use\n",
+                     v.geometric_counts->freedoms, v.geometric_counts->constraints, v.generic_counts->freedoms,
+                     v.generic_counts->constraints);
   // The block stays short (issue 35: within 25 lines): a few states, fewer participants each
   // when there are many; the rest is in the JSON and the detail below.
   const std::size_t participants_shown = v.states.size() > 2 ? kTextParticipantsOfMany : kTextParticipants;  // the others: --json

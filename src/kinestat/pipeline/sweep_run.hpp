@@ -2,7 +2,7 @@
 #pragma once
 // A design sweep run (docs/sweep.md): every variant of one shard of a spec, in ascending order,
 // read and analysed as `kinestat analyze --json` would, each turned into its line. The command
-// and the Python module both run sweeps through this.
+// and the Python module both run sweeps through this (the pipeline analyses each variant).
 
 #include <cstdint>
 #include <functional>
@@ -12,7 +12,7 @@
 #include "kinestat/design/sweep_grid.hpp"
 #include "kinestat/io/sweep_spec.hpp"
 
-namespace kinestat::report {
+namespace kinestat::pipeline {
 
 struct SweepRunOptions {
   design::SweepShard shard;          ///< the variants v with v mod shard.count == shard.index
@@ -28,4 +28,4 @@ struct SweepRunOptions {
 std::uint64_t run_sweep(const io::SweepSpec& spec, const SweepRunOptions& options,
                         const std::function<void(const std::string& line)>& on_line);
 
-}  // namespace kinestat::report
+}  // namespace kinestat::pipeline

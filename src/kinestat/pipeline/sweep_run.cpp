@@ -1,27 +1,27 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "kinestat/report/sweep_run.hpp"
+#include "kinestat/pipeline/sweep_run.hpp"
 
 #include <fmt/format.h>
 
 #include "kinestat/io/model_file.hpp"
 #include "kinestat/io/sweep_model.hpp"
 #include "kinestat/io/yaml_support.hpp"
-#include "kinestat/report/analysis_report.hpp"
+#include "kinestat/pipeline/model_pipeline.hpp"
 #include "kinestat/report/sweep_line.hpp"
 
-namespace kinestat::report {
+namespace kinestat::pipeline {
 
 namespace {
 
 // The line of one variant read from `text` (named `path` in messages); counts a failure.
-std::string variant_line(const SweepVariant& variant, const std::string& path, const std::string& text,
+std::string variant_line(const report::SweepVariant& variant, const std::string& path, const std::string& text,
                          const SweepRunOptions& options, std::uint64_t& failed) {
   try {
     const io::ModelFile model = io::parse_model_text(path, text);
-    return sweep_line_text(sweep_line(variant, analysis_report_json(model, options.tolerance), options.full));
+    return report::sweep_line_text(report::sweep_line(variant, analyze_report_json(model, options.tolerance), options.full));
   } catch (const Error& error) {
     ++failed;
-    return sweep_line_text(sweep_error_line(variant, error.what()));
+    return report::sweep_line_text(report::sweep_error_line(variant, error.what()));
   }
 }
 
@@ -45,7 +45,7 @@ std::uint64_t run_sweep(const io::SweepSpec& spec, const SweepRunOptions& option
   for (const auto& p : spec.parameters) sizes.push_back(p.values.size());
   std::uint64_t failed = 0;
   for (std::uint64_t v = shard.index; v < spec.count; v += shard.count) {
-    SweepVariant variant{v, spec.count, nullptr, {}};
+    report::SweepVariant variant{v, spec.count, nullptr, {}};
     if (model) {
       const std::vector<std::size_t> position = design::variant_position(v, sizes);
       variant.parameters = nlohmann::ordered_json::object();
@@ -66,7 +66,7 @@ std::uint64_t run_sweep(const io::SweepSpec& spec, const SweepRunOptions& option
       text = io::read_model_text(io::spec_relative_path(spec.path, spec.variants[k]));
     } catch (const io::InputError& error) {
       ++failed;
-      on_line(sweep_line_text(sweep_error_line(variant, io::InputError(spec.variant_where[k], error.problem()).what())));
+      on_line(report::sweep_line_text(report::sweep_error_line(variant, io::InputError(spec.variant_where[k], error.problem()).what())));
       continue;
     }
     on_line(variant_line(variant, spec.variants[k], text, options, failed));
@@ -74,4 +74,4 @@ std::uint64_t run_sweep(const io::SweepSpec& spec, const SweepRunOptions& option
   return failed;
 }
 
-}  // namespace kinestat::report
+}  // namespace kinestat::pipeline
