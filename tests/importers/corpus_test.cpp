@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "kinestat/framework/framework_analysis.hpp"
+#include "kinestat/io/input_error.hpp"
 #include "kinestat/io/mjcf_reader.hpp"
 #include "kinestat/io/model_file.hpp"
 #include "kinestat/io/sdformat_reader.hpp"
@@ -105,6 +106,19 @@ TEST(RealFilesCorpus, ImportsSayWhatTheyAssumed) {
   EXPECT_NE(floated.find("base: the root link 'base_link' floats"), std::string::npos) << floated;
   const std::string loose = joined(read_model_file(corpus + "sdformat/ball_prismatic_joint.sdf").notices);
   EXPECT_NE(loose.find("1 link(s) or group(s) of links joined to nothing else ('link3') float"), std::string::npos) << loose;
+}
+
+// The refusal that remains, as published: the rigid catheter of the same SPACAR repository uses
+// RBEAM (issue 37), refused at its first card with what to write instead.
+TEST(RealFilesCorpus, RbeamIsRefusedWhereWrittenWithWhatToChange) {
+  std::string message;
+  try {
+    (void)read_model_file(corpus + "spacar/RIG_CAT_S_3D_V2.dat");
+  } catch (const InputError& error) {
+    message = error.what();
+  }
+  EXPECT_NE(message.find("spacar/RIG_CAT_S_3D_V2.dat:5:1: error: unsupported SPACAR keyword 'RBEAM'"), std::string::npos) << message;
+  EXPECT_NE(message.find("write the part with BEAM, TRUSS, HINGE and PINBODY elements"), std::string::npos) << message;
 }
 
 // A URDF with two roots: the second is a loose link. Hand count: default, it floats (FN 6);

@@ -466,7 +466,9 @@ TEST(SpacarReader, ErrorsNameLineAndColumn) {
   EXPECT_EQ(error_of("X 1 0 0 nan\n"), "bad.dat:1:9: error: expected a coordinate (a finite number), found 'nan'");
   EXPECT_EQ(error_of("X 1 0 0 0\nX 3 1 0 0\nTRUSS 1 1 3\nCYLINDER 2 2 4\n"),
             "bad.dat:4:1: error: unsupported SPACAR keyword 'CYLINDER' in the kinematic part; kinestat reads X, BEAM, BEAMW, "
-            "TRUSS, HINGE, PINBODY, PLBEAM, PLTRUSS, PLHINGE, DYNE, RLSE, INPUTE, FIX, INPUTX and DYNX up to END or HALT");
+            "TRUSS, HINGE, PINBODY, PLBEAM, PLTRUSS, PLHINGE, DYNE, RLSE, INPUTE, FIX, INPUTX and DYNX up to END or HALT "
+            "(no public description of this element's card was found: write the part with BEAM, TRUSS, HINGE and PINBODY "
+            "elements, docs/formats.md)");
   // Hinges and pin bodies: what kinestat cannot express is refused, never guessed.
   const std::string beams = "X 1 0 0 0\nX 3 1 0 0\nX 5 2 0 0\nBEAM 1 1 2 3 4\nBEAM 2 3 6 5 7\n";
   EXPECT_EQ(error_of(beams + "HINGE 3 4 6 0 1\n"),

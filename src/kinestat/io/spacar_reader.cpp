@@ -264,8 +264,14 @@ class SpacarReader {
                                          r.keyword.column, k));
         return;
       }
-      fail(r.keyword, fmt::format("unsupported SPACAR keyword '{}' in the kinematic part; kinestat reads {} up to END or HALT",
-                                  k, spacar::kSupportedKeywords));
+      // RBEAM and CYLINDER are SPACAR elements whose cards no public description gives
+      // (docs/formats.md): the user is told which cards can replace them.
+      const bool element = k == "RBEAM" || k == "CYLINDER" || k == "PLRBEAM" || k == "SLIDER";
+      fail(r.keyword, fmt::format("unsupported SPACAR keyword '{}' in the kinematic part; kinestat reads {} up to END or HALT{}",
+                                  k, spacar::kSupportedKeywords,
+                                  element ? " (no public description of this element's card was found: write the part with "
+                                            "BEAM, TRUSS, HINGE and PINBODY elements, docs/formats.md)"
+                                          : ""));
     }
     PendingElement e;
     e.keyword = r.keyword;
