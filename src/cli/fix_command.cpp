@@ -46,6 +46,7 @@ struct FixOptions {
   std::string output_path;
   bool json = false;
   std::optional<double> tolerance;
+  int set = 1;  ///< `--set K`: 1 the verdict's first verified change set, K > 1 its alternative K - 1
 };
 
 // A model analysed as the reports show it: its verdict, and its model for applying changes.
@@ -111,14 +112,28 @@ std::string change_words(const design::DesignChange& c) {
   return text;
 }
 
+// "the verdict's first verified change set" or "the verdict's verified change set 2 (--set 2)".
+std::string set_words(int set) {
+  return set == 1 ? std::string("the verdict's first verified change set") : fmt::format("the verdict's verified change set {} (--set {})", set, set);
+}
+
+// The change set `set` of `verdict` (1: `changes`, K > 1: alternative K - 1); exit 2 when it has none.
+const std::vector<design::DesignChange>& chosen_set(const design::Verdict& verdict, int set, const std::string& path) {
+  if (set == 1) return verdict.changes;
+  if (static_cast<std::size_t>(set - 1) > verdict.alternatives.size())
+    throw io::InputError({"--set", 0, 0}, fmt::format("--set {}: the verdict of {} lists {}", set, path,
+                                                      design::counted(static_cast<long long>(verdict.alternatives.size()) + 1,
+                                                                      "verified change set", "verified change sets")));
+  return verdict.alternatives[static_cast<std::size_t>(set - 2)];
+}
+
 // The changed model's YAML text, headed by what was done to which file.
-std::string fixed_text(const io::ModelFile& file, const Judged& judged) {
-  std::vector<std::string> comments = {fmt::format("fixed by kinestat from {}: the verdict's first verified change set applied",
-                                                   io::printable_text(file.path))};
-  for (const auto& change : judged.verdict.changes) comments.push_back("  " + io::printable_text(change_words(change)));
+std::string fixed_text(const io::ModelFile& file, const Judged& judged, const std::vector<design::DesignChange>& changes, int set) {
+  std::vector<std::string> comments = {fmt::format("fixed by kinestat from {}: {} applied", io::printable_text(file.path), set_words(set))};
+  for (const auto& change : changes) comments.push_back("  " + io::printable_text(change_words(change)));
   comments.push_back(fmt::format("was: {}", io::printable_text(judged.verdict.summary)));
-  if (judged.network) return io::network_yaml(design::apply_network_change_set(*judged.network, judged.verdict.changes), comments);
-  return io::framework_yaml(design::apply_framework_change_set(*judged.framework, judged.verdict.changes), comments);
+  if (judged.network) return io::network_yaml(design::apply_network_change_set(*judged.network, changes), comments);
+  return io::framework_yaml(design::apply_framework_change_set(*judged.framework, changes), comments);
 }
 
 nlohmann::ordered_json fix_json(const FixOptions& o, const design::Verdict& was, const std::optional<std::string>& why) {
@@ -127,8 +142,9 @@ nlohmann::ordered_json fix_json(const FixOptions& o, const design::Verdict& was,
   fix["model"] = o.model_path;
   fix["written"] = why ? nlohmann::ordered_json() : nlohmann::ordered_json(o.output_path);
   fix["was"] = was.summary;
-  fix["changes"] = why ? nlohmann::ordered_json::array() : before["changes"];
-  if (!why && before.contains("verification")) fix["checked"] = before["verification"];
+  if (!why) fix["set"] = o.set;
+  fix["changes"] = why ? nlohmann::ordered_json::array() : o.set == 1 ? before["changes"] : before["alternatives"][static_cast<std::size_t>(o.set - 2)];
+  if (!why && o.set == 1 && before.contains("verification")) fix["checked"] = before["verification"];
   if (why) fix["nothing_written"] = *why;
   return fix;
 }
@@ -166,8 +182,10 @@ int run_fix(const FixOptions& o) {
                               was.note.empty() ? std::string() : " (" + was.note + ")"),
                   kExitNoVerifiedChange);
 
+  const std::vector<design::DesignChange>& changes = chosen_set(was, o.set, o.model_path);
+
   // The text to be written, read back and analysed as the user will read it.
-  const std::string text = fixed_text(file, judged);
+  const std::string text = fixed_text(file, judged, changes, o.set);
   const io::ModelFile reread = io::parse_model_text(o.output_path, text);
   const Judged now = judge(reread, o);
   const design::Verdict& v = now.verdict;
@@ -184,12 +202,15 @@ int run_fix(const FixOptions& o) {
     j["fix"] = fix_json(o, was, std::nullopt);
     std::cout << report::json_text(j);
   } else {
-    std::string t = fmt::format("Fixed: wrote {}: {} with the verdict's first verified change set applied:\n",
-                                io::printable_text(o.output_path), io::printable_text(o.model_path));
-    for (const auto& change : was.changes) t += "  - " + io::printable_text(change_words(change)) + "\n";
+    std::string t = fmt::format("Fixed: wrote {}: {} with {} applied:\n", io::printable_text(o.output_path),
+                                io::printable_text(o.model_path), set_words(o.set));
+    for (const auto& change : changes) t += "  - " + io::printable_text(change_words(change)) + "\n";
     t += fmt::format("  was: {}\n", io::printable_text(was.summary));
-    for (std::size_t i = 0; i < was.verification.size(); ++i)
-      t += fmt::format("  {} {}\n", i == 0 ? "checked:" : "        ", io::printable_text(was.verification[i]));
+    // What the verdict's re-analysis compared is reported for its first set; an alternative was
+    // verified the same way, and the read-back verdict below is the check of this file.
+    if (o.set == 1)
+      for (std::size_t i = 0; i < was.verification.size(); ++i)
+        t += fmt::format("  {} {}\n", i == 0 ? "checked:" : "        ", io::printable_text(was.verification[i]));
     t += fmt::format("The written file, read back and analysed:\n{}", report::verdict_text(v));
     std::cout << t;
   }
@@ -208,6 +229,10 @@ void register_fix(CLI::App& app, Action& action) {
       ->required();
   command->add_option("-o,--output", options->output_path, "The fixed model's file (.yaml or .yml; never one of the inputs)")->required();
   command->add_flag("--json", options->json, "Machine-readable report: the fixed model's verdict and what was changed");
+  command->add_option("--set", options->set,
+                      "Which verified change set to apply: 1 (default) the verdict's first, 2, 3, ... the verified alternatives "
+                      "it lists ('or instead')")
+      ->check(CLI::Range(1, 1000000));
   command->add_option("--tolerance", options->tolerance,
                       "Relative rank tolerance (fraction of the largest singular value); default max(rows,cols)*eps")
       ->check(positive_finite_number());

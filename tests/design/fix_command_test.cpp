@@ -191,6 +191,34 @@ TEST(FixCommand, DeltaKeepsThePlatformsThreeTranslations) {
   }
 }
 
+// `--set 2`: the Delta's verified alternative, one point-on-plane contact in place of a revolute at
+// the top of each parallelogram (T1a, T2b, T3a: f 1 -> 5). By hand: F = 21 + 3 x 4 = 33, l = 5,
+// FN - CN = 33 - 30 = 3; written and analysed again, CN = 0, FN = 3, and base-platform fij = 3.
+// The verdict lists two sets: `--set 3` is refused (exit 2), nothing written.
+TEST(FixCommand, DeltaAlternativeSet) {
+  const std::string out = (scratch_folder() / "delta-set-2.yaml").string();
+  const auto run = run_cli("fix --set 2 " + example_path("delta-robot.yaml") + " -o " + out);
+  ASSERT_EQ(run.exit_code, 0) << run.out << run.err;
+  EXPECT_NE(run.out.find("verified change set 2 (--set 2)"), std::string::npos) << run.out;
+  const std::string yaml = read_text(out);
+  int contacts = 0;
+  for (std::size_t at = yaml.find("type: point_on_plane"); at != std::string::npos; at = yaml.find("type: point_on_plane", at + 1)) ++contacts;
+  EXPECT_EQ(contacts, 3);
+  const Json after = analyse(out);
+  ASSERT_FALSE(after.empty());
+  EXPECT_EQ(after.at("F"), 33);
+  EXPECT_EQ(after.at("l"), 5);
+  EXPECT_EQ(after.at("FN"), 3);
+  EXPECT_EQ(after.at("CN"), 0);
+  EXPECT_EQ(pair_fij(after, "base", "platform"), 3);
+  EXPECT_TRUE(after.at("verdict").at("exactly_constrained").get<bool>());
+  const std::string refused = (scratch_folder() / "delta-set-3.yaml").string();
+  const auto third = run_cli("fix --set 3 " + example_path("delta-robot.yaml") + " -o " + refused);
+  EXPECT_EQ(third.exit_code, 2);
+  EXPECT_NE(third.err.find("lists 2 verified change sets"), std::string::npos) << third.err;
+  EXPECT_FALSE(std::filesystem::exists(refused));
+}
+
 // The planar four-bar analysed in space (CN = 3). By hand (see fix_change_application_test):
 // A spherical and B cylindrical along z give F = 7, l = 1, m = 6: FN = 1, CN = 0, and the coupler
 // keeps its one freedom relative to the ground.
