@@ -145,6 +145,13 @@ elements: [{type: truss, nodes: [A, C]}, {type: truss, nodes: [C, B]}]
   jb.erase("characteristic_length");
   ja.erase("rank_decision");
   jb.erase("rank_decision");
+  // The rigid parts' axes pass through points and translate at rates in file lengths.
+  for (auto* j : {&ja, &jb})
+    for (auto& mode : (*j)["modes"])
+      for (auto& part : mode["parts"]) {
+        part.erase("motion");
+        part.erase("twist");
+      }
   EXPECT_EQ(ja.dump(), jb.dump());
 }
 
