@@ -121,6 +121,24 @@ TEST(RealFilesCorpus, RbeamIsRefusedWhereWrittenWithWhatToChange) {
   EXPECT_NE(message.find("write the part with BEAM, TRUSS, HINGE and PINBODY elements"), std::string::npos) << message;
 }
 
+// libsdformat's "The norm of the xyz vector cannot be zero" carries no line: it is placed at the
+// first <xyz> of three zeros (line 4 here), as sdformat's own test model joint_axis_xyz_normalization.sdf.
+TEST(RealFilesCorpus, ZeroAxisIsLocated) {
+  if (!sdformat_reader_built_in()) GTEST_SKIP();
+  const std::string text =
+      "<sdf version='1.9'><model name='m'><link name='a'/><link name='b'/>\n"
+      "<joint name='j' type='revolute'><parent>a</parent><child>b</child>\n<axis>\n"
+      "<xyz>0 0 0</xyz>\n</axis></joint></model></sdf>\n";
+  std::string message;
+  try {
+    (void)parse_sdformat("zero.sdf", text);
+  } catch (const InputError& error) {
+    message = error.what();
+  }
+  EXPECT_NE(message.find("zero.sdf:4:1: error: libsdformat: The norm of the xyz vector cannot be zero"), std::string::npos)
+      << message;
+}
+
 // A URDF with two roots: the second is a loose link. Hand count: default, it floats (FN 6);
 // --base fixed welds it (FN 0, CN 0: one rigid coupling, no loop); --base floating lets both
 // float (FN 12).

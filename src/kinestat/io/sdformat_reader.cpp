@@ -128,6 +128,20 @@ std::string trimmed(const char* text) {
 // cannot stop the import (issue 37), and no mesh or texture is ever looked for. <inertial> too:
 // libsdformat refuses a link whose inertia is not physical (Gazebo's simple_arm), which says
 // nothing about its joints.
+// True for text that holds three numbers, all zero (an <xyz> axis libsdformat refuses).
+bool zero_vector(const char* text) {
+  if (!text) return false;
+  int count = 0;
+  for (const char* p = text;; ++count) {
+    char* end = nullptr;
+    const double x = std::strtod(p, &end);
+    if (end == p) break;
+    if (x != 0.0) return false;
+    p = end;
+  }
+  return count == 3;
+}
+
 // The name a joint named "world" has while libsdformat reads it (no SDFormat name can hold a space).
 constexpr const char* kRenamedWorldJoint = "joint named world";
 
@@ -203,6 +217,8 @@ class ModelFiles {
       const auto found = named_.find((*it)[1].str() + ":" + (*it)[2].str());
       if (found != named_.end()) return found->second;
     }
+    // "The norm of the xyz vector cannot be zero" names no element: the first zero <xyz>.
+    if (message.find("xyz vector") != std::string::npos && zero_axis_) return zero_axis_;
     return std::nullopt;
   }
 
@@ -274,6 +290,7 @@ class ModelFiles {
         continue;
       }
       if (name == "link" || name == "joint") ++file.links_and_joints;
+      if (name == "xyz" && !zero_axis_ && zero_vector(e->GetText())) zero_axis_ = SourceLocation{shown, e->GetLineNum(), 1};
       // SDFormat reserves the name "world" for the world frame; libsdformat refuses a joint so
       // named (Gazebo's fire_hose_long_curled has one), though the name says nothing of the
       // joint: it reaches libsdformat renamed and is reported under its own name.
@@ -443,6 +460,7 @@ class ModelFiles {
   const File* main_ = nullptr;
   std::map<std::string, int> stripped_;  ///< elements without kinematic meaning removed, by name
   int renamed_world_joints_ = 0;
+  std::optional<SourceLocation> zero_axis_;  ///< the first <xyz> of three zeros, for libsdformat's unlocated message
   std::unordered_map<std::string, SourceLocation> named_;  ///< "joint:j" -> where the first such element is
   std::vector<std::string> notices_;
 };
@@ -600,9 +618,12 @@ class SdformatReader {
       case sdf::JointType::GEARBOX:
       case sdf::JointType::INVALID:
         throw InputError(where(joint.Element()), fmt::format("joint '{}': gearbox joints couple two rotations by a ratio, "
-                                                             "which a coupling network cannot express", joint.Name()));
+                                                             "which a coupling network cannot express; remove the joint (its "
+                                                             "two revolute joints then count the gear's motions separately)",
+                                                             joint.Name()));
     }
-    builder.couple(scope + (joint.Name() == kRenamedWorldJoint ? std::string("world") : joint.Name()), type, link(joint, true, scope), link(joint, false, scope), g, where(joint.Element()));
+    const std::string name = joint.Name() == kRenamedWorldJoint ? std::string("world") : joint.Name();
+    builder.couple(scope + name, type, link(joint, true, scope), link(joint, false, scope), g, where(joint.Element()));
   }
 
   std::string path_;
