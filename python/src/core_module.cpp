@@ -220,6 +220,10 @@ py::dict rank_evidence(const linalg::RankDecision& d) {
     else if (value.is_number()) evidence[py::str(key)] = value.get<double>();
     else evidence[py::str(key)] = value.get<std::string>();
   }
+  // The same keys; the relative values at full precision (the JSON rounds them to three digits).
+  if (const auto distance = d.distance()) evidence["distance"] = *distance;
+  if (evidence.contains("relative_dropped") && !evidence["relative_dropped"].is_none()) evidence["relative_dropped"] = *d.relative_dropped();
+  if (evidence.contains("error_bound")) evidence["error_bound"] = d.error_bound / d.largest;
   return evidence;
 }
 

@@ -950,7 +950,7 @@ Verdict network_verdict(const Model& model, const network::NetworkResult& r, con
   const int declared = static_cast<int>(model.inputs.size());
   const int intended = model.inputs.empty() ? standing.FN - standing.idle : declared;
   v.intended_motions = intended;
-  v.intended_basis = model.inputs.empty() ? "FN less idle spins (no 'inputs:' declared)" : "the declared 'inputs:'";
+  v.intended_basis = model.inputs.empty() ? "none declared ('inputs:'): every motion but idle spins (FN less idle spins)" : "the declared 'inputs:'";
   const Tally start = tally(standing, intended);
   v.extra_motions = start.extra;
   v.redundant_constraints = r.CN + start.lost;  // inputs beyond the motions fight each other

@@ -248,7 +248,7 @@ Verdict sparse_network_verdict(const Model& model, const SparseNetworkResult& r,
   const int beyond = std::max(0, moving - intended);
   const int lost = std::max(0, intended - moving);
   v.intended_motions = intended;
-  v.intended_basis = model.inputs.empty() ? "FN less idle spins (no 'inputs:' declared)" : "the declared 'inputs:'";
+  v.intended_basis = model.inputs.empty() ? "none declared ('inputs:'): every motion but idle spins (FN less idle spins)" : "the declared 'inputs:'";
   v.extra_motions = idle_count + beyond;
   v.redundant_constraints = r.CN + lost;  // inputs beyond the motions fight each other
   v.exactly_constrained = v.extra_motions == 0 && v.redundant_constraints == 0;

@@ -71,7 +71,8 @@ Verdict structure_verdict(const StructureModel& model, const StructureResult& d)
   v.redundant_constraints = u.redundant;
   v.exactly_constrained = d.complete();
   v.intended_motions = model.input_count();
-  v.intended_basis = "the declared inputs";
+  v.intended_basis = model.input_count() == 0 ? "none declared ('inputs:' on the pairs): no motion intended"
+                                              : "the declared 'inputs:' of the pairs";
   v.summary = summary_sentence(v.extra_motions, v.redundant_constraints, v.intended_motions);
   if (!v.exactly_constrained && v.extra_motions == 0 && v.redundant_constraints == 0)
     v.summary = fmt::format("Not exactly constrained: bodies {} cannot be placed from the frame.", [&] {

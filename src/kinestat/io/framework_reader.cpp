@@ -83,7 +83,7 @@ class FrameworkReader {
   FrameworkModel read() {
     const TreeNode& root = file_.root();
     file_.check_keys(root, "the framework model",
-                     {"kinestat", kSchemaKey, "kind", "name", "description", "dimension", "units", "nodes", "supports", "independent", "elements"});
+                     {"kinestat", kSchemaKey, "kind", "name", "description", "dimension", "units", "nodes", "supports", "independent", "inputs", "elements"});
     if (auto name = file_.optional(root, "name"); name.defined()) model_.name = file_.string(name, "'name'");
     model_.dimension = read_planar(file_, root, "framework", false) ? 2 : 3;
     model_.units = read_units(file_, root);
@@ -97,7 +97,12 @@ class FrameworkReader {
     for (const auto& item : elements.items()) read_element(item, elements.size());
     for (std::size_t e = 0; e < model_.elements.size(); ++e) set_frame(e);
     if (auto supports = file_.optional(root, "supports"); supports.defined()) read_supports(supports);
-    if (auto independent = file_.optional(root, "independent"); independent.defined()) read_independent(independent);
+    // The intended motions: `inputs:`, the key every kind uses, or the seed's `independent:`.
+    const TreeNode independent = file_.optional(root, "independent"), inputs = file_.optional(root, "inputs");
+    if (independent.defined() && inputs.defined())
+      file_.fail(inputs, "'inputs' and 'independent' both declare the intended motions: give one of them");
+    if (inputs.defined()) read_independent(inputs);
+    else if (independent.defined()) read_independent(independent);
     return std::move(model_);
   }
 
