@@ -69,6 +69,16 @@ def _argument_error(problem):
     return error
 
 
+def _import_pyrigi(caller):
+    # PyRigi is optional: only the conversions need it, and they say so when it is missing.
+    try:
+        import pyrigi
+    except ImportError as error:
+        raise ImportError(f"{caller} needs PyRigi (the Python package pyrigi, https://pyrigi.github.io/PyRigi/), "
+                          f"which could not be imported: {error}") from error
+    return pyrigi
+
+
 def _tolerance(value):
     # As the command's --tolerance: a positive finite number (or None for the default rule).
     if value is None:
@@ -678,6 +688,81 @@ class Framework(_Model):
                 self._node(key, what)
         self.released = dict(released or {})
         self.name = name
+
+    @classmethod
+    def from_pyrigi(cls, framework, *, supports=None, name=None):
+        """A kinestat framework of bars from a PyRigi ``pyrigi.Framework``: one node per vertex,
+        in the order of ``framework.graph.vertex_list()``, named ``str(vertex)``; one bar per
+        edge; positions are the realization as floats (PyRigi's exact or symbolic coordinates,
+        such as ``sqrt(3)/2``, rounded to the nearest double). PyRigi frameworks have no
+        supports: ``supports`` (as in the constructor) and ``name`` are kinestat's own.
+        Raises ImportError when PyRigi cannot be imported, TypeError for anything but a
+        ``pyrigi.Framework``, ValueError for a dimension other than 2 or 3, a coordinate with a
+        free symbol, or two vertices with the same ``str``."""
+        pyrigi = _import_pyrigi("Framework.from_pyrigi")
+        if not isinstance(framework, pyrigi.Framework):
+            raise TypeError(f"from_pyrigi: expected a pyrigi.Framework, got {type(framework).__name__}")
+        if framework.dim not in (2, 3):
+            raise ValueError(f"from_pyrigi: a {framework.dim}-dimensional PyRigi framework: kinestat analyses "
+                             "planar (2) and spatial (3) frameworks")
+        graph = framework.graph
+        vertices = list(graph.vertex_list())
+        names = [str(vertex) for vertex in vertices]
+        if len(set(names)) != len(names):
+            twins = sorted({text for text in names if names.count(text) > 1})
+            raise ValueError(f"from_pyrigi: distinct vertices with the same name {twins[0]!r}: node names are str(vertex)")
+        realization = framework.realization(as_points=True)
+        positions = _np.zeros((len(vertices), framework.dim))
+        for i, vertex in enumerate(vertices):
+            for j, coordinate in enumerate(realization[vertex]):
+                try:
+                    positions[i, j] = float(coordinate)
+                except (TypeError, ValueError):
+                    raise ValueError(f"from_pyrigi: vertex {vertex!r}: coordinate {coordinate} is not a number "
+                                     "(a symbolic coordinate needs values for its symbols)") from None
+        index = {vertex: i for i, vertex in enumerate(vertices)}
+        bars = [[index[u], index[v]] for u, v in graph.edge_list()]
+        return cls(positions, bars=_np.array(bars, dtype=int).reshape(-1, 2), supports=supports,
+                   node_names=names, name=name)
+
+    def to_pyrigi(self, *, drop_supports=False):
+        """This framework as a PyRigi ``pyrigi.Framework``: its graph has a vertex per node and an
+        edge per bar, its realization the node positions (integral values as Python ints, so
+        PyRigi computes with them exactly; others as floats, on which PyRigi's symbolic methods
+        warn and ``numerical=True`` applies). Vertices are the node names, except that nodes named
+        "0", "1", ... in order (the default names) become the vertices 0, 1, ... as PyRigi numbers
+        them, so that ``Framework.from_pyrigi`` and ``to_pyrigi`` give each other's frameworks back.
+
+        PyRigi frameworks are bars and joints without supports: a framework with supports or
+        independent coordinates raises ValueError unless ``drop_supports=True``, which leaves
+        them out (the PyRigi framework is then the free one, whose trivial flexes are all the rigid
+        motions). Beams, rigid bodies and released deformations have no PyRigi counterpart and
+        always raise ValueError. Raises ImportError when PyRigi cannot be imported."""
+        pyrigi = _import_pyrigi("Framework.to_pyrigi")
+        others = [what for what, present in (("beams", len(self.beams)), ("rigid_bodies", self.rigid_bodies),
+                                             ("released", self.released)) if present]
+        if others:
+            raise ValueError(f"to_pyrigi: PyRigi frameworks are bars and joints: this framework has {others[0]}")
+        held = [what for what, table in (("supports", self.supports), ("independent", self.independent)) if table]
+        if held and not drop_supports:
+            raise ValueError(f"to_pyrigi: PyRigi frameworks have no supports: this framework has {held[0]}; "
+                             "to_pyrigi(drop_supports=True) leaves them out")
+        seen = {}
+        for k, (p, q) in enumerate(self.bars.tolist()):
+            pair = (min(p, q), max(p, q))
+            if pair in seen:
+                raise ValueError(f"to_pyrigi: bars {seen[pair]} and {k} join the same nodes: a PyRigi graph has one edge "
+                                 "between two vertices")
+            seen[pair] = k
+        if self.node_names == [str(i) for i in range(len(self.nodes))]:
+            vertices = list(range(len(self.nodes)))
+        else:
+            vertices = list(self.node_names)
+        graph = pyrigi.Graph()
+        graph.add_nodes_from(vertices)
+        graph.add_edges_from((vertices[p], vertices[q]) for p, q in self.bars.tolist())
+        realization = {vertex: row for vertex, row in zip(vertices, _rows(self.nodes, "nodes"))}
+        return pyrigi.Framework(graph, realization)
 
     def _node_index(self, index, where):
         # Node indices as Python counts them from 0, never from the end: -1 is a mistake here.

@@ -147,6 +147,10 @@ class Framework(_Model):
                  independent: Mapping[int | str, str | Sequence[str]] | None = None,
                  released: Mapping[int, Sequence[str]] | None = None, node_names: Sequence[str] | None = None,
                  name: str | None = None) -> None: ...
+    @classmethod
+    def from_pyrigi(cls, framework: Any, *, supports: Mapping[int | str, str | Sequence[str]] | None = None,
+                    name: str | None = None) -> Framework: ...  # framework: a pyrigi.Framework
+    def to_pyrigi(self, *, drop_supports: bool = False) -> Any: ...  # a pyrigi.Framework
 
 class Network(_Model):
     def __init__(self, types: Sequence[str], between: npt.ArrayLike, points: npt.ArrayLike | None = None,
