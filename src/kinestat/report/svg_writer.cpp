@@ -408,8 +408,14 @@ std::vector<std::string> verdict_lines(const Scene& scene) {
     content = "Verdict: " + scene.verdict->summary;
     if (!scene.verdict->changes.empty()) {
       std::string changes;
-      for (const auto& change : scene.verdict->changes)
-        changes += (changes.empty() ? "" : "; ") + change.action + " " + change.target + (change.becomes.empty() ? "" : " -> " + change.becomes);
+      for (const auto& change : scene.verdict->changes) {
+        // "remove bar 8", "add bar E–G (a bar of length 2)", "release T1a -> spherical".
+        std::string text = change.action + " " + change.target;
+        if (change.action == "remove" || change.action == "add") text = change.action + " " + change.target_kind + " " + change.target;
+        if (change.action == "add" && !change.becomes.empty()) text += " (" + change.becomes + ")";
+        else if (change.action != "remove" && !change.becomes.empty()) text += " -> " + change.becomes;
+        changes += (changes.empty() ? "" : "; ") + text;
+      }
       content += " Change: " + changes + (scene.verdict->changes_verified ? " (verified by re-analysis)." : ".");
     }
   } else {
