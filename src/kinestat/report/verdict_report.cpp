@@ -69,8 +69,15 @@ std::string short_change_text(const design::DesignChange& c) {
 // io::printable_text.
 std::string change_text(const design::DesignChange& c) {
   std::string text = fmt::format("{} {} {}", c.action, c.target_kind, printable_text(c.target));
-  if (!c.from.empty() && c.becomes != "removed") text += fmt::format(": {} -> {}", printable_text(c.from), printable_text(c.becomes));
-  else text += fmt::format(" -> {}", printable_text(c.becomes));
+  // "remove bar 5", "add bar E–G (a bar of length 2)", "release coupling J1: revolute -> spherical".
+  if (c.becomes == "removed") {
+  } else if (c.action == "add") {
+    text += fmt::format(" ({})", printable_text(c.becomes));
+  } else if (!c.from.empty()) {
+    text += fmt::format(": {} -> {}", printable_text(c.from), printable_text(c.becomes));
+  } else {
+    text += fmt::format(" -> {}", printable_text(c.becomes));
+  }
   std::vector<std::string> geometry;
   for (const auto& [key, value] : c.geometry)
     if (key != "point") geometry.push_back(fmt::format("{} {}", key, vector_text(value)));
