@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -108,17 +109,28 @@ TEST(RealFilesCorpus, ImportsSayWhatTheyAssumed) {
   EXPECT_NE(loose.find("1 link(s) or group(s) of links joined to nothing else ('link3') float"), std::string::npos) << loose;
 }
 
-// The refusal that remains, as published: the rigid catheter of the same SPACAR repository uses
-// RBEAM (issue 37), refused at its first card with what to write instead.
-TEST(RealFilesCorpus, RbeamIsRefusedWhereWrittenWithWhatToChange) {
-  std::string message;
-  try {
-    (void)read_model_file(corpus + "spacar/RIG_CAT_S_3D_V2.dat");
-  } catch (const InputError& error) {
-    message = error.what();
-  }
-  EXPECT_NE(message.find("spacar/RIG_CAT_S_3D_V2.dat:5:1: error: unsupported SPACAR keyword 'RBEAM'"), std::string::npos) << message;
-  EXPECT_NE(message.find("write the part with BEAM, TRUSS, HINGE and PINBODY elements"), std::string::npos) << message;
+// The rigid catheter's RBEAM (issue 37) read as a rigid link: RLSE of an RBEAM is refused at
+// its card (a rigid beam has no deformation), and an element SPACAR's public texts do not
+// describe is still refused with what to write instead.
+TEST(RealFilesCorpus, RbeamReleaseAndUndescribedElementsAreRefusedWhereWritten) {
+  const auto refusal = [](const std::string& text) {
+    const auto path = std::filesystem::temp_directory_path() / "kinestat_corpus_rbeam.dat";
+    std::ofstream(path) << text;
+    std::string message;
+    try {
+      (void)read_model_file(path.string());
+    } catch (const InputError& error) {
+      message = error.what();
+    }
+    std::filesystem::remove(path);
+    return message;
+  };
+  const std::string head = "X 1 0 0 0\nX 3 1 0 0\nRBEAM 1 1 2 3 0 1 0\n";
+  const std::string released = refusal(head + "RLSE 1 1\nEND\n");
+  EXPECT_NE(released.find(":4:1: error: RLSE of RBEAM 1: a rigid beam has no deformation"), std::string::npos) << released;
+  const std::string cylinder = refusal(head + "CYLINDER 2 1 2 3 0 1 0\nEND\n");
+  EXPECT_NE(cylinder.find(":4:1: error: unsupported SPACAR keyword 'CYLINDER'"), std::string::npos) << cylinder;
+  EXPECT_NE(cylinder.find("write the part with BEAM, TRUSS, HINGE and PINBODY elements"), std::string::npos) << cylinder;
 }
 
 // libsdformat's "The norm of the xyz vector cannot be zero" carries no line: it is placed at the

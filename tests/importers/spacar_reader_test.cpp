@@ -285,6 +285,35 @@ TEST(SpacarReader, TwoSpacarLightHingesInSeriesAreAUniversalJoint) {
   EXPECT_NEAR(cosines.minCoeff(), 1.0, 1e-12) << cosines.transpose();
 }
 
+// RBEAM e p rp q: q = p + R(rp)·(q0 − p0), three constraints (by hand, a link from (0,0,0)
+// to (1,0,0)). Base position and orientation fixed: q is determined (0 motions, 0 redundant);
+// q fixed as well: its 3 translations are held twice (3 redundant). Orientation rp free, base
+// point fixed: the link turns about p, 3 rotations and q follows (3 motions); q fixed too: the
+// rotations about y and z move q, the spin about the link's axis x does not, so of q's 3
+// constraints on 3 rotations 2 are independent (1 motion, 1 redundant).
+TEST(SpacarReader, RigidBeamHoldsItsEndOnTheBody) {
+  const std::string link = "X 1 0 0 0\nX 3 1 0 0\nRBEAM 1 1 2 3 0 1 0\nFIX 1\n";
+  const auto counts = [](const std::string& text) {
+    const auto a = framework::analyse_framework(parse_spacar("rbeam.dat", text).model);
+    return std::pair{a.mechanisms, a.self_stresses};
+  };
+  using Counts = std::pair<Eigen::Index, Eigen::Index>;
+  EXPECT_EQ(counts(link + "FIX 2\nEND\n"), (Counts{0, 0}));
+  EXPECT_EQ(counts(link + "FIX 2\nFIX 3\nEND\n"), (Counts{0, 3}));
+  EXPECT_EQ(counts(link + "END\n"), (Counts{3, 0}));
+  EXPECT_EQ(counts(link + "FIX 3\nEND\n"), (Counts{1, 1}));
+  // q carrying an orientation of its own (the next link's rp): its rotations stay free of the
+  // first link's, so a second link hangs from q by a spherical joint (3 motions more than the
+  // first link's 0 when the base is held).
+  const std::string chain = "X 1 0 0 0\nX 3 1 0 0\nX 5 2 0 0\nRBEAM 1 1 2 3\nRBEAM 2 3 4 5\nFIX 1\nFIX 2\n";
+  EXPECT_EQ(counts(chain + "END\n"), (Counts{3, 0}));
+  const SpacarImport imported = parse_spacar("rbeam.dat", chain + "END\n");
+  const auto& first = element(imported.model, "1");
+  EXPECT_EQ(first.type, ElementType::rigid_body);
+  EXPECT_EQ(first.roles, (std::vector<R>{R::fixed, R::fixed, R::fixed, R::released, R::released, R::released}));
+  EXPECT_EQ(element(imported.model, "2").roles, std::vector<R>(6, R::fixed));  // node 5: no orientation, held
+}
+
 TEST(SpacarReader, HingeToABareOrientationTakesItsNumberedPositionNode) {
   // Orientation node 8 is used only by hinge 3, on the ground's orientation 2, whose pin body
   // carries node 4 (already turned by node 5): SPACAR Light's numbering gives 8 to node 7.
@@ -466,7 +495,7 @@ TEST(SpacarReader, ErrorsNameLineAndColumn) {
   EXPECT_EQ(error_of("X 1 0 0 nan\n"), "bad.dat:1:9: error: expected a coordinate (a finite number), found 'nan'");
   EXPECT_EQ(error_of("X 1 0 0 0\nX 3 1 0 0\nTRUSS 1 1 3\nCYLINDER 2 2 4\n"),
             "bad.dat:4:1: error: unsupported SPACAR keyword 'CYLINDER' in the kinematic part; kinestat reads X, BEAM, BEAMW, "
-            "TRUSS, HINGE, PINBODY, PLBEAM, PLTRUSS, PLHINGE, DYNE, RLSE, INPUTE, FIX, INPUTX and DYNX up to END or HALT "
+            "RBEAM, TRUSS, HINGE, PINBODY, PLBEAM, PLTRUSS, PLHINGE, DYNE, RLSE, INPUTE, FIX, INPUTX and DYNX up to END or HALT "
             "(no public description of this element's card was found: write the part with BEAM, TRUSS, HINGE and PINBODY "
             "elements, docs/formats.md)");
   // Hinges and pin bodies: what kinestat cannot express is refused, never guessed.
@@ -478,9 +507,11 @@ TEST(SpacarReader, ErrorsNameLineAndColumn) {
             "two orientations through their relative rotations about the global axes, so a hinge about another axis is not "
             "supported");
   EXPECT_EQ(error_of(beams + "HINGE 3 4 6 0 0 0\n"), "bad.dat:6:13: error: element 3: the hinge axis is the zero vector");
-  EXPECT_EQ(error_of(beams + "HINGE 3 4 9 0 0 1\n"),
-            "bad.dat:6:11: error: orientation node 9 of hinge 3 belongs to no position node: no BEAM or PINBODY uses it "
-            "with one, and no X line defines node 8");
+  // Two orientation nodes that nothing places (an orientation node hinged to a placed one
+  // takes its position: the rigid catheter's hinge chains).
+  EXPECT_EQ(error_of(beams + "HINGE 3 8 9 0 0 1\n"),
+            "bad.dat:6:9: error: orientation node 8 of hinge 3 belongs to no position node: no BEAM, RBEAM or PINBODY uses "
+            "it or a node hinged to it, and no X line defines node 7");
   EXPECT_EQ(error_of(beams + "HINGE 3 4 4 0 0 1\n"),
             "bad.dat:6:11: error: element 3 has the same orientation node 4 at both ends");
   EXPECT_EQ(error_of(beams + "HINGE 3 4 6 0 0 1\nRLSE 3 2\n"),
@@ -508,7 +539,7 @@ TEST(SpacarReader, ErrorsNameLineAndColumn) {
             "bad.dat:4:1: error: TRUSS mixes planar and spatial elements (PLTRUSS on line 3, TRUSS on line 4)");
   EXPECT_EQ(error_of("1 2 3\n"), "bad.dat:1:1: error: expected a keyword (X, BEAM, ...) before numbers");
   EXPECT_EQ(error_of("X 1 0 0 0\nEND\n"),
-            "bad.dat:2:1: error: no elements: a SPACAR model needs BEAM, BEAMW, TRUSS, HINGE, PINBODY, PLBEAM, PLTRUSS or "
+            "bad.dat:2:1: error: no elements: a SPACAR model needs BEAM, BEAMW, RBEAM, TRUSS, HINGE, PINBODY, PLBEAM, PLTRUSS or "
             "PLHINGE lines");
   EXPECT_EQ(error_of("X 1 0 0 0\nX 3 0 0 0\nTRUSS 1 1 3\n"), "bad.dat:3:11: error: zero-length element 1: nodes 1 and 3 coincide");
   EXPECT_EQ(error_of("X 1 0 0 0\nX 3 1 0 0\nTRUSS 1 1 3\nFIX 7\n"),

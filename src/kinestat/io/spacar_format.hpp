@@ -10,8 +10,9 @@ namespace kinestat::io::spacar {
 
 /// What an element keyword describes: a truss (two position nodes), a beam (position and
 /// orientation node at each end), a hinge (two orientation nodes) or a pin body (a position and
-/// orientation node of a body and a position node it carries); planar or spatial.
-enum class ElementKind { truss, beam, hinge, pin_body };
+/// orientation node of a body and a position node it carries) or a rigid beam (RBEAM: a position
+/// and orientation node at p and a position node q without an orientation); planar or spatial.
+enum class ElementKind { truss, beam, hinge, pin_body, rigid_beam };
 
 struct ElementKeyword {
   ElementKind kind = ElementKind::truss;
@@ -19,12 +20,13 @@ struct ElementKeyword {
 };
 
 /// The element keywords kinestat reads: BEAM, BEAMW, TRUSS, HINGE, PINBODY, PLBEAM, PLTRUSS,
-/// PLHINGE (upper case).
+/// PLHINGE, RBEAM (upper case).
 inline std::optional<ElementKeyword> element_keyword(std::string_view keyword) {
   if (keyword == "BEAM" || keyword == "BEAMW") return ElementKeyword{ElementKind::beam, false};
   if (keyword == "TRUSS") return ElementKeyword{ElementKind::truss, false};
   if (keyword == "HINGE") return ElementKeyword{ElementKind::hinge, false};
   if (keyword == "PINBODY") return ElementKeyword{ElementKind::pin_body, false};
+  if (keyword == "RBEAM") return ElementKeyword{ElementKind::rigid_beam, false};
   if (keyword == "PLBEAM") return ElementKeyword{ElementKind::beam, true};
   if (keyword == "PLTRUSS") return ElementKeyword{ElementKind::truss, true};
   if (keyword == "PLHINGE") return ElementKeyword{ElementKind::hinge, true};
@@ -44,6 +46,6 @@ inline bool is_dynamic_keyword(std::string_view keyword) { return keyword == "DY
 inline bool is_output_keyword(std::string_view keyword) { return keyword == "OUTLEVEL"; }
 
 inline constexpr std::string_view kSupportedKeywords =
-    "X, BEAM, BEAMW, TRUSS, HINGE, PINBODY, PLBEAM, PLTRUSS, PLHINGE, DYNE, RLSE, INPUTE, FIX, INPUTX and DYNX";
+    "X, BEAM, BEAMW, RBEAM, TRUSS, HINGE, PINBODY, PLBEAM, PLTRUSS, PLHINGE, DYNE, RLSE, INPUTE, FIX, INPUTX and DYNX";
 
 }  // namespace kinestat::io::spacar

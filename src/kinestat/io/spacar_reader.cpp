@@ -72,7 +72,7 @@ class SpacarReader {
       if (r.keyword.text == "X") read_position(r);
     for (const Record& r : records_) read_element(r);
     if (elements_.empty())
-      fail(end_, "no elements: a SPACAR model needs BEAM, BEAMW, TRUSS, HINGE, PINBODY, PLBEAM, PLTRUSS or PLHINGE lines");
+      fail(end_, "no elements: a SPACAR model needs BEAM, BEAMW, RBEAM, TRUSS, HINGE, PINBODY, PLBEAM, PLTRUSS or PLHINGE lines");
     build_nodes();
     build_elements();
     for (const Record& r : records_) read_role(r);
@@ -264,9 +264,9 @@ class SpacarReader {
                                          r.keyword.column, k));
         return;
       }
-      // RBEAM and CYLINDER are SPACAR elements whose cards no public description gives
-      // (docs/formats.md): the user is told which cards can replace them.
-      const bool element = k == "RBEAM" || k == "CYLINDER" || k == "PLRBEAM" || k == "SLIDER";
+      // CYLINDER, PLRBEAM and SLIDER are SPACAR elements whose cards no public description
+      // gives (docs/formats.md): the user is told which cards can replace them.
+      const bool element = k == "CYLINDER" || k == "PLRBEAM" || k == "SLIDER";
       fail(r.keyword, fmt::format("unsupported SPACAR keyword '{}' in the kinematic part; kinestat reads {} up to END or HALT{}",
                                   k, spacar::kSupportedKeywords,
                                   element ? " (no public description of this element's card was found: write the part with "
@@ -290,6 +290,9 @@ class SpacarReader {
       expect_count(r, {6}, "an element number, two orientation nodes and the hinge axis x y z");
     } else if (k == "PLHINGE") {
       expect_count(r, {3}, "an element number and two orientation nodes");
+    } else if (k == "RBEAM") {
+      expect_count(r, {4, 7}, "an element number, the position and orientation node at p, the position node q, and the "
+                              "local y direction");
     } else {
       expect_count(r, {4}, "an element number, the position and orientation node of the body, and the position node it carries");
     }
@@ -310,6 +313,7 @@ class SpacarReader {
         if (k == "HINGE") e.axis_slot = hinge_axis_slot(r, e.number);
         break;
       case spacar::ElementKind::pin_body:
+      case spacar::ElementKind::rigid_beam:  // the local y direction orients the section only
         e.p = position_node(r.values[1]);
         e.rp = orientation_node(r.values[2]);
         e.q = position_node(r.values[3]);
@@ -386,6 +390,8 @@ class SpacarReader {
       } else if (e.kind == ElementKind::pin_body) {
         attach(e.p, e.rp, e.node_tokens[1]);
         carried_by_body.emplace(e.rp, e.q);
+      } else if (e.kind == ElementKind::rigid_beam) {
+        attach(e.p, e.rp, e.node_tokens[1]);
       }
     }
     // SPACAR Light writes a hinge between user nodes p and q as HINGE e rp rq and PINBODY e+1
@@ -398,19 +404,43 @@ class SpacarReader {
       if (const long carrier = hinge_carrier(carried_by_body, h.rp, h.rq); carrier != 0) attach(carrier, h.rq, h.node_tokens[1]);
       for (std::size_t k = 0; k < 2; ++k) {
         const long r = k == 0 ? h.rp : h.rq;
-        if (orientation_owner_.count(r)) continue;
-        if (!positions_.count(r - 1))
-          fail(h.node_tokens[k], fmt::format("orientation node {} of hinge {} belongs to no position node: no BEAM or "
-                                             "PINBODY uses it with one, and no X line defines node {}", r, h.number, r - 1));
-        attach(r - 1, r, h.node_tokens[k]);
+        if (!orientation_owner_.count(r) && positions_.count(r - 1)) attach(r - 1, r, h.node_tokens[k]);
       }
     }
+    // An orientation node that only hinges use (SPACAR's rigid catheter chains three hinges
+    // through two such nodes to make a spherical joint) takes the position of the hinge's other
+    // orientation node, repeated until the chain is placed.
+    for (bool placed = true; placed;) {
+      placed = false;
+      for (const PendingElement& h : elements_) {
+        if (h.kind != ElementKind::hinge) continue;
+        const bool has_p = orientation_owner_.count(h.rp) != 0, has_q = orientation_owner_.count(h.rq) != 0;
+        if (has_p == has_q) continue;
+        if (has_p) attach(orientation_owner_.at(h.rp), h.rq, h.node_tokens[1]);
+        else attach(orientation_owner_.at(h.rq), h.rp, h.node_tokens[0]);
+        placed = true;
+      }
+    }
+    for (const PendingElement& h : elements_) {
+      if (h.kind != ElementKind::hinge) continue;
+      for (std::size_t k = 0; k < 2; ++k) {
+        const long r = k == 0 ? h.rp : h.rq;
+        if (!orientation_owner_.count(r))
+          fail(h.node_tokens[k], fmt::format("orientation node {} of hinge {} belongs to no position node: no BEAM, RBEAM or "
+                                             "PINBODY uses it or a node hinged to it, and no X line defines node {}",
+                                             r, h.number, r - 1));
+      }
+    }
+    // An RBEAM's end q without an orientation node is given the body's rotations (see
+    // build_elements).
+    for (const PendingElement& e : elements_)
+      if (e.kind == ElementKind::rigid_beam && orientations_at_[e.q].empty()) welded_ends_.insert(e.q);
     for (long n : position_order_) {
       Node node;
       node.name = spacar_node_name(n);
       node.position = positions_[n];
       const auto& list = orientations_at_[n];
-      node.rotational = !list.empty();
+      node.rotational = !list.empty() || welded_ends_.count(n) != 0;
       position_index_[n] = model_.nodes.size();
       if (!list.empty()) orientation_index_[list[0]] = model_.nodes.size();
       model_.nodes.push_back(std::move(node));
@@ -455,6 +485,29 @@ class SpacarReader {
           element.nodes = {orientation_index_.at(e.rp), carried};
           element.roles.assign(framework::deformation_count(model_.dimension, element), DeformationRole::released);
           for (std::size_t k = 0; k < translations; ++k) element.roles[k] = DeformationRole::fixed;
+          break;
+        }
+        case spacar::ElementKind::rigid_beam: {
+          // RBEAM e p rp q: q = p + R(rp)·(q0 − p0), three constraints, and q has no orientation
+          // node of its own. A rigid body on rp (its reference node: position p, orientation rp)
+          // carrying q holds q's three relative translations. Framework rigid-body nodes are
+          // rotational, so q's relative rotations must be dealt with without changing the count:
+          // when q has an orientation from another element (the next link's rp) they are
+          // released, as in PINBODY (3 constraints); when it has none, q is given three rotations
+          // that are held to the body's (3 coordinates and 3 constraints more, which determine
+          // each other, so the motions and redundancies are those of the 3 constraints alone). A
+          // beam with every deformation held would also hold q's orientation, which is not
+          // SPACAR's RBEAM when q carries one.
+          const std::size_t carried = position_index_.at(e.q);
+          element.type = ElementType::rigid_body;
+          element.nodes = {orientation_index_.at(e.rp), carried};
+          const bool welded = welded_ends_.count(e.q) != 0;
+          element.roles.assign(framework::deformation_count(model_.dimension, element),
+                               welded ? DeformationRole::fixed : DeformationRole::released);
+          for (std::size_t k = 0; k < translations; ++k) element.roles[k] = DeformationRole::fixed;
+          const Eigen::Vector3d axis = model_.nodes[carried].position - model_.nodes[element.nodes[0]].position;
+          if (!(axis.norm() > kCoincident * length))
+            fail(e.node_tokens.back(), fmt::format("zero-length element {}: nodes {} and {} coincide", e.number, e.p, e.q));
           break;
         }
         case spacar::ElementKind::truss:
@@ -535,6 +588,9 @@ class SpacarReader {
     if (pending.kind == spacar::ElementKind::pin_body && role != DeformationRole::fixed)
       fail(r.keyword, fmt::format("{} of PINBODY {}: kinestat keeps a pin body rigid (its deformations are not documented "
                                   "publicly, so which is which is not known)", k, number));
+    if (pending.kind == spacar::ElementKind::rigid_beam && role != DeformationRole::fixed)
+      fail(r.keyword, fmt::format("{} of RBEAM {}: a rigid beam has no deformation to release; write a BEAM to let it deform",
+                                  k, number));
     const std::vector<int> map = deformation_map(pending, element);
     std::vector<std::size_t> list;  // SPACAR deformation numbers - 1
     if (r.values.size() == 1) {
@@ -571,7 +627,7 @@ class SpacarReader {
         if (slot != e.axis_slot) map.push_back(slot);
       return map;
     }
-    if (e.kind == spacar::ElementKind::pin_body) return {0, 1, 2};
+    if (e.kind == spacar::ElementKind::pin_body || e.kind == spacar::ElementKind::rigid_beam) return {0, 1, 2};
     std::vector<int> map;
     for (std::size_t d = 0; d < element.roles.size(); ++d) map.push_back(static_cast<int>(d));
     if (e.warping) map.insert(map.end(), {-1, -1});
@@ -632,6 +688,7 @@ class SpacarReader {
   std::set<std::string> ignored_kinematic_;
   std::set<long> warping_nodes_;
   std::vector<std::string> notices_;
+  std::set<long> welded_ends_;  // RBEAM end nodes q without an orientation node (given the body's rotations)
   std::string warped_;
   FrameworkModel model_;
   std::map<long, Eigen::Vector3d> positions_;
