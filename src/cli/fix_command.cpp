@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // `kinestat fix MODEL -o FIXED`: the design the verdict proposes, written as a model file. The
 // verdict's first verified change set is applied to the model (networks:
-// design::apply_network_change_set, frameworks: design::apply_framework_change_set) and the
-// result written as kinestat YAML — for an imported URDF, SDFormat, MJCF or SPACAR file, the
+// design::apply_network_change_set, frameworks: design::apply_framework_change_set, structures:
+// design::apply_structure_change_set) and the result written as kinestat YAML — for an imported URDF, SDFormat, MJCF or SPACAR file, the
 // converted model with the changes applied. Before anything is written, the text about to be
 // written is read back and analysed again: the file is written only when that analysis is
-// exactly constrained with the intended motions of the original, and the report shows its
-// verdict. Exit codes: 0 written, 2 bad input, 3 internal error, kExitAlreadyExact and
+// exactly constrained with the intended motions of the original (a structure: with the inputs
+// the changes leave, since its intended motions are its declared inputs), and the report shows
+// its verdict. Exit codes: 0 written, 2 bad input, 3 internal error, kExitAlreadyExact and
 // kExitNoVerifiedChange (nothing written, docs/report.md).
 
 #include <fmt/format.h>
@@ -21,13 +22,16 @@
 #include "cli/option_checks.hpp"
 #include "kinestat/design/framework_change_application.hpp"
 #include "kinestat/design/network_change_application.hpp"
+#include "kinestat/design/structure_change_application.hpp"
 #include "kinestat/io/framework_yaml_writer.hpp"
 #include "kinestat/io/model_file.hpp"
 #include "kinestat/io/network_yaml_writer.hpp"
 #include "kinestat/io/output_file.hpp"
+#include "kinestat/io/structure_yaml_writer.hpp"
 #include "kinestat/io/printable_text.hpp"
 #include "kinestat/pipeline/framework_pipeline.hpp"
 #include "kinestat/pipeline/network_pipeline.hpp"
+#include "kinestat/pipeline/structure_pipeline.hpp"
 #include "kinestat/report/json_text.hpp"
 #include "kinestat/report/verdict_report.hpp"
 
@@ -54,6 +58,7 @@ struct Judged {
   design::Verdict verdict;
   std::optional<network::Model> network;
   std::optional<framework::FrameworkModel> framework;
+  std::optional<structure::StructureModel> structure;
 };
 
 Judged judge_network(const io::LoadedNetwork& loaded, const std::string& path, const FixOptions& o) {
@@ -79,12 +84,22 @@ Judged judge_framework(const framework::FrameworkModel& model, const FixOptions&
   return judged;
 }
 
+// A structure model's verdict as `kinestat structure` gives it (the path it takes through the
+// pipeline); the other placements of the inputs do not enter the verdict and are skipped.
+Judged judge_structure(const structure::StructureModel& model) {
+  pipeline::StructureRequest request;
+  request.max_transformations = 0;
+  Judged judged;
+  judged.verdict = pipeline::analyse_structure(model, request).verdict;
+  judged.structure = model;
+  return judged;
+}
+
 Judged judge(const io::ModelFile& file, const FixOptions& o) {
   if (file.network) return judge_network(*file.network, file.path, o);
   if (file.framework) return judge_framework(*file.framework, o);
-  throw io::InputError({file.path, 1, 1},
-                       "'kinestat fix' writes networks and frameworks; a model of kind 'structure' has no geometry to change "
-                       "(its verdict counts structural groups: change its 'inputs:' and pairs as 'kinestat structure' proposes)");
+  if (file.structure) return judge_structure(*file.structure);
+  throw Error(fmt::format("{}: no model read", file.path), {}, 3);
 }
 
 std::string lower_extension(const std::string& path) {
@@ -127,13 +142,23 @@ const std::vector<design::DesignChange>& chosen_set(const design::Verdict& verdi
   return verdict.alternatives[static_cast<std::size_t>(set - 2)];
 }
 
-// The changed model's YAML text, headed by what was done to which file.
-std::string fixed_text(const io::ModelFile& file, const Judged& judged, const std::vector<design::DesignChange>& changes, int set) {
+// The changed model's YAML text, headed by what was done to which file, and the intended motions
+// its verdict must keep: the original's, or for a structure the inputs the changes leave (a
+// structure's intended motions are its declared inputs, which "drive" and "undrive" change).
+struct FixedText {
+  std::string text;
+  int intended_motions = 0;
+};
+
+FixedText fixed_text(const io::ModelFile& file, const Judged& judged, const std::vector<design::DesignChange>& changes, int set) {
   std::vector<std::string> comments = {fmt::format("fixed by kinestat from {}: {} applied", io::printable_text(file.path), set_words(set))};
   for (const auto& change : changes) comments.push_back("  " + io::printable_text(change_words(change)));
   comments.push_back(fmt::format("was: {}", io::printable_text(judged.verdict.summary)));
-  if (judged.network) return io::network_yaml(design::apply_network_change_set(*judged.network, changes), comments);
-  return io::framework_yaml(design::apply_framework_change_set(*judged.framework, changes), comments);
+  const int intended = judged.verdict.intended_motions;
+  if (judged.network) return {io::network_yaml(design::apply_network_change_set(*judged.network, changes), comments), intended};
+  if (judged.framework) return {io::framework_yaml(design::apply_framework_change_set(*judged.framework, changes), comments), intended};
+  const structure::StructureModel changed = design::apply_structure_change_set(*judged.structure, changes);
+  return {io::structure_yaml(changed, comments), changed.input_count()};
 }
 
 nlohmann::ordered_json fix_json(const FixOptions& o, const design::Verdict& was, const std::optional<std::string>& why) {
@@ -185,14 +210,14 @@ int run_fix(const FixOptions& o) {
   const std::vector<design::DesignChange>& changes = chosen_set(was, o.set, o.model_path);
 
   // The text to be written, read back and analysed as the user will read it.
-  const std::string text = fixed_text(file, judged, changes, o.set);
+  const auto [text, intended_motions] = fixed_text(file, judged, changes, o.set);
   const io::ModelFile reread = io::parse_model_text(o.output_path, text);
   const Judged now = judge(reread, o);
   const design::Verdict& v = now.verdict;
-  if (!v.exactly_constrained || v.intended_motions != was.intended_motions)
+  if (!v.exactly_constrained || v.intended_motions != intended_motions)
     throw Error(fmt::format("the fixed model, read back, is not what the verdict verified ({}; expected exactly constrained with {}); "
                             "nothing written",
-                            v.summary, design::counted(was.intended_motions, "intended motion", "intended motions")),
+                            v.summary, design::counted(intended_motions, "intended motion", "intended motions")),
                 {}, 3);
   io::write_file_atomically(o.output_path, text);
 
@@ -225,7 +250,7 @@ void register_fix(CLI::App& app, Action& action) {
   CLI::App* command = app.add_subcommand(
       "fix", "Write the design the verdict proposes (its first verified change set applied) as a kinestat YAML model");
   command->add_option("model", options->model_path,
-                      "Model file (kind: network or framework): kinestat YAML / JSON, SPACAR .dat, URDF .urdf, SDFormat .sdf or MJCF .xml")
+                      "Model file (kind: network, framework or structure): kinestat YAML / JSON, SPACAR .dat, URDF .urdf, SDFormat .sdf or MJCF .xml")
       ->required();
   command->add_option("-o,--output", options->output_path, "The fixed model's file (.yaml or .yml; never one of the inputs)")->required();
   command->add_flag("--json", options->json, "Machine-readable report: the fixed model's verdict and what was changed");
