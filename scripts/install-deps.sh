@@ -17,7 +17,9 @@ esac
 packages=(
   git build-essential cmake ninja-build pkg-config
   libeigen3-dev libsuitesparse-dev libopenblas-dev libgmp-dev libyaml-dev libcli11-dev nlohmann-json3-dev libfmt-dev
-  libtinyxml2-dev libsdformat-dev libmujoco-dev libqhull-dev
+  # libmujoco-dev's CMake package also asks for OpenGL's headers (libgl-dev) and names
+  # libqhull-dev's; without them the MJCF reader is left out quietly.
+  libtinyxml2-dev libsdformat-dev libmujoco-dev libqhull-dev libgl-dev
   # The Python module (pybind11), for Debian's /usr/bin/python3.
   python3-dev python3-pybind11 python3-numpy
 )
