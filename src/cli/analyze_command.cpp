@@ -39,9 +39,11 @@ void register_analyze(CLI::App& app, Action& action) {
         throw io::InputError({"--fail-unless", 0, 0}, "--fail-unless needs the serial backend's verdict; drop --backend petsc");
       if (options->backend == "petsc") return run_petsc_analysis(*options);
       const io::ModelFormat format = io::model_format(options->model_path);
-      if (format == io::ModelFormat::spacar) return run_framework_analysis(*options, read_spacar_model(options->model_path), options->model_path);
-      if (format != io::ModelFormat::kinestat)
-        return run_network_analysis(*options, read_imported_network(options->model_path), options->model_path);
+      if (format != io::ModelFormat::kinestat) {  // the import's notices on standard error and in the JSON report
+        const io::ModelFile file = read_model(options->model_path);
+        if (file.framework) return run_framework_analysis(*options, *file.framework, options->model_path, file.notices);
+        return run_network_analysis(*options, *file.network, options->model_path, file.notices);
+      }
       // The parsed tree is let go once the model is read: it is not needed by the analysis
       // (about 0.2 GB for 10^6 bars).
       std::optional<io::YamlFile> model(io::YamlFile::load(options->model_path));

@@ -84,7 +84,9 @@ pipeline::ModelPictures load_scene(const std::string& path, std::optional<double
 // `analyze` dispatches on the model's kind to one of these; each kind adds its own options.
 void register_network_options(CLI::App& analyze);
 void register_framework_options(CLI::App& analyze);
-int run_network_analysis(const CommonOptions& options, const io::LoadedNetwork& model, const std::string& path);
+/// `notices`: the import's notices (io::ModelFile::notices), given in the JSON report too.
+int run_network_analysis(const CommonOptions& options, const io::LoadedNetwork& model, const std::string& path,
+                         const std::vector<std::string>& notices = {});
 /// Names of the kind-specific options given on the command line (e.g. "--primary").
 std::vector<std::string> given_network_options();
 /// `analyze --pair BODY1:BODY2` (as body indices of `model`, in the order given) and
@@ -102,7 +104,9 @@ long long requested_vectors();
 /// Exit 2 when options of another model kind were given: "--primary is an option that is not
 /// used by a framework model".
 void reject_options(const std::vector<std::string>& given, const std::string& kind, const std::string& path);
-int run_framework_analysis(const CommonOptions& options, const framework::FrameworkModel& model, const std::string& path);
+/// `notices`: the import's notices (io::ModelFile::notices), given in the JSON report too.
+int run_framework_analysis(const CommonOptions& options, const framework::FrameworkModel& model, const std::string& path,
+                           const std::vector<std::string>& notices = {});
 /// `analyze --backend petsc` (petsc_backend.cpp): initialises MPI and PETSc, reads the model on
 /// rank 0 and decides its counts on every process; without the backend built, an error (exit 2).
 int run_petsc_analysis(const CommonOptions& options);

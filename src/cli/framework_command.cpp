@@ -10,6 +10,7 @@
 #include "kinestat/pipeline/framework_pipeline.hpp"
 #include "kinestat/report/framework_report.hpp"
 #include "kinestat/report/json_text.hpp"
+#include "kinestat/report/verdict_report.hpp"
 
 namespace kinestat::cli {
 
@@ -48,7 +49,8 @@ void register_framework_options(CLI::App& analyze) {
       ->check(non_negative_whole_number());
 }
 
-int run_framework_analysis(const CommonOptions& options, const framework::FrameworkModel& model, const std::string& path) {
+int run_framework_analysis(const CommonOptions& options, const framework::FrameworkModel& model, const std::string& path,
+                           const std::vector<std::string>& notices) {
   reject_options(given_network_options(), "a framework", path);
   framework::AnalysisOptions analysis_options;
   analysis_options.tolerances = Tolerances::with_rank(options.tolerance);
@@ -56,7 +58,8 @@ int run_framework_analysis(const CommonOptions& options, const framework::Framew
   analysis_options.sparse_vectors = static_cast<Eigen::Index>(sparse_vectors);
   const pipeline::FrameworkAnalysis analysis = pipeline::analyse_framework(model, analysis_options);
   if (options.json) {
-    emit(options, report::json_text(report::framework_report_json(model, analysis.result, &analysis.verdict, analysis.shown_generic())));
+    emit(options, report::json_text(report::with_notices(
+                      report::framework_report_json(model, analysis.result, &analysis.verdict, analysis.shown_generic()), notices)));
   } else {
     emit(options, report::framework_report_text(model, analysis.result, &analysis.verdict, analysis.shown_generic()));
   }

@@ -13,6 +13,7 @@
 #include "kinestat/pipeline/model_pipeline.hpp"
 #include "kinestat/report/json_text.hpp"
 #include "kinestat/report/network_report.hpp"
+#include "kinestat/report/verdict_report.hpp"
 
 namespace kinestat::cli {
 
@@ -113,7 +114,8 @@ std::vector<std::string> given_network_options() {
   return names;
 }
 
-int run_network_analysis(const CommonOptions& common, const io::LoadedNetwork& loaded, const std::string& path) {
+int run_network_analysis(const CommonOptions& common, const io::LoadedNetwork& loaded, const std::string& path,
+                         const std::vector<std::string>& notices) {
   const NetworkOptions& o = network_options();
   reject_options(given_framework_options(), "a network", path);
   pipeline::NetworkRequest request;
@@ -145,13 +147,16 @@ int run_network_analysis(const CommonOptions& common, const io::LoadedNetwork& l
   }
   if (analysis.sparse) {
     const pipeline::SparseNetworkAnalysis& sparse = *analysis.sparse;
-    emit(common, common.json ? report::json_text(report::sparse_network_report_json(loaded.model, sparse.result, &sparse.verdict, sparse.listed()))
+    emit(common, common.json ? report::json_text(report::with_notices(
+                                 report::sparse_network_report_json(loaded.model, sparse.result, &sparse.verdict, sparse.listed()),
+                                 notices))
                              : report::sparse_network_report_text(loaded.model, sparse.result, &sparse.verdict, sparse.listed()));
     return verdict_exit_code(common.fail_unless, sparse.verdict);
   }
   report::NetworkReportOptions report_options = analysis.dense->report_options();
   report_options.matrices = o.matrices;
-  emit(common, common.json ? report::json_text(report::network_report_json(loaded.model, analysis.dense->result, report_options))
+  emit(common, common.json ? report::json_text(report::with_notices(
+                               report::network_report_json(loaded.model, analysis.dense->result, report_options), notices))
                            : report::network_report_text(loaded.model, analysis.dense->result, report_options));
   return verdict_exit_code(common.fail_unless, analysis.dense->verdict);
 }

@@ -51,6 +51,7 @@ struct StructureInput {
   structure::StructureModel model;
   std::optional<io::LoadedNetwork> network;
   std::string path;
+  std::vector<std::string> notices{};  // the import's (io::ModelFile::notices), also in the JSON report
 };
 
 StructureInput read_input(const StructureOptions& options) {
@@ -70,9 +71,9 @@ StructureInput read_input(const StructureOptions& options) {
     throw io::InputError({path, 1, 1}, "a SPACAR file is a framework of nodes and elements; "
                                        "'kinestat structure' reads mechanisms (kind: structure or network)");
   if (format != io::ModelFormat::kinestat) {
-    io::LoadedNetwork network = read_imported_network(path);
-    structure::StructureModel model = io::structure_of_network(network, path);
-    return {std::move(model), std::move(network), path};
+    io::ModelFile file = read_model(path);
+    structure::StructureModel model = io::structure_of_network(*file.network, path);
+    return {std::move(model), std::move(*file.network), path, std::move(file.notices)};
   }
   const io::YamlFile file = io::YamlFile::load(path);
   const io::ModelKind kind = model_kind_of(file);
@@ -119,7 +120,8 @@ int run(const StructureOptions& options) {
   } else {
     analysis = pipeline::analyse_structure(std::move(input.model), request);
   }
-  const report::StructureReport report = analysis.report();
+  report::StructureReport report = analysis.report();
+  report.notices = input.notices;
   emit(options.common, options.common.json ? report::structure_report_json(report) : report::structure_report_text(report));
   return verdict_exit_code(options.common.fail_unless, analysis.verdict);
 }

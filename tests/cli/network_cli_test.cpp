@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -54,6 +55,34 @@ TEST(NetworkCli, JsonKeysAndDeterminism) {
   EXPECT_TRUE(j["pairs"][3]["coupling"].is_null());
   EXPECT_EQ(j["pairs"][3]["fij"], 1);
   EXPECT_EQ(j["pairs"][3]["motion_system"], nlohmann::json({"0", "-sa", "0", "0", "0", "0"}));
+}
+
+// Issue 37: an import's notices (printed on standard error) are also the report's top-level
+// `notices` array, after `verdict` and `units`, in analyze --json and structure --json; the
+// URDF's say its lengths are metres and that its root link is the ground. A kinestat file read
+// without notices has no `notices` key (docs/report.md).
+TEST(NetworkCli, ImportNoticesAreInTheJsonReport) {
+  for (const std::string command : {"analyze", "structure"}) {
+    const CliRun first = run(command + " --json " + example("robots/four-bar.urdf"));
+    if (first.exit_code == 2 && first.err.find("URDF") != std::string::npos) GTEST_SKIP() << first.err;  // no URDF reader built
+    ASSERT_EQ(first.exit_code, 0) << first.err;
+    EXPECT_EQ(run(command + " --json " + example("robots/four-bar.urdf")).out, first.out) << command;  // byte-identical
+    const auto j = nlohmann::ordered_json::parse(first.out);
+    ASSERT_TRUE(j.contains("notices")) << command;
+    std::vector<std::string> keys;
+    for (auto it = j.begin(); it != j.end(); ++it) keys.push_back(it.key());
+    const auto at = std::find(keys.begin(), keys.end(), "notices") - keys.begin();
+    EXPECT_EQ(keys[0], "verdict") << command;
+    EXPECT_TRUE(at == 1 || (at == 2 && keys[1] == "units")) << command << " " << at;
+    std::string all;
+    for (const auto& notice : j["notices"]) all += notice.get<std::string>() + "\n";
+    EXPECT_NE(all.find("lengths in metres"), std::string::npos) << all;
+    EXPECT_NE(all.find("base: the root link 'ground' is the ground"), std::string::npos) << all;
+    EXPECT_EQ(all, first.err) << command;  // the same lines as on standard error
+    const CliRun yaml = run(command + " --json " + example("davies-2-circuit.yaml"));
+    ASSERT_EQ(yaml.exit_code, 0) << yaml.err;
+    EXPECT_FALSE(nlohmann::json::parse(yaml.out).contains("notices")) << command;
+  }
 }
 
 TEST(NetworkCli, PrimaryAndValuesOnTheCommandLine) {

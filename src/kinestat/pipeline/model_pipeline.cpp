@@ -8,6 +8,7 @@
 #include "kinestat/report/framework_report.hpp"
 #include "kinestat/report/network_report.hpp"
 #include "kinestat/report/structure_report.hpp"
+#include "kinestat/report/verdict_report.hpp"
 
 namespace kinestat::pipeline {
 
@@ -124,8 +125,12 @@ nlohmann::ordered_json analysis_json(const io::ModelFile& file, const ModelAnaly
 }
 
 std::string report_json_text(const io::ModelFile& file, const ModelAnalysis& analysis) {
-  if (analysis.structure) return report::structure_report_json(analysis.structure->report());
-  return report::json_text(analysis_json(file, analysis));
+  if (analysis.structure) {
+    report::StructureReport report = analysis.structure->report();
+    report.notices = file.notices;
+    return report::structure_report_json(report);
+  }
+  return report::json_text(report::with_notices(analysis_json(file, analysis), file.notices));
 }
 
 nlohmann::ordered_json analyze_report_json(const io::ModelFile& file, std::optional<double> tolerance) {

@@ -274,8 +274,8 @@ std::string structure_report_json(const StructureReport& report) {
   } else {
     j["transformations"] = nullptr;
   }
-  if (report.verdict) return json_text(lead_with_verdict(*report.verdict, std::move(j), report.units));
-  return json_text(j);
+  if (report.verdict) return json_text(with_notices(lead_with_verdict(*report.verdict, std::move(j), report.units), report.notices));
+  return json_text(with_notices(std::move(j), report.notices));
 }
 
 std::string structure_dot(const StructureModel& model, const StructureResult& d) {

@@ -5,6 +5,7 @@
 // and as SVG drawn by kinestat itself.
 
 #include <string>
+#include <vector>
 
 #include "kinestat/design/verdict.hpp"
 #include "kinestat/structure/decomposition.hpp"
@@ -21,6 +22,7 @@ struct StructureReport {
   structure::SearchMethod method = structure::SearchMethod::matching;
   const design::Verdict* verdict = nullptr;  ///< printed first when given
   std::string units{};                       ///< the model's length unit, when it names one
+  std::vector<std::string> notices{};        ///< the import's notices (report::with_notices), when any
 };
 
 /// Dense result matrices are printed up to this many bodies; larger models list the

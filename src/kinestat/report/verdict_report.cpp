@@ -152,6 +152,24 @@ Json lead_with_verdict(const design::Verdict& verdict, Json report, const std::s
   return j;
 }
 
+Json with_notices(Json report, const std::vector<std::string>& notices) {
+  if (notices.empty() || !report.is_object()) return report;
+  Json lines = Json::array();
+  for (const std::string& notice : notices) lines.push_back(printable_text(notice));
+  // A fixed place, so that the same input gives the same bytes: after the keys that lead.
+  Json j = json_object(report.size() + 1);
+  bool placed = false;
+  for (auto it = report.begin(); it != report.end(); ++it) {
+    if (!placed && it.key() != "verdict" && it.key() != "units") {
+      j["notices"] = lines;
+      placed = true;
+    }
+    j[it.key()] = std::move(it.value());
+  }
+  if (!placed) j["notices"] = std::move(lines);
+  return j;
+}
+
 std::string verdict_text(const design::Verdict& v) {
   std::string t = fmt::format("Verdict: {}\n", printable_text(v.summary));
   // Where the structural count differs, one line with both counts takes the place of the
