@@ -20,6 +20,8 @@
 #include <sstream>
 #include <string>
 
+#include "kinestat/design/structure_change_application.hpp"
+#include "kinestat/error.hpp"
 #include "kinestat/io/model_file.hpp"
 #include "kinestat/io/structure_yaml_writer.hpp"
 #include "support/cli_run.hpp"
@@ -264,6 +266,29 @@ TEST(FixCommand, StructureWriterRoundTrip) {
     }
   }
   EXPECT_GE(structures, 12);  // 11 YAML structure examples and saura-eq2.json
+}
+
+// apply_structure_change_set by hand on a planar four-bar (bodies 1..4; pairs 1-2, 1-4, 2-3,
+// 3-4 in the order of the upper triangle; one input on 1-2): releasing 2-3 makes it a higher
+// pair of 2 freedoms, undriving 1-2 leaves no input, nothing else changes; a change it does not
+// know throws.
+TEST(FixCommand, StructureChangeSetByHand) {
+  const structure::StructureModel model =
+      structure::model_from_adjacency({{0, 3, 0, 1}, {3, 0, 1, 0}, {0, 1, 0, 1}, {1, 0, 1, 0}});
+  const std::vector<design::DesignChange> changes = {{"release", "pair", "2-3", "2 freedoms", "", "1 freedom(s), 0 input(s)", {}},
+                                                     {"undrive", "pair", "1-2", "0 input(s)", "", "1 freedom(s), 1 input(s)", {}}};
+  const structure::StructureModel changed = design::apply_structure_change_set(model, changes);
+  ASSERT_EQ(changed.pairs.size(), 4u);
+  EXPECT_EQ(changed.pairs[0].inputs, 0);  // 1-2
+  EXPECT_EQ(changed.pairs[2].freedoms, 2);  // 2-3
+  EXPECT_EQ(changed.pairs[2].kind, structure::PairKind::higher);
+  EXPECT_EQ(changed.input_count(), 0);
+  EXPECT_EQ(changed.mobility(), 2);  // 3 * 3 - 3 * 2 - 1 * 1
+  EXPECT_EQ(changed.body_names, model.body_names);
+  EXPECT_THROW(design::apply_structure_change_set(model, {{"remove", "pair", "1-2", "removed", "", "", {}}}), Error);
+  EXPECT_THROW(design::apply_structure_change_set(model, {{"drive", "pair", "1-3", "1 input(s)", "", "", {}}}), Error);
+  EXPECT_THROW(design::apply_structure_change_set(model, {{"drive", "pair", "2-3", "2 input(s)", "", "", {}}}), Error);
+  EXPECT_THROW(design::apply_structure_change_set(model, {{"drive", "coupling", "2-3", "1 input(s)", "", "", {}}}), Error);
 }
 
 TEST(FixCommand, EveryRobotAndSpacarExample) {
