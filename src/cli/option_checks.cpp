@@ -24,18 +24,6 @@ std::optional<double> parse_double(const std::string& text) {
   return value;
 }
 
-template <typename Derived>
-bool all_finite(const Eigen::DenseBase<Derived>& m) {
-  return m.allFinite();
-}
-
-// Values of magnitudes: NaN marks a magnitude that partial values leave undetermined (issue 10),
-// so only an infinity is an overflow there.
-template <typename Derived>
-bool no_infinity(const Eigen::DenseBase<Derived>& m) {
-  return !m.derived().array().isInf().any();
-}
-
 }  // namespace
 
 CLI::Validator positive_finite_number() {
@@ -74,20 +62,6 @@ void add_fail_unless_option(CLI::App& command, std::string& condition) {
 int verdict_exit_code(const std::string& condition, const design::Verdict& verdict) {
   if (condition == "exactly-constrained" && !verdict.exactly_constrained) return kExitVerdictNotAsRequired;
   return 0;
-}
-
-std::optional<std::string> first_non_finite_result(const network::NetworkResult& result) {
-  if (result.motion_values && !no_infinity(*result.motion_values)) return "a motion magnitude";
-  if (result.action_values && !no_infinity(*result.action_values)) return "an action magnitude";
-  if (result.coupling_motion_values && !no_infinity(*result.coupling_motion_values)) return "a coupling motion";
-  if (result.coupling_action_values && !no_infinity(*result.coupling_action_values)) return "a coupling action";
-  if (!all_finite(result.motion_magnitudes.values)) return "a coefficient of the motion magnitudes";
-  if (!all_finite(result.action_magnitudes.values)) return "a coefficient of the action magnitudes";
-  for (const auto& pair : result.pairs) {
-    if (!all_finite(pair.motion_system.values) || !all_finite(pair.action_system.values))
-      return std::string("a coefficient of a pair system");
-  }
-  return std::nullopt;
 }
 
 }  // namespace kinestat::cli

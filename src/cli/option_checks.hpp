@@ -30,8 +30,4 @@ void add_fail_unless_option(CLI::App& command, std::string& condition);
 /// kExitVerdictNotAsRequired when the verdict is not exactly constrained.
 int verdict_exit_code(const std::string& condition, const design::Verdict& verdict);
 
-/// The name of the first numeric result of a network analysis that is not finite (the values
-/// given, or the model's geometry, overflowed a double), or nothing when all are finite.
-std::optional<std::string> first_non_finite_result(const network::NetworkResult& result);
-
 }  // namespace kinestat::cli
