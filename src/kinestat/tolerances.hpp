@@ -191,6 +191,18 @@ inline constexpr double kPositionResidual = 1e-10;
 /// singular position (2^26 ε ≈ 1.5e-8).
 inline constexpr double kSingularPosition = 0x1p26 * kEpsilon;
 
+// --- Stiffness (framework/stiffness.hpp, issue 38) ------------------------------------------
+
+/// Rigid constraints of a stiffness model (rigid bodies, elements without elastic data): a
+/// singular value of the length-scaled constraint matrix below this × its largest is dependent
+/// (2^26 ε ≈ 1.5e-8), so its admissible motions are a null space from a rank-revealing SVD.
+inline constexpr double kRigidConstraintRank = 0x1p26 * kEpsilon;
+/// A stiffness eigenvalue (length-scaled, pivot of the LDLT of the condensed matrix) below this ×
+/// the largest is a zero-stiffness motion: the node has a mechanism and no compliance
+/// (2^16 ε ≈ 1.5e-11: rounding of the condensation; a thin flexure's motion stiffness is
+/// 1e-4 to 1e-8 of its support stiffness, well above).
+inline constexpr double kZeroStiffness = 0x1p16 * kEpsilon;
+
 /// The tolerances of one analysis: what `--tolerance` sets, and the named defaults of every
 /// other rank decision that follows it.
 struct Tolerances {

@@ -6,6 +6,8 @@
 
 #include <Eigen/Core>
 
+#include "kinestat/framework/elastic_properties.hpp"
+
 #include <array>
 #include <cstddef>
 #include <optional>
@@ -49,6 +51,9 @@ struct Element {
   Eigen::Matrix3d frame = Eigen::Matrix3d::Identity();
   double torsion_coupling = 0.0;  ///< c_r of eq (3), length², beams only
   std::vector<DeformationRole> roles;  ///< one per deformation (see deformation_names)
+  /// Elastic data (issue 38): indices into FrameworkModel::materials / sections as given on the
+  /// element; absent: the model's default, if any (element_material / element_section).
+  std::optional<std::size_t> material, section;
 };
 
 struct FrameworkModel {
@@ -57,7 +62,19 @@ struct FrameworkModel {
   int dimension = 3;  ///< 3 spatial, 2 planar (xy-plane)
   std::vector<Node> nodes;
   std::vector<Element> elements;
+  // Elastic and inertial data (issue 38), all optional; none of it changes the kinematic analysis.
+  std::vector<Material> materials;  ///< `materials:`, in file order
+  std::vector<Section> sections;    ///< `sections:`, in file order, completed (A, Iy, Iz, J filled in)
+  std::optional<std::size_t> default_material, default_section;  ///< `defaults:`
+  std::vector<NodeMass> masses;     ///< `masses:`, in file order
+  /// True when the model carries any elastic or inertial data.
+  bool has_elastic_data() const { return !materials.empty() || !sections.empty() || !masses.empty(); }
 };
+
+/// The material of `element`: its own, else the model's default; nullptr when neither.
+const Material* element_material(const FrameworkModel& model, const Element& element);
+/// The section of `element`: its own, else the model's default; nullptr when neither.
+const Section* element_section(const FrameworkModel& model, const Element& element);
 
 /// The coordinate slots a node has in a model of `dimension` (see kSlots).
 std::vector<int> node_slots(int dimension, const Node& node);
