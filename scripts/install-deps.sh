@@ -16,7 +16,7 @@ case "${1:-}" in
 esac
 packages=(
   git build-essential cmake ninja-build pkg-config
-  libeigen3-dev libsuitesparse-dev libopenblas-dev libgmp-dev libyaml-dev libcli11-dev nlohmann-json3-dev libfmt-dev
+  libeigen3-dev libsuitesparse-dev libopenblas-dev libgmp-dev libflint-dev libyaml-dev libcli11-dev nlohmann-json3-dev libfmt-dev
   # libmujoco-dev's CMake package also asks for OpenGL's headers (libgl-dev) and names
   # libqhull-dev's; without them the MJCF reader is left out quietly.
   libtinyxml2-dev libsdformat-dev libmujoco-dev libqhull-dev libgl-dev
