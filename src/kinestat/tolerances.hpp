@@ -202,6 +202,15 @@ inline constexpr double kRigidConstraintRank = 0x1p26 * kEpsilon;
 /// (2^16 ε ≈ 1.5e-11: rounding of the condensation; a thin flexure's motion stiffness is
 /// 1e-4 to 1e-8 of its support stiffness, well above).
 inline constexpr double kZeroStiffness = 0x1p16 * kEpsilon;
+/// A held deformation takes part in a self-stress (and gets the misfit in turn) when its largest
+/// component over the unit self-stress basis exceeds this × the largest of all; an element carries
+/// the worst misfit case when its force (or moment) exceeds this × the largest force (moment)
+/// (2^26 ε ≈ 1.5e-8: rounding of an SVD basis, far below any designed share).
+inline constexpr double kMisfitParticipation = 0x1p26 * kEpsilon;
+/// A direction of the mass matrix whose eigenvalue is below this × the largest has no mass and is
+/// condensed out before the eigenfrequencies (2^26 ε ≈ 1.5e-8: rounding of Nᵀ M N when rigid
+/// constraints reduce the coordinates; a lumped mass matrix's massless rows are exactly zero).
+inline constexpr double kMasslessRelative = 0x1p26 * kEpsilon;
 
 /// The tolerances of one analysis: what `--tolerance` sets, and the named defaults of every
 /// other rank decision that follows it.
