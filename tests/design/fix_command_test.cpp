@@ -19,12 +19,14 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "kinestat/design/structure_change_application.hpp"
 #include "kinestat/error.hpp"
 #include "kinestat/io/model_file.hpp"
 #include "kinestat/io/structure_yaml_writer.hpp"
 #include "support/cli_run.hpp"
+#include "support/sanitizer_sample.hpp"
 
 namespace kinestat {
 namespace {
@@ -194,11 +196,12 @@ Json fix_and_check(const std::string& model) {
   return after;
 }
 
+// Under AddressSanitizer a fixed quarter of the examples (support/sanitizer_sample.hpp).
 TEST(FixCommand, EveryExampleYaml) {
-  for (const auto& entry : std::filesystem::directory_iterator(example_path(""))) {
-    if (!entry.is_regular_file() || entry.path().extension() != ".yaml") continue;
-    fix_and_check(entry.path().string());
-  }
+  std::vector<std::string> models;
+  for (const auto& entry : std::filesystem::directory_iterator(example_path("")))
+    if (entry.is_regular_file() && entry.path().extension() == ".yaml") models.push_back(entry.path().string());
+  for (const auto& model : testing::sampled_under_sanitizer(models)) fix_and_check(model);
 }
 
 // The planar four-bar with inputs on both frame pairs: mobility 3 * 3 - 4 * 2 = 1, two inputs,
@@ -291,10 +294,10 @@ TEST(FixCommand, StructureChangeSetByHand) {
   EXPECT_THROW(design::apply_structure_change_set(model, {{"drive", "coupling", "2-3", "1 input(s)", "", "", {}}}), Error);
 }
 
+// Under AddressSanitizer a fixed quarter of each folder (support/sanitizer_sample.hpp).
 TEST(FixCommand, EveryRobotAndSpacarExample) {
   for (const std::string folder : {"robots", "spacar"})
-    for (const auto& entry : std::filesystem::directory_iterator(example_path(folder)))
-      if (entry.is_regular_file()) fix_and_check(entry.path().string());
+    for (const auto& model : testing::sampled_files(example_path(folder))) fix_and_check(model);
 }
 
 // The Delta (YAML, and the same mechanism read from URDF). By hand (examples/delta-robot.yaml):
