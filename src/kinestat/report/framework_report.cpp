@@ -264,9 +264,13 @@ std::string framework_classification(const FrameworkResult& a) {
                      a.kinematically_determinate() ? "determinate" : "indeterminate");
 }
 
-nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const FrameworkResult& a, const design::Verdict* verdict,
-                                             const framework::GenericFramework* generic) {
-  nlohmann::ordered_json j = json_object(48);
+namespace {
+
+// Sections of framework_report_json, in the order of their keys.
+
+// Model, counts and classification: "kind" to "count".
+void add_count_keys(nlohmann::ordered_json& j, const FrameworkModel& model, const FrameworkResult& a,
+                    const framework::GenericFramework* generic) {
   j["kind"] = "framework";
   if (!model.name.empty()) j["name"] = model.name;
   j["space"] = model.dimension == 2 ? "planar" : "spatial";
@@ -292,6 +296,11 @@ nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const 
                 {"declared_dof", c.declared_dof()},
                 {"grubler_dof", c.grubler_dof()},
                 {"square", c.square()}};
+}
+
+// The rank decision and its evidence, and the labels of D(c)'s rows and columns: "method" to
+// "column_labels".
+void add_rank_keys(nlohmann::ordered_json& j, const FrameworkModel& model, const FrameworkResult& a) {
   j["method"] = a.method == framework::RankMethod::dense_svd ? "dense_svd" : "sparse_qr";
   j["characteristic_length"] = rounded(a.length);
   j["length_scaling"] = {{"row_factors", factor_range(a.row_scale)}, {"column_factors", factor_range(a.column_scale)}};
@@ -309,71 +318,76 @@ nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const 
   auto& column_labels = (j["column_labels"] = nlohmann::ordered_json::array()).get_ref<nlohmann::ordered_json::array_t&>();
   column_labels.reserve(static_cast<std::size_t>(a.n));
   for (Eigen::Index i = 0; i < a.n; ++i) column_labels.emplace_back(framework_column_label(model, a, i));
-  j["vectors"] = a.vectors;
-  if (compact(a) && a.vectors) {
-    // The first vector_limit of each, as basic null vectors of the sparse R factors.
-    j["vector_limit"] = a.vector_limit;
-    j["null_space_residual"] = evidence_number(a.null_space_residual);
-  }
+}
 
-  auto resultants_json = [&](const Eigen::VectorXd& resultants) {
-    nlohmann::ordered_json list = nlohmann::ordered_json::array();
-    for (Eigen::Index i = 0; i < resultants.size(); ++i) {
-      if (compact(a) && resultants(i) == 0.0) continue;
-      const auto& ref = row_ref(a, i);
-      nlohmann::ordered_json entry = json_object(3);
-      entry["element"] = model.elements[ref.element].name;
-      entry["deformation"] = deformation_name(model, ref);
-      entry["value"] = rounded(resultants(i));
-      list.push_back(std::move(entry));
-    }
-    return list;
-  };
-  j["modes"] = nlohmann::ordered_json::array();
-  for (std::size_t k = 0; k < a.modes.size(); ++k) {
-    const auto& mode = a.modes[k];
-    nlohmann::ordered_json m = json_object(8);
-    m["velocities"] = velocities_by_node(model, a, mode.velocities);
-    m["moving"] = nlohmann::ordered_json::array();
-    for (Eigen::Index col : mode.moving) m["moving"].push_back(framework_column_label(model, a, col));
-    if (!mode.rigid_motion.empty()) {
-      // A rigid motion of the whole model: no cause or order of its own (issue 35).
-      m["rigid_motion"] = mode.rigid_motion;
-      j["modes"].push_back(std::move(m));
-      continue;
-    }
-    m["parts"] = parts_json(model, a, mode.velocities);
-    if (generic && k < generic->mode_causes.size()) m["cause"] = linalg::cause_name(generic->mode_causes[k]);
-    if (k < a.orders.size()) {
-      const framework::ModeOrder& o = a.orders[k];
-      m["order"] = framework::motion_order_name(o.order);
-      m["order_reason"] = order_reason_code(o.reason);
-      m["second_order_work"] = evidence_number(o.second_order_work);
-      if (o.blocking_stress.size() > 0) m["blocking_stress"] = resultants_json(o.blocking_stress);
-      if (o.traced) m["trace"] = trace_json(o.trace);
-    }
-    j["modes"].push_back(std::move(m));
+// A stress state's resultants: {element, deformation, value} per row of D(c).
+nlohmann::ordered_json resultants_json(const FrameworkModel& model, const FrameworkResult& a, const Eigen::VectorXd& resultants) {
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  for (Eigen::Index i = 0; i < resultants.size(); ++i) {
+    if (compact(a) && resultants(i) == 0.0) continue;
+    const auto& ref = row_ref(a, i);
+    nlohmann::ordered_json entry = json_object(3);
+    entry["element"] = model.elements[ref.element].name;
+    entry["deformation"] = deformation_name(model, ref);
+    entry["value"] = rounded(resultants(i));
+    list.push_back(std::move(entry));
   }
-  if (a.prestress.tested) {
-    nlohmann::ordered_json p = json_object(8);
-    p["stable"] = a.prestress.stable;
-    p["nonrigid_modes"] = a.prestress.nonrigid_modes;
-    p["rigid_motions"] = a.prestress.rigid_motions;
-    p["smallest_eigenvalue"] = evidence_number(a.prestress.smallest_eigenvalue);
-    p["exhaustive"] = a.prestress.exhaustive;
-    p["stress"] = resultants_json(a.prestress.stress);
-    j["prestress_stability"] = std::move(p);
+  return list;
+}
+
+// Mode k: velocities, moving coordinates, rigid parts, cause and order.
+nlohmann::ordered_json mode_json(const FrameworkModel& model, const FrameworkResult& a, std::size_t k,
+                                 const framework::GenericFramework* generic) {
+  const auto& mode = a.modes[k];
+  nlohmann::ordered_json m = json_object(8);
+  m["velocities"] = velocities_by_node(model, a, mode.velocities);
+  m["moving"] = nlohmann::ordered_json::array();
+  for (Eigen::Index col : mode.moving) m["moving"].push_back(framework_column_label(model, a, col));
+  if (!mode.rigid_motion.empty()) {
+    // A rigid motion of the whole model: no cause or order of its own (issue 35).
+    m["rigid_motion"] = mode.rigid_motion;
+    return m;
   }
-  j["stresses"] = nlohmann::ordered_json::array();
-  for (const auto& state : a.stresses) {
+  m["parts"] = parts_json(model, a, mode.velocities);
+  if (generic && k < generic->mode_causes.size()) m["cause"] = linalg::cause_name(generic->mode_causes[k]);
+  if (k < a.orders.size()) {
+    const framework::ModeOrder& o = a.orders[k];
+    m["order"] = framework::motion_order_name(o.order);
+    m["order_reason"] = order_reason_code(o.reason);
+    m["second_order_work"] = evidence_number(o.second_order_work);
+    if (o.blocking_stress.size() > 0) m["blocking_stress"] = resultants_json(model, a, o.blocking_stress);
+    if (o.traced) m["trace"] = trace_json(o.trace);
+  }
+  return m;
+}
+
+nlohmann::ordered_json prestress_json(const FrameworkModel& model, const FrameworkResult& a) {
+  nlohmann::ordered_json p = json_object(8);
+  p["stable"] = a.prestress.stable;
+  p["nonrigid_modes"] = a.prestress.nonrigid_modes;
+  p["rigid_motions"] = a.prestress.rigid_motions;
+  p["smallest_eigenvalue"] = evidence_number(a.prestress.smallest_eigenvalue);
+  p["exhaustive"] = a.prestress.exhaustive;
+  p["stress"] = resultants_json(model, a, a.prestress.stress);
+  return p;
+}
+
+nlohmann::ordered_json stresses_json(const FrameworkModel& model, const FrameworkResult& a, const framework::GenericFramework* generic) {
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  for (std::size_t k = 0; k < a.stresses.size(); ++k) {
+    const auto& state = a.stresses[k];
     nlohmann::ordered_json s = json_object(4);
-    s["resultants"] = resultants_json(state.resultants);
+    s["resultants"] = resultants_json(model, a, state.resultants);
     s["candidates"] = nlohmann::ordered_json::array();
     for (Eigen::Index row : state.candidates) s["candidates"].push_back(framework_row_label(model, a, row));
-    const auto k = j["stresses"].size();
     if (generic && k < generic->stress_causes.size()) s["cause"] = linalg::cause_name(generic->stress_causes[k]);
-    j["stresses"].push_back(std::move(s));
+    list.push_back(std::move(s));
   }
+  return list;
+}
+
+// The proposal: one minimal set of releases and of coordinates to constrain.
+void add_proposal_keys(nlohmann::ordered_json& j, const FrameworkModel& model, const FrameworkResult& a) {
   j["releases"] = nlohmann::ordered_json::array();
   for (Eigen::Index row : a.releases) {
     const auto& ref = row_ref(a, row);
@@ -385,18 +399,51 @@ nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const 
     j["constrain"].push_back(
         {{"node", model.nodes[ref.node].name}, {"coordinate", framework::kSlotNames[static_cast<std::size_t>(ref.slot)]}});
   }
+}
+
+}  // namespace
+
+nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const FrameworkResult& a, const design::Verdict* verdict,
+                                             const framework::GenericFramework* generic) {
+  nlohmann::ordered_json j = json_object(48);
+  add_count_keys(j, model, a, generic);
+  add_rank_keys(j, model, a);
+  j["vectors"] = a.vectors;
+  if (compact(a) && a.vectors) {
+    // The first vector_limit of each, as basic null vectors of the sparse R factors.
+    j["vector_limit"] = a.vector_limit;
+    j["null_space_residual"] = evidence_number(a.null_space_residual);
+  }
+  auto& modes = (j["modes"] = nlohmann::ordered_json::array()).get_ref<nlohmann::ordered_json::array_t&>();
+  for (std::size_t k = 0; k < a.modes.size(); ++k) modes.push_back(mode_json(model, a, k, generic));
+  if (a.prestress.tested) j["prestress_stability"] = prestress_json(model, a);
+  j["stresses"] = stresses_json(model, a, generic);
+  add_proposal_keys(j, model, a);
   if (verdict) return lead_with_verdict(*verdict, std::move(j), model.units);
   return j;
 }
 
-std::string framework_report_text(const FrameworkModel& model, const FrameworkResult& a, const design::Verdict* verdict,
-                                  const framework::GenericFramework* generic) {
+namespace {
+
+// Sections of framework_report_text, in the order they are printed.
+
+// The text report, one line at a time.
+struct TextLines {
+  std::string out;
+  void operator()(const std::string& text) { out += text + "\n"; }
+};
+
+// Labels carry node and element names: printed through io::printable_text.
+std::string printable_row_label(const FrameworkModel& model, const FrameworkResult& a, Eigen::Index row) {
+  return io::printable_text(framework_row_label(model, a, row));
+}
+std::string printable_column_label(const FrameworkModel& model, const FrameworkResult& a, Eigen::Index column) {
+  return io::printable_text(framework_column_label(model, a, column));
+}
+
+// The model, its coordinates and deformations and Gruebler's count.
+void count_text(TextLines& line, const FrameworkModel& model, const FrameworkResult& a) {
   using io::printable_text;
-  std::string out = verdict ? verdict_text(*verdict) : std::string();
-  auto line = [&out](const std::string& text) { out += text + "\n"; };
-  // Labels carry node and element names: printed through io::printable_text.
-  auto row_label = [&](Eigen::Index row) { return printable_text(framework_row_label(model, a, row)); };
-  auto column_label = [&](Eigen::Index column) { return printable_text(framework_column_label(model, a, column)); };
   line(fmt::format("framework{} ({}, {} nodes, {} elements{})", model.name.empty() ? "" : " " + printable_text(model.name),
                    model.dimension == 2 ? "planar" : "spatial", model.nodes.size(), model.elements.size(),
                    model.units.empty() ? "" : ", lengths in " + printable_text(model.units)));
@@ -408,6 +455,10 @@ std::string framework_report_text(const FrameworkModel& model, const FrameworkRe
   line(fmt::format("Gruebler count (eq 15): n_dof = {} - ({} + {}) = {}; declared {} -> D(c) {}", c.coordinates,
                    c.fixed_coordinates, c.fixed_deformations, c.grubler_dof(), c.declared_dof(),
                    c.square() ? "square" : "not square"));
+}
+
+// D(c)'s rank, its decision and evidence, the classification and the counts.
+void rank_section_text(TextLines& line, const FrameworkResult& a) {
   line(fmt::format("D(c): {} rows x {} columns, rank {} ({}{})", a.m, a.n, a.rank,
                    a.method == framework::RankMethod::dense_svd ? "SVD"
                    : a.vectors                                  ? "sparse QR"
@@ -437,84 +488,115 @@ std::string framework_report_text(const FrameworkModel& model, const FrameworkRe
   line(fmt::format("{} extra motion(s) (mechanisms: the seed's kinematically indeterminate modes), {} redundant constraint(s) "
                    "(self-stresses){}",
                    a.mechanisms, a.self_stresses, a.exactly_constrained() ? ": exactly constrained" : ""));
-  if (generic) {
-    line(fmt::format("generic answer (the same nodes, elements and supports at a random realisation): {} mode(s), {} stress state(s); {}",
-                     generic->mechanisms, generic->self_stresses, generic_method(*generic)));
-    for (const auto& sentence : generic_explanation(model, a, *generic, true)) line("  " + sentence);
-    if (generic->laman) {
-      std::vector<std::string> components;
-      for (const auto& component : generic->laman->rigid_components) components.push_back(component_text(model, component));
-      line(fmt::format("  Laman count (pebble game): rank {}, {} mode(s), {} stress state(s){}; rigid components: {}", generic->laman->rank,
-                       generic->laman->mechanisms, generic->laman->self_stresses,
-                       generic->laman->rank == generic->rank ? ", agrees" : ", DISAGREES with the generic rank",
-                       components.empty() ? "-" : fmt::format("{}", fmt::join(components, " "))));
-    }
+}
+
+// The generic answer, its explanation and the Laman count.
+void generic_section_text(TextLines& line, const FrameworkModel& model, const FrameworkResult& a, const framework::GenericFramework& generic) {
+  line(fmt::format("generic answer (the same nodes, elements and supports at a random realisation): {} mode(s), {} stress state(s); {}",
+                   generic.mechanisms, generic.self_stresses, generic_method(generic)));
+  for (const auto& sentence : generic_explanation(model, a, generic, true)) line("  " + sentence);
+  if (generic.laman) {
+    std::vector<std::string> components;
+    for (const auto& component : generic.laman->rigid_components) components.push_back(component_text(model, component));
+    line(fmt::format("  Laman count (pebble game): rank {}, {} mode(s), {} stress state(s){}; rigid components: {}", generic.laman->rank,
+                     generic.laman->mechanisms, generic.laman->self_stresses,
+                     generic.laman->rank == generic.rank ? ", agrees" : ", DISAGREES with the generic rank",
+                     components.empty() ? "-" : fmt::format("{}", fmt::join(components, " "))));
   }
-  if (compact(a) && a.vectors)
-    line(fmt::format("vectors from the sparse R factors: first {} of {} mode(s), first {} of {} stress state(s); "
-                     "largest relative residual {}",
-                     a.modes.size(), a.mechanisms, a.stresses.size(), a.self_stresses, evidence(a.null_space_residual)));
-  auto stress_lines = [&](const std::string& title, const Eigen::VectorXd& resultants) {
-    line(title);
-    for (Eigen::Index row = 0; row < resultants.size(); ++row)
-      if (std::abs(resultants(row)) > kModeZero)
-        line(fmt::format("  {:>24} {:>12}", row_label(row), number(resultants(row))));
-  };
-  for (std::size_t k = 0; k < a.modes.size(); ++k) {
-    const bool rigid = !a.modes[k].rigid_motion.empty();
-    const std::string cause = rigid ? ": rigid-body motion, " + a.modes[k].rigid_motion
-                              : generic && k < generic->mode_causes.size() ? ", from the " + linalg::cause_name(generic->mode_causes[k])
-                                                                           : "";
-    line(fmt::format("mode {} (velocities; translations per characteristic length){}{}", k + 1, cause, rigid ? "" : ":"));
-    if (!rigid) {
-      const auto parts = framework::moving_parts(model, a, a.modes[k].velocities);
-      for (std::size_t p = 0; p < parts.size() && p < kTextParts; ++p)
-        line(fmt::format("  rigid part {}: {}", part_label(model, parts[p]), design::motion_text(parts[p].twist, a.length)));
-      if (parts.size() > kTextParts) line(fmt::format("  ... and {} more rigid parts (see --json)", parts.size() - kTextParts));
-    }
-    for (Eigen::Index col : a.modes[k].moving)
-      line(fmt::format("  {:>16} {:>12}", column_label(col), number(a.modes[k].velocities(col))));
-    if (rigid || k >= a.orders.size()) continue;
-    const framework::ModeOrder& o = a.orders[k];
-    line(fmt::format("  order: {} -- {}", framework::motion_order_name(o.order), order_reason_text(o)));
-    if (o.reason == framework::OrderReason::blocked_by_stress) stress_lines("  blocking self-stress:", o.blocking_stress);
-    if (o.traced) {
-      line(fmt::format("  rank of D(c) along the path: {}", fmt::join(o.trace.rank_along_path, " ")));
-      if (!o.trace.rank_drops.empty())
-        line(fmt::format("  rank drops at point(s) {} (0 = the start): a singular configuration -- branch point or change of mobility",
-                         fmt::join(o.trace.rank_drops, ", ")));
-    }
+}
+
+// A self-stress that blocks or stabilises, its resultants above kModeZero.
+void stress_lines(TextLines& line, const FrameworkModel& model, const FrameworkResult& a, const std::string& title,
+                  const Eigen::VectorXd& resultants) {
+  line(title);
+  for (Eigen::Index row = 0; row < resultants.size(); ++row)
+    if (std::abs(resultants(row)) > kModeZero)
+      line(fmt::format("  {:>24} {:>12}", printable_row_label(model, a, row), number(resultants(row))));
+}
+
+// Mode k: its cause, rigid parts, velocities and order.
+void mode_text(TextLines& line, const FrameworkModel& model, const FrameworkResult& a, std::size_t k,
+               const framework::GenericFramework* generic) {
+  const bool rigid = !a.modes[k].rigid_motion.empty();
+  const std::string cause = rigid ? ": rigid-body motion, " + a.modes[k].rigid_motion
+                            : generic && k < generic->mode_causes.size() ? ", from the " + linalg::cause_name(generic->mode_causes[k])
+                                                                         : "";
+  line(fmt::format("mode {} (velocities; translations per characteristic length){}{}", k + 1, cause, rigid ? "" : ":"));
+  if (!rigid) {
+    const auto parts = framework::moving_parts(model, a, a.modes[k].velocities);
+    for (std::size_t p = 0; p < parts.size() && p < kTextParts; ++p)
+      line(fmt::format("  rigid part {}: {}", part_label(model, parts[p]), design::motion_text(parts[p].twist, a.length)));
+    if (parts.size() > kTextParts) line(fmt::format("  ... and {} more rigid parts (see --json)", parts.size() - kTextParts));
   }
-  if (a.prestress.tested) {
-    line(fmt::format("prestress stability ({} non-rigid mode(s), {} rigid motion(s); search {}): {}, smallest eigenvalue {} "
-                     "(relative)",
-                     a.prestress.nonrigid_modes, a.prestress.rigid_motions,
-                     a.prestress.exhaustive ? "exhaustive over the stress combinations" : "sampled, may miss one",
-                     a.prestress.stable ? "STABLE -- every non-rigid mode is blocked at second order" : "not stable",
-                     evidence(a.prestress.smallest_eigenvalue)));
-    if (a.prestress.stable) stress_lines("  the stabilising self-stress (positive: tension):", a.prestress.stress);
+  for (Eigen::Index col : a.modes[k].moving)
+    line(fmt::format("  {:>16} {:>12}", printable_column_label(model, a, col), number(a.modes[k].velocities(col))));
+  if (rigid || k >= a.orders.size()) return;
+  const framework::ModeOrder& o = a.orders[k];
+  line(fmt::format("  order: {} -- {}", framework::motion_order_name(o.order), order_reason_text(o)));
+  if (o.reason == framework::OrderReason::blocked_by_stress) stress_lines(line, model, a, "  blocking self-stress:", o.blocking_stress);
+  if (o.traced) {
+    line(fmt::format("  rank of D(c) along the path: {}", fmt::join(o.trace.rank_along_path, " ")));
+    if (!o.trace.rank_drops.empty())
+      line(fmt::format("  rank drops at point(s) {} (0 = the start): a singular configuration -- branch point or change of mobility",
+                       fmt::join(o.trace.rank_drops, ", ")));
   }
-  for (std::size_t k = 0; k < a.stresses.size(); ++k) {
-    const std::string cause =
-        generic && k < generic->stress_causes.size() ? ", from the " + linalg::cause_name(generic->stress_causes[k]) : "";
-    line(fmt::format("stress state {} (generalised stress resultants){}:", k + 1, cause));
-    for (Eigen::Index row = 0; row < a.stresses[k].resultants.size(); ++row)
-      if (a.stresses[k].resultants(row) != 0.0)
-        line(fmt::format("  {:>24} {:>12}", row_label(row), number(a.stresses[k].resultants(row))));
-  }
+}
+
+void prestress_text(TextLines& line, const FrameworkModel& model, const FrameworkResult& a) {
+  line(fmt::format("prestress stability ({} non-rigid mode(s), {} rigid motion(s); search {}): {}, smallest eigenvalue {} "
+                   "(relative)",
+                   a.prestress.nonrigid_modes, a.prestress.rigid_motions,
+                   a.prestress.exhaustive ? "exhaustive over the stress combinations" : "sampled, may miss one",
+                   a.prestress.stable ? "STABLE -- every non-rigid mode is blocked at second order" : "not stable",
+                   evidence(a.prestress.smallest_eigenvalue)));
+  if (a.prestress.stable) stress_lines(line, model, a, "  the stabilising self-stress (positive: tension):", a.prestress.stress);
+}
+
+// Stress state k: its cause and non-zero resultants.
+void stress_state_text(TextLines& line, const FrameworkModel& model, const FrameworkResult& a, std::size_t k,
+                       const framework::GenericFramework* generic) {
+  const std::string cause =
+      generic && k < generic->stress_causes.size() ? ", from the " + linalg::cause_name(generic->stress_causes[k]) : "";
+  line(fmt::format("stress state {} (generalised stress resultants){}:", k + 1, cause));
+  for (Eigen::Index row = 0; row < a.stresses[k].resultants.size(); ++row)
+    if (a.stresses[k].resultants(row) != 0.0)
+      line(fmt::format("  {:>24} {:>12}", printable_row_label(model, a, row), number(a.stresses[k].resultants(row))));
+}
+
+// The proposal (releases, coordinates to constrain), or why there is none.
+void proposal_text(TextLines& line, const FrameworkModel& model, const FrameworkResult& a) {
   if (!a.releases.empty()) {
     std::string list;
-    for (Eigen::Index row : a.releases) list += (list.empty() ? "" : ", ") + row_label(row);
+    for (Eigen::Index row : a.releases) list += (list.empty() ? "" : ", ") + printable_row_label(model, a, row);
     line("release (one minimal set): " + list);
   }
   if (!a.constrain.empty()) {
     std::string list;
-    for (Eigen::Index col : a.constrain) list += (list.empty() ? "" : ", ") + column_label(col);
+    for (Eigen::Index col : a.constrain) list += (list.empty() ? "" : ", ") + printable_column_label(model, a, col);
     line("constrain or declare independent (one minimal set): " + list);
   }
   if (!a.vectors && (a.mechanisms > 0 || a.self_stresses > 0))
     line("(model too large for the dense SVD: modes and stress states not computed; --vectors K gives the first K)");
-  return out;
+}
+
+}  // namespace
+
+std::string framework_report_text(const FrameworkModel& model, const FrameworkResult& a, const design::Verdict* verdict,
+                                  const framework::GenericFramework* generic) {
+  TextLines line;
+  if (verdict) line.out = verdict_text(*verdict);
+  count_text(line, model, a);
+  rank_section_text(line, a);
+  if (generic) generic_section_text(line, model, a, *generic);
+  if (compact(a) && a.vectors)
+    line(fmt::format("vectors from the sparse R factors: first {} of {} mode(s), first {} of {} stress state(s); "
+                     "largest relative residual {}",
+                     a.modes.size(), a.mechanisms, a.stresses.size(), a.self_stresses, evidence(a.null_space_residual)));
+  for (std::size_t k = 0; k < a.modes.size(); ++k) mode_text(line, model, a, k, generic);
+  if (a.prestress.tested) prestress_text(line, model, a);
+  for (std::size_t k = 0; k < a.stresses.size(); ++k) stress_state_text(line, model, a, k, generic);
+  proposal_text(line, model, a);
+  return line.out;
 }
 
 }  // namespace kinestat::report
