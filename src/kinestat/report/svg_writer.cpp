@@ -201,6 +201,89 @@ void panel_title(std::string& out, P at, const std::string& title, const std::st
   text(out, at + P{0, 16}, subtitle, "middle", "font-size=\"11\" fill=\"#555\"");
 }
 
+/// Circuits of the coupling graph: an arc arrow at the centre of their edges (`middle`: the
+/// middle of each edge), named by their chord.
+void draw_circuits(std::string& out, const Scene& scene, const std::vector<P>& middle) {
+  for (Eigen::Index row = 0; row < scene.B.rows(); ++row) {
+    P mean{0, 0};
+    int count = 0;
+    for (Eigen::Index e = 0; e < scene.B.cols(); ++e)
+      if (scene.B(row, e) != 0) {
+        mean = mean + middle[static_cast<std::size_t>(e)];
+        ++count;
+      }
+    if (count == 0) continue;
+    mean = (1.0 / count) * mean;
+    const double r = 16;
+    const P start = mean + P{r, 0}, end = mean + P{0, -r};
+    out += fmt::format("<path d=\"M{} A{},{} 0 1 1 {}\" fill=\"none\" stroke=\"#1b7837\" stroke-width=\"1.5\" marker-end=\"url(#arrow-green)\"/>\n",
+                       pt(start), f2(r), f2(r), pt(end));
+    std::string name;
+    for (std::size_t e = 0; e < scene.edges.size(); ++e)
+      if (!scene.edges[e].branch && scene.B(row, static_cast<Eigen::Index>(e)) != 0 && name.empty()) {
+        // The circuit of a chord contains only that chord.
+        name = scene.edges[e].name;
+      }
+    if (graph_names_drawn(scene)) text(out, mean + P{0, 4}, name, "middle", "font-size=\"10\" fill=\"#1b7837\"");
+  }
+}
+
+/// The line a cutset is drawn along, through the middles `points` of its edges (mean `mean`):
+/// across the edge for one edge, else ordered along the points' principal direction and
+/// extended past both ends.
+std::vector<P> cutset_line(const Scene& scene, const std::vector<P>& at, Eigen::Index row, std::vector<P> points, P mean) {
+  if (points.size() == 1) {
+    std::size_t e = 0;
+    for (Eigen::Index c = 0; c < scene.Q.cols(); ++c)
+      if (scene.Q(row, c) != 0) e = static_cast<std::size_t>(c);
+    const auto& edge = scene.edges[e];
+    const P d = unit(at[static_cast<std::size_t>(edge.to)] - at[static_cast<std::size_t>(edge.from)]);
+    const P n{-d.y, d.x};
+    return {points[0] - 22.0 * n, points[0] + 22.0 * n};
+  }
+  double sxx = 0, sxy = 0, syy = 0;
+  for (const P& p : points) {
+    const P q = p - mean;
+    sxx += q.x * q.x;
+    sxy += q.x * q.y;
+    syy += q.y * q.y;
+  }
+  const double angle = 0.5 * std::atan2(2 * sxy, sxx - syy);
+  const P axis{std::cos(angle), std::sin(angle)};
+  std::stable_sort(points.begin(), points.end(), [&](P a, P b) {
+    return (a.x - mean.x) * axis.x + (a.y - mean.y) * axis.y < (b.x - mean.x) * axis.x + (b.y - mean.y) * axis.y;
+  });
+  std::vector<P> line;
+  line.push_back(points.front() - 18.0 * unit(points[1] - points[0]));
+  for (const P& p : points) line.push_back(p);
+  line.push_back(points.back() + 18.0 * unit(points.back() - points[points.size() - 2]));
+  return line;
+}
+
+/// Cutsets of the coupling graph: a dashed line through the middles of their edges, named by
+/// their branch.
+void draw_cutsets(std::string& out, const Scene& scene, const std::vector<P>& at, const std::vector<P>& middle) {
+  for (Eigen::Index row = 0; row < scene.Q.rows(); ++row) {
+    std::vector<P> points;
+    std::string name;
+    for (Eigen::Index e = 0; e < scene.Q.cols(); ++e)
+      if (scene.Q(row, e) != 0) {
+        points.push_back(middle[static_cast<std::size_t>(e)]);
+        if (scene.edges[static_cast<std::size_t>(e)].branch && name.empty()) name = scene.edges[static_cast<std::size_t>(e)].name;
+      }
+    if (points.empty()) continue;
+    P mean{0, 0};
+    for (const P& p : points) mean = mean + p;
+    mean = (1.0 / static_cast<double>(points.size())) * mean;
+    const std::vector<P> line = cutset_line(scene, at, row, std::move(points), mean);
+    std::string d = "M" + pt(line[0]);
+    for (std::size_t i = 1; i < line.size(); ++i) d += " L" + pt(line[i]);
+    out += fmt::format("<path d=\"{}\" fill=\"none\" stroke=\"#762a83\" stroke-width=\"1.5\" stroke-dasharray=\"6,4\"/>\n", d);
+    const P label_at = line.back() + 10.0 * unit(line.back() - line[line.size() - 2]);
+    if (graph_names_drawn(scene)) text(out, label_at + P{0, 4}, name, "middle", "font-size=\"10\" fill=\"#762a83\"");
+  }
+}
+
 /// Coupling graph with tree, chords, circuits and cutsets in the square panel at `origin`.
 void coupling_graph_panel(std::string& out, const Scene& scene, P origin, double size) {
   const P centre = origin + P{size / 2, size / 2 + 20};
@@ -225,76 +308,8 @@ void coupling_graph_panel(std::string& out, const Scene& scene, P origin, double
     if (graph_names_drawn(scene)) text(out, middle[e] + 11.0 * side + P{0, 4}, label, "middle", "font-style=\"italic\" " + kHalo);
   }
   if (network) {
-    // Circuits: an arc arrow at the centre of their edges, named by their chord.
-    for (Eigen::Index row = 0; row < scene.B.rows(); ++row) {
-      P mean{0, 0};
-      int count = 0;
-      for (Eigen::Index e = 0; e < scene.B.cols(); ++e)
-        if (scene.B(row, e) != 0) {
-          mean = mean + middle[static_cast<std::size_t>(e)];
-          ++count;
-        }
-      if (count == 0) continue;
-      mean = (1.0 / count) * mean;
-      const double r = 16;
-      const P start = mean + P{r, 0}, end = mean + P{0, -r};
-      out += fmt::format("<path d=\"M{} A{},{} 0 1 1 {}\" fill=\"none\" stroke=\"#1b7837\" stroke-width=\"1.5\" marker-end=\"url(#arrow-green)\"/>\n",
-                         pt(start), f2(r), f2(r), pt(end));
-      std::string name;
-      for (std::size_t e = 0; e < scene.edges.size(); ++e)
-        if (!scene.edges[e].branch && scene.B(row, static_cast<Eigen::Index>(e)) != 0 && name.empty()) {
-          // The circuit of a chord contains only that chord.
-          name = scene.edges[e].name;
-        }
-      if (graph_names_drawn(scene)) text(out, mean + P{0, 4}, name, "middle", "font-size=\"10\" fill=\"#1b7837\"");
-    }
-    // Cutsets: a dashed line through the middles of their edges, named by their branch.
-    for (Eigen::Index row = 0; row < scene.Q.rows(); ++row) {
-      std::vector<P> points;
-      std::string name;
-      for (Eigen::Index e = 0; e < scene.Q.cols(); ++e)
-        if (scene.Q(row, e) != 0) {
-          points.push_back(middle[static_cast<std::size_t>(e)]);
-          if (scene.edges[static_cast<std::size_t>(e)].branch && name.empty()) name = scene.edges[static_cast<std::size_t>(e)].name;
-        }
-      if (points.empty()) continue;
-      P mean{0, 0};
-      for (const P& p : points) mean = mean + p;
-      mean = (1.0 / static_cast<double>(points.size())) * mean;
-      std::vector<P> line;
-      if (points.size() == 1) {
-        // Across the single edge.
-        std::size_t e = 0;
-        for (Eigen::Index c = 0; c < scene.Q.cols(); ++c)
-          if (scene.Q(row, c) != 0) e = static_cast<std::size_t>(c);
-        const auto& edge = scene.edges[e];
-        const P d = unit(at[static_cast<std::size_t>(edge.to)] - at[static_cast<std::size_t>(edge.from)]);
-        const P n{-d.y, d.x};
-        line = {points[0] - 22.0 * n, points[0] + 22.0 * n};
-      } else {
-        // Ordered along the principal direction of the points, extended past both ends.
-        double sxx = 0, sxy = 0, syy = 0;
-        for (const P& p : points) {
-          const P q = p - mean;
-          sxx += q.x * q.x;
-          sxy += q.x * q.y;
-          syy += q.y * q.y;
-        }
-        const double angle = 0.5 * std::atan2(2 * sxy, sxx - syy);
-        const P axis{std::cos(angle), std::sin(angle)};
-        std::stable_sort(points.begin(), points.end(), [&](P a, P b) {
-          return (a.x - mean.x) * axis.x + (a.y - mean.y) * axis.y < (b.x - mean.x) * axis.x + (b.y - mean.y) * axis.y;
-        });
-        line.push_back(points.front() - 18.0 * unit(points[1] - points[0]));
-        for (const P& p : points) line.push_back(p);
-        line.push_back(points.back() + 18.0 * unit(points.back() - points[points.size() - 2]));
-      }
-      std::string d = "M" + pt(line[0]);
-      for (std::size_t i = 1; i < line.size(); ++i) d += " L" + pt(line[i]);
-      out += fmt::format("<path d=\"{}\" fill=\"none\" stroke=\"#762a83\" stroke-width=\"1.5\" stroke-dasharray=\"6,4\"/>\n", d);
-      const P label_at = line.back() + 10.0 * unit(line.back() - line[line.size() - 2]);
-      if (graph_names_drawn(scene)) text(out, label_at + P{0, 4}, name, "middle", "font-size=\"10\" fill=\"#762a83\"");
-    }
+    draw_circuits(out, scene, middle);
+    draw_cutsets(out, scene, at, middle);
   }
   draw_bodies(out, scene, at);
 }
@@ -575,120 +590,133 @@ namespace {
 std::string out_of(std::size_t drawn, std::size_t total) {
   return total > drawn ? fmt::format("first {} of {}", drawn, total) : fmt::format("of {}", drawn);
 }
-}  // namespace
 
-std::string mechanism_svg(const Scene& scene, const MechanismDrawing& drawing) {
+// Sections of mechanism_svg: the layout first, then the drawing in painting order (lines,
+// labels, couplings, screw axes, nodes, arrows, axes and scale bar, legend).
+
+// What mechanism_svg draws and where: the mode and self-stress drawn, the nodes projected, the
+// mode's arrows and the fit of the drawing to the canvas (pixels, y down).
+struct MechanismLayout {
   View view;
-  view.dimension = scene.dimension;
-  const std::vector<std::string> verdict = verdict_lines(scene);
-  const SceneMode* mode = drawing.mode >= 1 && drawing.mode <= static_cast<int>(scene.modes.size())
-                              ? &scene.modes[static_cast<std::size_t>(drawing.mode - 1)]
-                              : nullptr;
-  const SceneStress* stress = drawing.stress >= 1 && drawing.stress <= static_cast<int>(scene.stresses.size())
-                                  ? &scene.stresses[static_cast<std::size_t>(drawing.stress - 1)]
-                                  : nullptr;
-  if (scene.large) mode = nullptr, stress = nullptr;
-  // Legend lines, known before the layout so the drawing can make room for them.
-  std::vector<std::pair<std::string, std::string>> legend_lines;  // (swatch, text)
+  const SceneMode* mode = nullptr;
+  const SceneStress* stress = nullptr;
+  std::vector<std::string> verdict;
   double largest_stress = 0;
-  std::set<std::string> kinds;
-  if (stress) {
-    for (std::size_t e = 0; e < stress->value.size(); ++e) {
-      largest_stress = std::max(largest_stress, std::abs(stress->value[e]));
-      if (e < stress->kind.size() && !stress->kind[e].empty() && stress->value[e] != 0.0) kinds.insert(stress->kind[e]);
-    }
-  }
-  const double width = 640, margin = 50, top = 40 + 16.0 * static_cast<double>(verdict.size());
-  bool any_sheet = false;
-  for (const auto& element : scene.elements) any_sheet = any_sheet || element.sheet_across.has_value();
-  const double legend = 48 + 20.0 * ((mode ? 3 : 0) + (stress ? 3 : 0) + (any_sheet ? 1 : 0));
-  const double drawing_height = 420;
-  const double height = top + drawing_height + legend;
-  std::vector<P> at;
-  for (const auto& node : scene.nodes) at.push_back(view.project(node.position));
-  P lo{1e300, 1e300}, hi{-1e300, -1e300};
-  for (const P& p : at) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
-  }
-  if (at.empty()) lo = hi = P{0, 0};
-  const double extent = std::max({hi.x - lo.x, hi.y - lo.y, kCoincident});
-  // Mode arrows: the largest is a fifth of the drawing; the displaced shape ends at the tips.
-  std::vector<P> arrow(at.size(), P{0, 0});
-  if (mode) {
-    double largest = 0;
-    for (std::size_t i = 0; i < at.size(); ++i) {
-      arrow[i] = view.project(scene.nodes[i].position + mode->velocity[i]) - at[i];
-      largest = std::max(largest, norm(arrow[i]));
-    }
-    for (std::size_t i = 0; i < at.size(); ++i) {
-      arrow[i] = largest > 0 && norm(arrow[i]) > kDrawnZero * largest ? (0.2 * extent / largest) * arrow[i] : P{0, 0};
-      const P tip = at[i] + arrow[i];
-      lo = {std::min(lo.x, tip.x), std::min(lo.y, tip.y)};
-      hi = {std::max(hi.x, tip.x), std::max(hi.y, tip.y)};
-    }
-  }
-  // Screw axes (networks) are drawn 0.3 of the model size to either side of their point:
-  // keep them inside the drawing.
-  const auto include_screws = [&](const std::vector<SceneScrew>& screws) {
-    for (const auto& screw : screws) {
-      const std::vector<Eigen::Vector3d> ends =
-          screw.pure ? std::vector<Eigen::Vector3d>{screw.anchor, screw.anchor + 0.15 * extent * screw.direction}
-                     : std::vector<Eigen::Vector3d>{screw.point - 0.3 * extent * screw.direction, screw.point + 0.3 * extent * screw.direction};
-      for (const auto& end : ends) {
-        const P q = view.project(end);
-        lo = {std::min(lo.x, q.x), std::min(lo.y, q.y)};
-        hi = {std::max(hi.x, q.x), std::max(hi.y, q.y)};
-      }
-    }
-  };
-  if (mode) include_screws(mode->twists);
-  if (stress) include_screws(stress->wrenches);
+  std::set<std::string> kinds;  ///< kinds of resultant the self-stress loads
+  double width = 640, margin = 50, top = 0, drawing_height = 420, height = 0;
+  std::vector<P> at;     ///< nodes projected, before fitting
+  std::vector<P> arrow;  ///< mode arrows, before fitting
+  double extent = 0;     ///< the model's projected size
   Fit fit;
-  const double span_x = std::max(hi.x - lo.x, kCoincident * extent), span_y = std::max(hi.y - lo.y, kCoincident * extent);
-  fit.scale = std::min((width - 2 * margin) / span_x, (drawing_height - 2 * margin) / span_y);
-  if (!std::isfinite(fit.scale) || fit.scale <= 0) fit.scale = 1;
-  fit.ox = width / 2 - fit.scale * (lo.x + hi.x) / 2;
-  fit.oy = top + drawing_height / 2 + fit.scale * (lo.y + hi.y) / 2;
-
-  std::string out = header(width, height);
-  text(out, P{width / 2, 24}, scene.name, "middle", "font-size=\"14\" font-weight=\"bold\"");
-  for (std::size_t i = 0; i < verdict.size(); ++i)
-    text(out, P{width / 2, 42 + 16.0 * static_cast<double>(i)}, verdict[i], "middle", "class=\"verdict\" font-size=\"12\" fill=\"#333\"");
-  if (scene.large) {
-    std::string d;
-    for (const auto& element : scene.elements)
-      d += "M" + pt(fit(at[static_cast<std::size_t>(element.a)])) + "L" + pt(fit(at[static_cast<std::size_t>(element.b)]));
-    out += "<path d=\"" + d + "\" fill=\"none\" stroke=\"#333\" stroke-width=\"0.5\"/>\n";
-    text(out, P{width / 2, height - 20},
-         fmt::format("{} elements: drawn as one path without labels, modes or stresses", scene.elements.size()), "middle",
-         "font-size=\"11\" fill=\"#555\"");
-    out += "</svg>\n";
-    return out;
-  }
-  // Lines in their configuration style: rigid bodies as wide light bands, flexures (beams) as
-  // thin dark lines, trusses as lines, network links grey.
-  const auto element_style = [](const SceneElement& element) -> std::pair<std::string, std::string> {
-    if (element.type == "rigid") return {"#9fb3c8", "8"};
-    if (element.type == "beam") return {"#222", "2.5"};
-    if (element.type == "link") return {"#555", "3"};
-    return {"#333", "2"};
-  };
-  const auto line = [&out](P a, P b, const std::string& colour, const std::string& stroke, const std::string& extra) {
-    out += fmt::format("<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{}\" stroke-width=\"{}\" stroke-linecap=\"round\"{}/>\n", f2(a.x),
-                       f2(a.y), f2(b.x), f2(b.y), colour, stroke, extra);
-  };
   // A mode alone: the undeformed shape in light grey under the displaced shape drawn in full.
   // A mode with a self-stress: the stress colours stay on the undeformed shape and the
   // displaced shape is a thin dashed orange outline.
-  const bool displaced_in_full = mode && !stress;
-  const double shift = displaced_in_full ? 1.0 : 0.0;
-  if (displaced_in_full) {
-    for (const auto& element : scene.elements)
-      line(fit(at[static_cast<std::size_t>(element.a)]), fit(at[static_cast<std::size_t>(element.b)]), "#cccccc",
-           element.type == "rigid" ? "6" : "2", " class=\"undeformed\"");
+  bool displaced_in_full = false;
+  double shift = 0;  ///< 1 when the shape is drawn displaced by the arrows
+};
+
+struct Bounds {
+  P lo{1e300, 1e300}, hi{-1e300, -1e300};
+  void include(P p) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
   }
-  // Sheets (leaf springs) as light quadrilaterals under their centre lines.
+};
+
+// Mode arrows: the largest is a fifth of the drawing; the displaced shape ends at the tips.
+void scale_mode_arrows(MechanismLayout& l, const Scene& scene, Bounds& bounds) {
+  double largest = 0;
+  for (std::size_t i = 0; i < l.at.size(); ++i) {
+    l.arrow[i] = l.view.project(scene.nodes[i].position + l.mode->velocity[i]) - l.at[i];
+    largest = std::max(largest, norm(l.arrow[i]));
+  }
+  for (std::size_t i = 0; i < l.at.size(); ++i) {
+    l.arrow[i] = largest > 0 && norm(l.arrow[i]) > kDrawnZero * largest ? (0.2 * l.extent / largest) * l.arrow[i] : P{0, 0};
+    bounds.include(l.at[i] + l.arrow[i]);
+  }
+}
+
+// Screw axes (networks) are drawn 0.3 of the model size to either side of their point:
+// keep them inside the drawing.
+void include_screws(const MechanismLayout& l, const std::vector<SceneScrew>& screws, Bounds& bounds) {
+  for (const auto& screw : screws) {
+    const std::vector<Eigen::Vector3d> ends =
+        screw.pure ? std::vector<Eigen::Vector3d>{screw.anchor, screw.anchor + 0.15 * l.extent * screw.direction}
+                   : std::vector<Eigen::Vector3d>{screw.point - 0.3 * l.extent * screw.direction, screw.point + 0.3 * l.extent * screw.direction};
+    for (const auto& end : ends) bounds.include(l.view.project(end));
+  }
+}
+
+MechanismLayout mechanism_layout(const Scene& scene, const MechanismDrawing& drawing) {
+  MechanismLayout l;
+  l.view.dimension = scene.dimension;
+  l.verdict = verdict_lines(scene);
+  l.mode = drawing.mode >= 1 && drawing.mode <= static_cast<int>(scene.modes.size())
+               ? &scene.modes[static_cast<std::size_t>(drawing.mode - 1)]
+               : nullptr;
+  l.stress = drawing.stress >= 1 && drawing.stress <= static_cast<int>(scene.stresses.size())
+                 ? &scene.stresses[static_cast<std::size_t>(drawing.stress - 1)]
+                 : nullptr;
+  if (scene.large) l.mode = nullptr, l.stress = nullptr;
+  // Legend lines, known before the layout so the drawing can make room for them.
+  if (l.stress) {
+    for (std::size_t e = 0; e < l.stress->value.size(); ++e) {
+      l.largest_stress = std::max(l.largest_stress, std::abs(l.stress->value[e]));
+      if (e < l.stress->kind.size() && !l.stress->kind[e].empty() && l.stress->value[e] != 0.0) l.kinds.insert(l.stress->kind[e]);
+    }
+  }
+  l.top = 40 + 16.0 * static_cast<double>(l.verdict.size());
+  bool any_sheet = false;
+  for (const auto& element : scene.elements) any_sheet = any_sheet || element.sheet_across.has_value();
+  const double legend = 48 + 20.0 * ((l.mode ? 3 : 0) + (l.stress ? 3 : 0) + (any_sheet ? 1 : 0));
+  l.height = l.top + l.drawing_height + legend;
+  for (const auto& node : scene.nodes) l.at.push_back(l.view.project(node.position));
+  Bounds bounds;
+  for (const P& p : l.at) bounds.include(p);
+  if (l.at.empty()) bounds.lo = bounds.hi = P{0, 0};
+  l.extent = std::max({bounds.hi.x - bounds.lo.x, bounds.hi.y - bounds.lo.y, kCoincident});
+  l.arrow.assign(l.at.size(), P{0, 0});
+  if (l.mode) scale_mode_arrows(l, scene, bounds);
+  if (l.mode) include_screws(l, l.mode->twists, bounds);
+  if (l.stress) include_screws(l, l.stress->wrenches, bounds);
+  const P lo = bounds.lo, hi = bounds.hi;
+  const double span_x = std::max(hi.x - lo.x, kCoincident * l.extent), span_y = std::max(hi.y - lo.y, kCoincident * l.extent);
+  l.fit.scale = std::min((l.width - 2 * l.margin) / span_x, (l.drawing_height - 2 * l.margin) / span_y);
+  if (!std::isfinite(l.fit.scale) || l.fit.scale <= 0) l.fit.scale = 1;
+  l.fit.ox = l.width / 2 - l.fit.scale * (lo.x + hi.x) / 2;
+  l.fit.oy = l.top + l.drawing_height / 2 + l.fit.scale * (lo.y + hi.y) / 2;
+  l.displaced_in_full = l.mode && !l.stress;
+  l.shift = l.displaced_in_full ? 1.0 : 0.0;
+  return l;
+}
+
+// A model too large to label: every element in one path, and a note.
+void draw_large_model(std::string& out, const Scene& scene, const MechanismLayout& l) {
+  std::string d;
+  for (const auto& element : scene.elements)
+    d += "M" + pt(l.fit(l.at[static_cast<std::size_t>(element.a)])) + "L" + pt(l.fit(l.at[static_cast<std::size_t>(element.b)]));
+  out += "<path d=\"" + d + "\" fill=\"none\" stroke=\"#333\" stroke-width=\"0.5\"/>\n";
+  text(out, P{l.width / 2, l.height - 20},
+       fmt::format("{} elements: drawn as one path without labels, modes or stresses", scene.elements.size()), "middle",
+       "font-size=\"11\" fill=\"#555\"");
+}
+
+void svg_line(std::string& out, P a, P b, const std::string& colour, const std::string& stroke, const std::string& extra) {
+  out += fmt::format("<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{}\" stroke-width=\"{}\" stroke-linecap=\"round\"{}/>\n", f2(a.x),
+                     f2(a.y), f2(b.x), f2(b.y), colour, stroke, extra);
+}
+
+// Lines in their configuration style: rigid bodies as wide light bands, flexures (beams) as
+// thin dark lines, trusses as lines, network links grey.
+std::pair<std::string, std::string> element_style(const SceneElement& element) {
+  if (element.type == "rigid") return {"#9fb3c8", "8"};
+  if (element.type == "beam") return {"#222", "2.5"};
+  if (element.type == "link") return {"#555", "3"};
+  return {"#333", "2"};
+}
+
+// Sheets (leaf springs) as light quadrilaterals under their centre lines; whether there are any.
+bool draw_sheets(std::string& out, const Scene& scene, const MechanismLayout& l) {
   bool sheets = false;
   for (const auto& element : scene.elements) {
     if (!element.sheet_across) continue;
@@ -696,77 +724,99 @@ std::string mechanism_svg(const Scene& scene, const MechanismDrawing& drawing) {
     const auto ia = static_cast<std::size_t>(element.a), ib = static_cast<std::size_t>(element.b);
     const Eigen::Vector3d pa = scene.nodes[ia].position, pb = scene.nodes[ib].position;
     const Eigen::Vector3d half = 0.5 * kSheetWidth * (pb - pa).norm() * *element.sheet_across;
-    const P a1 = fit(view.project(pa + half) + shift * arrow[ia]), a2 = fit(view.project(pa - half) + shift * arrow[ia]);
-    const P b1 = fit(view.project(pb + half) + shift * arrow[ib]), b2 = fit(view.project(pb - half) + shift * arrow[ib]);
+    const P a1 = l.fit(l.view.project(pa + half) + l.shift * l.arrow[ia]), a2 = l.fit(l.view.project(pa - half) + l.shift * l.arrow[ia]);
+    const P b1 = l.fit(l.view.project(pb + half) + l.shift * l.arrow[ib]), b2 = l.fit(l.view.project(pb - half) + l.shift * l.arrow[ib]);
     out += fmt::format("<path class=\"sheet\" data-element=\"{}\" d=\"M{} L{} L{} L{} z\" fill=\"#efe3c8\" fill-opacity=\"0.85\" stroke=\"#b59b6a\" stroke-width=\"0.8\"/>\n",
                        escape(element.name), pt(a1), pt(b1), pt(b2), pt(a2));
   }
+  return sheets;
+}
+
+// The elements: the undeformed shape under a displaced one, sheets, the elements coloured by
+// the self-stress, the dashed displaced outline. Returns whether there are sheets.
+bool draw_elements(std::string& out, const Scene& scene, const MechanismLayout& l) {
+  if (l.displaced_in_full) {
+    for (const auto& element : scene.elements)
+      svg_line(out, l.fit(l.at[static_cast<std::size_t>(element.a)]), l.fit(l.at[static_cast<std::size_t>(element.b)]), "#cccccc",
+               element.type == "rigid" ? "6" : "2", " class=\"undeformed\"");
+  }
+  const bool sheets = draw_sheets(out, scene, l);
   for (std::size_t e = 0; e < scene.elements.size(); ++e) {
     const auto& element = scene.elements[e];
     const auto ia = static_cast<std::size_t>(element.a), ib = static_cast<std::size_t>(element.b);
-    const P a = fit(at[ia] + shift * arrow[ia]), b = fit(at[ib] + shift * arrow[ib]);
+    const P a = l.fit(l.at[ia] + l.shift * l.arrow[ia]), b = l.fit(l.at[ib] + l.shift * l.arrow[ib]);
     auto [colour, width_text] = element_style(element);
     std::string extra = " data-element=\"" + escape(element.name) + "\"";
-    if (stress && largest_stress > 0 && e < stress->value.size()) {
-      const double v = stress->value[e];
-      const std::string kind = e < stress->kind.size() ? stress->kind[e] : "";
-      if (std::abs(v) > kDrawnZero * largest_stress) {
+    if (l.stress && l.largest_stress > 0 && e < l.stress->value.size()) {
+      const double v = l.stress->value[e];
+      const std::string kind = e < l.stress->kind.size() ? l.stress->kind[e] : "";
+      if (std::abs(v) > kDrawnZero * l.largest_stress) {
         colour = stress_colour(kind, v);
-        width_text = fixed(1.5 + 3.5 * std::abs(v) / largest_stress, 2);
+        width_text = fixed(1.5 + 3.5 * std::abs(v) / l.largest_stress, 2);
         extra += " data-kind=\"" + kind + "\" data-value=\"" + fixed(v, 6) + "\"";
       } else {
         colour = "#bbbbbb";
       }
     }
-    line(a, b, colour, width_text, extra);
+    svg_line(out, a, b, colour, width_text, extra);
   }
-  if (mode && !displaced_in_full) {
+  if (l.mode && !l.displaced_in_full) {
     for (const auto& element : scene.elements) {
       const auto ia = static_cast<std::size_t>(element.a), ib = static_cast<std::size_t>(element.b);
-      line(fit(at[ia] + arrow[ia]), fit(at[ib] + arrow[ib]), "#e66101", "1", " stroke-dasharray=\"4,3\" class=\"displaced\"");
+      svg_line(out, l.fit(l.at[ia] + l.arrow[ia]), l.fit(l.at[ib] + l.arrow[ib]), "#e66101", "1",
+               " stroke-dasharray=\"4,3\" class=\"displaced\"");
     }
   }
-  // Labels never cover each other, a node or a coupling's square: node names are placed first
-  // (the four corners around the node), then element, coupling and screw labels.
-  LabelSpace labels(2, top, width - 2, top + drawing_height - 4);
+  return sheets;
+}
+
+// Labels never cover each other, a node or a coupling's square: the marks and lines are
+// blocked first, then node names take their places (the four corners around the node). The
+// node labels are drawn later, over the nodes.
+std::vector<std::optional<LabelSpace::Place>> place_node_labels(LabelSpace& labels, const Scene& scene, const MechanismLayout& l) {
   const bool label_nodes = scene.nodes.size() <= 200;
   const std::size_t labelled = scene.kind == io::ModelKind::network ? scene.bodies.size() : scene.nodes.size();
   for (std::size_t i = 0; i < scene.nodes.size(); ++i)
-    if (scene.kind != io::ModelKind::network || i < scene.bodies.size()) labels.block(fit(at[i] + shift * arrow[i]), 4.5);
-  for (const auto& glyph : scene.glyphs) labels.block(fit(view.project(glyph.point)), 5.5);
+    if (scene.kind != io::ModelKind::network || i < scene.bodies.size()) labels.block(l.fit(l.at[i] + l.shift * l.arrow[i]), 4.5);
+  for (const auto& glyph : scene.glyphs) labels.block(l.fit(l.view.project(glyph.point)), 5.5);
   for (std::size_t e = 0; e < scene.elements.size(); ++e) {
     const auto ia = static_cast<std::size_t>(scene.elements[e].a), ib = static_cast<std::size_t>(scene.elements[e].b);
-    labels.avoid(fit(at[ia] + shift * arrow[ia]), fit(at[ib] + shift * arrow[ib]), static_cast<int>(e));
+    labels.avoid(l.fit(l.at[ia] + l.shift * l.arrow[ia]), l.fit(l.at[ib] + l.shift * l.arrow[ib]), static_cast<int>(e));
   }
   std::vector<std::optional<LabelSpace::Place>> node_label(scene.nodes.size());
   for (std::size_t i = 0; label_nodes && i < std::min(labelled, scene.nodes.size()); ++i) {
-    const P p = fit(at[i]);
+    const P p = l.fit(l.at[i]);
     node_label[i] = labels.place({{p + P{-7, -7}, "end"}, {p + P{7, -7}, "start"}, {p + P{-7, 15}, "end"}, {p + P{7, 15}, "start"}},
                                  scene.nodes[i].name, 11);
   }
-  // Element labels beside the element (mid-length first, then towards either end), for readable sizes.
-  if (scene.kind == io::ModelKind::framework && scene.elements.size() <= 60) {
-    for (std::size_t e = 0; e < scene.elements.size(); ++e) {
-      const auto& element = scene.elements[e];
-      if (!element.label) continue;
-      const auto ia = static_cast<std::size_t>(element.a), ib = static_cast<std::size_t>(element.b);
-      const P a = fit(at[ia]), b = fit(at[ib]);
-      const P d = unit(b - a);
-      std::vector<LabelSpace::Place> places;
-      for (double t : {0.5, 0.35, 0.65, 0.2, 0.8})
-        for (double side : {8.0, -8.0}) places.push_back({a + t * (b - a) + side * P{-d.y, d.x} + P{0, 3}, "middle"});
-      if (const auto place = labels.place(places, element.name, 9, static_cast<int>(e)))
-        text(out, place->at, element.name, place->anchor,
-             "class=\"element-label\" font-size=\"9\" font-style=\"italic\" fill=\"#666\" " + kHalo);
-    }
+  return node_label;
+}
+
+// Element labels beside the element (mid-length first, then towards either end), for readable sizes.
+void draw_element_labels(std::string& out, LabelSpace& labels, const Scene& scene, const MechanismLayout& l) {
+  if (scene.kind != io::ModelKind::framework || scene.elements.size() > 60) return;
+  for (std::size_t e = 0; e < scene.elements.size(); ++e) {
+    const auto& element = scene.elements[e];
+    if (!element.label) continue;
+    const auto ia = static_cast<std::size_t>(element.a), ib = static_cast<std::size_t>(element.b);
+    const P a = l.fit(l.at[ia]), b = l.fit(l.at[ib]);
+    const P d = unit(b - a);
+    std::vector<LabelSpace::Place> places;
+    for (double t : {0.5, 0.35, 0.65, 0.2, 0.8})
+      for (double side : {8.0, -8.0}) places.push_back({a + t * (b - a) + side * P{-d.y, d.x} + P{0, 3}, "middle"});
+    if (const auto place = labels.place(places, element.name, 9, static_cast<int>(e)))
+      text(out, place->at, element.name, place->anchor, "class=\"element-label\" font-size=\"9\" font-style=\"italic\" fill=\"#666\" " + kHalo);
   }
-  // Coupling glyphs: a square at the point, the axis as a dash-dotted line.
+}
+
+// Coupling glyphs: a square at the point, the axis as a dash-dotted line.
+void draw_glyphs(std::string& out, LabelSpace& labels, const Scene& scene, const MechanismLayout& l) {
   for (const auto& glyph : scene.glyphs) {
-    const P p = fit(view.project(glyph.point));
+    const P p = l.fit(l.view.project(glyph.point));
     const auto axis = glyph.axis ? glyph.axis : glyph.normal;
     if (axis && axis->norm() > 0) {
-      const Eigen::Vector3d u = axis->normalized() * 0.18 * extent;
-      const P a = fit(view.project(glyph.point - u)), b = fit(view.project(glyph.point + u));
+      const Eigen::Vector3d u = axis->normalized() * 0.18 * l.extent;
+      const P a = l.fit(l.view.project(glyph.point - u)), b = l.fit(l.view.project(glyph.point + u));
       if (norm(b - a) > 2)
         out += fmt::format("<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"#1b7837\" stroke-width=\"1\" stroke-dasharray=\"8,3,2,3\"/>\n",
                            f2(a.x), f2(a.y), f2(b.x), f2(b.y));
@@ -781,161 +831,212 @@ std::string mechanism_svg(const Scene& scene, const MechanismDrawing& drawing) {
     if (const auto place = labels.place(places, name, 10))
       text(out, place->at, name, place->anchor, "class=\"coupling-label\" font-size=\"10\" fill=\"#1b7837\" " + kHalo);
   }
-  // Networks: the screw axes of the mode (body twists) or of the self-stress (coupling wrenches).
-  // Labels of screws near one place are stacked upwards, 12 px apart, to the right or the left.
-  const auto screw_label = [&](P at_point, const std::string& content, const std::string& colour) {
-    std::vector<LabelSpace::Place> places;
-    for (int k = 0; k < 5; ++k) places.push_back({at_point + P{8, -8.0 - 12.0 * k}, "start"});
-    for (int k = 0; k < 5; ++k) places.push_back({at_point + P{-8, -8.0 - 12.0 * k}, "end"});
-    if (const auto place = labels.place(places, content, 10))
-      text(out, place->at, content, place->anchor, "class=\"screw-label\" font-size=\"10\" fill=\"" + colour + "\" " + kHalo);
-  };
-  const auto screw_axes = [&](const std::vector<SceneScrew>& screws, const std::string& colour, const std::string& marker,
-                              const std::string& cls, bool twist) {
-    double largest = 0;
-    for (const auto& screw : screws) largest = std::max(largest, screw.magnitude);
-    for (const auto& screw : screws) {
-      const P anchor = fit(view.project(screw.point));
-      std::string label;
-      if (screw.pure) {
-        const Eigen::Vector3d u = screw.direction * 0.15 * extent;
-        const P a = fit(view.project(screw.anchor)), b = fit(view.project(screw.anchor + u));
-        if (norm(b - a) > 2)
-          out += fmt::format("<line class=\"{}\" data-name=\"{}\" x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{}\" stroke-width=\"2.5\" marker-end=\"url(#{})\"/>\n",
-                             cls, escape(screw.name), f2(a.x), f2(a.y), f2(b.x), f2(b.y), colour, marker);
-        label = fmt::format("{}: {} {}", screw.name, twist ? "translation |v| =" : "couple |M| =", fixed(screw.magnitude, 3));
-        screw_label(a, label, colour);
-        continue;
-      }
-      const Eigen::Vector3d u = screw.direction * 0.3 * extent;
-      const P a = fit(view.project(screw.point - u)), b = fit(view.project(screw.point + u));
-      if (norm(b - a) > 2) {
-        out += fmt::format("<line class=\"{}\" data-name=\"{}\" x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{}\" stroke-width=\"{}\" stroke-dasharray=\"10,3,2,3\" marker-end=\"url(#{})\"/>\n",
-                           cls, escape(screw.name), f2(a.x), f2(a.y), f2(b.x), f2(b.y), colour, fixed(1.2 + 2.0 * screw.magnitude / std::max(largest, 1e-300), 2), marker);
-      } else {
-        // An axis along the line of sight (planar twists): the instant centre.
-        out += fmt::format("<g class=\"{}\" data-name=\"{}\"><circle cx=\"{}\" cy=\"{}\" r=\"6\" fill=\"none\" stroke=\"{}\" stroke-width=\"2\"/>"
-                           "<circle cx=\"{}\" cy=\"{}\" r=\"1.8\" fill=\"{}\"/></g>\n",
-                           cls, escape(screw.name), f2(anchor.x), f2(anchor.y), colour, f2(anchor.x), f2(anchor.y), colour);
-      }
-      label = fmt::format("{}: {} = {}{}", screw.name, twist ? "|\u03c9|" : "|F|", fixed(screw.magnitude, 3),
-                          std::abs(screw.pitch) > kScrewZero * extent ? ", pitch " + fixed(screw.pitch, 3) : "");
-      screw_label(anchor, label, colour);
-    }
-  };
-  if (mode) screw_axes(mode->twists, "#e66101", "arrow-orange", "twist", true);
-  if (stress) screw_axes(stress->wrenches, "#7b3294", "arrow", "wrench", false);
+}
 
+// Labels of screws near one place are stacked upwards, 12 px apart, to the right or the left.
+void screw_label(std::string& out, LabelSpace& labels, P at_point, const std::string& content, const std::string& colour) {
+  std::vector<LabelSpace::Place> places;
+  for (int k = 0; k < 5; ++k) places.push_back({at_point + P{8, -8.0 - 12.0 * k}, "start"});
+  for (int k = 0; k < 5; ++k) places.push_back({at_point + P{-8, -8.0 - 12.0 * k}, "end"});
+  if (const auto place = labels.place(places, content, 10))
+    text(out, place->at, content, place->anchor, "class=\"screw-label\" font-size=\"10\" fill=\"" + colour + "\" " + kHalo);
+}
+
+// How a screw axis is drawn: colour, arrow marker, class, and whether the screws are twists
+// (of a mode) or wrenches (of a self-stress).
+struct ScrewStyle {
+  std::string colour, marker, cls;
+  bool twist;
+};
+
+// Networks: the screw axes of the mode (body twists) or of the self-stress (coupling wrenches).
+void draw_screw_axes(std::string& out, LabelSpace& labels, const MechanismLayout& l, const std::vector<SceneScrew>& screws,
+                     const ScrewStyle& style) {
+  const std::string& colour = style.colour;
+  double largest = 0;
+  for (const auto& screw : screws) largest = std::max(largest, screw.magnitude);
+  for (const auto& screw : screws) {
+    const P anchor = l.fit(l.view.project(screw.point));
+    std::string label;
+    if (screw.pure) {
+      const Eigen::Vector3d u = screw.direction * 0.15 * l.extent;
+      const P a = l.fit(l.view.project(screw.anchor)), b = l.fit(l.view.project(screw.anchor + u));
+      if (norm(b - a) > 2)
+        out += fmt::format("<line class=\"{}\" data-name=\"{}\" x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{}\" stroke-width=\"2.5\" marker-end=\"url(#{})\"/>\n",
+                           style.cls, escape(screw.name), f2(a.x), f2(a.y), f2(b.x), f2(b.y), colour, style.marker);
+      label = fmt::format("{}: {} {}", screw.name, style.twist ? "translation |v| =" : "couple |M| =", fixed(screw.magnitude, 3));
+      screw_label(out, labels, a, label, colour);
+      continue;
+    }
+    const Eigen::Vector3d u = screw.direction * 0.3 * l.extent;
+    const P a = l.fit(l.view.project(screw.point - u)), b = l.fit(l.view.project(screw.point + u));
+    if (norm(b - a) > 2) {
+      out += fmt::format("<line class=\"{}\" data-name=\"{}\" x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{}\" stroke-width=\"{}\" stroke-dasharray=\"10,3,2,3\" marker-end=\"url(#{})\"/>\n",
+                         style.cls, escape(screw.name), f2(a.x), f2(a.y), f2(b.x), f2(b.y), colour,
+                         fixed(1.2 + 2.0 * screw.magnitude / std::max(largest, 1e-300), 2), style.marker);
+    } else {
+      // An axis along the line of sight (planar twists): the instant centre.
+      out += fmt::format("<g class=\"{}\" data-name=\"{}\"><circle cx=\"{}\" cy=\"{}\" r=\"6\" fill=\"none\" stroke=\"{}\" stroke-width=\"2\"/>"
+                         "<circle cx=\"{}\" cy=\"{}\" r=\"1.8\" fill=\"{}\"/></g>\n",
+                         style.cls, escape(screw.name), f2(anchor.x), f2(anchor.y), colour, f2(anchor.x), f2(anchor.y), colour);
+    }
+    label = fmt::format("{}: {} = {}{}", screw.name, style.twist ? "|\u03c9|" : "|F|", fixed(screw.magnitude, 3),
+                        std::abs(screw.pitch) > kScrewZero * l.extent ? ", pitch " + fixed(screw.pitch, 3) : "");
+    screw_label(out, labels, anchor, label, colour);
+  }
+}
+
+// Supports, node circles (displaced with the mode when drawn in full) and node labels; then the
+// mode's arrows.
+void draw_nodes_and_arrows(std::string& out, const Scene& scene, const MechanismLayout& l,
+                           const std::vector<std::optional<LabelSpace::Place>>& node_label) {
   for (std::size_t i = 0; i < scene.nodes.size(); ++i) {
-    const P p = fit(at[i]);
-    if (scene.kind == io::ModelKind::framework) draw_support(out, scene.nodes[i], p, view);
+    const P p = l.fit(l.at[i]);
+    if (scene.kind == io::ModelKind::framework) draw_support(out, scene.nodes[i], p, l.view);
     if (scene.kind == io::ModelKind::network && i >= scene.bodies.size()) continue;
-    const P q = fit(at[i] + shift * arrow[i]);
+    const P q = l.fit(l.at[i] + l.shift * l.arrow[i]);
     out += fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"3.5\" fill=\"{}\" stroke=\"#222\" stroke-width=\"1.2\"/>\n", f2(q.x), f2(q.y),
                        scene.nodes[i].fixed ? "#222" : "white");
     if (node_label[i]) text(out, node_label[i]->at, scene.nodes[i].name, node_label[i]->anchor, "class=\"node-label\" font-size=\"11\" " + kHalo);
   }
-  if (mode) {
-    for (std::size_t i = 0; i < at.size(); ++i) {
-      if (norm(arrow[i]) == 0) continue;
-      const P a = fit(at[i]), b = fit(at[i] + arrow[i]);
-      out += fmt::format("<line data-node=\"{}\" x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"#e66101\" stroke-width=\"2\" marker-end=\"url(#arrow-orange)\"/>\n",
-                         escape(scene.nodes[i].name), f2(a.x), f2(a.y), f2(b.x), f2(b.y));
-    }
+  if (!l.mode) return;
+  for (std::size_t i = 0; i < l.at.size(); ++i) {
+    if (norm(l.arrow[i]) == 0) continue;
+    const P a = l.fit(l.at[i]), b = l.fit(l.at[i] + l.arrow[i]);
+    out += fmt::format("<line data-node=\"{}\" x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"#e66101\" stroke-width=\"2\" marker-end=\"url(#arrow-orange)\"/>\n",
+                       escape(scene.nodes[i].name), f2(a.x), f2(a.y), f2(b.x), f2(b.y));
   }
-  // Axes (bottom left) and a scale bar of a round length (bottom right), in the model's unit.
-  {
-    const P origin{30, top + drawing_height + 2};
-    const char* names[] = {"x", "y", "z"};
-    for (int k = 0; k < (scene.dimension == 2 ? 2 : 3); ++k) {
-      P d = view.project(Eigen::Vector3d::Unit(k));
-      d = P{d.x, -d.y};
-      if (norm(d) < kDrawnZero) continue;
-      const P tip = origin + 24.0 * unit(d);
-      out += fmt::format("<line class=\"axis\" x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"#444\" stroke-width=\"1.2\" marker-end=\"url(#arrow-black)\"/>\n",
-                         f2(origin.x), f2(origin.y), f2(tip.x), f2(tip.y));
-      text(out, origin + 33.0 * unit(d) + P{0, 4}, names[k], "middle", "font-size=\"10\" fill=\"#444\"");
-    }
-    const double bar = round_length(100.0 / fit.scale);
-    const double pixels = bar * fit.scale;
-    const P right{width - 20, top + drawing_height + 6};
-    out += fmt::format("<path class=\"scale-bar\" d=\"M{} L{} M{} L{} M{} L{}\" stroke=\"#444\" stroke-width=\"1.5\" fill=\"none\"/>\n",
-                       pt(right - P{pixels, 0}), pt(right), pt(right - P{pixels, 4}), pt(right - P{pixels, -4}), pt(right + P{0, -4}),
-                       pt(right + P{0, 4}));
-    text(out, right - P{pixels / 2, 8}, fixed(bar, 6) + " " + length_unit(scene), "middle", "class=\"scale-label\" font-size=\"10\" fill=\"#444\"");
+}
+
+// Axes (bottom left) and a scale bar of a round length (bottom right), in the model's unit.
+void draw_axes_and_scale(std::string& out, const Scene& scene, const MechanismLayout& l) {
+  const P origin{30, l.top + l.drawing_height + 2};
+  const char* names[] = {"x", "y", "z"};
+  for (int k = 0; k < (scene.dimension == 2 ? 2 : 3); ++k) {
+    P d = l.view.project(Eigen::Vector3d::Unit(k));
+    d = P{d.x, -d.y};
+    if (norm(d) < kDrawnZero) continue;
+    const P tip = origin + 24.0 * unit(d);
+    out += fmt::format("<line class=\"axis\" x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"#444\" stroke-width=\"1.2\" marker-end=\"url(#arrow-black)\"/>\n",
+                       f2(origin.x), f2(origin.y), f2(tip.x), f2(tip.y));
+    text(out, origin + 33.0 * unit(d) + P{0, 4}, names[k], "middle", "font-size=\"10\" fill=\"#444\"");
   }
-  // Legend.
-  double y = top + drawing_height + 30;
-  if (mode) {
-    out += fmt::format("<line x1=\"20\" y1=\"{0}\" x2=\"50\" y2=\"{0}\" stroke=\"#e66101\" stroke-width=\"2\" marker-end=\"url(#arrow-orange)\"/>\n", f2(y - 4));
-    text(out, P{58, y}, fmt::format("{} ({}): nodal velocities, largest drawn at 20% of the model size", mode->label, out_of(scene.modes.size(), scene.mode_total)), "start");
-    y += 20;
-    if (displaced_in_full)
-      out += fmt::format("<line x1=\"20\" y1=\"{0}\" x2=\"50\" y2=\"{0}\" stroke=\"#cccccc\" stroke-width=\"2\"/>\n", f2(y - 4));
-    else
-      out += fmt::format("<line x1=\"20\" y1=\"{0}\" x2=\"50\" y2=\"{0}\" stroke=\"#e66101\" stroke-width=\"1\" stroke-dasharray=\"4,3\"/>\n", f2(y - 4));
-    text(out, P{58, y},
-         std::string(displaced_in_full ? "grey: undeformed shape; the displaced shape is drawn at the arrow tips"
+  const double bar = round_length(100.0 / l.fit.scale);
+  const double pixels = bar * l.fit.scale;
+  const P right{l.width - 20, l.top + l.drawing_height + 6};
+  out += fmt::format("<path class=\"scale-bar\" d=\"M{} L{} M{} L{} M{} L{}\" stroke=\"#444\" stroke-width=\"1.5\" fill=\"none\"/>\n",
+                     pt(right - P{pixels, 0}), pt(right), pt(right - P{pixels, 4}), pt(right - P{pixels, -4}), pt(right + P{0, -4}),
+                     pt(right + P{0, 4}));
+  text(out, right - P{pixels / 2, 8}, fixed(bar, 6) + " " + length_unit(scene), "middle", "class=\"scale-label\" font-size=\"10\" fill=\"#444\"");
+}
+
+// The mode's legend lines from height y; returns the next line's height.
+double mode_legend(std::string& out, const Scene& scene, const MechanismLayout& l, double y) {
+  out += fmt::format("<line x1=\"20\" y1=\"{0}\" x2=\"50\" y2=\"{0}\" stroke=\"#e66101\" stroke-width=\"2\" marker-end=\"url(#arrow-orange)\"/>\n", f2(y - 4));
+  text(out, P{58, y}, fmt::format("{} ({}): nodal velocities, largest drawn at 20% of the model size", l.mode->label, out_of(scene.modes.size(), scene.mode_total)), "start");
+  y += 20;
+  if (l.displaced_in_full)
+    out += fmt::format("<line x1=\"20\" y1=\"{0}\" x2=\"50\" y2=\"{0}\" stroke=\"#cccccc\" stroke-width=\"2\"/>\n", f2(y - 4));
+  else
+    out += fmt::format("<line x1=\"20\" y1=\"{0}\" x2=\"50\" y2=\"{0}\" stroke=\"#e66101\" stroke-width=\"1\" stroke-dasharray=\"4,3\"/>\n", f2(y - 4));
+  text(out, P{58, y},
+       std::string(l.displaced_in_full ? "grey: undeformed shape; the displaced shape is drawn at the arrow tips"
                                        : "dashed: displaced shape at the arrow tips, over the undeformed shape") +
-             "",
-         "start");
+           "",
+       "start");
+  y += 20;
+  if (!l.mode->twists.empty()) {
+    out += fmt::format("<line x1=\"20\" y1=\"{0}\" x2=\"50\" y2=\"{0}\" stroke=\"#e66101\" stroke-width=\"2\" stroke-dasharray=\"10,3,2,3\"/>\n", f2(y - 4));
+    text(out, P{58, y}, "twist axis of each moving body (\u03c9 along it; ring: axis along the line of sight)", "start");
     y += 20;
-    if (!mode->twists.empty()) {
-      out += fmt::format("<line x1=\"20\" y1=\"{0}\" x2=\"50\" y2=\"{0}\" stroke=\"#e66101\" stroke-width=\"2\" stroke-dasharray=\"10,3,2,3\"/>\n", f2(y - 4));
-      text(out, P{58, y}, "twist axis of each moving body (\u03c9 along it; ring: axis along the line of sight)", "start");
-      y += 20;
-    }
   }
-  if (stress) {
-    if (!stress->wrenches.empty()) {
-      out += fmt::format("<line x1=\"20\" y1=\"{0}\" x2=\"50\" y2=\"{0}\" stroke=\"#7b3294\" stroke-width=\"2\" stroke-dasharray=\"10,3,2,3\" marker-end=\"url(#arrow)\"/>\n", f2(y - 4));
-      text(out, P{58, y}, fmt::format("{} ({}): line of action of the wrench each coupling transmits", stress->label, out_of(scene.stresses.size(), scene.stress_total)), "start");
-      y += 20;
-      text(out, P{58, y}, "arrow: force direction for the primary = +1 (sign as in the text report); width by |F|", "start");
-      y += 20;
-    } else if (largest_stress > 0) {
-      // One swatch per colour in the drawing.
-      std::vector<std::string> swatches;
-      if (kinds.count("elongation")) swatches = {"#c0392b", "#2166ac"};
-      for (const char* kind : {"bending", "torsion", "rigid"})
-        if (kinds.count(kind)) swatches.push_back(stress_colour(kind, 1.0));
-      double x = 20;
-      for (const auto& colour : swatches) {
-        out += fmt::format("<line x1=\"{1}\" y1=\"{0}\" x2=\"{2}\" y2=\"{0}\" stroke=\"{3}\" stroke-width=\"5\"/>\n", f2(y - 4), f2(x),
-                           f2(x + 22), colour);
-        x += 28;
-      }
-      text(out, P{x + 4, y},
-           fmt::format("{} of {}: each element by its dominant resultant; largest = {}", stress->label, scene.stresses.size(),
-                       fixed(largest_stress, 4)),
-           "start");
-      y += 20;
-      std::string kinds_text = "sign as in the text report (tension positive): elongation tension red, compression blue";
-      if (kinds.count("bending")) kinds_text += "; bending purple";
-      if (kinds.count("torsion")) kinds_text += "; torsion green";
-      if (kinds.count("rigid")) kinds_text += "; rigid-body constraint brown";
-      text(out, P{20, y}, kinds_text, "start", "class=\"stress-kinds\" font-size=\"11\"");
-      y += 20;
-      text(out, P{20, y}, "width by |resultant| (unit-norm stress state, non-dimensional)", "start", "font-size=\"11\" fill=\"#555\"");
-      y += 20;
-    }
+  return y;
+}
+
+// The self-stress's legend lines from height y (wrench axes, or one swatch per colour drawn);
+// returns the next line's height.
+double stress_legend(std::string& out, const Scene& scene, const MechanismLayout& l, double y) {
+  const SceneStress& stress = *l.stress;
+  if (!stress.wrenches.empty()) {
+    out += fmt::format("<line x1=\"20\" y1=\"{0}\" x2=\"50\" y2=\"{0}\" stroke=\"#7b3294\" stroke-width=\"2\" stroke-dasharray=\"10,3,2,3\" marker-end=\"url(#arrow)\"/>\n", f2(y - 4));
+    text(out, P{58, y}, fmt::format("{} ({}): line of action of the wrench each coupling transmits", stress.label, out_of(scene.stresses.size(), scene.stress_total)), "start");
+    y += 20;
+    text(out, P{58, y}, "arrow: force direction for the primary = +1 (sign as in the text report); width by |F|", "start");
+    return y + 20;
   }
+  if (!(l.largest_stress > 0)) return y;
+  std::vector<std::string> swatches;
+  if (l.kinds.count("elongation")) swatches = {"#c0392b", "#2166ac"};
+  for (const char* kind : {"bending", "torsion", "rigid"})
+    if (l.kinds.count(kind)) swatches.push_back(stress_colour(kind, 1.0));
+  double x = 20;
+  for (const auto& colour : swatches) {
+    out += fmt::format("<line x1=\"{1}\" y1=\"{0}\" x2=\"{2}\" y2=\"{0}\" stroke=\"{3}\" stroke-width=\"5\"/>\n", f2(y - 4), f2(x),
+                       f2(x + 22), colour);
+    x += 28;
+  }
+  text(out, P{x + 4, y},
+       fmt::format("{} of {}: each element by its dominant resultant; largest = {}", stress.label, scene.stresses.size(),
+                   fixed(l.largest_stress, 4)),
+       "start");
+  y += 20;
+  std::string kinds_text = "sign as in the text report (tension positive): elongation tension red, compression blue";
+  if (l.kinds.count("bending")) kinds_text += "; bending purple";
+  if (l.kinds.count("torsion")) kinds_text += "; torsion green";
+  if (l.kinds.count("rigid")) kinds_text += "; rigid-body constraint brown";
+  text(out, P{20, y}, kinds_text, "start", "class=\"stress-kinds\" font-size=\"11\"");
+  y += 20;
+  text(out, P{20, y}, "width by |resultant| (unit-norm stress state, non-dimensional)", "start", "font-size=\"11\" fill=\"#555\"");
+  return y + 20;
+}
+
+// The legend under the drawing: mode, self-stress, sheets, and how many labels were left out.
+void draw_legend(std::string& out, const Scene& scene, const MechanismLayout& l, bool sheets, int labels_left_out) {
+  double y = l.top + l.drawing_height + 30;
+  if (l.mode) y = mode_legend(out, scene, l, y);
+  if (l.stress) y = stress_legend(out, scene, l, y);
   if (sheets) {
     out += fmt::format("<rect x=\"20\" y=\"{}\" width=\"30\" height=\"9\" fill=\"#efe3c8\" stroke=\"#b59b6a\" stroke-width=\"0.8\"/>\n", f2(y - 9));
     text(out, P{58, y}, fmt::format("sheets (beams the model makes leaf springs), drawn {}% of their length wide", fixed(100 * kSheetWidth, 0)), "start");
     y += 20;
   }
-  if (!mode && !stress) {
+  if (!l.mode && !l.stress) {
     text(out, P{20, y}, scene.modes.empty() && scene.stresses.empty() ? "no kinematic modes and no self-stress" : "configuration only", "start");
     y += 20;
   }
-  if (labels.left_out() > 0) {
+  if (labels_left_out > 0) {
     // One more legend line: the canvas grows by it (the header is written for the final height).
     text(out, P{20, y},
-         fmt::format("{} label(s) left out where they would overlap (all names: text report; HTML report: labels)", labels.left_out()),
+         fmt::format("{} label(s) left out where they would overlap (all names: text report; HTML report: labels)", labels_left_out),
          "start", "class=\"labels-left-out\" font-size=\"11\" fill=\"#555\"");
-    out.replace(0, header(width, height).size(), header(width, height + 20));
+    out.replace(0, header(l.width, l.height).size(), header(l.width, l.height + 20));
   }
+}
+
+}  // namespace
+
+std::string mechanism_svg(const Scene& scene, const MechanismDrawing& drawing) {
+  const MechanismLayout l = mechanism_layout(scene, drawing);
+  std::string out = header(l.width, l.height);
+  text(out, P{l.width / 2, 24}, scene.name, "middle", "font-size=\"14\" font-weight=\"bold\"");
+  for (std::size_t i = 0; i < l.verdict.size(); ++i)
+    text(out, P{l.width / 2, 42 + 16.0 * static_cast<double>(i)}, l.verdict[i], "middle", "class=\"verdict\" font-size=\"12\" fill=\"#333\"");
+  if (scene.large) {
+    draw_large_model(out, scene, l);
+    out += "</svg>\n";
+    return out;
+  }
+  const bool sheets = draw_elements(out, scene, l);
+  // Node names are placed first, then element, coupling and screw labels.
+  LabelSpace labels(2, l.top, l.width - 2, l.top + l.drawing_height - 4);
+  const auto node_label = place_node_labels(labels, scene, l);
+  draw_element_labels(out, labels, scene, l);
+  draw_glyphs(out, labels, scene, l);
+  if (l.mode) draw_screw_axes(out, labels, l, l.mode->twists, {"#e66101", "arrow-orange", "twist", true});
+  if (l.stress) draw_screw_axes(out, labels, l, l.stress->wrenches, {"#7b3294", "arrow", "wrench", false});
+  draw_nodes_and_arrows(out, scene, l, node_label);
+  draw_axes_and_scale(out, scene, l);
+  draw_legend(out, scene, l, sheets, labels.left_out());
   out += "</svg>\n";
   return out;
 }
