@@ -348,143 +348,157 @@ std::string framework_column_name(const FrameworkModel& model, const FrameworkRe
   return model.nodes[c.node].name + "." + slot_name(c.slot);
 }
 
-Verdict framework_verdict(const FrameworkModel& model, const FrameworkResult& a, const framework::AnalysisOptions& options) {
-  Verdict v;
-  v.extra_motions = static_cast<int>(a.mechanisms);
-  v.redundant_constraints = static_cast<int>(a.self_stresses);
-  v.exactly_constrained = a.exactly_constrained();
-  v.intended_motions = static_cast<int>(a.count.declared_dof());
-  v.intended_basis = "declared independent coordinates and deformations ('independent:')";
-  v.summary = summary_sentence(v.extra_motions, v.redundant_constraints, v.intended_motions);
-  note_near_rank_change(v, a.decision.distance(), a.mechanisms > 0);
+namespace {
 
-  // Rigid motions of the whole model first, as one state (rigid_mode_basis.hpp names them).
+// Sections of framework_verdict: the states (rigid motions, internal mechanisms, self-stresses),
+// the candidate change sets, and the re-analysis that chooses among them.
+
+// The rigid motions of the whole model as one state (rigid_mode_basis.hpp names them); none
+// when the supports stop them all.
+std::optional<VerdictState> rigid_motions_state(const FrameworkModel& model, const std::vector<std::string>& rigid) {
+  if (rigid.empty()) return std::nullopt;
+  const bool unsupported = static_cast<int>(rigid.size()) == (model.dimension == 2 ? 3 : 6);
+  VerdictState state{"extra motion",
+                     unsupported ? fmt::format("no supports: {} rigid motions", rigid.size())
+                                 : fmt::format("not enough supports: {}", fmt::join(rigid, "; ")),
+                     {}};
+  for (const auto& name : rigid) state.participants.push_back({"motion", name, 1.0 / static_cast<double>(rigid.size()), "rigid-body motion"});
+  return state;
+}
+
+// Internal mechanism `internal` (mode k of the report): its order, and the rigid parts that move
+// (or, when none is found, the coordinates that carry the mode).
+VerdictState internal_mechanism_state(const FrameworkModel& model, const FrameworkResult& a, std::size_t k, std::size_t internal,
+                                      bool after_rigid_motions) {
+  const std::string order = k < a.orders.size() && a.orders[k].order != framework::MotionOrder::undetermined
+                                ? std::string(framework::motion_order_name(a.orders[k].order))
+                                : "";
+  const Eigen::VectorXd& velocity = a.modes[k].velocities;
+  std::vector<Participant> parts = part_participants(model, framework::moving_parts(model, a, velocity), a.length);
+  std::string where = after_rigid_motions ? fmt::format("internal mechanism {} (mode {} of the report)", internal, k + 1)
+                                          : fmt::format("mechanism {}", k + 1);
+  if (!order.empty()) where += fmt::format(" ({})", order);
+  VerdictState state{"extra motion", where, {}};
+  if (parts.size() == 1) state.description += ": " + parts_summary(parts);
+  else if (parts.size() > 1) state.description += fmt::format(": {} rigid parts move", parts.size());
+  if (parts.empty()) {
+    for (Eigen::Index col : a.modes[k].moving) {
+      const double share = velocity(col) * velocity(col) / std::max(velocity.squaredNorm(), 1e-300);
+      if (share > kShareZero)
+        state.participants.push_back({"coordinate", framework_column_name(model, a, col), share,
+                                      velocity(col) > 0 ? "moves +" : "moves -"});
+    }
+  } else {
+    state.participants = std::move(parts);
+  }
+  rank_participants(state.participants);
+  return state;
+}
+
+// Stress state k as a redundant constraint: the resultants that carry it, and how many bars
+// are in tension and in compression.
+VerdictState framework_self_stress_state(const FrameworkModel& model, const FrameworkResult& a, std::size_t k) {
+  const Eigen::VectorXd& stress = a.stresses[k].resultants;
+  int tension = 0, compression = 0;
+  VerdictState state{"self-stress", "", {}};
+  for (Eigen::Index row = 0; row < stress.size(); ++row) {
+    const double share = stress(row) * stress(row) / std::max(stress.squaredNorm(), 1e-300);
+    if (share <= kShareZero) continue;
+    const auto& d = row_deformation(a, row);
+    if (is_elongation(model, model.elements[d.element], d.deformation)) ++(stress(row) > 0 ? tension : compression);
+    state.participants.push_back(stress_participant(model, a, row, stress(row), share));
+  }
+  state.description = fmt::format("redundant constraint {}", k + 1);
+  if (tension + compression > 0)
+    state.description += fmt::format(" ({} in tension, {} in compression, or all reversed)", tension, compression);
+  rank_participants(state.participants);
+  return state;
+}
+
+// Every extra motion and redundant constraint of the analysis as a state of the verdict.
+void add_verdict_states(Verdict& v, const FrameworkModel& model, const FrameworkResult& a) {
   std::vector<std::string> rigid;
   for (const auto& mode : a.modes)
     if (!mode.rigid_motion.empty()) rigid.push_back(mode.rigid_motion);
-  if (!rigid.empty()) {
-    const bool unsupported = static_cast<int>(rigid.size()) == (model.dimension == 2 ? 3 : 6);
-    VerdictState state{"extra motion",
-                       unsupported ? fmt::format("no supports: {} rigid motions", rigid.size())
-                                   : fmt::format("not enough supports: {}", fmt::join(rigid, "; ")),
-                       {}};
-    for (const auto& name : rigid) state.participants.push_back({"motion", name, 1.0 / static_cast<double>(rigid.size()), "rigid-body motion"});
-    v.states.push_back(std::move(state));
-  }
+  if (auto state = rigid_motions_state(model, rigid)) v.states.push_back(std::move(*state));
   std::size_t internal = 0;
   for (std::size_t k = 0; k < a.modes.size(); ++k) {
     if (!a.modes[k].rigid_motion.empty()) continue;
-    ++internal;
-    const std::string order = k < a.orders.size() && a.orders[k].order != framework::MotionOrder::undetermined
-                                  ? std::string(framework::motion_order_name(a.orders[k].order))
-                                  : "";
-    const Eigen::VectorXd& velocity = a.modes[k].velocities;
-    std::vector<Participant> parts = part_participants(model, framework::moving_parts(model, a, velocity), a.length);
-    std::string where = rigid.empty() ? fmt::format("mechanism {}", k + 1)
-                                      : fmt::format("internal mechanism {} (mode {} of the report)", internal, k + 1);
-    if (!order.empty()) where += fmt::format(" ({})", order);
-    VerdictState state{"extra motion", where, {}};
-    if (parts.size() == 1) state.description += ": " + parts_summary(parts);
-    else if (parts.size() > 1) state.description += fmt::format(": {} rigid parts move", parts.size());
-    if (parts.empty()) {
-      for (Eigen::Index col : a.modes[k].moving) {
-        const double share = velocity(col) * velocity(col) / std::max(velocity.squaredNorm(), 1e-300);
-        if (share > kShareZero)
-          state.participants.push_back({"coordinate", framework_column_name(model, a, col), share,
-                                        velocity(col) > 0 ? "moves +" : "moves -"});
-      }
-    } else {
-      state.participants = std::move(parts);
-    }
-    rank_participants(state.participants);
-    v.states.push_back(std::move(state));
+    v.states.push_back(internal_mechanism_state(model, a, k, ++internal, !rigid.empty()));
   }
-  for (std::size_t k = 0; k < a.stresses.size(); ++k) {
-    const Eigen::VectorXd& stress = a.stresses[k].resultants;
-    int tension = 0, compression = 0;
-    VerdictState state{"self-stress", "", {}};
-    for (Eigen::Index row = 0; row < stress.size(); ++row) {
-      const double share = stress(row) * stress(row) / std::max(stress.squaredNorm(), 1e-300);
-      if (share <= kShareZero) continue;
-      const auto& d = row_deformation(a, row);
-      if (is_elongation(model, model.elements[d.element], d.deformation)) ++(stress(row) > 0 ? tension : compression);
-      state.participants.push_back(stress_participant(model, a, row, stress(row), share));
-    }
-    state.description = fmt::format("redundant constraint {}", k + 1);
-    if (tension + compression > 0)
-      state.description += fmt::format(" ({} in tension, {} in compression, or all reversed)", tension, compression);
-    rank_participants(state.participants);
-    v.states.push_back(std::move(state));
-  }
-  v.motion_participants = strongest(v.states, "extra motion");
-  v.constraint_participants = strongest(v.states, "self-stress");
+  for (std::size_t k = 0; k < a.stresses.size(); ++k) v.states.push_back(framework_self_stress_state(model, a, k));
+}
 
-  if (v.exactly_constrained) {
-    v.changes_verified = true;
-    v.becomes = "unchanged: already exactly constrained";
-    return v;
+// Change sets that stop the extra motions (all of them known): supports for the rigid motions
+// of the whole model first (bars cannot stop them); the motions left are then stopped by bars
+// between rigid parts or by more supports. Bars first for a bar framework, supports first
+// otherwise; each set begins with the analysis' releases.
+std::vector<std::vector<DesignChange>> motion_change_sets(const FrameworkModel& model, const FrameworkResult& a,
+                                                          const std::vector<DesignChange>& releases) {
+  Eigen::MatrixXd rigid_basis(a.n, 0), internal_basis(a.n, 0);
+  for (const auto& mode : a.modes) {
+    Eigen::MatrixXd& target = mode.rigid_motion.empty() ? internal_basis : rigid_basis;
+    target.conservativeResize(Eigen::NoChange, target.cols() + 1);
+    target.col(target.cols() - 1) = mode.velocities;
   }
-  if (!a.vectors) {
-    v.note = "the model is too large for the dense SVD: no modes, stress states or proposal were computed";
-    return v;
-  }
+  rigid_basis = orthonormal(rigid_basis);
+  internal_basis = orthonormal(internal_basis);
+  Eigen::MatrixXd all(a.n, rigid_basis.cols() + internal_basis.cols());
+  all << rigid_basis, internal_basis;
+  all = orthonormal(all);
 
-  // Candidate sets: the releases of the analysis' proposal, then for the extra motions either
-  // bars between rigid parts (internal mechanisms; rigid motions of the whole need supports) or
-  // supports at the nodes that carry them. Each is re-analysed before it is proposed.
+  std::vector<bool> supported_node(model.nodes.size(), false);
+  Eigen::MatrixXd rigid_left = rigid_basis;
+  const auto rigid_columns = choose_supports(model, a, rigid_left, rigid_basis.cols(), supported_node);
+  std::vector<DesignChange> rigid_supports;
+  Eigen::MatrixXd left = all;
+  for (Eigen::Index c : rigid_columns) {
+    rigid_supports.push_back(support_change(model, a, c, true));
+    left = without(left, Eigen::VectorXd::Unit(a.n, c));
+  }
+  std::vector<DesignChange> with_bars = releases;
+  const auto bars = choose_bars(model, a, left, left.cols());
+  if (left.cols() > 0 && static_cast<Eigen::Index>(bars.size()) == left.cols()) {
+    with_bars.insert(with_bars.end(), rigid_supports.begin(), rigid_supports.end());
+    for (const auto& bar : bars) with_bars.push_back(bar_change(model, bar));
+  } else {
+    with_bars.clear();
+  }
+  std::vector<DesignChange> with_supports = releases;
+  with_supports.insert(with_supports.end(), rigid_supports.begin(), rigid_supports.end());
+  for (Eigen::Index c : choose_supports(model, a, left, left.cols(), supported_node))
+    with_supports.push_back(support_change(model, a, c, false));
+  const bool bar_framework = std::all_of(model.elements.begin(), model.elements.end(),
+                                         [](const Element& e) { return e.type == ElementType::truss; });
+  std::vector<std::vector<DesignChange>> sets;
+  if (bar_framework && !with_bars.empty()) sets.push_back(with_bars);
+  sets.push_back(with_supports);
+  if (!bar_framework && !with_bars.empty()) sets.push_back(with_bars);
+  return sets;
+}
+
+// Candidate sets: the releases of the analysis' proposal, then for the extra motions either
+// bars between rigid parts (internal mechanisms; rigid motions of the whole need supports) or
+// supports at the nodes that carry them; last the analysis' own proposal.
+std::vector<std::vector<DesignChange>> candidate_change_sets(const FrameworkModel& model, const FrameworkResult& a) {
   std::vector<DesignChange> releases;
   for (Eigen::Index row : a.releases) releases.push_back(release_change(model, a, row));
   std::vector<std::vector<DesignChange>> candidates;
   const bool modes_complete = static_cast<Eigen::Index>(a.modes.size()) == a.mechanisms;
-  if (a.mechanisms > 0 && modes_complete) {
-    Eigen::MatrixXd rigid_basis(a.n, 0), internal_basis(a.n, 0);
-    for (const auto& mode : a.modes) {
-      Eigen::MatrixXd& target = mode.rigid_motion.empty() ? internal_basis : rigid_basis;
-      target.conservativeResize(Eigen::NoChange, target.cols() + 1);
-      target.col(target.cols() - 1) = mode.velocities;
-    }
-    rigid_basis = orthonormal(rigid_basis);
-    internal_basis = orthonormal(internal_basis);
-    Eigen::MatrixXd all(a.n, rigid_basis.cols() + internal_basis.cols());
-    all << rigid_basis, internal_basis;
-    all = orthonormal(all);
-
-    // Supports for the rigid motions of the whole model first (bars cannot stop them); the
-    // motions left are then stopped by bars or by more supports.
-    std::vector<bool> supported_node(model.nodes.size(), false);
-    Eigen::MatrixXd rigid_left = rigid_basis;
-    const auto rigid_columns = choose_supports(model, a, rigid_left, rigid_basis.cols(), supported_node);
-    std::vector<DesignChange> rigid_supports;
-    Eigen::MatrixXd left = all;
-    for (Eigen::Index c : rigid_columns) {
-      rigid_supports.push_back(support_change(model, a, c, true));
-      left = without(left, Eigen::VectorXd::Unit(a.n, c));
-    }
-    std::vector<DesignChange> with_bars = releases;
-    const auto bars = choose_bars(model, a, left, left.cols());
-    if (left.cols() > 0 && static_cast<Eigen::Index>(bars.size()) == left.cols()) {
-      with_bars.insert(with_bars.end(), rigid_supports.begin(), rigid_supports.end());
-      for (const auto& bar : bars) with_bars.push_back(bar_change(model, bar));
-    } else {
-      with_bars.clear();
-    }
-    std::vector<DesignChange> with_supports = releases;
-    with_supports.insert(with_supports.end(), rigid_supports.begin(), rigid_supports.end());
-    for (Eigen::Index c : choose_supports(model, a, left, left.cols(), supported_node))
-      with_supports.push_back(support_change(model, a, c, false));
-    const bool bar_framework = std::all_of(model.elements.begin(), model.elements.end(),
-                                           [](const Element& e) { return e.type == ElementType::truss; });
-    if (bar_framework && !with_bars.empty()) candidates.push_back(with_bars);
-    candidates.push_back(with_supports);
-    if (!bar_framework && !with_bars.empty()) candidates.push_back(with_bars);
-  }
+  if (a.mechanisms > 0 && modes_complete) candidates = motion_change_sets(model, a, releases);
   // The analysis' own proposal (a pivoted QR's columns), supported rather than driven: tried
   // only when no set above passes (it supports whichever coordinate the QR met last, such as
   // a wire's end rather than the platform).
   std::vector<DesignChange> proposal = releases;
   for (Eigen::Index c : a.constrain) proposal.push_back(support_change(model, a, c, false));
   candidates.push_back(proposal);
+  return candidates;
+}
 
+// Each candidate set is re-analysed before it is proposed: the first that passes is the
+// verdict's change, the others that pass its alternatives, the rest turned down with the reason.
+void choose_change_set(Verdict& v, const FrameworkModel& model, const FrameworkResult& a,
+                       const std::vector<std::vector<DesignChange>>& candidates, const framework::AnalysisOptions& options) {
   std::optional<Reanalysis> chosen;
   std::set<std::string> seen;
   for (std::size_t k = 0; k < candidates.size(); ++k) {
@@ -508,7 +522,7 @@ Verdict framework_verdict(const FrameworkModel& model, const FrameworkResult& a,
     v.changes = candidates.back();
     v.changes_verified = false;
     v.becomes = "no change set found passes the re-analysis (see the sets turned down)";
-    return v;
+    return;
   }
   const FrameworkResult& after = chosen->after;
   v.changes_verified = true;
@@ -516,6 +530,33 @@ Verdict framework_verdict(const FrameworkModel& model, const FrameworkResult& a,
                           counted(after.count.declared_dof(), "intended motion", "intended motions"));
   v.verification.push_back(fmt::format("every set shown was re-analysed: 0 extra motions, 0 redundant constraints, the same {} declared",
                                        counted(a.count.declared_dof(), "intended motion", "intended motions")));
+}
+
+}  // namespace
+
+Verdict framework_verdict(const FrameworkModel& model, const FrameworkResult& a, const framework::AnalysisOptions& options) {
+  Verdict v;
+  v.extra_motions = static_cast<int>(a.mechanisms);
+  v.redundant_constraints = static_cast<int>(a.self_stresses);
+  v.exactly_constrained = a.exactly_constrained();
+  v.intended_motions = static_cast<int>(a.count.declared_dof());
+  v.intended_basis = "declared independent coordinates and deformations ('independent:')";
+  v.summary = summary_sentence(v.extra_motions, v.redundant_constraints, v.intended_motions);
+  note_near_rank_change(v, a.decision.distance(), a.mechanisms > 0);
+  add_verdict_states(v, model, a);
+  v.motion_participants = strongest(v.states, "extra motion");
+  v.constraint_participants = strongest(v.states, "self-stress");
+
+  if (v.exactly_constrained) {
+    v.changes_verified = true;
+    v.becomes = "unchanged: already exactly constrained";
+    return v;
+  }
+  if (!a.vectors) {
+    v.note = "the model is too large for the dense SVD: no modes, stress states or proposal were computed";
+    return v;
+  }
+  choose_change_set(v, model, a, candidate_change_sets(model, a), options);
   return v;
 }
 
