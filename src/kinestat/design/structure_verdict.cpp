@@ -64,22 +64,18 @@ std::string structure_pair_name(const StructureModel& model, const Pair& pair) {
   return structure::body_label(model, pair.a) + "-" + structure::body_label(model, pair.b);
 }
 
-Verdict structure_verdict(const StructureModel& model, const StructureResult& d) {
-  Verdict v;
+namespace {
+
+// Sections of structure_verdict: the states, the greedy search for changes, and the changes
+// it took merged per pair.
+
+// A step of the search: the pair changed, how, and what it becomes.
+using StructureStep = std::tuple<std::size_t, std::string, std::string>;
+
+// The states of an incomplete decomposition: freedoms no input drives, constraints or inputs
+// too many.
+void add_structure_states(Verdict& v, const StructureModel& model, const StructureResult& d) {
   const auto& u = d.undecomposed;
-  v.extra_motions = u.missing;
-  v.redundant_constraints = u.redundant;
-  v.exactly_constrained = d.complete();
-  v.intended_motions = model.input_count();
-  v.intended_basis = model.input_count() == 0 ? "none declared ('inputs:' on the pairs): no motion intended"
-                                              : "the declared 'inputs:' of the pairs";
-  v.summary = summary_sentence(v.extra_motions, v.redundant_constraints, v.intended_motions);
-  if (!v.exactly_constrained && v.extra_motions == 0 && v.redundant_constraints == 0)
-    v.summary = fmt::format("Not exactly constrained: bodies {} cannot be placed from the frame.", [&] {
-      std::vector<std::string> names;
-      for (int b : u.blocked) names.push_back(structure::body_label(model, b));
-      return fmt::format("{}", fmt::join(names, ", "));
-    }());
   if (u.missing > 0) {
     VerdictState state{"extra motion", fmt::format("{} freedom(s) that no input drives", u.missing),
                        bodies(model, u.under_constrained, "has freedoms no input drives")};
@@ -93,21 +89,17 @@ Verdict structure_verdict(const StructureModel& model, const StructureResult& d)
     v.states.push_back(state);
     v.constraint_participants = state.participants;
   }
-  if (v.exactly_constrained) {
-    v.changes_verified = true;
-    v.becomes = "unchanged: already exactly constrained";
-    return v;
-  }
-  if (static_cast<int>(model.pairs.size()) > kStructureDesignSearchPairs) {
-    v.note = fmt::format("no change set searched: more than {} pairs", kStructureDesignSearchPairs);
-    return v;
-  }
-  // Greedy, each step verified by decomposing again: pairs at the problem bodies first.
+}
+
+// Greedy, each step verified by decomposing again: the change of one pair that lowers the
+// score most, pairs at the problem bodies first, until none lowers it. `current` ends as the
+// model with every step taken.
+std::vector<StructureStep> greedy_structure_steps(StructureModel& current, const StructureResult& d) {
+  const auto& u = d.undecomposed;
   std::vector<int> problem = u.under_constrained;
   for (int b : u.over_constrained_part) problem.push_back(b);
   for (int b : u.over_constrained) problem.push_back(b);
-  StructureModel current = model;
-  std::vector<std::tuple<std::size_t, std::string, std::string>> steps;  // pair, action, becomes
+  std::vector<StructureStep> steps;
   int now = score(d);
   while (now > 0) {
     std::optional<std::tuple<int, int, std::size_t, std::size_t>> best_key;  // score, not at problem, pair, candidate
@@ -131,8 +123,12 @@ Verdict structure_verdict(const StructureModel& model, const StructureResult& d)
     steps.emplace_back(best.pair, best.action, best.becomes);
     now = std::get<0>(*best_key);
   }
-  // Steps on the same pair with the same action are one change to the pair's final state
-  // (release 1 -> 5 freedoms, not four changes 1 -> 2, 1 -> 3, ...), in the order first taken.
+  return steps;
+}
+
+// Steps on the same pair with the same action are one change to the pair's final state
+// (release 1 -> 5 freedoms, not four changes 1 -> 2, 1 -> 3, ...), in the order first taken.
+std::vector<DesignChange> merged_structure_changes(const StructureModel& model, const std::vector<StructureStep>& steps) {
   std::vector<std::tuple<std::size_t, std::string, std::string, int>> merged;  // pair, action, becomes, steps
   for (const auto& [k, action, becomes] : steps) {
     const auto same = std::find_if(merged.begin(), merged.end(), [&, k = k, &action = action](const auto& m) {
@@ -145,6 +141,7 @@ Verdict structure_verdict(const StructureModel& model, const StructureResult& d)
       ++std::get<3>(*same);
     }
   }
+  std::vector<DesignChange> changes;
   for (const auto& [k, action, becomes, count] : merged) {
     const Pair& p = model.pairs[k];
     const std::string reason = action == "drive"
@@ -152,9 +149,42 @@ Verdict structure_verdict(const StructureModel& model, const StructureResult& d)
                                                  : fmt::format("drives {} freedoms no input drives", count))
                                    : (count == 1 ? "removes a constraint or input too many"
                                                  : fmt::format("removes {} constraints or inputs too many", count));
-    v.changes.push_back({action, "pair", structure_pair_name(model, p), becomes, reason,
-                         fmt::format("{} freedom(s), {} input(s)", p.freedoms, p.inputs), {}});
+    changes.push_back({action, "pair", structure_pair_name(model, p), becomes, reason,
+                       fmt::format("{} freedom(s), {} input(s)", p.freedoms, p.inputs), {}});
   }
+  return changes;
+}
+
+}  // namespace
+
+Verdict structure_verdict(const StructureModel& model, const StructureResult& d) {
+  Verdict v;
+  const auto& u = d.undecomposed;
+  v.extra_motions = u.missing;
+  v.redundant_constraints = u.redundant;
+  v.exactly_constrained = d.complete();
+  v.intended_motions = model.input_count();
+  v.intended_basis = model.input_count() == 0 ? "none declared ('inputs:' on the pairs): no motion intended"
+                                              : "the declared 'inputs:' of the pairs";
+  v.summary = summary_sentence(v.extra_motions, v.redundant_constraints, v.intended_motions);
+  if (!v.exactly_constrained && v.extra_motions == 0 && v.redundant_constraints == 0)
+    v.summary = fmt::format("Not exactly constrained: bodies {} cannot be placed from the frame.", [&] {
+      std::vector<std::string> names;
+      for (int b : u.blocked) names.push_back(structure::body_label(model, b));
+      return fmt::format("{}", fmt::join(names, ", "));
+    }());
+  add_structure_states(v, model, d);
+  if (v.exactly_constrained) {
+    v.changes_verified = true;
+    v.becomes = "unchanged: already exactly constrained";
+    return v;
+  }
+  if (static_cast<int>(model.pairs.size()) > kStructureDesignSearchPairs) {
+    v.note = fmt::format("no change set searched: more than {} pairs", kStructureDesignSearchPairs);
+    return v;
+  }
+  StructureModel current = model;
+  v.changes = merged_structure_changes(model, greedy_structure_steps(current, d));
   const StructureResult after = structure::analyse_structure(current);
   v.changes_verified = !v.changes.empty() && after.complete();
   v.becomes = after.complete() ? fmt::format("every body in a structural group; {} input(s), exactly constrained", current.input_count())
