@@ -350,12 +350,14 @@ std::vector<std::string> network_generic_sentences(const network::Model& model, 
   return {generic_count_text("FN", r.FN, g.FN, involved, "couplings"), generic_count_text("CN", r.CN, g.CN, involved, "couplings")};
 }
 
-std::string network_report_text(const network::Model& model, const NetworkResult& r, const NetworkReportOptions& options) {
-  const auto motion_primaries = printable_names(names_of(r.primary_motion, r.motions));
-  const auto action_primaries = printable_names(names_of(r.primary_action, r.actions));
-  const auto coupling_name = [&](std::size_t e) { return printable_text(model.couplings[e].name); };
-  std::string t = options.verdict ? verdict_text(*options.verdict) : std::string();
-  t += fmt::format("{}\n", r.model_name.empty() ? "Coupling network" : printable_text(r.model_name));
+namespace {
+
+// Sections of network_report_text and network_report_json, in the order they are written.
+
+// The counts: bodies, couplings, circuits, cutsets, the two ranks and their evidence, FN, CN,
+// the class and Davies' identities.
+std::string network_counts_text(const network::Model& model, const NetworkResult& r) {
+  std::string t = fmt::format("{}\n", r.model_name.empty() ? "Coupling network" : printable_text(r.model_name));
   t += fmt::format("  coupling network, {} (d = {}){}; {}\n", r.d == 6 ? "spatial" : "planar", r.d,
                    model.units.empty() ? "" : ", lengths in " + printable_text(model.units), printable_text(r.arithmetic_reason));
   t += fmt::format("  bodies n = {}, couplings e = {}, circuits l = {}, cutsets k = {}\n", r.bodies, r.e, r.l, r.k);
@@ -373,6 +375,95 @@ std::string network_report_text(const network::Model& model, const NetworkResult
   t += fmt::format("  class: {}\n", network::class_description(r.classification));
   t += fmt::format("  identities FN = F - m = d*k - a, CN = C - a = d*l - m, FN - CN = F - d*l: {}\n",
                    r.identities_hold ? "hold" : "FAIL");
+  return t;
+}
+
+// The magnitudes of a law as linear forms of the primaries, with their values when given.
+std::string magnitudes_text(const char* title, const std::vector<network::Magnitude>& magnitudes, const LinearForms& forms,
+                            const std::vector<std::string>& primaries, const std::optional<Eigen::VectorXd>& values) {
+  std::string t = fmt::format("{}\n", title);
+  const double noise = noise_level(forms);
+  for (std::size_t i = 0; i < magnitudes.size(); ++i) {
+    t += fmt::format("  {:<10} = {}", printable_text(magnitudes[i].name), linear_form_text(forms, static_cast<Index>(i), primaries, noise));
+    if (values) t += fmt::format("   = {}", value_text((*values)(static_cast<Index>(i))));
+    t += "\n";
+  }
+  return t;
+}
+
+// Each coupling's numeric screw (a column of `columns`).
+std::string numeric_screws_text(const network::Model& model, const NetworkResult& r, const char* title, const Eigen::MatrixXd& columns) {
+  std::string t = fmt::format("\n{}\n", title);
+  for (int e = 0; e < r.e; ++e) {
+    std::vector<std::string> coordinates;
+    for (int c = 0; c < r.d; ++c) coordinates.push_back(value_text(columns(c, e)));
+    t += fmt::format("  {:<10} ({})\n", printable_text(model.couplings[static_cast<std::size_t>(e)].name), fmt::join(coordinates, ", "));
+  }
+  return t;
+}
+
+// The pairs of bodies (seed 000, Table 1) with their freedoms, constraints and primaries.
+std::string pairs_text(const network::Model& model, const NetworkResult& r, const std::vector<std::string>& motion_primaries,
+                       const std::vector<std::string>& action_primaries) {
+  std::string t = "\nPairs of bodies (seed 000, Table 1; an absent coupling counts as f = d, c = 0):\n";
+  t += fmt::format("  {:<12} {:<10} {:>3} {:>4}  {:<18} {:>3} {:>4}  {}\n", "bodies", "coupling", "f", "fij",
+                   "motion primaries", "c", "cij", "action primaries");
+  for (const auto& p : r.pairs) {
+    const std::string bodies = printable_text(model.bodies[static_cast<std::size_t>(p.body_i)]) + ", " +
+                               printable_text(model.bodies[static_cast<std::size_t>(p.body_j)]);
+    const std::string coupling = p.coupling ? printable_text(model.couplings[static_cast<std::size_t>(*p.coupling)].name) : "absent";
+    std::vector<std::string> mp, ap;
+    for (int i : p.motion_primaries) mp.push_back(motion_primaries[static_cast<std::size_t>(i)]);
+    for (int i : p.action_primaries) ap.push_back(action_primaries[static_cast<std::size_t>(i)]);
+    t += fmt::format("  {:<12} {:<10} {:>3} {:>4}  {:<18} {:>3} {:>4}  {}\n", bodies, coupling, p.f, p.fij, joined_or_dash(mp), p.c,
+                     p.cij, joined_or_dash(ap));
+  }
+  return t;
+}
+
+// `--matrices`: B, Q, BM, QA and the unit matrices.
+std::string matrices_text(const NetworkResult& r) {
+  std::string t = "\nCircuit matrix [B]l,e:\n" + int_matrix_text(r.B);
+  t += "Cutset matrix [Q]k,e:\n" + int_matrix_text(r.Q);
+  t += "Motion-graph circuit matrix [BM]l,F:\n" + int_matrix_text(r.BM);
+  t += "Action-graph cutset matrix [QA]k,C:\n" + int_matrix_text(r.QA);
+  t += "Unit motion matrix [M^D]d,F:\n" + rational_matrix_text(r.MD);
+  t += "Unit action matrix [A^D]d,C:\n" + rational_matrix_text(r.AD);
+  t += "Network unit motion matrix [M^N]dl,F:\n" + rational_matrix_text(r.MN);
+  t += "Network unit action matrix [A^N]dk,C:\n" + rational_matrix_text(r.AN);
+  return t;
+}
+
+// Missing values, whether the two methods agree, and the warnings.
+std::string checks_text(const NetworkResult& r) {
+  std::string t;
+  if (!r.missing_motion_values.empty())
+    t += fmt::format("\nValues: no value for the motion primaries {}; what depends on them is shown as ?\n",
+                     fmt::join(printable_names(r.missing_motion_values), ", "));
+  if (!r.missing_action_values.empty())
+    t += fmt::format("\nValues: no value for the action primaries {}; what depends on them is shown as ?\n",
+                     fmt::join(printable_names(r.missing_action_values), ", "));
+  t += fmt::format("\nMethods agree: circulation law and cutset motions {}; cutset law and circuit actions {}\n",
+                   r.motion_methods_agree ? "yes" : "NO", r.action_methods_agree ? "yes" : "NO");
+  return t;
+}
+
+std::string warnings_text(const NetworkResult& r) {
+  const auto warning_list = warnings(r);
+  if (warning_list.empty()) return {};
+  std::string t = "\nWarnings:\n";
+  for (const auto& w : warning_list) t += "  - " + w + "\n";
+  return t;
+}
+
+}  // namespace
+
+std::string network_report_text(const network::Model& model, const NetworkResult& r, const NetworkReportOptions& options) {
+  const auto motion_primaries = printable_names(names_of(r.primary_motion, r.motions));
+  const auto action_primaries = printable_names(names_of(r.primary_action, r.actions));
+  const auto coupling_name = [&](std::size_t e) { return printable_text(model.couplings[e].name); };
+  std::string t = options.verdict ? verdict_text(*options.verdict) : std::string();
+  t += network_counts_text(model, r);
   t += "\n";
   if (options.generic) t += generic_text(model, r, *options.generic, motion_primaries, action_primaries) + "\n";
   if (options.second_order) t += second_order_text(*options.second_order, motion_primaries) + "\n";
@@ -382,78 +473,25 @@ std::string network_report_text(const network::Model& model, const NetworkResult
   t += fmt::format("Spanning tree: branches {}; chords {}\n", joined_or_dash(branch_names), joined_or_dash(chord_names));
   t += fmt::format("Primary variables: motions {}; actions {}\n", joined_or_dash(motion_primaries), joined_or_dash(action_primaries));
   t += "\n";
-
-  auto magnitude_lines = [&](const char* title, const std::vector<network::Magnitude>& magnitudes, const LinearForms& forms,
-                             const std::vector<std::string>& primaries, const std::optional<Eigen::VectorXd>& values) {
-    t += fmt::format("{}\n", title);
-    const double noise = noise_level(forms);
-    for (std::size_t i = 0; i < magnitudes.size(); ++i) {
-      t += fmt::format("  {:<10} = {}", printable_text(magnitudes[i].name), linear_form_text(forms, static_cast<Index>(i), primaries, noise));
-      if (values) t += fmt::format("   = {}", value_text((*values)(static_cast<Index>(i))));
-      t += "\n";
-    }
-  };
-  magnitude_lines("Motion magnitudes [c]F (circulation law):", r.motions, r.motion_magnitudes, motion_primaries, r.motion_values);
-  magnitude_lines("Action magnitudes [C]C (cutset law):", r.actions, r.action_magnitudes, action_primaries, r.action_values);
+  t += magnitudes_text("Motion magnitudes [c]F (circulation law):", r.motions, r.motion_magnitudes, motion_primaries, r.motion_values);
+  t += magnitudes_text("Action magnitudes [C]C (cutset law):", r.actions, r.action_magnitudes, action_primaries, r.action_values);
   t += "\nMotion matrix [M]d,e (motion of each coupling's second body relative to its first):\n";
   t += contracted_text(model, r, r.circulation.contracted, motion_primaries, true);
   t += "\nAction matrix [A]d,e (action transmitted by each coupling):\n";
   t += contracted_text(model, r, r.cutset_law.contracted, action_primaries, false);
-  auto numeric_screws = [&](const char* title, const Eigen::MatrixXd& columns) {
-    t += fmt::format("\n{}\n", title);
-    for (int e = 0; e < r.e; ++e) {
-      std::vector<std::string> coordinates;
-      for (int c = 0; c < r.d; ++c) coordinates.push_back(value_text(columns(c, e)));
-      t += fmt::format("  {:<10} ({})\n", coupling_name(static_cast<std::size_t>(e)), fmt::join(coordinates, ", "));
-    }
-  };
-  if (r.coupling_motion_values) numeric_screws("Numeric motion of each coupling (axis formation):", *r.coupling_motion_values);
-  if (r.coupling_action_values) numeric_screws("Numeric action of each coupling (ray formation):", *r.coupling_action_values);
-  if (!r.missing_motion_values.empty())
-    t += fmt::format("\nValues: no value for the motion primaries {}; what depends on them is shown as ?\n",
-                     fmt::join(printable_names(r.missing_motion_values), ", "));
-  if (!r.missing_action_values.empty())
-    t += fmt::format("\nValues: no value for the action primaries {}; what depends on them is shown as ?\n",
-                     fmt::join(printable_names(r.missing_action_values), ", "));
-  t += fmt::format("\nMethods agree: circulation law and cutset motions {}; cutset law and circuit actions {}\n",
-                   r.motion_methods_agree ? "yes" : "NO", r.action_methods_agree ? "yes" : "NO");
-
-  t += "\nPairs of bodies (seed 000, Table 1; an absent coupling counts as f = d, c = 0):\n";
-  t += fmt::format("  {:<12} {:<10} {:>3} {:>4}  {:<18} {:>3} {:>4}  {}\n", "bodies", "coupling", "f", "fij",
-                   "motion primaries", "c", "cij", "action primaries");
-  for (const auto& p : r.pairs) {
-    const std::string bodies = printable_text(model.bodies[static_cast<std::size_t>(p.body_i)]) + ", " +
-                               printable_text(model.bodies[static_cast<std::size_t>(p.body_j)]);
-    const std::string coupling = p.coupling ? coupling_name(static_cast<std::size_t>(*p.coupling)) : "absent";
-    std::vector<std::string> mp, ap;
-    for (int i : p.motion_primaries) mp.push_back(motion_primaries[static_cast<std::size_t>(i)]);
-    for (int i : p.action_primaries) ap.push_back(action_primaries[static_cast<std::size_t>(i)]);
-    t += fmt::format("  {:<12} {:<10} {:>3} {:>4}  {:<18} {:>3} {:>4}  {}\n", bodies, coupling, p.f, p.fij, joined_or_dash(mp), p.c,
-                     p.cij, joined_or_dash(ap));
-  }
-
-  if (options.matrices) {
-    t += "\nCircuit matrix [B]l,e:\n" + int_matrix_text(r.B);
-    t += "Cutset matrix [Q]k,e:\n" + int_matrix_text(r.Q);
-    t += "Motion-graph circuit matrix [BM]l,F:\n" + int_matrix_text(r.BM);
-    t += "Action-graph cutset matrix [QA]k,C:\n" + int_matrix_text(r.QA);
-    t += "Unit motion matrix [M^D]d,F:\n" + rational_matrix_text(r.MD);
-    t += "Unit action matrix [A^D]d,C:\n" + rational_matrix_text(r.AD);
-    t += "Network unit motion matrix [M^N]dl,F:\n" + rational_matrix_text(r.MN);
-    t += "Network unit action matrix [A^N]dk,C:\n" + rational_matrix_text(r.AN);
-  }
-  const auto warning_list = warnings(r);
-  if (!warning_list.empty()) {
-    t += "\nWarnings:\n";
-    for (const auto& w : warning_list) t += "  - " + w + "\n";
-  }
+  if (r.coupling_motion_values) t += numeric_screws_text(model, r, "Numeric motion of each coupling (axis formation):", *r.coupling_motion_values);
+  if (r.coupling_action_values) t += numeric_screws_text(model, r, "Numeric action of each coupling (ray formation):", *r.coupling_action_values);
+  t += checks_text(r);
+  t += pairs_text(model, r, motion_primaries, action_primaries);
+  if (options.matrices) t += matrices_text(r);
+  t += warnings_text(r);
   return t;
 }
 
-Json network_report_json(const network::Model& model, const NetworkResult& r, const NetworkReportOptions& options) {
-  const auto motion_primaries = names_of(r.primary_motion, r.motions);
-  const auto action_primaries = names_of(r.primary_action, r.actions);
-  Json j;
+namespace {
+
+// The model and its counts: "kind" to "identities_hold".
+void add_network_count_keys(Json& j, const network::Model& model, const NetworkResult& r) {
   j["kind"] = "network";
   j["name"] = r.model_name;
   j["space"] = r.d == 6 ? "spatial" : "planar";
@@ -476,8 +514,10 @@ Json network_report_json(const network::Model& model, const NetworkResult& r, co
   j["classification"] = network::class_id(r.classification);
   j["classification_description"] = network::class_description(r.classification);
   j["identities_hold"] = r.identities_hold;
-  if (options.generic) j["generic"] = generic_json(model, r, *options.generic, motion_primaries, action_primaries);
-  if (options.second_order) j["second_order"] = second_order_json(*options.second_order, motion_primaries);
+}
+
+// The evidence of both ranks (and the modular check), and the length scale of floating point.
+void add_rank_evidence_keys(Json& j, const NetworkResult& r) {
   j["rank_evidence"] = {{"motion", rank_json(r.circulation.solution.rank)}, {"action", rank_json(r.cutset_law.solution.rank)}};
   if (r.modular_check)
     j["rank_evidence"]["modular"] = {{"rank_motion", r.modular_check->rank},
@@ -485,41 +525,37 @@ Json network_report_json(const network::Model& model, const NetworkResult& r, co
                                      {"agreeing", r.modular_check->agreeing},
                                      {"followed", r.modular_check->followed}};
   if (!r.exact) j["length_scale"] = r.length_scale;
-  Json branches = Json::array(), chords = Json::array();
-  for (int b : r.branches) branches.push_back(model.couplings[static_cast<std::size_t>(b)].name);
-  for (int c : r.chords) chords.push_back(model.couplings[static_cast<std::size_t>(c)].name);
-  j["tree"] = {{"branches", branches}, {"chords", chords}};
-  j["primary_motion"] = motion_primaries;
-  j["primary_action"] = action_primaries;
-  auto magnitudes_json = [&](const std::vector<network::Magnitude>& magnitudes, const LinearForms& forms,
-                             const std::vector<std::string>& primaries) {
-    Json out = Json::object();
-    const double noise = noise_level(forms);
-    for (std::size_t i = 0; i < magnitudes.size(); ++i)
-      out[magnitudes[i].name] = linear_form_text(forms, static_cast<Index>(i), primaries, noise);
-    return out;
-  };
-  j["motions"] = magnitudes_json(r.motions, r.motion_magnitudes, motion_primaries);
-  j["actions"] = magnitudes_json(r.actions, r.action_magnitudes, action_primaries);
-  auto screws_json = [&](const std::vector<network::Magnitude>& magnitudes) {
-    Json out = Json::array();
-    for (const auto& m : magnitudes) {
-      Json coordinates = Json::array();
-      for (const auto& x : m.unit_screw.coordinates) coordinates.push_back(x.get_d());
-      out.push_back({{"name", m.name}, {"coupling", model.couplings[static_cast<std::size_t>(m.coupling)].name}, {"unit_screw", coordinates}});
-    }
-    return out;
-  };
-  j["unit_motions"] = screws_json(r.motions);
-  j["unit_actions"] = screws_json(r.actions);
-  auto contracted_json = [&](const LinearForms& forms, const std::vector<std::string>& primaries) {
-    Json out = Json::object();
-    for (int e = 0; e < r.e; ++e) out[model.couplings[static_cast<std::size_t>(e)].name] = expressions_json(forms, e * r.d, r.d, primaries);
-    return out;
-  };
-  j["motion_matrix"] = contracted_json(r.circulation.contracted, motion_primaries);
-  j["action_matrix"] = contracted_json(r.cutset_law.contracted, action_primaries);
-  j["methods_agree"] = {{"motion", r.motion_methods_agree}, {"action", r.action_methods_agree}};
+}
+
+// Each magnitude as a linear form of the primaries: name -> text.
+Json magnitudes_json(const std::vector<network::Magnitude>& magnitudes, const LinearForms& forms, const std::vector<std::string>& primaries) {
+  Json out = Json::object();
+  const double noise = noise_level(forms);
+  for (std::size_t i = 0; i < magnitudes.size(); ++i)
+    out[magnitudes[i].name] = linear_form_text(forms, static_cast<Index>(i), primaries, noise);
+  return out;
+}
+
+// Each magnitude's unit screw and coupling.
+Json unit_screws_json(const network::Model& model, const std::vector<network::Magnitude>& magnitudes) {
+  Json out = Json::array();
+  for (const auto& m : magnitudes) {
+    Json coordinates = Json::array();
+    for (const auto& x : m.unit_screw.coordinates) coordinates.push_back(x.get_d());
+    out.push_back({{"name", m.name}, {"coupling", model.couplings[static_cast<std::size_t>(m.coupling)].name}, {"unit_screw", coordinates}});
+  }
+  return out;
+}
+
+// The contracted matrix: coupling -> its d expressions.
+Json contracted_json(const network::Model& model, const NetworkResult& r, const LinearForms& forms, const std::vector<std::string>& primaries) {
+  Json out = Json::object();
+  for (int e = 0; e < r.e; ++e) out[model.couplings[static_cast<std::size_t>(e)].name] = expressions_json(forms, e * r.d, r.d, primaries);
+  return out;
+}
+
+Json network_pairs_json(const network::Model& model, const NetworkResult& r, const std::vector<std::string>& motion_primaries,
+                        const std::vector<std::string>& action_primaries) {
   Json pairs = Json::array();
   for (const auto& p : r.pairs) {
     Json pair = pair_counts_json(model, p);
@@ -532,41 +568,72 @@ Json network_report_json(const network::Model& model, const NetworkResult& r, co
     pair["action_system"] = expressions_json(p.action_system, 0, r.d, action_primaries);
     pairs.push_back(pair);
   }
-  j["pairs"] = pairs;
-  if (r.motion_values || r.action_values) {
-    Json values = Json::object();
-    auto numeric = [&](const std::vector<network::Magnitude>& magnitudes, const Eigen::VectorXd& v) {
-      Json out = Json::object();
-      for (std::size_t i = 0; i < magnitudes.size(); ++i) out[magnitudes[i].name] = value_json(v(static_cast<Index>(i)));
-      return out;
-    };
-    auto screws = [&](const Eigen::MatrixXd& columns) {
-      Json out = Json::object();
-      for (int e = 0; e < r.e; ++e) {
-        Json coordinates = Json::array();
-        for (int c = 0; c < r.d; ++c) coordinates.push_back(value_json(columns(c, e)));
-        out[model.couplings[static_cast<std::size_t>(e)].name] = coordinates;
-      }
-      return out;
-    };
-    if (r.motion_values) values["motions"] = numeric(r.motions, *r.motion_values);
-    if (r.coupling_motion_values) values["coupling_motions"] = screws(*r.coupling_motion_values);
-    if (r.action_values) values["actions"] = numeric(r.actions, *r.action_values);
-    if (r.coupling_action_values) values["coupling_actions"] = screws(*r.coupling_action_values);
-    if (!r.missing_motion_values.empty() || !r.missing_action_values.empty()) {
-      std::vector<std::string> missing = r.missing_motion_values;
-      missing.insert(missing.end(), r.missing_action_values.begin(), r.missing_action_values.end());
-      values["missing"] = missing;
+  return pairs;
+}
+
+// The numeric values of the magnitudes and coupling screws (primaries given values), and the
+// primaries without one.
+Json network_values_json(const network::Model& model, const NetworkResult& r) {
+  Json values = Json::object();
+  auto numeric = [&](const std::vector<network::Magnitude>& magnitudes, const Eigen::VectorXd& v) {
+    Json out = Json::object();
+    for (std::size_t i = 0; i < magnitudes.size(); ++i) out[magnitudes[i].name] = value_json(v(static_cast<Index>(i)));
+    return out;
+  };
+  auto screws = [&](const Eigen::MatrixXd& columns) {
+    Json out = Json::object();
+    for (int e = 0; e < r.e; ++e) {
+      Json coordinates = Json::array();
+      for (int c = 0; c < r.d; ++c) coordinates.push_back(value_json(columns(c, e)));
+      out[model.couplings[static_cast<std::size_t>(e)].name] = coordinates;
     }
-    j["values"] = values;
+    return out;
+  };
+  if (r.motion_values) values["motions"] = numeric(r.motions, *r.motion_values);
+  if (r.coupling_motion_values) values["coupling_motions"] = screws(*r.coupling_motion_values);
+  if (r.action_values) values["actions"] = numeric(r.actions, *r.action_values);
+  if (r.coupling_action_values) values["coupling_actions"] = screws(*r.coupling_action_values);
+  if (!r.missing_motion_values.empty() || !r.missing_action_values.empty()) {
+    std::vector<std::string> missing = r.missing_motion_values;
+    missing.insert(missing.end(), r.missing_action_values.begin(), r.missing_action_values.end());
+    values["missing"] = missing;
   }
+  return values;
+}
+
+Json network_matrices_json(const NetworkResult& r) {
+  return {{"B", int_matrix_json(r.B)},        {"Q", int_matrix_json(r.Q)},        {"BM", int_matrix_json(r.BM)},
+          {"QA", int_matrix_json(r.QA)},      {"MD", rational_matrix_json(r.MD)}, {"AD", rational_matrix_json(r.AD)},
+          {"MN", rational_matrix_json(r.MN)}, {"AN", rational_matrix_json(r.AN)}};
+}
+
+}  // namespace
+
+Json network_report_json(const network::Model& model, const NetworkResult& r, const NetworkReportOptions& options) {
+  const auto motion_primaries = names_of(r.primary_motion, r.motions);
+  const auto action_primaries = names_of(r.primary_action, r.actions);
+  Json j;
+  add_network_count_keys(j, model, r);
+  if (options.generic) j["generic"] = generic_json(model, r, *options.generic, motion_primaries, action_primaries);
+  if (options.second_order) j["second_order"] = second_order_json(*options.second_order, motion_primaries);
+  add_rank_evidence_keys(j, r);
+  Json branches = Json::array(), chords = Json::array();
+  for (int b : r.branches) branches.push_back(model.couplings[static_cast<std::size_t>(b)].name);
+  for (int c : r.chords) chords.push_back(model.couplings[static_cast<std::size_t>(c)].name);
+  j["tree"] = {{"branches", branches}, {"chords", chords}};
+  j["primary_motion"] = motion_primaries;
+  j["primary_action"] = action_primaries;
+  j["motions"] = magnitudes_json(r.motions, r.motion_magnitudes, motion_primaries);
+  j["actions"] = magnitudes_json(r.actions, r.action_magnitudes, action_primaries);
+  j["unit_motions"] = unit_screws_json(model, r.motions);
+  j["unit_actions"] = unit_screws_json(model, r.actions);
+  j["motion_matrix"] = contracted_json(model, r, r.circulation.contracted, motion_primaries);
+  j["action_matrix"] = contracted_json(model, r, r.cutset_law.contracted, action_primaries);
+  j["methods_agree"] = {{"motion", r.motion_methods_agree}, {"action", r.action_methods_agree}};
+  j["pairs"] = network_pairs_json(model, r, motion_primaries, action_primaries);
+  if (r.motion_values || r.action_values) j["values"] = network_values_json(model, r);
   j["warnings"] = warnings(r);
-  if (options.matrices) {
-    j["matrices"] = {{"B", int_matrix_json(r.B)},          {"Q", int_matrix_json(r.Q)},
-                     {"BM", int_matrix_json(r.BM)},        {"QA", int_matrix_json(r.QA)},
-                     {"MD", rational_matrix_json(r.MD)},   {"AD", rational_matrix_json(r.AD)},
-                     {"MN", rational_matrix_json(r.MN)},   {"AN", rational_matrix_json(r.AN)}};
-  }
+  if (options.matrices) j["matrices"] = network_matrices_json(r);
   if (options.verdict) return lead_with_verdict(*options.verdict, std::move(j), model.units);
   return j;
 }
