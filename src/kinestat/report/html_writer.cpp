@@ -129,6 +129,102 @@ nlohmann::ordered_json trace_json(const Scene& scene, const SceneTrace& trace) {
 
 }  // namespace
 
+namespace {
+
+// Sections of scene_json, in the order of their keys.
+
+using SceneJson = nlohmann::ordered_json;
+
+// Node positions (x, y, z flat), fixed flags and names (none for a large scene).
+SceneJson scene_nodes_json(const Scene& scene) {
+  auto position = SceneJson::array();
+  auto fixed_nodes = SceneJson::array();
+  auto names = SceneJson::array();
+  for (const auto& node : scene.nodes) {
+    for (int k = 0; k < 3; ++k) position.push_back(scene_rounded(node.position(k)));
+    fixed_nodes.push_back(node.fixed ? 1 : 0);
+    if (!scene.large) names.push_back(node.name);
+  }
+  return {{"position", position}, {"fixed", fixed_nodes}, {"name", names}};
+}
+
+// Element node pairs (flat), and for a scene that is not large their names, types, labels and sheets.
+SceneJson scene_elements_json(const Scene& scene) {
+  auto pairs = SceneJson::array();
+  auto element_names = SceneJson::array();
+  for (const auto& element : scene.elements) {
+    pairs.push_back(element.a);
+    pairs.push_back(element.b);
+    if (!scene.large) element_names.push_back(element.name);
+  }
+  auto element_types = SceneJson::array();
+  auto element_labels = SceneJson::array();
+  auto sheets = SceneJson::array();
+  if (!scene.large)
+    for (std::size_t e = 0; e < scene.elements.size(); ++e) {
+      const auto& element = scene.elements[e];
+      element_types.push_back(element.type);
+      element_labels.push_back(element.label ? 1 : 0);
+      if (element.sheet_across) sheets.push_back({{"element", e}, {"across", vector_json(*element.sheet_across)}});
+    }
+  return {{"count", scene.elements.size()}, {"pairs", pairs}, {"name", element_names}, {"type", element_types},
+          {"label", element_labels}, {"sheets", sheets}, {"sheet_width", kSheetWidth}};
+}
+
+SceneJson scene_supports_json(const Scene& scene) {
+  auto supports = SceneJson::array();
+  if (scene.large) return supports;
+  for (std::size_t i = 0; i < scene.nodes.size(); ++i) {
+    const auto& node = scene.nodes[i];
+    if (node.support.empty()) continue;
+    auto free = SceneJson::array();
+    for (const auto& d : node.free_directions) free.push_back(vector_json(d));
+    supports.push_back({{"node", i}, {"kind", node.support}, {"free", free}});
+  }
+  return supports;
+}
+
+SceneJson scene_glyph_json(const SceneGlyph& g) {
+  SceneJson glyph;
+  glyph["name"] = g.name;
+  glyph["type"] = g.type;
+  glyph["from"] = g.from;
+  glyph["to"] = g.to;
+  glyph["f"] = g.f;
+  glyph["c"] = g.c;
+  glyph["point"] = vector_json(g.point);
+  if (g.axis) glyph["axis"] = vector_json(*g.axis);
+  if (g.axis2) glyph["axis2"] = vector_json(*g.axis2);
+  if (g.normal) glyph["normal"] = vector_json(*g.normal);
+  glyph["motions"] = screws_json(g.motions);
+  glyph["actions"] = screws_json(g.actions);
+  return glyph;
+}
+
+SceneJson scene_mode_json(const Scene& scene, const SceneMode& mode) {
+  auto velocity = SceneJson::array();
+  for (const auto& v : mode.velocity)
+    for (int k = 0; k < 3; ++k) velocity.push_back(scene_rounded(v(k)));
+  auto twists = SceneJson::array();
+  for (const auto& t : mode.twists) twists.push_back(screw_json(t));
+  SceneJson entry = {{"label", mode.label}, {"velocity", velocity}, {"moving", mode.moving}, {"twists", twists}};
+  if (mode.trace) entry["trace"] = trace_json(scene, *mode.trace);
+  if (!mode.first_order_reason.empty()) entry["first_order"] = mode.first_order_reason;
+  return entry;
+}
+
+SceneJson scene_stress_json(const SceneStress& stress) {
+  auto value = SceneJson::array();
+  for (double v : stress.value) value.push_back(scene_rounded(v));
+  auto resultants = SceneJson::array();
+  for (const auto& r : stress.resultants) resultants.push_back({r.element, r.deformation, scene_rounded(r.value)});
+  auto wrenches = SceneJson::array();
+  for (const auto& w : stress.wrenches) wrenches.push_back(screw_json(w));
+  return {{"label", stress.label}, {"value", value}, {"kind", stress.kind}, {"resultants", resultants}, {"wrenches", wrenches}};
+}
+
+}  // namespace
+
 bool html_report_built_in() { return viewer_assets::built_in(); }
 
 nlohmann::ordered_json scene_json(const Scene& scene) {
@@ -149,87 +245,19 @@ nlohmann::ordered_json scene_json(const Scene& scene) {
   j["bodies"] = scene.bodies;
   j["group_of"] = scene.group_of;
   j["ground"] = scene.ground;
-  auto position = nlohmann::ordered_json::array();
-  auto fixed_nodes = nlohmann::ordered_json::array();
-  auto names = nlohmann::ordered_json::array();
-  for (const auto& node : scene.nodes) {
-    for (int k = 0; k < 3; ++k) position.push_back(scene_rounded(node.position(k)));
-    fixed_nodes.push_back(node.fixed ? 1 : 0);
-    if (!scene.large) names.push_back(node.name);
-  }
-  j["nodes"] = {{"position", position}, {"fixed", fixed_nodes}, {"name", names}};
-  auto pairs = nlohmann::ordered_json::array();
-  auto element_names = nlohmann::ordered_json::array();
-  for (const auto& element : scene.elements) {
-    pairs.push_back(element.a);
-    pairs.push_back(element.b);
-    if (!scene.large) element_names.push_back(element.name);
-  }
-  auto element_types = nlohmann::ordered_json::array();
-  auto element_labels = nlohmann::ordered_json::array();
-  auto sheets = nlohmann::ordered_json::array();
-  if (!scene.large)
-    for (std::size_t e = 0; e < scene.elements.size(); ++e) {
-      const auto& element = scene.elements[e];
-      element_types.push_back(element.type);
-      element_labels.push_back(element.label ? 1 : 0);
-      if (element.sheet_across) sheets.push_back({{"element", e}, {"across", vector_json(*element.sheet_across)}});
-    }
-  j["elements"] = {{"count", scene.elements.size()}, {"pairs", pairs}, {"name", element_names}, {"type", element_types},
-                   {"label", element_labels}, {"sheets", sheets}, {"sheet_width", kSheetWidth}};
+  j["nodes"] = scene_nodes_json(scene);
+  j["elements"] = scene_elements_json(scene);
   j["units"] = length_unit(scene);
   j["verdict"] = scene.verdict ? viewer_verdict_json(*scene.verdict) : nlohmann::ordered_json(nullptr);
-  auto supports = nlohmann::ordered_json::array();
-  if (!scene.large)
-    for (std::size_t i = 0; i < scene.nodes.size(); ++i) {
-      const auto& node = scene.nodes[i];
-      if (node.support.empty()) continue;
-      auto free = nlohmann::ordered_json::array();
-      for (const auto& d : node.free_directions) free.push_back(vector_json(d));
-      supports.push_back({{"node", i}, {"kind", node.support}, {"free", free}});
-    }
-  j["supports"] = supports;
+  j["supports"] = scene_supports_json(scene);
   j["glyphs"] = nlohmann::ordered_json::array();
   j["modes"] = nlohmann::ordered_json::array();
   j["stresses"] = nlohmann::ordered_json::array();
   j["pairs"] = nlohmann::ordered_json::array();
   if (scene.large) return j;
-  for (const auto& g : scene.glyphs) {
-    nlohmann::ordered_json glyph;
-    glyph["name"] = g.name;
-    glyph["type"] = g.type;
-    glyph["from"] = g.from;
-    glyph["to"] = g.to;
-    glyph["f"] = g.f;
-    glyph["c"] = g.c;
-    glyph["point"] = vector_json(g.point);
-    if (g.axis) glyph["axis"] = vector_json(*g.axis);
-    if (g.axis2) glyph["axis2"] = vector_json(*g.axis2);
-    if (g.normal) glyph["normal"] = vector_json(*g.normal);
-    glyph["motions"] = screws_json(g.motions);
-    glyph["actions"] = screws_json(g.actions);
-    j["glyphs"].push_back(glyph);
-  }
-  for (const auto& mode : scene.modes) {
-    auto velocity = nlohmann::ordered_json::array();
-    for (const auto& v : mode.velocity)
-      for (int k = 0; k < 3; ++k) velocity.push_back(scene_rounded(v(k)));
-    auto twists = nlohmann::ordered_json::array();
-    for (const auto& t : mode.twists) twists.push_back(screw_json(t));
-    nlohmann::ordered_json entry = {{"label", mode.label}, {"velocity", velocity}, {"moving", mode.moving}, {"twists", twists}};
-    if (mode.trace) entry["trace"] = trace_json(scene, *mode.trace);
-    if (!mode.first_order_reason.empty()) entry["first_order"] = mode.first_order_reason;
-    j["modes"].push_back(std::move(entry));
-  }
-  for (const auto& stress : scene.stresses) {
-    auto value = nlohmann::ordered_json::array();
-    for (double v : stress.value) value.push_back(scene_rounded(v));
-    auto resultants = nlohmann::ordered_json::array();
-    for (const auto& r : stress.resultants) resultants.push_back({r.element, r.deformation, scene_rounded(r.value)});
-    auto wrenches = nlohmann::ordered_json::array();
-    for (const auto& w : stress.wrenches) wrenches.push_back(screw_json(w));
-    j["stresses"].push_back({{"label", stress.label}, {"value", value}, {"kind", stress.kind}, {"resultants", resultants}, {"wrenches", wrenches}});
-  }
+  for (const auto& g : scene.glyphs) j["glyphs"].push_back(scene_glyph_json(g));
+  for (const auto& mode : scene.modes) j["modes"].push_back(scene_mode_json(scene, mode));
+  for (const auto& stress : scene.stresses) j["stresses"].push_back(scene_stress_json(stress));
   for (const auto& pair : scene.pairs)
     j["pairs"].push_back({{"i", pair.body_i}, {"j", pair.body_j}, {"fij", pair.fij}, {"motions", screws_json(pair.motions)}});
   return j;

@@ -172,21 +172,20 @@ std::string structure_report_text(const StructureReport& report) {
   return out;
 }
 
-std::string structure_report_json(const StructureReport& report) {
-  using nlohmann::ordered_json;
-  const StructureModel& model = report.model;
-  const StructureResult& d = report.decomposition;
-  auto one_based = [](const std::vector<int>& bodies) {
-    ordered_json list = ordered_json::array();
-    for (int b : bodies) list.push_back(b + 1);
-    return list;
-  };
-  ordered_json j;
-  j["kind"] = "structure";
-  j["name"] = model.name;
-  j["space"] = space_name(model);
-  j["dimension"] = model.dimension;
-  j["bodies"] = model.body_names;
+namespace {
+
+// Sections of structure_report_json, in the order of their keys.
+
+using nlohmann::ordered_json;
+
+// Body indices 1-based, as the paper numbers them.
+ordered_json one_based(const std::vector<int>& bodies) {
+  ordered_json list = ordered_json::array();
+  for (int b : bodies) list.push_back(b + 1);
+  return list;
+}
+
+ordered_json structure_pairs_json(const StructureModel& model) {
   ordered_json pairs = ordered_json::array();
   for (const auto& p : model.pairs) {
     ordered_json q;
@@ -196,11 +195,11 @@ std::string structure_report_json(const StructureReport& report) {
     q["inputs"] = p.inputs;
     pairs.push_back(q);
   }
-  j["pairs"] = pairs;
-  j["mobility"] = model.mobility();
-  j["inputs"] = model.input_count();
-  j["method"] = method_name(report.method);
-  j["complete"] = d.complete();
+  return pairs;
+}
+
+// The groups ("groups") and their bodies in order of formation ("order").
+void add_group_keys(ordered_json& j, const StructureResult& d) {
   ordered_json groups = ordered_json::array();
   ordered_json order = ordered_json::array();
   for (const StructuralGroup& g : d.groups) {
@@ -219,61 +218,85 @@ std::string structure_report_json(const StructureReport& report) {
   }
   j["groups"] = groups;
   j["order"] = order;
+}
+
+// The bodies in no group (null when the decomposition is complete).
+ordered_json undecomposed_json(const StructureResult& d) {
+  if (d.complete()) return nullptr;
+  const auto& u = d.undecomposed;
+  ordered_json x;
+  x["over_constrained"] = one_based(u.over_constrained);
+  x["redundant"] = u.redundant;
+  x["over_constrained_part"] = one_based(u.over_constrained_part);
+  x["under_constrained"] = one_based(u.under_constrained);
+  x["missing_inputs"] = u.missing;
+  x["blocked"] = one_based(u.blocked);
+  return x;
+}
+
+// Placement `rank` (1-based) of the inputs: where they are, its groups and matrices.
+ordered_json placement_json(const StructureModel& model, const structure::Transformation& r, std::size_t rank) {
+  ordered_json y;
+  y["rank"] = rank;
+  y["original"] = r.original;
+  ordered_json inputs = ordered_json::array();
+  for (std::size_t k = 0; k < r.inputs.size(); ++k) {
+    if (r.inputs[k] == 0) continue;
+    ordered_json z;
+    z["between"] = {model.pairs[k].a + 1, model.pairs[k].b + 1};
+    z["inputs"] = r.inputs[k];
+    inputs.push_back(z);
+  }
+  y["inputs"] = inputs;
+  ordered_json tg = ordered_json::array();
+  for (const auto& g : r.decomposition.groups) tg.push_back(one_based(g.bodies));
+  y["groups"] = tg;
+  y["group_count"] = r.decomposition.groups.size();
+  y["largest_group"] = r.largest_group;
+  y["stages"] = r.stages;
+  const auto adjacency = structure::adjacency_of(structure::with_inputs(model, r.inputs));
+  y["adjacency"] = adjacency.empty() ? ordered_json(nullptr) : ordered_json(adjacency);
+  y["result_matrix"] = model.body_count() <= kMaxDenseBodies ? ordered_json(r.decomposition.result_matrix()) : ordered_json(nullptr);
+  return y;
+}
+
+// The other placements of the inputs, best first (null when not asked for).
+ordered_json transformations_json(const StructureModel& model, const structure::TransformationSet* t) {
+  if (!t) return nullptr;
+  ordered_json x;
+  x["placements"] = t->placements;
+  x["enumerated"] = t->enumerated;
+  x["not_decomposable"] = t->not_decomposable;
+  ordered_json ranked = ordered_json::array();
+  for (std::size_t i = 0; i < t->ranked.size(); ++i) ranked.push_back(placement_json(model, t->ranked[i], i + 1));
+  x["ranked"] = ranked;
+  return x;
+}
+
+}  // namespace
+
+std::string structure_report_json(const StructureReport& report) {
+  const StructureModel& model = report.model;
+  const StructureResult& d = report.decomposition;
+  ordered_json j;
+  j["kind"] = "structure";
+  j["name"] = model.name;
+  j["space"] = space_name(model);
+  j["dimension"] = model.dimension;
+  j["bodies"] = model.body_names;
+  j["pairs"] = structure_pairs_json(model);
+  j["mobility"] = model.mobility();
+  j["inputs"] = model.input_count();
+  j["method"] = method_name(report.method);
+  j["complete"] = d.complete();
+  add_group_keys(j, d);
   j["stages"] = stages_of(d);
   j["result_matrix"] = model.body_count() <= kMaxDenseBodies ? ordered_json(d.result_matrix()) : ordered_json(nullptr);
   ordered_json assignments = ordered_json::array();
   for (const auto& a : d.assignments) assignments.push_back({a.receiver + 1, a.assigner + 1, a.value});
   j["assignments"] = assignments;
-  if (d.complete()) {
-    j["undecomposed"] = nullptr;
-  } else {
-    const auto& u = d.undecomposed;
-    ordered_json x;
-    x["over_constrained"] = one_based(u.over_constrained);
-    x["redundant"] = u.redundant;
-    x["over_constrained_part"] = one_based(u.over_constrained_part);
-    x["under_constrained"] = one_based(u.under_constrained);
-    x["missing_inputs"] = u.missing;
-    x["blocked"] = one_based(u.blocked);
-    j["undecomposed"] = x;
-  }
-  if (const auto* t = report.transformations) {
-    ordered_json x;
-    x["placements"] = t->placements;
-    x["enumerated"] = t->enumerated;
-    x["not_decomposable"] = t->not_decomposable;
-    ordered_json ranked = ordered_json::array();
-    for (std::size_t i = 0; i < t->ranked.size(); ++i) {
-      const auto& r = t->ranked[i];
-      ordered_json y;
-      y["rank"] = i + 1;
-      y["original"] = r.original;
-      ordered_json inputs = ordered_json::array();
-      for (std::size_t k = 0; k < r.inputs.size(); ++k) {
-        if (r.inputs[k] == 0) continue;
-        ordered_json z;
-        z["between"] = {model.pairs[k].a + 1, model.pairs[k].b + 1};
-        z["inputs"] = r.inputs[k];
-        inputs.push_back(z);
-      }
-      y["inputs"] = inputs;
-      ordered_json tg = ordered_json::array();
-      for (const auto& g : r.decomposition.groups) tg.push_back(one_based(g.bodies));
-      y["groups"] = tg;
-      y["group_count"] = r.decomposition.groups.size();
-      y["largest_group"] = r.largest_group;
-      y["stages"] = r.stages;
-      const auto adjacency = structure::adjacency_of(structure::with_inputs(model, r.inputs));
-      y["adjacency"] = adjacency.empty() ? ordered_json(nullptr) : ordered_json(adjacency);
-      y["result_matrix"] = model.body_count() <= kMaxDenseBodies ? ordered_json(r.decomposition.result_matrix())
-                                                                 : ordered_json(nullptr);
-      ranked.push_back(y);
-    }
-    x["ranked"] = ranked;
-    j["transformations"] = x;
-  } else {
-    j["transformations"] = nullptr;
-  }
+  j["undecomposed"] = undecomposed_json(d);
+  j["transformations"] = transformations_json(model, report.transformations);
   if (report.verdict) return json_text(with_notices(lead_with_verdict(*report.verdict, std::move(j), report.units), report.notices));
   return json_text(with_notices(std::move(j), report.notices));
 }
