@@ -478,6 +478,129 @@ std::string first_order_reason(const framework::FrameworkResult& a, std::size_t 
   return "not traced";
 }
 
+// Sections of framework_scene: nodes with their supports, elements as lines, modes, and
+// self-stresses per line.
+
+// A node and its support: pinned or fixed when every translation is held (fixed when every
+// rotation is too), a roller (with its free directions) when some are.
+SceneNode framework_scene_node(const framework::FrameworkModel& model, const framework::Node& node) {
+  int translations = 0, held = 0, rotations = 0, held_rotations = 0;
+  std::vector<Vector3d> free_directions;
+  for (int slot : framework::node_slots(model.dimension, node)) {
+    const bool fixed_slot = node.roles[static_cast<std::size_t>(slot)] == framework::CoordinateRole::fixed;
+    if (framework::is_translation(slot)) {
+      ++translations;
+      if (fixed_slot) ++held;
+      else free_directions.push_back(Vector3d::Unit(slot));
+    } else {
+      ++rotations;
+      if (fixed_slot) ++held_rotations;
+    }
+  }
+  SceneNode scene_node{node.name, node.position, -1, held == translations && translations > 0, {}, {}};
+  if (scene_node.fixed) scene_node.support = rotations > 0 && held_rotations == rotations ? "fixed" : "pinned";
+  else if (held > 0) scene_node.support = "roller", scene_node.free_directions = free_directions;
+  return scene_node;
+}
+
+// The lines of the elements: a rigid body's from its first node to each other node, a beam's
+// or a bar's between its two nodes.
+std::vector<SceneElement> framework_scene_elements(const framework::FrameworkModel& model) {
+  std::vector<SceneElement> lines;
+  for (const auto& element : model.elements) {
+    if (element.nodes.empty()) continue;
+    if (element.type == framework::ElementType::rigid_body) {
+      for (std::size_t i = 1; i < element.nodes.size(); ++i)
+        lines.push_back({element.name, "rigid", static_cast<int>(element.nodes[0]), static_cast<int>(element.nodes[i]), i == 1, std::nullopt});
+    } else if (element.nodes.size() >= 2) {
+      lines.push_back({element.name, element.type == framework::ElementType::beam ? "beam" : "truss",
+                       static_cast<int>(element.nodes[0]), static_cast<int>(element.nodes[1]), true, sheet_across(model, element)});
+    }
+  }
+  return lines;
+}
+
+// Mode k: translations of every node (D(c)'s are divided by the characteristic length; undone
+// here), its moving coordinates, and its traced path or why it is drawn to first order.
+SceneMode framework_scene_mode(const framework::FrameworkModel& model, const framework::FrameworkResult& a, std::size_t k,
+                               const std::vector<std::optional<framework::TwoWayTrace>>& traces) {
+  SceneMode mode;
+  mode.label = "mode " + std::to_string(k + 1);
+  mode.velocity.assign(model.nodes.size(), Vector3d::Zero());
+  const auto& v = a.modes[k].velocities;
+  for (Eigen::Index col = 0; col < v.size(); ++col) {
+    const auto& ref = a.indexing.coordinates[static_cast<std::size_t>(a.partition.dependent_coordinates[static_cast<std::size_t>(col)])];
+    if (framework::is_translation(ref.slot)) mode.velocity[ref.node](ref.slot) = v(col) * a.length;
+  }
+  for (Eigen::Index col : a.modes[k].moving) mode.moving.push_back(framework_column_label(model, a, col));
+  if (k < traces.size() && traces[k]) mode.trace = scene_trace(*traces[k]);
+  if (!mode.trace)
+    mode.first_order_reason = k < traces.size() && traces[k] ? "tracing lost closure at the first step both ways" : first_order_reason(a, k);
+  return mode;
+}
+
+// The scene line that carries each deformation: a rigid body's line to node i carries the
+// resultants of node i's relative coordinates.
+class DeformationLines {
+ public:
+  explicit DeformationLines(const framework::FrameworkModel& model) : model_(model), first_line_(model.elements.size(), -1) {
+    int index = 0;
+    for (std::size_t e = 0; e < model.elements.size(); ++e) {
+      const auto& element = model.elements[e];
+      if (element.nodes.empty()) continue;
+      if (element.type == framework::ElementType::rigid_body) {
+        if (element.nodes.size() > 1) first_line_[e] = index;
+        index += static_cast<int>(element.nodes.size()) - 1;
+      } else if (element.nodes.size() >= 2) {
+        first_line_[e] = index++;
+      }
+    }
+  }
+  /// Scene line of deformation `d` of element `e` (rigid bodies: d counts the slots of the
+  /// nodes after the reference node); -1 for none.
+  int line_of(std::size_t e, std::size_t d) const {
+    const auto& element = model_.elements[e];
+    if (first_line_[e] < 0) return -1;
+    if (element.type != framework::ElementType::rigid_body) return first_line_[e];
+    for (std::size_t i = 1; i < element.nodes.size(); ++i) {
+      const std::size_t slots = framework::node_slots(model_.dimension, model_.nodes[element.nodes[i]]).size();
+      if (d < slots) return first_line_[e] + static_cast<int>(i) - 1;
+      d -= slots;
+    }
+    return -1;
+  }
+
+ private:
+  const framework::FrameworkModel& model_;
+  std::vector<int> first_line_;
+};
+
+// Stress state k: per scene line, the dominant resultant of its element (largest magnitude, in
+// the analysis' non-dimensional units) and its kind; and every non-zero resultant by name.
+SceneStress framework_scene_stress(const framework::FrameworkModel& model, const framework::FrameworkResult& a, std::size_t k,
+                                   const DeformationLines& lines, std::size_t line_count) {
+  SceneStress stress;
+  stress.label = "self-stress " + std::to_string(k + 1);
+  stress.value.assign(line_count, 0.0);
+  stress.kind.assign(line_count, "");
+  const auto& s = a.stresses[k].resultants;
+  for (Eigen::Index row = 0; row < s.size(); ++row) {
+    if (s(row) == 0.0) continue;
+    const auto& ref = a.indexing.deformations[static_cast<std::size_t>(a.rows[static_cast<std::size_t>(row)])];
+    const auto& element = model.elements[ref.element];
+    const std::string name = framework::deformation_names(model, element)[ref.deformation];
+    stress.resultants.push_back({element.name, name, s(row)});
+    const int line = lines.line_of(ref.element, ref.deformation);
+    if (line < 0) continue;
+    auto& value = stress.value[static_cast<std::size_t>(line)];
+    if (std::abs(s(row)) > std::abs(value)) {
+      value = s(row);
+      stress.kind[static_cast<std::size_t>(line)] = deformation_kind(element.type, name);
+    }
+  }
+  return stress;
+}
+
 }  // namespace
 
 Scene framework_scene(const framework::FrameworkModel& model, const framework::FrameworkResult& a,
@@ -498,104 +621,14 @@ Scene framework_scene(const framework::FrameworkModel& model, const framework::F
       {"statically indeterminate stress states", std::to_string(a.self_stresses)},
       {"class", framework_classification(a)},
   };
-  for (const auto& node : model.nodes) {
-    int translations = 0, held = 0, rotations = 0, held_rotations = 0;
-    std::vector<Vector3d> free_directions;
-    for (int slot : framework::node_slots(model.dimension, node)) {
-      const bool fixed_slot = node.roles[static_cast<std::size_t>(slot)] == framework::CoordinateRole::fixed;
-      if (framework::is_translation(slot)) {
-        ++translations;
-        if (fixed_slot) ++held;
-        else free_directions.push_back(Vector3d::Unit(slot));
-      } else {
-        ++rotations;
-        if (fixed_slot) ++held_rotations;
-      }
-    }
-    SceneNode scene_node{node.name, node.position, -1, held == translations && translations > 0, {}, {}};
-    if (scene_node.fixed) scene_node.support = rotations > 0 && held_rotations == rotations ? "fixed" : "pinned";
-    else if (held > 0) scene_node.support = "roller", scene_node.free_directions = free_directions;
-    scene.nodes.push_back(std::move(scene_node));
-  }
-  for (const auto& element : model.elements) {
-    if (element.nodes.empty()) continue;
-    if (element.type == framework::ElementType::rigid_body) {
-      for (std::size_t i = 1; i < element.nodes.size(); ++i)
-        scene.elements.push_back({element.name, "rigid", static_cast<int>(element.nodes[0]), static_cast<int>(element.nodes[i]), i == 1, std::nullopt});
-    } else if (element.nodes.size() >= 2) {
-      scene.elements.push_back({element.name, element.type == framework::ElementType::beam ? "beam" : "truss",
-                                static_cast<int>(element.nodes[0]), static_cast<int>(element.nodes[1]), true, sheet_across(model, element)});
-    }
-  }
+  for (const auto& node : model.nodes) scene.nodes.push_back(framework_scene_node(model, node));
+  scene.elements = framework_scene_elements(model);
   // Signs are the analysis' own (linalg/sign_convention.hpp): the scene never flips a mode or
-  // a stress state. Translations in D(c) are divided by the characteristic length; undo that.
-  for (std::size_t k = 0; k < a.modes.size(); ++k) {
-    SceneMode mode;
-    mode.label = "mode " + std::to_string(k + 1);
-    mode.velocity.assign(model.nodes.size(), Vector3d::Zero());
-    const auto& v = a.modes[k].velocities;
-    for (Eigen::Index col = 0; col < v.size(); ++col) {
-      const auto& ref = a.indexing.coordinates[static_cast<std::size_t>(a.partition.dependent_coordinates[static_cast<std::size_t>(col)])];
-      if (framework::is_translation(ref.slot)) mode.velocity[ref.node](ref.slot) = v(col) * a.length;
-    }
-    for (Eigen::Index col : a.modes[k].moving) mode.moving.push_back(framework_column_label(model, a, col));
-    if (k < traces.size() && traces[k]) mode.trace = scene_trace(*traces[k]);
-    if (!mode.trace)
-      mode.first_order_reason = k < traces.size() && traces[k] ? "tracing lost closure at the first step both ways" : first_order_reason(a, k);
-    scene.modes.push_back(std::move(mode));
-  }
-  // Stress: per scene line, the dominant resultant of its element (largest magnitude, in the
-  // analysis' non-dimensional units) and its kind. A rigid body's line to node i carries the
-  // resultants of node i's relative coordinates.
-  std::vector<int> first_line(model.elements.size(), -1);
-  {
-    int index = 0;
-    for (std::size_t e = 0; e < model.elements.size(); ++e) {
-      const auto& element = model.elements[e];
-      if (element.nodes.empty()) continue;
-      if (element.type == framework::ElementType::rigid_body) {
-        if (element.nodes.size() > 1) first_line[e] = index;
-        index += static_cast<int>(element.nodes.size()) - 1;
-      } else if (element.nodes.size() >= 2) {
-        first_line[e] = index++;
-      }
-    }
-  }
-  // Scene line of deformation `d` of element `e` (rigid bodies: d counts the slots of the
-  // nodes after the reference node).
-  const auto line_of = [&](std::size_t e, std::size_t d) {
-    const auto& element = model.elements[e];
-    if (first_line[e] < 0) return -1;
-    if (element.type != framework::ElementType::rigid_body) return first_line[e];
-    for (std::size_t i = 1; i < element.nodes.size(); ++i) {
-      const std::size_t slots = framework::node_slots(model.dimension, model.nodes[element.nodes[i]]).size();
-      if (d < slots) return first_line[e] + static_cast<int>(i) - 1;
-      d -= slots;
-    }
-    return -1;
-  };
-  for (std::size_t k = 0; k < a.stresses.size(); ++k) {
-    SceneStress stress;
-    stress.label = "self-stress " + std::to_string(k + 1);
-    stress.value.assign(scene.elements.size(), 0.0);
-    stress.kind.assign(scene.elements.size(), "");
-    const auto& s = a.stresses[k].resultants;
-    for (Eigen::Index row = 0; row < s.size(); ++row) {
-      if (s(row) == 0.0) continue;
-      const auto& ref = a.indexing.deformations[static_cast<std::size_t>(a.rows[static_cast<std::size_t>(row)])];
-      const auto& element = model.elements[ref.element];
-      const std::string name = framework::deformation_names(model, element)[ref.deformation];
-      stress.resultants.push_back({element.name, name, s(row)});
-      const int line = line_of(ref.element, ref.deformation);
-      if (line < 0) continue;
-      auto& value = stress.value[static_cast<std::size_t>(line)];
-      if (std::abs(s(row)) > std::abs(value)) {
-        value = s(row);
-        stress.kind[static_cast<std::size_t>(line)] = deformation_kind(element.type, name);
-      }
-    }
-    scene.stresses.push_back(std::move(stress));
-  }
+  // a stress state.
+  for (std::size_t k = 0; k < a.modes.size(); ++k) scene.modes.push_back(framework_scene_mode(model, a, k, traces));
+  const DeformationLines lines(model);
+  for (std::size_t k = 0; k < a.stresses.size(); ++k)
+    scene.stresses.push_back(framework_scene_stress(model, a, k, lines, scene.elements.size()));
   scene.large = scene.elements.size() > kLargeSceneElements || scene.nodes.size() > kLargeSceneElements;
   return scene;
 }
