@@ -48,10 +48,15 @@ VibrationModes diagonal_mass_modes(const Eigen::MatrixXd& stiffness, const Eigen
     const Eigen::MatrixXd k_0m = vibration_block(stiffness, massless, modes.massive);
     // K_00 is symmetric; LDLT copes with the indefinite tangent stiffness of a buckled prestress.
     const Eigen::LDLT<Eigen::MatrixXd> k_00_factor(k_00);
-    recovery = -k_00_factor.solve(k_0m);
-    // A massless mechanism (K_00 singular) leaves a zero pivot: infinite or NaN recovery.
-    if (k_00_factor.info() != Eigen::Success || !recovery.allFinite())
+    // A massless mechanism (K_00 singular) leaves a pivot at rounding level of its own diagonal
+    // entry (compared entry by entry, so that no unit enters); Eigen's solve would skip it.
+    const Eigen::VectorXd diagonal = k_00_factor.transpositionsP() * k_00.diagonal();
+    const Eigen::VectorXd& pivots = k_00_factor.vectorD();
+    bool singular = k_00_factor.info() != Eigen::Success;
+    for (Eigen::Index i = 0; i < pivots.size(); ++i) singular = singular || std::abs(pivots(i)) <= kZeroStiffness * std::abs(diagonal(i));
+    if (singular)
       throw std::invalid_argument("vibration_modes: the massless coordinates are not held by the stiffness (a massless mechanism)");
+    recovery = -k_00_factor.solve(k_0m);
     condensed = k_mm + k_0m.transpose() * recovery;
     condensed = (condensed + condensed.transpose()).eval() / 2;  // symmetric to rounding
   }
