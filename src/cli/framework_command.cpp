@@ -11,6 +11,7 @@
 #include "kinestat/report/framework_report.hpp"
 #include "kinestat/report/json_text.hpp"
 #include "kinestat/report/verdict_report.hpp"
+#include "kinestat/tolerances.hpp"
 
 namespace kinestat::cli {
 
@@ -18,13 +19,15 @@ namespace {
 // Framework-only options; filled by register_framework_options before the action runs.
 long long dense_limit = 1500;
 long long sparse_vectors = 0;
+bool full_vectors = false;
 CLI::Option* dense_limit_option = nullptr;
 CLI::Option* vectors_option = nullptr;
+CLI::Option* full_vectors_option = nullptr;
 }  // namespace
 
 std::vector<std::string> given_framework_options() {
   std::vector<std::string> given;
-  for (const CLI::Option* option : {dense_limit_option, vectors_option})
+  for (const CLI::Option* option : {dense_limit_option, vectors_option, full_vectors_option})
     if (option != nullptr && option->count() > 0) given.push_back(option->get_name());
   return given;
 }
@@ -47,6 +50,10 @@ void register_framework_options(CLI::App& analyze) {
                      "and the release proposal; default 0 (counts only). With --backend petsc: the first K of each (no "
                      "proposal), for frameworks and networks")
       ->check(non_negative_whole_number());
+  full_vectors_option = analyze.add_flag("--full-vectors", full_vectors,
+                     fmt::format("Frameworks, with --json: list every entry of each mode and stress state, zeros included "
+                                 "(default: the non-zero ones, above {:.2g} times the vector's largest entry; docs/report.md)",
+                                 kModeZero));
 }
 
 int run_framework_analysis(const CommonOptions& options, const framework::FrameworkModel& model, const std::string& path,
@@ -59,7 +66,9 @@ int run_framework_analysis(const CommonOptions& options, const framework::Framew
   const pipeline::FrameworkAnalysis analysis = pipeline::analyse_framework(model, analysis_options);
   if (options.json) {
     emit(options, report::json_text(report::with_notices(
-                      report::framework_report_json(model, analysis.result, &analysis.verdict, analysis.shown_generic()), notices)));
+                      report::framework_report_json(model, analysis.result, &analysis.verdict, analysis.shown_generic(),
+                                                    full_vectors ? report::VectorListing::full : report::VectorListing::non_zero),
+                      notices)));
   } else {
     emit(options, report::framework_report_text(model, analysis.result, &analysis.verdict, analysis.shown_generic()));
   }

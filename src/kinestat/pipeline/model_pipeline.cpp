@@ -112,10 +112,10 @@ ModelAnalysis decompose_model(const io::ModelFile& file, const AnalysisRequest& 
   return analysis;
 }
 
-nlohmann::ordered_json analysis_json(const io::ModelFile& file, const ModelAnalysis& analysis) {
+nlohmann::ordered_json analysis_json(const io::ModelFile& file, const ModelAnalysis& analysis, report::VectorListing listing) {
   if (analysis.framework)
     return report::framework_report_json(*file.framework, analysis.framework->result, &analysis.framework->verdict,
-                                         analysis.framework->shown_generic());
+                                         analysis.framework->shown_generic(), listing);
   if (analysis.network)
     return report::network_report_json(file.network->model, analysis.network->result, analysis.network->report_options());
   if (analysis.sparse_network)
@@ -124,13 +124,13 @@ nlohmann::ordered_json analysis_json(const io::ModelFile& file, const ModelAnaly
   throw std::invalid_argument("pipeline::analysis_json: a structural decomposition is reported by report_json_text");
 }
 
-std::string report_json_text(const io::ModelFile& file, const ModelAnalysis& analysis) {
+std::string report_json_text(const io::ModelFile& file, const ModelAnalysis& analysis, report::VectorListing listing) {
   if (analysis.structure) {
     report::StructureReport report = analysis.structure->report();
     report.notices = file.notices;
     return report::structure_report_json(report);
   }
-  return report::json_text(report::with_notices(analysis_json(file, analysis), file.notices));
+  return report::json_text(report::with_notices(analysis_json(file, analysis, listing), file.notices));
 }
 
 nlohmann::ordered_json analyze_report_json(const io::ModelFile& file, std::optional<double> tolerance) {

@@ -22,6 +22,7 @@
 #include "kinestat/pipeline/framework_pipeline.hpp"
 #include "kinestat/pipeline/network_pipeline.hpp"
 #include "kinestat/pipeline/structure_pipeline.hpp"
+#include "kinestat/report/framework_report.hpp"
 #include "kinestat/report/scene.hpp"
 #include "kinestat/stop_request.hpp"
 
@@ -73,12 +74,15 @@ ModelAnalysis decompose_model(const io::ModelFile& file, const AnalysisRequest& 
 
 /// The JSON report of `analysis` (of `file`) as `kinestat analyze --json` prints it, or
 /// `kinestat structure --json` for a structural decomposition (terminated by a newline).
-std::string report_json_text(const io::ModelFile& file, const ModelAnalysis& analysis);
+/// `listing`: the entries of a framework's modes and stress states listed (`--full-vectors`).
+std::string report_json_text(const io::ModelFile& file, const ModelAnalysis& analysis,
+                             report::VectorListing listing = report::VectorListing::non_zero);
 
 /// The JSON report of a network or framework `analysis` (of `file`), as `kinestat analyze
 /// --json` prints it; a structural decomposition is a std::invalid_argument (its report is
 /// report_json_text's).
-nlohmann::ordered_json analysis_json(const io::ModelFile& file, const ModelAnalysis& analysis);
+nlohmann::ordered_json analysis_json(const io::ModelFile& file, const ModelAnalysis& analysis,
+                                     report::VectorListing listing = report::VectorListing::non_zero);
 
 /// `kinestat analyze --json` of `file` with the relative rank tolerance `tolerance` (the sweep's
 /// line): a structure model is an InputError ("analysed with 'kinestat structure'").

@@ -94,11 +94,21 @@ nlohmann::ordered_json parts_json(const FrameworkModel& model, const FrameworkRe
   return list;
 }
 
+// The smallest |entry| of `v` a listing gives: every entry for the full listing, else those
+// above kModeZero times the largest (relative: a unit-norm vector of 10^6 entries has entries of
+// 10^-3, and one scaled otherwise is listed alike).
+double listed_above(const Eigen::VectorXd& v, VectorListing listing) {
+  if (listing == VectorListing::full) return -1.0;
+  return v.size() == 0 ? 0.0 : kinestat::kModeZero * v.cwiseAbs().maxCoeff();
+}
+
 // Mode velocities grouped by node, in node order, coordinates in slot order.
-nlohmann::ordered_json velocities_by_node(const FrameworkModel& model, const FrameworkResult& a, const Eigen::VectorXd& v) {
+nlohmann::ordered_json velocities_by_node(const FrameworkModel& model, const FrameworkResult& a, const Eigen::VectorXd& v,
+                                          VectorListing listing) {
   nlohmann::ordered_json nodes = nlohmann::ordered_json::object();
+  const double above = listed_above(v, listing);
   for (Eigen::Index j = 0; j < v.size(); ++j) {
-    if (compact(a) && v(j) == 0.0) continue;
+    if (!(std::abs(v(j)) > above)) continue;
     const auto& c = column_ref(a, j);
     nodes[model.nodes[c.node].name][framework::kSlotNames[static_cast<std::size_t>(c.slot)]] = rounded(v(j));
   }
@@ -320,11 +330,13 @@ void add_rank_keys(nlohmann::ordered_json& j, const FrameworkModel& model, const
   for (Eigen::Index i = 0; i < a.n; ++i) column_labels.emplace_back(framework_column_label(model, a, i));
 }
 
-// A stress state's resultants: {element, deformation, value} per row of D(c).
-nlohmann::ordered_json resultants_json(const FrameworkModel& model, const FrameworkResult& a, const Eigen::VectorXd& resultants) {
+// A stress state's resultants: {element, deformation, value} per row of D(c) listed.
+nlohmann::ordered_json resultants_json(const FrameworkModel& model, const FrameworkResult& a, const Eigen::VectorXd& resultants,
+                                       VectorListing listing) {
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  const double above = listed_above(resultants, listing);
   for (Eigen::Index i = 0; i < resultants.size(); ++i) {
-    if (compact(a) && resultants(i) == 0.0) continue;
+    if (!(std::abs(resultants(i)) > above)) continue;
     const auto& ref = row_ref(a, i);
     nlohmann::ordered_json entry = json_object(3);
     entry["element"] = model.elements[ref.element].name;
@@ -337,10 +349,10 @@ nlohmann::ordered_json resultants_json(const FrameworkModel& model, const Framew
 
 // Mode k: velocities, moving coordinates, rigid parts, cause and order.
 nlohmann::ordered_json mode_json(const FrameworkModel& model, const FrameworkResult& a, std::size_t k,
-                                 const framework::GenericFramework* generic) {
+                                 const framework::GenericFramework* generic, VectorListing listing) {
   const auto& mode = a.modes[k];
   nlohmann::ordered_json m = json_object(8);
-  m["velocities"] = velocities_by_node(model, a, mode.velocities);
+  m["velocities"] = velocities_by_node(model, a, mode.velocities, listing);
   m["moving"] = nlohmann::ordered_json::array();
   for (Eigen::Index col : mode.moving) m["moving"].push_back(framework_column_label(model, a, col));
   if (!mode.rigid_motion.empty()) {
@@ -355,29 +367,30 @@ nlohmann::ordered_json mode_json(const FrameworkModel& model, const FrameworkRes
     m["order"] = framework::motion_order_name(o.order);
     m["order_reason"] = order_reason_code(o.reason);
     m["second_order_work"] = evidence_number(o.second_order_work);
-    if (o.blocking_stress.size() > 0) m["blocking_stress"] = resultants_json(model, a, o.blocking_stress);
+    if (o.blocking_stress.size() > 0) m["blocking_stress"] = resultants_json(model, a, o.blocking_stress, listing);
     if (o.traced) m["trace"] = trace_json(o.trace);
   }
   return m;
 }
 
-nlohmann::ordered_json prestress_json(const FrameworkModel& model, const FrameworkResult& a) {
+nlohmann::ordered_json prestress_json(const FrameworkModel& model, const FrameworkResult& a, VectorListing listing) {
   nlohmann::ordered_json p = json_object(8);
   p["stable"] = a.prestress.stable;
   p["nonrigid_modes"] = a.prestress.nonrigid_modes;
   p["rigid_motions"] = a.prestress.rigid_motions;
   p["smallest_eigenvalue"] = evidence_number(a.prestress.smallest_eigenvalue);
   p["exhaustive"] = a.prestress.exhaustive;
-  p["stress"] = resultants_json(model, a, a.prestress.stress);
+  p["stress"] = resultants_json(model, a, a.prestress.stress, listing);
   return p;
 }
 
-nlohmann::ordered_json stresses_json(const FrameworkModel& model, const FrameworkResult& a, const framework::GenericFramework* generic) {
+nlohmann::ordered_json stresses_json(const FrameworkModel& model, const FrameworkResult& a, const framework::GenericFramework* generic,
+                                     VectorListing listing) {
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
   for (std::size_t k = 0; k < a.stresses.size(); ++k) {
     const auto& state = a.stresses[k];
     nlohmann::ordered_json s = json_object(4);
-    s["resultants"] = resultants_json(model, a, state.resultants);
+    s["resultants"] = resultants_json(model, a, state.resultants, listing);
     s["candidates"] = nlohmann::ordered_json::array();
     for (Eigen::Index row : state.candidates) s["candidates"].push_back(framework_row_label(model, a, row));
     if (generic && k < generic->stress_causes.size()) s["cause"] = linalg::cause_name(generic->stress_causes[k]);
@@ -403,21 +416,24 @@ void add_proposal_keys(nlohmann::ordered_json& j, const FrameworkModel& model, c
 
 }  // namespace
 
+const char* vector_listing_name(VectorListing listing) { return listing == VectorListing::full ? "full" : "non_zero"; }
+
 nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const FrameworkResult& a, const design::Verdict* verdict,
-                                             const framework::GenericFramework* generic) {
+                                             const framework::GenericFramework* generic, VectorListing listing) {
   nlohmann::ordered_json j = json_object(48);
   add_count_keys(j, model, a, generic);
   add_rank_keys(j, model, a);
   j["vectors"] = a.vectors;
+  j["vector_listing"] = vector_listing_name(listing);
   if (compact(a) && a.vectors) {
     // The first vector_limit of each, as basic null vectors of the sparse R factors.
     j["vector_limit"] = a.vector_limit;
     j["null_space_residual"] = evidence_number(a.null_space_residual);
   }
   auto& modes = (j["modes"] = nlohmann::ordered_json::array()).get_ref<nlohmann::ordered_json::array_t&>();
-  for (std::size_t k = 0; k < a.modes.size(); ++k) modes.push_back(mode_json(model, a, k, generic));
-  if (a.prestress.tested) j["prestress_stability"] = prestress_json(model, a);
-  j["stresses"] = stresses_json(model, a, generic);
+  for (std::size_t k = 0; k < a.modes.size(); ++k) modes.push_back(mode_json(model, a, k, generic, listing));
+  if (a.prestress.tested) j["prestress_stability"] = prestress_json(model, a, listing);
+  j["stresses"] = stresses_json(model, a, generic, listing);
   add_proposal_keys(j, model, a);
   if (verdict) return lead_with_verdict(*verdict, std::move(j), model.units);
   return j;

@@ -28,14 +28,27 @@ std::string framework_classification(const framework::FrameworkResult& analysis)
 std::vector<std::string> framework_generic_sentences(const framework::FrameworkModel& model, const framework::FrameworkResult& analysis,
                                                      const framework::GenericFramework& generic);
 
-/// The report as JSON (keys documented in docs/framework.md).
+/// Which entries of its vectors (modes' velocities, stress states' resultants) a JSON report lists.
+enum class VectorListing {
+  /// The non-zero entries: those above kModeZero (tolerances.hpp) times the largest |entry| of
+  /// their vector, so that the report grows with what the vectors carry, not with the model.
+  non_zero,
+  /// Every entry, zeros included (`kinestat analyze --json --full-vectors`).
+  full,
+};
+
+/// JSON name of a listing: "non_zero" or "full" (the report's `vector_listing`).
+const char* vector_listing_name(VectorListing listing);
+
+/// The report as JSON (keys documented in docs/framework.md and docs/report.md).
 /// With a `verdict`, the report leads with it (design::framework_verdict decides it); with a
 /// `generic` answer (framework::generic_framework), it has `generic` and every mode and stress
-/// state a `cause`.
+/// state a `cause`. `listing`: the entries of each mode and stress state listed.
 nlohmann::ordered_json framework_report_json(const framework::FrameworkModel& model,
                                              const framework::FrameworkResult& analysis,
                                              const design::Verdict* verdict = nullptr,
-                                             const framework::GenericFramework* generic = nullptr);
+                                             const framework::GenericFramework* generic = nullptr,
+                                             VectorListing listing = VectorListing::non_zero);
 /// The report as readable text, the verdict block first when given.
 std::string framework_report_text(const framework::FrameworkModel& model, const framework::FrameworkResult& analysis,
                                   const design::Verdict* verdict = nullptr,
