@@ -44,7 +44,7 @@
 #include "kinestat/report/html_writer.hpp"
 #include "kinestat/report/json_text.hpp"
 #include "kinestat/report/move_report.hpp"
-#include "kinestat/report/position_solving.hpp"
+#include "kinestat/pipeline/move_pipeline.hpp"
 #include "kinestat/report/rank_status_text.hpp"
 #include "kinestat/report/network_report.hpp"
 #include "kinestat/report/scene.hpp"
@@ -243,23 +243,13 @@ std::string trace_json(const Analysed& a, long long mode, double amplitude, long
   // The checks and messages of src/cli/move_command.cpp.
   if (!(amplitude > 0.0) || !std::isfinite(amplitude)) throw py::value_error("amplitude is a positive finite number");
   if (steps < 1 || steps > 100000) throw py::value_error("steps is a whole number from 1 to 100000");
-  if (!analysis.vectors || analysis.method != framework::RankMethod::dense_svd)
-    throw io::InputError({path, 1, 1}, "the framework is too large for the dense analysis that tracing needs");
-  const auto modes = static_cast<long long>(analysis.modes.size());
-  if (modes == 0) throw io::InputError({path, 1, 1}, "the framework has no kinematic mode: it cannot move (--mode has nothing to follow)");
-  if (mode < 1 || mode > modes)
-    throw io::InputError({path, 1, 1}, fmt::format("--mode {}: the framework has {} kinematic mode{}, numbered 1 to {}", mode, modes,
-                                                   modes == 1 ? "" : "s", modes));
-  report::FrameworkMove move;
-  move.mode = static_cast<std::size_t>(mode - 1);
-  move.amplitude_fraction = amplitude;
-  move.steps = static_cast<int>(steps);
-  framework::TraceOptions trace;
-  trace.amplitude_fraction = amplitude;
-  trace.steps = move.steps;
-  trace.tolerance = linalg::RankTolerance{a.analysis.framework->options.tolerances.rank};
-  trace.stop = stop;
-  move.trace = framework::trace_motion(model, analysis, analysis.modes[move.mode].velocities, trace);
+  pipeline::TraceRequest request;
+  request.mode = mode;
+  request.amplitude = amplitude;
+  request.steps = steps;
+  request.tolerance = a.analysis.framework->options.tolerances.rank;
+  request.stop = stop;
+  const report::FrameworkMove move = pipeline::trace_framework_mode(model, analysis, path, request);
   return report::json_text(report::framework_move_json(model, analysis, move));
 }
 
@@ -268,19 +258,19 @@ std::string trace_json(const Analysed& a, long long mode, double amplitude, long
 std::string positions_json(const Analysed& a, const std::vector<std::pair<std::string, double>>& inputs,
                            const std::optional<std::tuple<std::string, double, double, long long>>& sweep) {
   if (!a.file.network) throw py::value_error("positions are solved for network models (kind: network)");
-  io::LoadedNetwork loaded = *a.file.network;
   const std::string& path = a.file.path;
   for (const auto& [name, value] : inputs)
     if (!std::isfinite(value)) throw py::value_error(fmt::format("the input '{}' is not a finite number", name));
-  std::optional<report::SweptInput> swept;
+  pipeline::PositionRequest request;
+  request.inputs = inputs;
   if (sweep) {
     const auto& [name, from, to, steps] = *sweep;
     if (!std::isfinite(from) || !std::isfinite(to) || steps < 1 || steps > 9999999)
       throw py::value_error("sweep is (name, from, to, steps) with finite from and to and 1 <= steps <= 9999999");
-    swept = report::SweptInput{name, from, to, steps};
+    request.sweep = pipeline::SweptInput{name, from, to, steps};
   }
-  const report::PositionSweep result = report::solve_position_sweep(loaded, path, inputs, swept, "");
-  return report::positions_json_text(loaded.model, result);
+  const pipeline::NetworkPositions result = pipeline::solve_positions(*a.file.network, path, request);
+  return report::positions_json_text(result.model, result.sweep);
 }
 
 std::vector<std::string> magnitude_names(const std::vector<network::Magnitude>& magnitudes, const std::vector<int>& pick) {

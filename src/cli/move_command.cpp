@@ -15,23 +15,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/option_checks.hpp"
-#include "kinestat/framework/finite_motion.hpp"
-#include "kinestat/framework/framework_analysis.hpp"
-#include "kinestat/framework/generic_framework.hpp"
-#include "kinestat/io/framework_reader.hpp"
-#include "kinestat/io/network_reader.hpp"
-#include "kinestat/io/network_structure.hpp"
-#include "kinestat/kinematics/position_solver.hpp"
-#include "kinestat/network/analyse_network.hpp"
-#include "kinestat/network/analysis_frame.hpp"
-#include "kinestat/network/finite_motion.hpp"
-#include "kinestat/network/second_order.hpp"
-#include "kinestat/network/sparse_network.hpp"
-#include "kinestat/io/loaded_network.hpp"
-#include "kinestat/report/json_text.hpp"
-#include "kinestat/report/move_report.hpp"
-#include "kinestat/report/position_solving.hpp"
-#include "kinestat/structure/decomposition.hpp"
+#include "kinestat/pipeline/move_pipeline.hpp"
 
 namespace kinestat::cli {
 
@@ -68,7 +52,7 @@ struct NamedValue {
   std::string name;
   double value = 0.0;
 };
-using Sweep = report::SweptInput;
+using Sweep = pipeline::SweptInput;
 
 std::optional<NamedValue> parse_input(const std::string& text) {
   const auto eq = text.rfind('=');
@@ -121,108 +105,56 @@ std::vector<std::string> given(const std::vector<CLI::Option*>& options) {
   return names;
 }
 
-int move_framework(const MoveOptions& options, const framework::FrameworkModel& model, const std::string& path) {
-  reject_options(given({options.input_option, options.sweep_option}), "a framework", path);
-  if (options.mode_option->count() == 0)
-    throw io::InputError({path, 1, 1}, "a framework moves along one of its kinematic modes: give --mode N (modes as 'kinestat analyze' numbers them)");
-  framework::AnalysisOptions analysis_options;
-  analysis_options.tolerances = Tolerances::with_rank(options.common.tolerance);
-  // The same basis of modes as `kinestat analyze` reports, so --mode N means the same mode.
-  const framework::FrameworkResult analysis = framework::analyse_framework_as_reported(model, analysis_options);
-  if (!analysis.vectors || analysis.method != framework::RankMethod::dense_svd)
-    throw io::InputError({path, 1, 1}, "the framework is too large for the dense analysis that tracing needs");
-  const auto modes = static_cast<long long>(analysis.modes.size());
-  if (modes == 0) throw io::InputError({path, 1, 1}, "the framework has no kinematic mode: it cannot move (--mode has nothing to follow)");
-  if (options.mode < 1 || options.mode > modes)
-    throw io::InputError({path, 1, 1}, fmt::format("--mode {}: the framework has {} kinematic mode{}, numbered 1 to {}", options.mode, modes,
-                                                   modes == 1 ? "" : "s", modes));
-  report::FrameworkMove move;
-  move.mode = static_cast<std::size_t>(options.mode - 1);
-  move.amplitude_fraction = options.amplitude;
-  move.steps = static_cast<int>(options.steps);
-  framework::TraceOptions trace;
-  trace.amplitude_fraction = options.amplitude;
-  trace.steps = move.steps;
-  trace.tolerance = linalg::RankTolerance{analysis_options.tolerances.rank};
-  move.trace = framework::trace_motion(model, analysis, analysis.modes[move.mode].velocities, trace);
-  emit(options.common, options.common.json ? report::json_text(report::framework_move_json(model, analysis, move))
-                                           : report::framework_move_text(model, analysis, move));
-  return 0;
+// The options of a trace (--mode), checked against the kind of model before anything is analysed.
+std::optional<pipeline::TraceRequest> trace_request(const MoveOptions& options) {
+  if (options.mode_option->count() == 0) return std::nullopt;
+  pipeline::TraceRequest trace;
+  trace.mode = options.mode;
+  trace.amplitude = options.amplitude;
+  trace.steps = options.steps;
+  trace.tolerance = options.common.tolerance;
+  return trace;
 }
 
-// A network's primary motion N (numbered as `kinestat analyze` lists the primary motions),
-// traced on the loop-closure equations.
-int trace_network(const MoveOptions& options, const io::LoadedNetwork& loaded, const std::string& path) {
-  if (const auto both = given({options.input_option, options.sweep_option}); !both.empty())
-    throw io::InputError({path, 1, 1}, fmt::format("--mode and {} exclude each other: --mode follows a primary motion of the network, "
-                                                   "--input and --sweep solve its positions at given inputs",
-                                                   fmt::join(both, ", ")));
-  if (static_cast<int>(loaded.model.couplings.size()) > network::kDenseNetworkLimit)
-    throw io::InputError({path, 1, 1}, fmt::format("the network has more than {} couplings: too large for the dense analysis that tracing "
-                                                   "needs",
-                                                   network::kDenseNetworkLimit));
-  network::AnalysisOptions analysis_options;
-  analysis_options.tolerances = Tolerances::with_rank(options.common.tolerance);
-  network::NetworkResult result;
-  try {
-    result = network::analyse_network(loaded.model, analysis_options);
-  } catch (const network::ModelError& error) {
-    throw io::locate(error, loaded, path);
-  }
-  const auto modes = static_cast<long long>(result.primary_motion.size());
-  if (modes == 0) throw io::InputError({path, 1, 1}, "the network has no motion (FN = 0): it cannot move (--mode has nothing to follow)");
-  if (options.mode < 1 || options.mode > modes)
-    throw io::InputError({path, 1, 1}, fmt::format("--mode {}: the network has {} primary motion{} (FN), numbered 1 to {}", options.mode,
-                                                   modes, modes == 1 ? "" : "s", modes));
-  report::NetworkMove move;
-  move.mode = static_cast<std::size_t>(options.mode - 1);
-  move.amplitude_fraction = options.amplitude;
-  move.steps = static_cast<int>(options.steps);
-  network::NetworkSecondOrderOptions second_order_options;
-  second_order_options.trace = false;
-  const network::NetworkSecondOrder second_order = network::classify_network_motions(loaded.model, result, second_order_options);
-  if (move.mode < second_order.motions.size()) move.second_order = second_order.motions[move.mode];
-  network::NetworkTraceOptions trace;
-  trace.amplitude_fraction = options.amplitude;
-  trace.steps = move.steps;
-  trace.tolerance = network::rank_rule_of(loaded.model, analysis_options.tolerances.rank);
-  move.trace = network::trace_network_motion(loaded.model, result, result.motion_magnitudes.values.col(static_cast<Eigen::Index>(move.mode)),
-                                             trace);
-  emit(options.common, options.common.json ? report::json_text(report::network_move_json(loaded.model, result, move))
-                                           : report::network_move_text(loaded.model, result, move));
-  return 0;
-}
-
-int move_network(const MoveOptions& options, io::LoadedNetwork loaded, const std::string& path) {
-  if (options.mode_option->count() > 0) return trace_network(options, loaded, path);
-  if (const auto tracing = given({options.amplitude_option, options.steps_option}); !tracing.empty())
-    throw io::InputError({path, 1, 1}, fmt::format("{} set{} the trace of a primary motion: give --mode N too (or remove {})",
-                                                   fmt::join(tracing, ", "), tracing.size() == 1 ? "s" : "", tracing.size() == 1 ? "it" : "them"));
-  std::vector<std::pair<std::string, double>> inputs;
+pipeline::PositionRequest position_request(const MoveOptions& options) {
+  pipeline::PositionRequest request;
   for (const std::string& text : options.inputs) {
     const NamedValue input = *parse_input(text);
-    inputs.emplace_back(input.name, input.value);
+    request.inputs.emplace_back(input.name, input.value);
   }
-  std::optional<report::SweptInput> sweep;
-  if (!options.sweep.empty()) sweep = parse_sweep(options.sweep);
-  const report::PositionSweep result = report::solve_position_sweep(loaded, path, inputs, sweep,
-                                                                    ", or follow one of its primary motions with --mode N");
-  emit(options.common, options.common.json ? report::positions_json_text(loaded.model, result)
-                                           : report::positions_text(loaded.model, result));
-  return 0;
+  if (!options.sweep.empty()) request.sweep = parse_sweep(options.sweep);
+  request.no_inputs_hint = ", or follow one of its primary motions with --mode N";
+  return request;
+}
+
+// Options that do not fit the kind of model: exit 2 before the analysis.
+void check_options_for(const MoveOptions& options, const io::ModelFile& file) {
+  if (file.framework) {
+    reject_options(given({options.input_option, options.sweep_option}), "a framework", file.path);
+    return;
+  }
+  if (!file.network) return;  // a structure model: move_model says why it cannot move
+  if (options.mode_option->count() > 0) {
+    if (const auto both = given({options.input_option, options.sweep_option}); !both.empty())
+      throw io::InputError({file.path, 1, 1}, fmt::format("--mode and {} exclude each other: --mode follows a primary motion of the "
+                                                          "network, --input and --sweep solve its positions at given inputs",
+                                                          fmt::join(both, ", ")));
+  } else if (const auto tracing = given({options.amplitude_option, options.steps_option}); !tracing.empty()) {
+    throw io::InputError({file.path, 1, 1}, fmt::format("{} set{} the trace of a primary motion: give --mode N too (or remove {})",
+                                                        fmt::join(tracing, ", "), tracing.size() == 1 ? "s" : "",
+                                                        tracing.size() == 1 ? "it" : "them"));
+  }
 }
 
 int run_move(const MoveOptions& options) {
-  const std::string& path = options.common.model_path;
-  if (io::model_format(path) == io::ModelFormat::spacar) return move_framework(options, read_spacar_model(path), path);
-  if (io::model_format(path) != io::ModelFormat::kinestat)
-    throw io::InputError({path, 1, 1}, "'kinestat move' reads kinestat model files (kind: framework or network)");
-  const io::YamlFile file = io::YamlFile::load(path);
-  const io::ModelKind kind = model_kind_of(file);
-  if (kind == io::ModelKind::framework) return move_framework(options, io::read_framework_model(file), file.path());
-  if (kind == io::ModelKind::network) return move_network(options, io::read_network_model(file), file.path());
-  throw io::InputError({file.path(), 1, 1}, "a model of kind 'structure' has no geometry to move; write the mechanism as a network "
-                                            "model (kind: network) with the points and axes of its couplings");
+  const io::ModelFile file = read_model(options.common.model_path);  // any format and kind, notices on standard error
+  check_options_for(options, file);
+  pipeline::MoveRequest request;
+  request.trace = trace_request(options);
+  request.positions = position_request(options);
+  const pipeline::ModelMotion motion = pipeline::move_model(file, request);
+  emit(options.common, options.common.json ? pipeline::move_json_text(file, motion) : pipeline::move_text(file, motion));
+  return 0;
 }
 
 }  // namespace
