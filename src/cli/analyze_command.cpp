@@ -49,15 +49,18 @@ void register_analyze(CLI::App& app, Action& action) {
       std::optional<io::YamlFile> model(io::YamlFile::load(options->model_path));
       const io::ModelKind kind = model_kind_of(*model);
       const std::string path = model->path();
+      // Older spellings read: on standard error and in the JSON report.
       if (kind == io::ModelKind::network) {
         const auto network = io::read_network_model(*model);
+        const std::vector<std::string> notices = print_notices(model->notices());
         model.reset();
-        return run_network_analysis(*options, network, path);
+        return run_network_analysis(*options, network, path, notices);
       }
       if (kind == io::ModelKind::framework) {
         const framework::FrameworkModel framework = io::read_framework_model(*model);
+        const std::vector<std::string> notices = print_notices(model->notices());
         model.reset();
-        return run_framework_analysis(*options, framework, path);
+        return run_framework_analysis(*options, framework, path, notices);
       }
       throw io::InputError({options->model_path, 0, 0},
                            "a model of kind 'structure' is analysed with 'kinestat structure'");

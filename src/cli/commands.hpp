@@ -58,11 +58,11 @@ void register_sweep(CLI::App& app, Action& action);
 void register_fix(CLI::App& app, Action& action);
 void register_export(CLI::App& app, Action& action);
 
-/// Prints the notices of kinestat model files (older spellings read) to standard error as they
-/// are read, one line each (io::set_notice_handler).
-void print_model_notices();
+/// Prints `notices` (a model file's: older spellings read, what an import ignored or assumed)
+/// to standard error, one line each; returns them (the JSON reports carry them too).
+const std::vector<std::string>& print_notices(const std::vector<std::string>& notices);
 /// Reads a model file of any format and kind ("-": a kinestat YAML / JSON model on standard
-/// input); notices go to standard error.
+/// input); notices go to standard error (and stay in io::ModelFile::notices).
 io::ModelFile read_model(const std::string& path);
 
 /// Adds `--allow-outside-includes` to `command`: SDFormat and MJCF files may then include files

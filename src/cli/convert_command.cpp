@@ -33,13 +33,16 @@ std::string extension(const std::string& path) {
 }
 
 framework::FrameworkModel read_framework_input(const std::string& path) {
-  if (io::model_format(path) == io::ModelFormat::spacar) return read_spacar_model(path);
+  const io::ModelFormat format = io::model_format(path);
+  if (format == io::ModelFormat::spacar || format == io::ModelFormat::bar_table) return read_spacar_model(path);
   const io::YamlFile file = io::YamlFile::load(path);
   const io::ModelKind kind = model_kind_of(file);
   if (kind != io::ModelKind::framework)
     throw io::InputError({path, 1, 1}, "'kinestat convert' converts frameworks (SPACAR files and kind: framework); this model "
                                        "is of kind '" + std::string(io::kind_name(kind)) + "' and is already kinestat YAML");
-  return io::read_framework_model(file);
+  framework::FrameworkModel model = io::read_framework_model(file);
+  print_notices(file.notices());  // older spellings read
+  return model;
 }
 
 int run(const ConvertOptions& options) {

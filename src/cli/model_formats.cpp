@@ -23,11 +23,16 @@ io::ImportOptions& import_options() {
 
 io::ModelFile read_with_notices(const std::string& path) {
   io::ModelFile file = io::read_model_file(path, import_options());
-  for (const std::string& notice : file.notices) std::cerr << io::printable_text(notice) << '\n';
+  print_notices(file.notices);
   return file;
 }
 
 }  // namespace
+
+const std::vector<std::string>& print_notices(const std::vector<std::string>& notices) {
+  for (const std::string& notice : notices) std::cerr << io::printable_text(notice) << '\n';
+  return notices;
+}
 
 void add_import_options(CLI::App& command) {
   command.add_flag("--allow-outside-includes", import_options().allow_includes_outside_folder,
@@ -43,10 +48,6 @@ void add_import_options(CLI::App& command) {
           "(fixed, the default) or floats (floating, as a legged or mobile robot, and a model in Gazebo); a link joined to "
           "nothing else floats unless fixed is given (docs/formats.md)")
       ->check(CLI::IsMember({"fixed", "floating"}));
-}
-
-void print_model_notices() {
-  io::set_notice_handler([](const std::string& notice) { std::cerr << io::printable_text(notice) << '\n'; });
 }
 
 io::ModelFile read_model(const std::string& path) { return read_with_notices(path); }

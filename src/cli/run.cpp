@@ -20,13 +20,16 @@ namespace kinestat::cli {
 
 namespace {
 
-// With --brief: the JSON report's `verdict` object alone, or the text report up to the blank
-// line that ends its verdict block (report::verdict_text); other output unchanged.
+// With --brief: the JSON report's `verdict` object alone (with the report's
+// `kinestat_version` and `report_version` last, as every JSON output), or the text report up to
+// the blank line that ends its verdict block (report::verdict_text); other output unchanged.
 std::string brief_of(const CommonOptions& options, const std::string& text) {
   if (options.json) {
     const auto report = nlohmann::ordered_json::parse(text, nullptr, false);
-    if (report.is_object() && report.contains("verdict")) return report::json_text(report["verdict"]);
-    return text;
+    if (!report.is_object() || !report.contains("verdict")) return text;
+    nlohmann::ordered_json verdict = report["verdict"];
+    report::add_versions(verdict);
+    return report::json_text(verdict);
   }
   const std::size_t end = text.find("\n\n");
   return text.rfind("Verdict: ", 0) == 0 && end != std::string::npos ? text.substr(0, end + 1) : text;
@@ -89,7 +92,6 @@ int run(int argc, const char* const* argv) {
     std::cerr << *unknown << '\n';
     return 2;
   }
-  print_model_notices();
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& success) {

@@ -54,15 +54,14 @@ struct StructureInput {
   std::vector<std::string> notices{};  // the import's (io::ModelFile::notices), also in the JSON report
 };
 
+StructureInput read_yaml_input(const io::YamlFile& file);
+
 StructureInput read_input(const StructureOptions& options) {
   if (options.from_stdin || options.common.model_path == "-") {
     const std::string text = io::read_model_text(std::cin, "<stdin>");
     // A bare matrix starts with a code (after blank lines and '#' comments); anything else
-    // is read as a YAML model.
-    if (!starts_with_matrix(text)) {
-      const io::YamlFile file = io::YamlFile::parse("<stdin>", text);
-      return {io::read_structure_model(file), std::nullopt, "<stdin>"};
-    }
+    // is read as a YAML model (kind: structure or network, as from a file).
+    if (!starts_with_matrix(text)) return read_yaml_input(io::YamlFile::parse("<stdin>", text));
     return {io::read_adjacency_text(text, "<stdin>"), std::nullopt, "<stdin>"};
   }
   const std::string& path = options.common.model_path;
@@ -75,18 +74,23 @@ StructureInput read_input(const StructureOptions& options) {
     structure::StructureModel model = io::structure_of_network(*file.network, path);
     return {std::move(model), std::move(*file.network), path, std::move(file.notices)};
   }
-  const io::YamlFile file = io::YamlFile::load(path);
+  return read_yaml_input(io::YamlFile::load(path));
+}
+
+// A kinestat YAML / JSON model of kind structure, or network (its couplings' structure).
+StructureInput read_yaml_input(const io::YamlFile& file) {
   const io::ModelKind kind = model_kind_of(file);
   if (kind == io::ModelKind::network) {
     io::LoadedNetwork network = io::read_network_model(file);
     structure::StructureModel model = io::structure_of_network(network, file.path());
-    return {std::move(model), std::move(network), file.path()};
+    return {std::move(model), std::move(network), file.path(), print_notices(file.notices())};
   }
   if (kind != io::ModelKind::structure) {
     throw io::InputError({file.path(), 1, 1}, "'kinestat structure' reads models of kind 'structure' or 'network', found kind '" +
                                                    std::string(io::kind_name(kind)) + "'");
   }
-  return {io::read_structure_model(file), std::nullopt, file.path()};
+  structure::StructureModel model = io::read_structure_model(file);
+  return {std::move(model), std::nullopt, file.path(), print_notices(file.notices())};
 }
 
 int run(const StructureOptions& options) {

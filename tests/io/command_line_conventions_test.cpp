@@ -33,6 +33,8 @@ TEST(StandardInput, EveryCommandReadsAModelAsDash) {
   const std::vector<std::pair<std::string, std::string>> commands{
       {"analyze --json", framework}, {"analyze", network},        {"draw", framework},
       {"move --json --mode 1", network},      {"export --what modes", framework},
+      {"move --json --mode 1", framework},    {"move --json --input A=1", network},
+      {"structure --json", network},          {"analyze --json --brief", network},
       {"structure --json", conventions_file_text(example_path("saura-eq2.yaml"))},
   };
   for (const auto& [command, text] : commands) {

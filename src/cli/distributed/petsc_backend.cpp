@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include <cstdlib>
 #include <iostream>
 #include <optional>
 
@@ -63,6 +64,7 @@ void read_petsc_model(const CommonOptions& options, PetscModel& out) {
     path = model->path();
     if (kind == io::ModelKind::framework) {
       out.framework = io::read_framework_model(*model);
+      print_notices(model->notices());
       reject_options(pair_options, "a framework", path);
       return;
     }
@@ -70,6 +72,7 @@ void read_petsc_model(const CommonOptions& options, PetscModel& out) {
       throw io::InputError({options.model_path, 0, 0}, "--backend petsc analyses frameworks and coupling networks; this model "
                                                        "is of kind '" + std::string(io::kind_name(kind)) + "'");
     out.network = io::read_network_model(*model);
+    print_notices(model->notices());
   }
   out.pairs = requested_pairs(out.network->model);
   try {
@@ -212,7 +215,9 @@ int run_petsc_analysis(const CommonOptions& options) {
     if (!petsc_pair_option(name)) refused.push_back(name);
   for (const std::string& name : given_framework_options())
     if (name != "--vectors") refused.push_back(name);
-  const distributed::PetscSession session;
+  // KINESTAT_PETSC_TRACEBACK set: PETSc prints its own traceback too (the command reads the
+  // environment; the library takes it as an argument).
+  const distributed::PetscSession session(std::getenv("KINESTAT_PETSC_TRACEBACK") != nullptr);
   // Rank 0 reads; its outcome is broadcast so that every process ends with the same code.
   PetscModel model;
   long long code = 0, kind = 0;  // kind: 0 framework, 1 network

@@ -10,11 +10,11 @@
 
 namespace kinestat::distributed {
 
-PetscSession::PetscSession() {
+PetscSession::PetscSession(bool petsc_traceback) {
   if (SlepcInitializeNoArguments() != 0) throw std::runtime_error("PETSc/SLEPc could not be initialised");
   // Errors come back as codes; the backend turns them into exceptions with PETSc's message
-  // (KINESTAT_PETSC_TRACEBACK set in the environment: PETSc prints its own traceback too).
-  if (std::getenv("KINESTAT_PETSC_TRACEBACK") == nullptr) PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
+  // (with petsc_traceback PETSc's default handler stays and prints its own traceback too).
+  if (!petsc_traceback) PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
   MPI_Comm_rank(PETSC_COMM_WORLD, &rank_);
   MPI_Comm_size(PETSC_COMM_WORLD, &size_);
 }

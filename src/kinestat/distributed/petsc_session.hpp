@@ -10,10 +10,12 @@ namespace kinestat::distributed {
 
 /// Initialises SLEPc (and with it PETSc and MPI) on construction and finalises them on
 /// destruction. Collective over MPI_COMM_WORLD; at most one per process. PETSc errors are
-/// returned to kinestat (turned into exceptions by the backend), not printed by PETSc.
+/// returned to kinestat (turned into exceptions by the backend), not printed by PETSc, unless
+/// `petsc_traceback`: then PETSc also prints its own traceback (the command sets it from
+/// KINESTAT_PETSC_TRACEBACK; the library reads no environment).
 class PetscSession {
  public:
-  PetscSession();
+  explicit PetscSession(bool petsc_traceback = false);
   ~PetscSession();
   PetscSession(const PetscSession&) = delete;
   PetscSession& operator=(const PetscSession&) = delete;

@@ -28,7 +28,7 @@ ModelFile read_parsed(const YamlFile& file) {
     model.kind = ModelKind::network;
     model.network = read_network_model(file);
   }
-  model.notices = file.notices();  // older spellings read (none kept when a notice handler is set)
+  model.notices = file.notices();  // older spellings read
   return model;
 }
 

@@ -31,7 +31,7 @@ struct ModelFile {
   ModelFormat format = ModelFormat::kinestat;
   /// What a reader of another program's format ignored or assumed (one line each; e.g. a
   /// joint's limits, a SPACAR load), and the older spellings a kinestat file was read with
-  /// (kept unless io::set_notice_handler took them): worth showing the user, not errors.
+  /// ("file:line:column: note: ..."): worth showing the user, not errors.
   std::vector<std::string> notices;
 };
 

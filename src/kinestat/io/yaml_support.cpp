@@ -804,20 +804,10 @@ YamlFile YamlFile::load(const std::string& path, const ReadingLimits& limits) {
   return parse(path, read_model_text(path, limits), limits);
 }
 
-namespace {
-NoticeHandler& notice_handler() {
-  static NoticeHandler handler;
-  return handler;
-}
-}  // namespace
-
-void set_notice_handler(NoticeHandler handler) { notice_handler() = std::move(handler); }
-
 void YamlFile::notice(const TreeNode& node, const std::string& problem) const {
   const SourceLocation at = where(node);
   const std::string line = fmt::format("{}:{}:{}: note: {}", printable_text(at.file), at.line, at.column, problem);
-  if (notice_handler()) notice_handler()(line);
-  else notices_->push_back(line);
+  notices_->push_back(line);
 }
 
 SourceLocation YamlFile::where(const TreeNode& node) const {

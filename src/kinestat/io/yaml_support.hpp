@@ -46,14 +46,6 @@ std::string read_model_text(const std::string& path, const ReadingLimits& limits
 /// The same for an open stream (standard input); `source` names it in messages.
 std::string read_model_text(std::istream& in, const std::string& source, const ReadingLimits& limits = {});
 
-/// Receives the notices of model files as they are read (one line each, "file:line:column:
-/// note: ..."): older spellings read as their new ones. Without a handler (the default: the
-/// library and Python) each file keeps its notices (YamlFile::notices, io::ModelFile::notices);
-/// with one (the command line: standard error) they go to it and are not kept. Set it before
-/// reading begins; it is called from the reading thread.
-using NoticeHandler = std::function<void(const std::string& notice)>;
-void set_notice_handler(NoticeHandler handler);
-
 /// The file being read, so that every helper can say where a problem is.
 class YamlFile {
  public:
@@ -75,8 +67,9 @@ class YamlFile {
   /// Throws InputError at `node` with `problem`.
   [[noreturn]] void fail(const TreeNode& node, const std::string& problem) const;
   /// A notice at `node` ("file:line:column: note: problem"): something read that the user
-  /// should write differently, which does not change the model. To the notice handler when one
-  /// is set, else kept in notices().
+  /// should write differently, which does not change the model: kept in notices(), which the
+  /// readers carry into io::ModelFile::notices and the caller shows (the command: on standard
+  /// error and in the JSON report's `notices`).
   void notice(const TreeNode& node, const std::string& problem) const;
   /// The notices of this file kept so far (copies of a YamlFile share them).
   const std::vector<std::string>& notices() const { return *notices_; }
