@@ -49,7 +49,7 @@ bool may_spin(const Model& model, const SparseNetworkResult& r, int b, const std
   std::vector<Eigen::Vector3d> points;
   for (const std::size_t i : couplings) {
     const auto& p = model.couplings[i].geometry.point;
-    points.emplace_back((Eigen::Vector3d(p[0].get_d(), p[1].get_d(), p[2].get_d()) - r.frame_origin) / r.frame_scale);
+    points.emplace_back((Eigen::Vector3d(p[0].get_d(), p[1].get_d(), p[2].get_d()) - r.frame.origin) / r.frame.scale);
     centre += points.back();
   }
   centre /= static_cast<double>(points.size());
@@ -121,23 +121,18 @@ std::vector<IdleMotion> sparse_idle_spins(const Model& model, const SparseNetwor
 
 namespace {
 
-// Twists and wrenches of the conditioned analysis frame (origin o, lengths over s) in the
-// user's frame, and their sizes in the conditioned frame (placement- and unit-free).
+// Sizes of the result's wrenches and twists in its conditioned analysis frame (placement- and
+// unit-free), for the shares.
 struct Conditioning {
-  Eigen::Vector3d origin;
-  double scale = 1.0;
+  network::SparseAnalysisFrame frame;
+  const screw::ScrewSpace* space = nullptr;
 
-  // (ω; v') -> (ω; s v' + o × ω): the same power against every action (m; f) as
-  // ((m − o × f) / s; f) has against (ω; v').
-  Screw6 twist_to_user(const Screw6& t) const {
-    Screw6 u = t;
-    u.tail<3>() = scale * Eigen::Vector3d(t.tail<3>()) + origin.cross(Eigen::Vector3d(t.head<3>()));
-    return u;
-  }
   double wrench_size(const Screw6& w) const {
     const Eigen::Vector3d f = w.tail<3>();
-    return f.squaredNorm() + ((Eigen::Vector3d(w.head<3>()) - origin.cross(f)) / scale).squaredNorm();
+    return f.squaredNorm() + ((Eigen::Vector3d(w.head<3>()) - frame.origin.cross(f)) / frame.scale).squaredNorm();
   }
+  double twist_size(const Eigen::Ref<const Eigen::VectorXd>& twist) const { return frame.twist_to_frame(twist, *space).squaredNorm(); }
+  double scale() const { return frame.scale; }
 };
 
 Screw6 screw_of(const screw::RoundedUnitScrew& s, const screw::ScrewSpace& space) {
@@ -148,7 +143,7 @@ Screw6 screw_of(const screw::RoundedUnitScrew& s, const screw::ScrewSpace& space
 VerdictState self_stress_state(const Model& model, const SparseNetworkResult& r, const std::vector<Index>& first_row,
                                const Conditioning& frame, Index j) {
   const Index primary = r.stress_primaries[static_cast<std::size_t>(j)];
-  const Eigen::VectorXd lambda = r.stress_basis.col(j) / r.stress_basis(primary, j);  // the primary = 1
+  const Eigen::VectorXd lambda = r.stress_basis.col(j);  // the primary = 1
   const double zero = kSupportZero * lambda.cwiseAbs().maxCoeff();
   std::map<int, Screw6> wrench;  // by coupling, user frame
   for (Index row = 0; row < lambda.size(); ++row) {
@@ -171,7 +166,7 @@ VerdictState self_stress_state(const Model& model, const SparseNetworkResult& r,
   for (const auto& [e, w] : wrench) {
     const double share = total > 0 ? frame.wrench_size(w) / total : 0.0;
     if (share > kShareZero)
-      state.participants.push_back({"coupling", model.couplings[static_cast<std::size_t>(e)].name, share, action_text(w, frame.scale)});
+      state.participants.push_back({"coupling", model.couplings[static_cast<std::size_t>(e)].name, share, action_text(w, frame.scale())});
   }
   rank_participants(state.participants);
   return state;
@@ -194,7 +189,7 @@ VerdictState beyond_state(const Model& model, const SparseNetworkResult& r, cons
     double total = 0.0;
     for (int b : r.moving_bodies) {
       const Index column = (b < r.ground ? b : b - 1) * d;
-      size[static_cast<std::size_t>(b)] = r.motion_basis.col(j).segment(column, d).squaredNorm();
+      size[static_cast<std::size_t>(b)] = frame.twist_size(r.motion_basis.col(j).segment(column, d));
       total += size[static_cast<std::size_t>(b)];
     }
     if (total <= 0) continue;
@@ -206,7 +201,7 @@ VerdictState beyond_state(const Model& model, const SparseNetworkResult& r, cons
         best[ub] = s;
         const Index column = (b < r.ground ? b : b - 1) * d;
         std::vector<double> coordinates(r.motion_basis.col(j).data() + column, r.motion_basis.col(j).data() + column + d);
-        detail[ub] = motion_text(frame.twist_to_user(embed(coordinates, model.space)), frame.scale);
+        detail[ub] = motion_text(embed(coordinates, model.space), frame.scale());
       }
     }
   }
@@ -238,7 +233,7 @@ Verdict sparse_network_verdict(const Model& model, const SparseNetworkResult& r,
 
 Verdict sparse_network_verdict(const Model& model, const SparseNetworkResult& r, const std::vector<IdleMotion>& idle) {
   Verdict v;
-  const Conditioning frame{r.frame_origin, r.frame_scale};
+  const Conditioning frame{r.frame, &model.space};
   int idle_count = 0;
   for (const auto& i : idle) idle_count += i.count;
   idle_count = std::min(idle_count, r.FN);  // independent motions: at most FN (more is rounding)
@@ -265,7 +260,7 @@ Verdict sparse_network_verdict(const Model& model, const SparseNetworkResult& r,
     spinning.push_back(body);
     for (const auto& s : spin.screws) {
       if (static_cast<Index>(v.states.size()) >= kSparseVerdictStates) break;
-      const std::string what = motion_text(embed(s, model.space), frame.scale);
+      const std::string what = motion_text(embed(s, model.space), frame.scale());
       VerdictState state{"extra motion", idle_description(model, spin, what), {{"body", body, 1.0, what}}};
       std::vector<std::string> couplings;
       for (const auto& c : model.couplings)

@@ -40,7 +40,7 @@ Verdict sparse_network_verdict(const network::Model& model, const network::Spars
 /// length unit): each body whose own actions in K may leave a twist free is analysed alone with
 /// its couplings, exactly as on the dense path with `tolerances`. Needs only what
 /// network::build_body_twist_system sets (K, d, the ground, the frame, the rank rule's input
-/// rounding), so it can run while K is factored (analyse_network_sparse's `alongside`).
+/// rounding): the system or the full analysis may be passed.
 std::vector<IdleMotion> sparse_idle_spins(const network::Model& model, const network::SparseNetworkResult& system,
                                           const Tolerances& tolerances = {});
 

@@ -78,6 +78,7 @@ DistributedNetworkResult analyse_network_distributed(const network::Model* model
   // Reported as the backend's own residuals (repeatable on P ≥ 2 processes).
   if (supported) r.residual = distributed_report_bound(r.residual, out.backend.report_floor);
   network::finish_sparse_network(r, stressed, moving);
+  network::sparse_network_in_user_frame(model->space, r);  // one frame for every path
   return out;
 }
 

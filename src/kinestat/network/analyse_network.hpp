@@ -5,9 +5,8 @@
 // circuit actions). A pure function: model in, plain result out, run in named stages
 // (analyse_network.cpp; docs/network.md, "The analysis in stages"): topology -> condition
 // (into the analysis frame) -> ranks -> bases and supports -> convert (back to the user's
-// frame, once) -> values and evidence. Every report goes through
-// report::analyse_network_as_reported, which adds the verdict, the generic answer and the
-// second-order classification.
+// frame, once) -> values and evidence. Every report goes through pipeline::analyse_network,
+// which adds the verdict, the generic answer and the second-order classification.
 
 #include "kinestat/error.hpp"
 #include <map>

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <exception>
 #include <functional>
+#include <utility>
 #include <numeric>
 
 #include "kinestat/linalg/sparse_qr.hpp"
@@ -103,15 +104,13 @@ struct FactorSide {
   bool has_null_space = false;  // the factored matrix has more rows than its rank
 };
 
-// Factors `a` (K or Kᵀ) with the rank rule `undecided()` gives, asked for once METIS has ordered
-// `a` (linalg::SparseQr), and fills a FactorSide.
-FactorSide factor_side(const Eigen::SparseMatrix<double>& a, const std::function<linalg::RankDecision()>& undecided,
-                       Index vectors, bool pair_vectors, Index d) {
+// Factors `a` (K or Kᵀ) with the rank rule `undecided` (threshold and σ_max of the system,
+// rank not yet decided) and fills a FactorSide.
+FactorSide factor_side(const Eigen::SparseMatrix<double>& a, const linalg::RankDecision& undecided, Index vectors,
+                       bool pair_vectors, Index d) {
   FactorSide side;
-  const linalg::SparseQr qr(a, [&side, &undecided] {
-    side.rank = undecided();
-    return side.rank.threshold;
-  });
+  side.rank = undecided;
+  const linalg::SparseQr qr(a, side.rank.threshold);
   linalg::record_rank(side.rank, qr);
   linalg::record_factor_smallest(side.rank, qr);
   side.support_zero = support_zero(side.rank);
@@ -148,8 +147,8 @@ SparseNetworkResult build_body_twist_matrix(const Model& model, double& input_ro
   const AnalysisFrame frame = AnalysisFrame::of(model);
   const Eigen::Vector3d origin(frame.origin[0].get_d(), frame.origin[1].get_d(), frame.origin[2].get_d());
   const double scale = frame.scale.get_d();
-  r.frame_origin = origin;
-  r.frame_scale = scale;
+  r.frame.origin = origin;
+  r.frame.scale = scale;
   const std::vector<int>& components = model.space.components;
   std::vector<Eigen::Triplet<double>> entries;
   std::vector<int>& row_coupling = r.row_coupling;
@@ -242,81 +241,132 @@ void finish_sparse_network(SparseNetworkResult& r, const std::vector<bool>& stre
   }
 }
 
-SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances& tolerances, Index vectors, bool pair_vectors,
-                                           const std::function<void(const SparseNetworkResult&)>& alongside) {
-  double input_rounding = 0.0;
-  SparseNetworkResult r = build_body_twist_matrix(model, input_rounding);
-  // The rank rule of build_body_twist_system (the threshold rises with the rounding of the
-  // coordinates as written, the dense rule).
-  const linalg::RankTolerance rank_tolerance{tolerances.rank, input_rounding};
+namespace {
+
+// Stage 4, merge: the rank and the supports from the two factors (Kᵀ's: the rank, the motions'
+// support, the self-stress basis; K's: the self-stresses' support, the motion basis).
+void merge_factor_sides(const Model& model, const Eigen::SparseMatrix<double>& kt, FactorSide& motions,
+                        FactorSide& stresses, Index vectors, bool pair_vectors, SparseNetworkResult& r,
+                        std::vector<bool>& stressed, std::vector<bool>& moving) {
   const Eigen::SparseMatrix<double>& k = r.K;
   const Index d = r.d;
+  r.rank = motions.rank;
+  r.motion_support_zero = motions.support_zero;
+  if (vectors > 0) {
+    r.basis_residual = std::max(motions.basis_residual, stresses.basis_residual);
+    r.stress_basis = std::move(motions.basis);
+    r.stress_primaries = std::move(motions.primaries);
+    r.motion_basis = std::move(stresses.basis);
+    r.motion_primaries = std::move(stresses.primaries);
+  }
+  if (pair_vectors) {
+    r.generic_motions = motions.has_null_space ? std::move(motions.generic) : Eigen::MatrixXd::Zero(k.cols(), d);
+    r.generic_stresses = stresses.has_null_space ? std::move(stresses.generic) : Eigen::MatrixXd::Zero(k.rows(), d);
+  }
+  // Only when there are motions (stresses): otherwise the residual is rounding noise.
+  if (motions.has_null_space && motions.generic_one.norm() > 0)
+    record_motion_support(model, k, motions.generic_one, r, moving, r.motion_support_zero);
+  r.motion_factor_rank = stresses.rank;
+  r.stress_support_zero = stresses.support_zero;
+  if (stresses.has_null_space && stresses.generic_one.norm() > 0)
+    record_stress_support(kt, stresses.generic_one, r, stressed, r.stress_support_zero);
+  // The rank is Kᵀ's factor's; when K's factor agrees and its live block is better
+  // conditioned (the two share σ_max, so the larger distance), its evidence stands for it.
+  if (r.motion_factor_rank.rank == r.rank.rank && r.motion_factor_rank.distance() > r.rank.distance()) {
+    r.rank.smallest_kept = r.motion_factor_rank.smallest_kept;
+    r.rank.factor_smallest = r.motion_factor_rank.factor_smallest;
+  }
+}
+
+// Stages 2-4 when K has no rows (no actions) or no columns (only the ground): nothing to factor.
+// Without actions every coupling and body moves freely and every twist is a motion.
+void unfactored_network(Index vectors, bool pair_vectors, SparseNetworkResult& r, std::vector<bool>& moving) {
+  const Eigen::SparseMatrix<double>& k = r.K;
+  const Index d = r.d;
+  if (pair_vectors) {
+    r.generic_motions = Eigen::MatrixXd::Zero(k.cols(), d);
+    r.generic_stresses = Eigen::MatrixXd::Zero(k.rows(), d);
+  }
+  if (k.cols() == 0) return;
+  std::fill(moving.begin(), moving.end(), true);
+  for (int body = 0; body < r.bodies; ++body)
+    if (body != r.ground) r.moving_bodies.push_back(body);
+  if (pair_vectors)  // every twist is a motion
+    for (Index j = 0; j < d; ++j)
+      for (Index i = 0; i < k.cols(); ++i) r.generic_motions(i, j) = weight(i * (d + 1) + j + 1);
+  if (vectors > 0) {
+    const Index count = std::min<Index>(vectors, k.cols());
+    r.motion_basis = Eigen::MatrixXd::Identity(k.cols(), count);
+    for (Index j = 0; j < count; ++j) r.motion_primaries.push_back(j);
+  }
+}
+
+// Each column of `basis` divided by its entry at its primary (that entry becomes 1), or with
+// `keep_sign` by its size (it becomes ±1): the motions keep the direction the factor gave them
+// (the verdict's words name it), the self-stresses are read per unit of their primary.
+void scale_to_primaries(Eigen::MatrixXd& basis, const std::vector<Index>& primaries, bool keep_sign) {
+  for (Index j = 0; j < basis.cols(); ++j) {
+    const double primary = basis(primaries[static_cast<std::size_t>(j)], j);
+    basis.col(j) /= keep_sign ? std::abs(primary) : primary;
+  }
+}
+
+}  // namespace
+
+Eigen::VectorXd SparseAnalysisFrame::twist_to_user(const Eigen::Ref<const Eigen::VectorXd>& twist,
+                                                   const screw::ScrewSpace& space) const {
+  Eigen::Matrix<double, 6, 1> full = Eigen::Matrix<double, 6, 1>::Zero();
+  for (std::size_t k = 0; k < space.components.size(); ++k) full(space.components[k]) = twist(static_cast<Index>(k));
+  const Eigen::Vector3d omega = full.head<3>(), v = full.tail<3>();
+  full.tail<3>() = scale * v + origin.cross(omega);
+  Eigen::VectorXd out(twist.size());
+  for (std::size_t k = 0; k < space.components.size(); ++k) out(static_cast<Index>(k)) = full(space.components[k]);
+  return out;
+}
+
+Eigen::VectorXd SparseAnalysisFrame::twist_to_frame(const Eigen::Ref<const Eigen::VectorXd>& twist,
+                                                    const screw::ScrewSpace& space) const {
+  Eigen::Matrix<double, 6, 1> full = Eigen::Matrix<double, 6, 1>::Zero();
+  for (std::size_t k = 0; k < space.components.size(); ++k) full(space.components[k]) = twist(static_cast<Index>(k));
+  const Eigen::Vector3d omega = full.head<3>(), v = full.tail<3>();
+  full.tail<3>() = (v - origin.cross(omega)) / scale;
+  Eigen::VectorXd out(twist.size());
+  for (std::size_t k = 0; k < space.components.size(); ++k) out(static_cast<Index>(k)) = full(space.components[k]);
+  return out;
+}
+
+void sparse_network_in_user_frame(const screw::ScrewSpace& space, SparseNetworkResult& r) {
+  scale_to_primaries(r.stress_basis, r.stress_primaries, false);
+  scale_to_primaries(r.motion_basis, r.motion_primaries, true);
+  const Index d = r.d;
+  for (Index j = 0; j < r.motion_basis.cols(); ++j)
+    for (Index block = 0; block + d <= r.motion_basis.rows(); block += d)
+      r.motion_basis.col(j).segment(block, d) = r.frame.twist_to_user(r.motion_basis.col(j).segment(block, d), space);
+}
+
+SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances& tolerances, Index vectors, bool pair_vectors) {
+  // 1. System: K in the conditioned frame, the row actions in the user's, the rank rule.
+  SparseNetworkResult r = build_body_twist_system(model, tolerances);
   std::vector<bool> stressed(static_cast<std::size_t>(r.e), false), moving(static_cast<std::size_t>(r.e), false);
-  if (k.rows() > 0 && k.cols() > 0) {
+  if (r.K.rows() > 0 && r.K.cols() > 0) {
     // The two factorisations one after the other, on the calling thread (issue 36: side by side
     // on two threads they saved at most a tenth of the wall time on a busy machine, at a fifth
-    // more memory, and needed a rand() per thread for METIS). Until the merge below `r` stays as
-    // build_body_twist_system leaves it, for `alongside`.
-    r.rank = linalg::sparse_rank_threshold(k, rank_tolerance);
-    const linalg::RankDecision undecided = r.rank;
-    const Eigen::SparseMatrix<double> kt = k.transpose();
-    // Motions: a generic body-twist vector with K T = 0 (the null space of (Kᵀ)ᵀ, from the QR
+    // more memory, and needed a rand() per thread for METIS).
+    const Eigen::SparseMatrix<double> kt = r.K.transpose();
+    // 2. Motions: a generic body-twist vector with K T = 0 (the null space of (Kᵀ)ᵀ, from the QR
     // of Kᵀ; its null vectors are self-stresses); a coupling moves when T_to ≠ T_from.
-    FactorSide motions = factor_side(kt, [&undecided] { return undecided; }, vectors, pair_vectors, d);
-    if (alongside) alongside(r);
-    // Self-stresses: generic action magnitudes λ with Kᵀ λ = 0 (every body in equilibrium),
+    FactorSide motions = factor_side(kt, r.rank, vectors, pair_vectors, r.d);
+    // 3. Self-stresses: generic action magnitudes λ with Kᵀ λ = 0 (every body in equilibrium),
     // from the QR of K; its null vectors are motions.
-    FactorSide stresses = factor_side(k, [&undecided] { return undecided; }, vectors, pair_vectors, d);
-
-    r.rank = motions.rank;
-    r.motion_support_zero = motions.support_zero;
-    if (vectors > 0) {
-      r.basis_residual = std::max(motions.basis_residual, stresses.basis_residual);
-      r.stress_basis = std::move(motions.basis);
-      r.stress_primaries = std::move(motions.primaries);
-      r.motion_basis = std::move(stresses.basis);
-      r.motion_primaries = std::move(stresses.primaries);
-    }
-    if (pair_vectors) {
-      r.generic_motions = motions.has_null_space ? std::move(motions.generic) : Eigen::MatrixXd::Zero(k.cols(), d);
-      r.generic_stresses = stresses.has_null_space ? std::move(stresses.generic) : Eigen::MatrixXd::Zero(k.rows(), d);
-    }
-    // Only when there are motions (stresses): otherwise the residual is rounding noise.
-    if (motions.has_null_space && motions.generic_one.norm() > 0)
-      record_motion_support(model, k, motions.generic_one, r, moving, r.motion_support_zero);
-    r.motion_factor_rank = stresses.rank;
-    r.stress_support_zero = stresses.support_zero;
-    if (stresses.has_null_space && stresses.generic_one.norm() > 0)
-      record_stress_support(kt, stresses.generic_one, r, stressed, r.stress_support_zero);
-    // The rank is Kᵀ's factor's; when K's factor agrees and its live block is better
-    // conditioned (the two share σ_max, so the larger distance), its evidence stands for it.
-    if (r.motion_factor_rank.rank == r.rank.rank && r.motion_factor_rank.distance() > r.rank.distance()) {
-      r.rank.smallest_kept = r.motion_factor_rank.smallest_kept;
-      r.rank.factor_smallest = r.motion_factor_rank.factor_smallest;
-    }
+    FactorSide stresses = factor_side(r.K, r.rank, vectors, pair_vectors, r.d);
+    // 4. Merge.
+    merge_factor_sides(model, kt, motions, stresses, vectors, pair_vectors, r, stressed, moving);
   } else {
-    r.rank = linalg::sparse_rank_threshold(k, rank_tolerance);
-    if (alongside) alongside(r);
-    if (pair_vectors) {
-      r.generic_motions = Eigen::MatrixXd::Zero(k.cols(), d);
-      r.generic_stresses = Eigen::MatrixXd::Zero(k.rows(), d);
-    }
-    if (k.cols() > 0) {
-      // No actions at all: every coupling and body moves freely.
-      std::fill(moving.begin(), moving.end(), true);
-      for (int body = 0; body < r.bodies; ++body)
-        if (body != r.ground) r.moving_bodies.push_back(body);
-      if (pair_vectors)  // every twist is a motion
-        for (Index j = 0; j < d; ++j)
-          for (Index i = 0; i < k.cols(); ++i) r.generic_motions(i, j) = weight(i * (d + 1) + j + 1);
-      if (vectors > 0) {
-        const Index count = std::min<Index>(vectors, k.cols());
-        r.motion_basis = Eigen::MatrixXd::Identity(k.cols(), count);
-        for (Index j = 0; j < count; ++j) r.motion_primaries.push_back(j);
-      }
-    }
+    unfactored_network(vectors, pair_vectors, r, moving);
   }
   finish_sparse_network(r, stressed, moving);
+  // 5. Convert: the one boundary back to the user's frame.
+  sparse_network_in_user_frame(model.space, r);
   return r;
 }
 

@@ -7,9 +7,10 @@
 // network's motions, the null space of Kᵀ its self-stresses, so
 //   FN = d(n − 1) − rank K,   CN = C − rank K
 // (FN − CN = F − d·l, seed 000 eq 7). Ranks from the sparse QR with the same relative rule as
-// the dense path, in the conditioned analysis frame.
+// the dense path, decided in the conditioned analysis frame; the result is converted to the
+// user's frame once, in the last stage (docs/network.md, "The sparse path in stages"), so no
+// consumer converts.
 
-#include <functional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -23,6 +24,27 @@
 
 namespace kinestat::network {
 
+/// The conditioned analysis frame of the sparse path (the dense path's AnalysisFrame, in
+/// doubles): origin at the centroid of the coupling points, lengths over their extent. K and
+/// every rank decision live in it; sizes measured in it do not change with the placement or the
+/// length unit of the model, so the verdict and the pictures measure shares in it.
+struct SparseAnalysisFrame {
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();  ///< in the user's frame
+  double scale = 1.0;                                ///< characteristic length, user units
+
+  /// A twist (axis formation, the d coordinates of `space`) of this frame in the user's frame:
+  /// (ω; v') -> (ω; s v' + o × ω), the same power against every action (m; f) as
+  /// ((m − o × f) / s; f) has against (ω; v').
+  Eigen::VectorXd twist_to_user(const Eigen::Ref<const Eigen::VectorXd>& twist, const screw::ScrewSpace& space) const;
+  /// A twist of the user's frame in this frame, (ω; (v − o × ω) / s): for placement- and unit-free
+  /// sizes of the result's twists.
+  Eigen::VectorXd twist_to_frame(const Eigen::Ref<const Eigen::VectorXd>& twist, const screw::ScrewSpace& space) const;
+};
+
+/// The sparse path's result. Everything a consumer reads is in the user's frame and length unit
+/// (the row actions, the basis vectors); only K, the generic vectors of the pair ranks and the
+/// rank evidence are of the conditioned system, on which the decisions are made (as the dense
+/// path's rank evidence is).
 struct SparseNetworkResult {
   int d = 6;
   int bodies = 0, e = 0, l = 0;
@@ -49,22 +71,29 @@ struct SparseNetworkResult {
   /// model's d coordinates), from screw::rounded_coupling_basis: each coupling's basis is built
   /// once, in doubles, and kept for the verdict.
   std::vector<screw::RoundedUnitScrew> row_actions;
-  /// K itself (C × d(n − 1), conditioned analysis frame): column block d·(b − [b > ground]) is
-  /// body b's twist, so that block's nonzero rows are the unit actions of b's own couplings.
+  /// K itself (C × d(n − 1), conditioned analysis frame `frame`): column block
+  /// d·(b − [b > ground]) is body b's twist, so that block's nonzero rows are the unit actions of
+  /// b's own couplings.
   Eigen::SparseMatrix<double> K;
 
   /// Null-space bases on request (`vectors` > 0), from the rank-revealing QR factors: for dead
-  /// column k, x = [−R11⁻¹ R12 e_k; e_k] scaled to unit 2-norm, so the entry of the dead
-  /// column ("the primary") is the largest free choice. In the conditioned analysis frame
-  /// (origin at `frame_origin`, lengths divided by `frame_scale`).
-  Eigen::MatrixXd motion_basis;  ///< d(n − 1) × k body twists (ω; v') from the QR of K
-  Eigen::MatrixXd stress_basis;  ///< C × k action magnitudes, one per row of K, from the QR of Kᵀ
+  /// column k, x = [−R11⁻¹ R12 e_k; e_k], per unit of the entry of the dead column (its
+  /// "primary", in the conditioned frame), as the dense path's body motions are per unit of
+  /// their primary. (The distributed backend's primary is the largest entry; its motions are
+  /// scaled by the primary's size, so that entry is ±1 and the direction stays the backend's.)
+  /// Body twists in axis formation (ω; v), v the velocity of the point at the user's origin, in
+  /// the user's frame and length unit (block of body b as in K), from the QR of K: d(n − 1) × k.
+  Eigen::MatrixXd motion_basis;
+  /// Action magnitudes, one per row of K (times row_actions: the wrench in the user's frame;
+  /// magnitudes do not depend on the frame), from the QR of Kᵀ: C × k.
+  Eigen::MatrixXd stress_basis;
   std::vector<Eigen::Index> motion_primaries;  ///< the dead column of K of each motion_basis vector
   std::vector<Eigen::Index> stress_primaries;  ///< the dead row of K of each stress_basis vector
   /// Rank of the QR of K (the motion vectors' factor; rank K above is from the QR of Kᵀ): the
   /// two factorisations decide independently, both are reported.
   linalg::RankDecision motion_factor_rank;
-  /// Largest ‖K x‖ / (σ_max ‖x‖) (motions) or ‖Kᵀ y‖ / (σ_max ‖y‖) (stresses) of the basis vectors.
+  /// Largest ‖K x‖ / (σ_max ‖x‖) (motions) or ‖Kᵀ y‖ / (σ_max ‖y‖) (stresses) of the basis
+  /// vectors, in the conditioned frame.
   double basis_residual = 0.0;
   /// On request (`pair_vectors`), d generic motions and d generic self-stresses for the pair
   /// freedoms (network::sparse_pair_freedoms): fixed pseudo-random vectors projected onto the
@@ -73,16 +102,15 @@ struct SparseNetworkResult {
   /// (CN) is zero.
   Eigen::MatrixXd generic_motions;   ///< d(n − 1) × d
   Eigen::MatrixXd generic_stresses;  ///< C × d
-  Eigen::Vector3d frame_origin = Eigen::Vector3d::Zero();
-  double frame_scale = 1.0;
+  SparseAnalysisFrame frame;  ///< the conditioned analysis frame of K and of the rank decisions
 };
 
 /// Couplings above which the `analyze` command takes the sparse path.
 inline constexpr int kDenseNetworkLimit = 300;
 
 /// The first stage of analyse_network_sparse, without factoring: K (C × d(n − 1), conditioned
-/// analysis frame, in `K`), the coupling and unit action of each row, d, n, e, l, F, C, the
-/// ground, the frame, and the rank rule's threshold and σ_max in `rank` (rank itself 0; the
+/// analysis frame, in `K`), the coupling and unit action (user frame) of each row, d, n, e, l,
+/// F, C, the ground, the frame, and the rank rule's threshold and σ_max in `rank` (rank itself 0; the
 /// threshold rises with the rounding of the coordinates as written). Throws ModelError (no
 /// couplings, bodies not connected, a coupling's geometry).
 SparseNetworkResult build_body_twist_system(const Model& model, const Tolerances& tolerances = {});
@@ -111,24 +139,26 @@ void record_stress_support(const Eigen::SparseMatrix<double>& kt, const Eigen::V
 /// and the lists `stressed` and `moving` from the flags.
 void finish_sparse_network(SparseNetworkResult& r, const std::vector<bool>& stressed, const std::vector<bool>& moving);
 
+/// Scales each basis vector per unit of its primary (motions: of its size) and converts the motion basis to the user's
+/// frame (`r.frame`; axis formation, velocity of the point at the user's origin): the last stage
+/// of every path that fills a SparseNetworkResult (this one, the distributed backend), so the
+/// result has one frame whoever computed it.
+void sparse_network_in_user_frame(const screw::ScrewSpace& space, SparseNetworkResult& r);
+
 /// FN, CN and the couplings that carry self-stress and that move, from two sparse QR
 /// factorisations (K and Kᵀ). A coupling belongs to a support when its entries in a fixed
 /// pseudo-random combination of the null vectors exceed support_zero of the factor (kSupportZero
 /// unless the factor's live block is ill-conditioned) of the largest: a generic combination
 /// vanishes only where every null vector does. Both factors' σ_min(R11) are estimated
 /// (`rank.factor_smallest`, `motion_factor_rank.factor_smallest`). Throws ModelError.
-/// The two factorisations run one after the other on the calling thread (the library starts no
-/// thread and sets no process state).
+/// Stages (docs/network.md, "The sparse path in stages"): system (build_body_twist_system) ->
+/// factor Kᵀ (rank, motions' support) -> factor K (self-stresses' support) -> merge -> convert
+/// (sparse_network_in_user_frame). The two factorisations run one after the other on the
+/// calling thread (the library starts no thread and sets no process state).
 /// With `vectors` > 0 also the first `vectors` basis vectors of the motions and of the
 /// self-stresses (motion_basis, stress_basis), at the cost of one triangular solve each. With
 /// `pair_vectors` also generic_motions and generic_stresses (2d least-squares solves).
-/// `alongside`, when given, is called once with the system exactly as build_body_twist_system
-/// leaves it (K in `K`, the frame, the threshold; nothing factored: rank 0, no supports), between
-/// the two factorisations. Kept for callers that still pass it; it no longer overlaps anything
-/// (design::sparse_network_verdict finds the idle spins itself).
 SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances& tolerances = {},
-                                           Eigen::Index vectors = 0, bool pair_vectors = false,
-                                           const std::function<void(const SparseNetworkResult&)>& alongside = {});
-
+                                           Eigen::Index vectors = 0, bool pair_vectors = false);
 
 }  // namespace kinestat::network

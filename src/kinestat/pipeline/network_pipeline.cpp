@@ -88,12 +88,10 @@ SparseNetworkAnalysis analyse_sparse_network(const network::Model& model, const 
                                              const std::vector<std::pair<int, int>>& chosen, bool coupled_pairs) {
   SparseNetworkAnalysis a;
   a.listed_pairs = !chosen.empty() || coupled_pairs;
-  // The idle spins need only K: they are found while K's factor may still be running.
-  std::vector<design::IdleMotion> idle_spins;
-  a.result = network::analyse_network_sparse(model, tolerances, design::kSparseVerdictStates, a.listed_pairs,
-                                              [&](const network::SparseNetworkResult& system) {
-                                                idle_spins = design::sparse_idle_spins(model, system, tolerances);
-                                              });
+  // The analysis, then the verdict's idle spins (which need only K): one after the other, no
+  // callback between the factorisations (issue 36: running them beside K's factor saved nothing).
+  a.result = network::analyse_network_sparse(model, tolerances, design::kSparseVerdictStates, a.listed_pairs);
+  const std::vector<design::IdleMotion> idle_spins = design::sparse_idle_spins(model, a.result, tolerances);
   if (a.listed_pairs) a.pairs = network::sparse_pair_freedoms(model, a.result, chosen, coupled_pairs, tolerances);
   a.verdict = design::sparse_network_verdict(model, a.result, idle_spins);
   return a;

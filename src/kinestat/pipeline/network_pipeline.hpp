@@ -3,9 +3,8 @@
 // The coupling-network pipeline: plan (dense or sparse), analyse, verdict, generic answer and,
 // on the dense path, the second-order classification of the motions — composed once here for
 // every caller (the commands, the Python module, the sweep, the pictures). Pure functions
-// returning plain results: no files, no streams. Every screw of a dense result is in the user's
-// frame and length unit; the sparse result keeps its conditioned analysis frame
-// (network/sparse_network.hpp), its verdict is in the user's.
+// returning plain results: no files, no streams. Every screw of a dense or sparse result is in
+// the user's frame and length unit (each analysis converts once, in its last stage).
 
 #include <optional>
 #include <string>
@@ -41,9 +40,6 @@ struct NetworkRequest {
   /// Dense path: classify the motions at second order and trace those that pass (the reports
   /// do; the pictures do not need it).
   bool second_order = true;
-  /// Sparse path: threads for the factorisations of K and Kᵀ (1: one after the other). The
-  /// caller decides (the command from its process setup); the library sets no process state.
-  int threads = 1;
 };
 
 /// True when `request` asks for something only Davies' dense matrices give.
@@ -66,8 +62,8 @@ struct NetworkAnalysis {
 };
 
 /// The sparse path as reported: the counts, supports and the verdict's basis vectors
-/// (network::analyse_network_sparse, in the conditioned analysis frame, supports by coupling
-/// index), the verdict, and the pairs asked for.
+/// (network::analyse_network_sparse, in the user's frame, supports by coupling index), the
+/// verdict, and the pairs asked for.
 struct SparseNetworkAnalysis {
   network::SparseNetworkResult result;
   design::Verdict verdict;

@@ -350,35 +350,35 @@ Scene sparse_network_scene(const network::Model& model, const network::SparseNet
   for (int chord : graph::CouplingGraph(static_cast<int>(model.bodies.size()), edges).breadth_first_tree(r.ground).chords)
     scene.edges[static_cast<std::size_t>(chord)].branch = false;
 
-  // Twists of the conditioned analysis frame (origin o, lengths over s) in the user's frame:
-  // (ω; v') -> (ω; s v' + o × ω), as the sparse verdict converts them.
+  // The basis vectors are in the user's frame, per unit of their primary (network::
+  // analyse_network_sparse); which bodies move is decided on their sizes in the conditioned
+  // analysis frame (placement- and unit-free), as the analysis decides its supports.
   const std::size_t n = model.bodies.size();
   const auto column_of = [&](std::size_t b) { return static_cast<Eigen::Index>(static_cast<int>(b) < r.ground ? b : b - 1) * r.d; };
   for (Eigen::Index j = 0; j < r.motion_basis.cols(); ++j) {
-    const Eigen::Index primary = r.motion_primaries[static_cast<std::size_t>(j)];
-    const Eigen::VectorXd x = r.motion_basis.col(j) / r.motion_basis(primary, j);  // the primary = 1
+    const Eigen::VectorXd& x = r.motion_basis.col(j);
     SceneMode mode;
     mode.label = fmt::format("mode {} (sparse QR basis)", j + 1);
     mode.first_order_reason = "drawn by its twists (first order): a basis vector of the sparse analysis, not traced";
     std::vector<std::optional<std::pair<Vector3d, Vector3d>>> twists(n);
+    Eigen::VectorXd conditioned = Eigen::VectorXd::Zero(x.size());
     double largest = 0.0;
     for (std::size_t b = 0; b < n; ++b) {
       if (static_cast<int>(b) == r.ground) continue;
-      auto [omega, v] = twist_of(model.space, x.segment(column_of(b), r.d));
-      v = r.frame_scale * v + r.frame_origin.cross(omega);
-      twists[b] = std::pair{omega, v};
-      largest = std::max(largest, x.segment(column_of(b), r.d).cwiseAbs().maxCoeff());
+      twists[b] = twist_of(model.space, x.segment(column_of(b), r.d));
+      conditioned.segment(column_of(b), r.d) = r.frame.twist_to_frame(x.segment(column_of(b), r.d), model.space);
+      largest = std::max(largest, conditioned.segment(column_of(b), r.d).cwiseAbs().maxCoeff());
     }
     // Bodies and couplings that move: twist entries (conditioned frame) above kSupportZero of the largest.
     const auto moves = [&](std::size_t b) {
-      return static_cast<int>(b) != r.ground && x.segment(column_of(b), r.d).cwiseAbs().maxCoeff() > kSupportZero * largest;
+      return static_cast<int>(b) != r.ground && conditioned.segment(column_of(b), r.d).cwiseAbs().maxCoeff() > kSupportZero * largest;
     };
     for (std::size_t e = 0; e < model.couplings.size(); ++e) {
       const auto& c = model.couplings[e];
       const auto from = static_cast<std::size_t>(c.from), to = static_cast<std::size_t>(c.to);
       Eigen::VectorXd relative = Eigen::VectorXd::Zero(r.d);
-      if (from != static_cast<std::size_t>(r.ground)) relative -= x.segment(column_of(from), r.d);
-      if (to != static_cast<std::size_t>(r.ground)) relative += x.segment(column_of(to), r.d);
+      if (from != static_cast<std::size_t>(r.ground)) relative -= conditioned.segment(column_of(from), r.d);
+      if (to != static_cast<std::size_t>(r.ground)) relative += conditioned.segment(column_of(to), r.d);
       if ((moves(from) || moves(to)) && relative.cwiseAbs().maxCoeff() > kSupportZero * largest) mode.moving.push_back(c.name);
     }
     for (std::size_t b = 0; b < n; ++b)
@@ -389,8 +389,7 @@ Scene sparse_network_scene(const network::Model& model, const network::SparseNet
   // Self-stresses: the wrench each coupling transmits (its unit actions times their magnitudes,
   // user frame: the magnitudes are the same in both frames), primary = 1.
   for (Eigen::Index j = 0; j < r.stress_basis.cols(); ++j) {
-    const Eigen::Index primary = r.stress_primaries[static_cast<std::size_t>(j)];
-    const Eigen::VectorXd lambda = r.stress_basis.col(j) / r.stress_basis(primary, j);
+    const Eigen::VectorXd& lambda = r.stress_basis.col(j);  // per unit of its primary
     const double zero = kSupportZero * lambda.cwiseAbs().maxCoeff();
     SceneStress stress;
     stress.label = fmt::format("self-stress {} (sparse QR basis)", j + 1);
