@@ -378,37 +378,37 @@ Coupling with(const Coupling& c, CouplingType type, std::optional<Vec3> axis = {
   return n;
 }
 
-// Replacements of one coupling that add freedoms (along a locked action) or constraints
-// (against an idle spin), and its removal (nullopt).
-std::vector<std::optional<Coupling>> candidates_for(const Model& model, const Coupling& c) {
-  const bool planar = model.space.is_planar();
+// The planar replacements (d = 3): a pin in a slot along each nearby direction, a slider's
+// slot, a pin-in-slot back to a revolute or prismatic.
+void add_planar_candidates(const Coupling& c, const std::vector<Vec3>& directions, std::vector<std::optional<Coupling>>& list) {
   const Vec3 z{0, 0, 1};
-  std::vector<std::optional<Coupling>> list;
   const auto& g = c.geometry;
-  const std::vector<Vec3> directions = directions_near(model, c, planar);
   auto axis_or_z = [&] { return g.axis ? integral(*g.axis) : z; };
-  if (planar) {
-    switch (c.type) {
-      case CouplingType::revolute:
-        for (const auto& n : directions) list.push_back(with(c, CouplingType::point_on_line, {}, {}, n));
-        break;
-      case CouplingType::prismatic: {
-        const Vec3 a = axis_or_z();
-        list.push_back(with(c, CouplingType::point_on_line, {}, {}, integral({-a[1], a[0], 0})));
-        break;
-      }
-      case CouplingType::point_on_line: {
-        const Vec3 n = *g.normal;
-        list.push_back(with(c, CouplingType::revolute, z));
-        list.push_back(with(c, CouplingType::prismatic, integral({-n[1], n[0], 0})));
-        break;
-      }
-      default: break;
+  switch (c.type) {
+    case CouplingType::revolute:
+      for (const auto& n : directions) list.push_back(with(c, CouplingType::point_on_line, {}, {}, n));
+      break;
+    case CouplingType::prismatic: {
+      const Vec3 a = axis_or_z();
+      list.push_back(with(c, CouplingType::point_on_line, {}, {}, integral({-a[1], a[0], 0})));
+      break;
     }
-    if (c.type != CouplingType::rigid) list.push_back(with(c, CouplingType::rigid));
-    list.push_back(std::nullopt);
-    return list;
+    case CouplingType::point_on_line: {
+      const Vec3 n = *g.normal;
+      list.push_back(with(c, CouplingType::revolute, z));
+      list.push_back(with(c, CouplingType::prismatic, integral({-n[1], n[0], 0})));
+      break;
+    }
+    default: break;
   }
+}
+
+// The spatial replacements (d = 6): the freedoms a lower pair can gain along its locked actions,
+// and the constraints that stop an idle spin.
+void add_spatial_candidates(const Coupling& c, const std::vector<Vec3>& directions, std::vector<std::optional<Coupling>>& list) {
+  const Vec3 z{0, 0, 1};
+  const auto& g = c.geometry;
+  auto axis_or_z = [&] { return g.axis ? integral(*g.axis) : z; };
   switch (c.type) {
     case CouplingType::revolute: {
       const Vec3 a = axis_or_z();
@@ -460,6 +460,16 @@ std::vector<std::optional<Coupling>> candidates_for(const Model& model, const Co
       break;
     default: break;
   }
+}
+
+// Replacements of one coupling that add freedoms (along a locked action) or constraints
+// (against an idle spin), then a weld and its removal (nullopt).
+std::vector<std::optional<Coupling>> candidates_for(const Model& model, const Coupling& c) {
+  const bool planar = model.space.is_planar();
+  std::vector<std::optional<Coupling>> list;
+  const std::vector<Vec3> directions = directions_near(model, c, planar);
+  if (planar) add_planar_candidates(c, directions, list);
+  else add_spatial_candidates(c, directions, list);
   if (c.type != CouplingType::rigid) list.push_back(with(c, CouplingType::rigid));
   list.push_back(std::nullopt);
   return list;
@@ -538,116 +548,148 @@ struct SearchContext {
   const Carriers& carriers;
 };
 
-Search search_changes(const SearchContext& x, SearchMode mode, double& work) {
-  const Model& model = x.model;
-  const Tally& start = x.start;
-  const std::vector<int>& order = x.order;
-  const bool one_way = mode != SearchMode::two_way;
-  Search s;
-  s.result = start;
-  BasisCache& cache = x.cache;
-  int analyses = 0;
-  const auto within_budget = [&] { return analyses < kNetworkDesignSearchAnalyses && work < kNetworkDesignSearchWork; };
+// One greedy search in one mode: the state the steps below share (the design so far, the
+// re-analyses spent against the budget).
+class GreedySearch {
+ public:
+  GreedySearch(const SearchContext& x, SearchMode mode, double& work) : x_(x), mode_(mode), work_(work) { s_.result = x.start; }
+
+  Search run() {
+    while (s_.result.score() > 0 && within_budget()) {
+      Step step;
+      try_single_changes(step);
+      // No single change helps (e.g. a body between two spheres needs one constraint more at one
+      // and one less at the other): try two at once among the couplings taking the largest part.
+      if (!step.key) try_paired_changes(step);
+      if (!step.key) break;
+      s_.changes = step.changes;
+      s_.result = step.tally;
+    }
+    if (s_.result.score() == 0 && s_.result.lost == 0) drop_unneeded_changes();
+    return s_;
+  }
+
+ private:
+  using Key = std::tuple<int, int, int, std::size_t, std::size_t>;  // score, lost, |delta f|, rank, candidate
+  using Options = std::vector<std::pair<std::optional<Coupling>, int>>;  // candidates with |delta f|
+
+  // The best change set of one step: the smallest key among the trials that lower the score.
+  struct Step {
+    std::optional<Key> key;
+    ChangeSet changes;
+    Tally tally;
+  };
+
+  bool within_budget() const { return analyses_ < kNetworkDesignSearchAnalyses && work_ < kNetworkDesignSearchWork; }
+
   // The tally of a changed copy, or nullopt when it cannot be analysed or a carrier of the
   // intended motion lost part of it (counted in lost_motion).
-  auto evaluate = [&](const ChangeSet& changes) -> std::optional<Tally> {
-    ++analyses;
+  std::optional<Tally> evaluate(const ChangeSet& changes) {
+    ++analyses_;
     try {
-      const Standing standing = screen(changed_model(model, changes), cache, x.exact, x.options.tolerances, work, &x.carriers);
+      const Standing standing = screen(changed_model(x_.model, changes), x_.cache, x_.exact, x_.options.tolerances, work_, &x_.carriers);
       if (!standing.keeps) {
-        ++s.lost_motion;
+        ++s_.lost_motion;
         return std::nullopt;
       }
-      return tally(standing, x.intended);
+      return tally(standing, x_.intended);
     } catch (const graph::TreeError&) {
       return std::nullopt;  // a removal that disconnects a body
     } catch (const screw::GeometryError&) {
       return std::nullopt;
     }
-  };
-  using Key = std::tuple<int, int, int, std::size_t, std::size_t>;  // score, lost, |delta f|, rank, candidate
-  // The candidates of the coupling at `rank` of `order` in the current design, with |delta f|.
-  auto options_at = [&](std::size_t rank) {
-    std::vector<std::pair<std::optional<Coupling>, int>> out;
-    const int e = order[rank];
-    const auto current = s.changes.find(e);
-    if (current != s.changes.end() && !current->second) return out;  // removed already
-    const Coupling& now = current != s.changes.end() ? *current->second : model.couplings[static_cast<std::size_t>(e)];
-    const auto f = [&](const Coupling& c) { return static_cast<int>(cache.of(c).motions.size()); };
-    for (auto& candidate : candidates_for(changed_model(model, s.changes), now)) {
-      if (mode == SearchMode::replace_only && (!candidate || candidate->type == CouplingType::rigid)) continue;
-      if (mode == SearchMode::lower_pairs && (!candidate || !lower_pair(candidate->type))) continue;
+  }
+
+  // The candidates of the coupling at `rank` of the order in the current design, with |delta f|,
+  // as the mode allows them.
+  Options options_at(std::size_t rank) {
+    Options out;
+    const Model& model = x_.model;
+    const int e = x_.order[rank];
+    const auto current = s_.changes.find(e);
+    if (current != s_.changes.end() && !current->second) return out;  // removed already
+    const Coupling& now = current != s_.changes.end() ? *current->second : model.couplings[static_cast<std::size_t>(e)];
+    const auto f = [&](const Coupling& c) { return static_cast<int>(x_.cache.of(c).motions.size()); };
+    const bool one_way = mode_ != SearchMode::two_way;
+    for (auto& candidate : candidates_for(changed_model(model, s_.changes), now)) {
+      if (mode_ == SearchMode::replace_only && (!candidate || candidate->type == CouplingType::rigid)) continue;
+      if (mode_ == SearchMode::lower_pairs && (!candidate || !lower_pair(candidate->type))) continue;
       try {
         // A removal drops the d - f constraints the coupling imposed.
         const int f_after = candidate ? f(*candidate) : model.space.dimension();
-        if (one_way && start.extra == 0 && f_after < f(now)) continue;  // only releases against redundancy
-        if (one_way && start.CN == 0 && f_after > f(now)) continue;     // only constraints against extra motion
+        if (one_way && x_.start.extra == 0 && f_after < f(now)) continue;  // only releases against redundancy
+        if (one_way && x_.start.CN == 0 && f_after > f(now)) continue;     // only constraints against extra motion
         out.emplace_back(std::move(candidate), std::abs(f_after - f(now)));
       } catch (const screw::GeometryError&) {
       }
     }
     return out;
-  };
-  while (s.result.score() > 0 && within_budget()) {
-    std::optional<Key> best_key;
-    ChangeSet best;
-    Tally best_tally;
-    auto consider = [&](const ChangeSet& trial, int delta, std::size_t rank, std::size_t k) {
-      const auto t = evaluate(trial);
-      if (!t || t->lost > s.result.lost || t->score() >= s.result.score()) return;
-      const Key key{t->score(), t->lost, delta, rank, k};
-      if (!best_key || key < *best_key) {
-        best_key = key;
-        best = trial;
-        best_tally = *t;
-      }
-    };
-    for (std::size_t rank = 0; rank < order.size(); ++rank) {
-      const auto list = options_at(rank);
+  }
+
+  void consider(Step& step, const ChangeSet& trial, int delta, std::size_t rank, std::size_t k) {
+    const auto t = evaluate(trial);
+    if (!t || t->lost > s_.result.lost || t->score() >= s_.result.score()) return;
+    const Key key{t->score(), t->lost, delta, rank, k};
+    if (!step.key || key < *step.key) {
+      step.key = key;
+      step.changes = trial;
+      step.tally = *t;
+    }
+  }
+
+  void try_single_changes(Step& step) {
+    for (std::size_t rank = 0; rank < x_.order.size(); ++rank) {
+      const Options list = options_at(rank);
       for (std::size_t k = 0; k < list.size() && within_budget(); ++k) {
-        ChangeSet trial = s.changes;
-        trial[order[rank]] = list[k].first;
-        consider(trial, list[k].second, rank, k);
+        ChangeSet trial = s_.changes;
+        trial[x_.order[rank]] = list[k].first;
+        consider(step, trial, list[k].second, rank, k);
       }
     }
-    // No single change helps (e.g. a body between two spheres needs one constraint more at one
-    // and one less at the other): try two at once among the couplings taking the largest part.
-    const std::size_t paired = std::min<std::size_t>(order.size(), kNetworkDesignPairCouplings);
-    for (std::size_t r1 = 0; !best_key && r1 < paired; ++r1) {
-      const auto first = options_at(r1);
+  }
+
+  void try_paired_changes(Step& step) {
+    const std::size_t paired = std::min<std::size_t>(x_.order.size(), kNetworkDesignPairCouplings);
+    for (std::size_t r1 = 0; !step.key && r1 < paired; ++r1) {
+      const Options first = options_at(r1);
       for (std::size_t r2 = r1 + 1; r2 < paired; ++r2) {
-        const auto second = options_at(r2);
+        const Options second = options_at(r2);
         for (std::size_t k1 = 0; k1 < first.size(); ++k1)
           for (std::size_t k2 = 0; k2 < second.size() && within_budget(); ++k2) {
-            ChangeSet trial = s.changes;
-            trial[order[r1]] = first[k1].first;
-            trial[order[r2]] = second[k2].first;
-            consider(trial, first[k1].second + second[k2].second, r1 * paired + r2, k1 * second.size() + k2);
+            ChangeSet trial = s_.changes;
+            trial[x_.order[r1]] = first[k1].first;
+            trial[x_.order[r2]] = second[k2].first;
+            consider(step, trial, first[k1].second + second[k2].second, r1 * paired + r2, k1 * second.size() + k2);
           }
       }
     }
-    if (!best_key) break;
-    s.changes = best;
-    s.result = best_tally;
   }
+
   // Keep the set minimal: drop every change the others do not need.
-  if (s.result.score() == 0 && s.result.lost == 0) {
+  void drop_unneeded_changes() {
     for (bool dropped = true; dropped;) {
       dropped = false;
-      for (const auto& entry : s.changes) {
-        ChangeSet without = s.changes;
+      for (const auto& entry : s_.changes) {
+        ChangeSet without = s_.changes;
         without.erase(entry.first);
         const auto t = evaluate(without);
         if (t && t->score() == 0 && t->lost == 0) {
-          s.changes = std::move(without);
+          s_.changes = std::move(without);
           dropped = true;
           break;
         }
       }
     }
   }
-  return s;
-}
+
+  const SearchContext& x_;
+  SearchMode mode_;
+  double& work_;  ///< shared by every search of the verdict
+  int analyses_ = 0;
+  Search s_;
+};
+
+Search search_changes(const SearchContext& x, SearchMode mode, double& work) { return GreedySearch(x, mode, work).run(); }
 
 }  // namespace
 
@@ -940,29 +982,10 @@ Verification verify_changes(const Model& model, const network::NetworkResult& r,
   return out;
 }
 
-}  // namespace
-
-Verdict network_verdict(const Model& model, const network::NetworkResult& r, const network::AnalysisOptions& options) {
-  Verdict v;
-  const Frame frame = frame_of(model);
-  const auto idle = idle_motions(model, r.exact, options.tolerances);
-  const Standing standing{r.FN, r.CN, std::min(idle_count(idle), r.FN)};
-  const int declared = static_cast<int>(model.inputs.size());
-  const int intended = model.inputs.empty() ? standing.FN - standing.idle : declared;
-  v.intended_motions = intended;
-  v.intended_basis = model.inputs.empty() ? "none declared ('inputs:'): every motion but idle spins (FN less idle spins)" : "the declared 'inputs:'";
-  const Tally start = tally(standing, intended);
-  v.extra_motions = start.extra;
-  v.redundant_constraints = r.CN + start.lost;  // inputs beyond the motions fight each other
-  v.exactly_constrained = v.extra_motions == 0 && v.redundant_constraints == 0;
-  v.summary = summary_sentence(v.extra_motions, v.redundant_constraints, intended);
-  note_near_rank_change(v, r.circulation.solution.rank.distance(), r.FN > 0);
-
-  std::vector<std::string> names;
-  for (const auto& c : model.couplings) names.push_back(c.name);
+// One state per idle spin screw: the body, and every coupling at it with an equal share.
+void add_idle_spin_states(const Model& model, const std::vector<IdleMotion>& idle, const Frame& frame,
+                          const std::vector<std::string>& names, Verdict& v) {
   const auto e_count = model.couplings.size();
-
-  // Extra motions: idle spins, then motions beyond the declared inputs.
   for (const auto& spin : idle) {
     for (const auto& s : spin.screws) {
       const std::string what = motion_text(embed(s, model.space), frame.length);
@@ -976,24 +999,32 @@ Verdict network_verdict(const Model& model, const network::NetworkResult& r, con
       v.states.push_back(std::move(state));
     }
   }
-  const int beyond = std::max(0, standing.FN - standing.idle - intended);
-  if (beyond > 0 && r.FN > 0) {
-    VerdictState state{"extra motion", fmt::format("{} beyond the {} declared", counted(beyond, "motion", "motions"),
-                                                   counted(declared, "input", "inputs")), {}};
-    std::vector<double> size(e_count, 0.0);
-    std::vector<std::string> detail(e_count, "moves");
-    for (std::size_t i = 0; i < r.motions.size(); ++i) {
-      const Screw t = embed([&] {
-        std::vector<double> c;
-        for (const auto& x : r.motions[i].unit_screw.coordinates) c.push_back(x.get_d());
-        return c;
-      }(), model.space);
-      size[static_cast<std::size_t>(r.motions[i].coupling)] += r.motion_magnitudes.values.row(static_cast<Eigen::Index>(i)).squaredNorm() * twist_size(t, frame);
-    }
-    add_shares(state, size, names, detail);
-    v.states.push_back(std::move(state));
+}
+
+// The motions beyond the declared inputs as one state: each coupling's share of the motion
+// magnitudes (over every primary), sized placement-free.
+VerdictState beyond_inputs_state(const Model& model, const network::NetworkResult& r, const Frame& frame,
+                                 const std::vector<std::string>& names, int beyond, int declared) {
+  const auto e_count = model.couplings.size();
+  VerdictState state{"extra motion", fmt::format("{} beyond the {} declared", counted(beyond, "motion", "motions"),
+                                                 counted(declared, "input", "inputs")), {}};
+  std::vector<double> size(e_count, 0.0);
+  std::vector<std::string> detail(e_count, "moves");
+  for (std::size_t i = 0; i < r.motions.size(); ++i) {
+    std::vector<double> c;
+    for (const auto& x : r.motions[i].unit_screw.coordinates) c.push_back(x.get_d());
+    const Screw t = embed(c, model.space);
+    size[static_cast<std::size_t>(r.motions[i].coupling)] += r.motion_magnitudes.values.row(static_cast<Eigen::Index>(i)).squaredNorm() * twist_size(t, frame);
   }
-  // Self-stresses: the wrench each coupling transmits, one state per action primary.
+  add_shares(state, size, names, detail);
+  return state;
+}
+
+// Self-stresses: one state per action primary (that primary = 1), the wrench each coupling
+// transmits.
+void add_self_stress_states(const Model& model, const network::NetworkResult& r, const Frame& frame,
+                            const std::vector<std::string>& names, Verdict& v) {
+  const auto e_count = model.couplings.size();
   for (int j = 0; j < r.CN; ++j) {
     std::vector<Screw> wrench(e_count, Screw::Zero());
     for (std::size_t i = 0; i < r.actions.size(); ++i) {
@@ -1012,24 +1043,12 @@ Verdict network_verdict(const Model& model, const network::NetworkResult& r, con
     add_shares(state, size, names, detail);
     v.states.push_back(std::move(state));
   }
-  v.motion_participants = strongest(v.states, "extra motion");
-  v.constraint_participants = strongest(v.states, "self-stress");
+}
 
-  if (v.exactly_constrained) {
-    v.changes_verified = true;
-    v.becomes = "unchanged: already exactly constrained";
-    return v;
-  }
-  if (start.lost > 0) {
-    v.note = fmt::format("{} declared for {}: drop {} (or add the motions they drive)", counted(declared, "input is", "inputs are"),
-                         counted(standing.FN - standing.idle, "motion", "motions"), counted(start.lost, "input", "inputs"));
-    return v;
-  }
-  if (static_cast<int>(e_count) > kNetworkDesignSearchCouplings) {
-    v.note = fmt::format("no change set searched: more than {} couplings", kNetworkDesignSearchCouplings);
-    return v;
-  }
-  // Couplings in order of participation, the rest after them in model order.
+// The couplings in the order the search tries them: by participation (constraints, then
+// motions), the rest after them in model order.
+std::vector<int> search_order(const Verdict& v, const std::vector<std::string>& names) {
+  const std::size_t e_count = names.size();
   std::vector<int> order;
   for (const auto& list : {v.constraint_participants, v.motion_participants})
     for (const auto& p : list)
@@ -1038,33 +1057,48 @@ Verdict network_verdict(const Model& model, const network::NetworkResult& r, con
           order.push_back(static_cast<int>(e));
   for (std::size_t e = 0; e < e_count; ++e)
     if (std::find(order.begin(), order.end(), static_cast<int>(e)) == order.end()) order.push_back(static_cast<int>(e));
+  return order;
+}
 
-  double work = 0.0;  // shared by every search
-  BasisCache cache(model, r.exact);
-  const Carriers carriers = carriers_of(model, cache, frame, r.FN, idle, start);
-  const SearchContext context{model, options, r.exact, intended, start, order, cache, carriers};
-  struct Proposal {
-    ChangeSet changes;
-    Verification check;
-  };
+// A change set the re-analysis passed.
+struct Proposal {
+  ChangeSet changes;
+  Verification check;
+};
+
+// What the searches found: the verified proposals (in the order found), the rejected sets in
+// `v.rejected`, the copies turned down for taking intended motion, and the work spent.
+struct SearchOutcome {
   std::vector<Proposal> verified;
-  std::vector<std::string> seen;
   int lost_motion = 0;
+  double work = 0.0;
+};
+
+// The greedy search in each mode (lower pairs first; the two-way search only when nothing was
+// verified), every distinct set found verified by re-analysis.
+SearchOutcome search_and_verify(const Model& model, const network::NetworkResult& r, const network::AnalysisOptions& options,
+                                const SearchContext& context, const Carriers& carriers, Verdict& v) {
+  SearchOutcome out;
+  std::vector<std::string> seen;
   for (const SearchMode mode : {SearchMode::lower_pairs, SearchMode::replace_only, SearchMode::one_way, SearchMode::two_way}) {
-    if (mode == SearchMode::two_way && !verified.empty()) break;
-    if (work >= kNetworkDesignSearchWork) break;
-    const Search found = search_changes(context, mode, work);
-    lost_motion += found.lost_motion;
+    if (mode == SearchMode::two_way && !out.verified.empty()) break;
+    if (out.work >= kNetworkDesignSearchWork) break;
+    const Search found = search_changes(context, mode, out.work);
+    out.lost_motion += found.lost_motion;
     if (found.changes.empty() || found.result.score() > 0 || found.result.lost > 0) continue;
     const std::string key = change_set_text(model, found.changes);
     if (std::find(seen.begin(), seen.end(), key) != seen.end()) continue;
     seen.push_back(key);
-    Verification check = verify_changes(model, r, found.changes, options, intended, carriers);
-    if (check.passed) verified.push_back({found.changes, std::move(check)});
+    Verification check = verify_changes(model, r, found.changes, options, context.intended, carriers);
+    if (check.passed) out.verified.push_back({found.changes, std::move(check)});
     else v.rejected.push_back(key + ": " + check.failure);
   }
-  // Simplest first: sets of lower pairs only, then with point contacts, then with removals or
-  // welds; within each, the fewest changes, then the fewest freedoms changed.
+  return out;
+}
+
+// Simplest first: sets of lower pairs only, then with point contacts, then with removals or
+// welds; within each, the fewest changes, then the fewest freedoms changed.
+void sort_simplest_first(const Model& model, std::vector<Proposal>& verified) {
   const auto simplicity = [&](const ChangeSet& set) {
     int kind = 0, delta = 0;
     for (const auto& [e, replacement] : set) {
@@ -1076,25 +1110,82 @@ Verdict network_verdict(const Model& model, const network::NetworkResult& r, con
   };
   std::stable_sort(verified.begin(), verified.end(),
                    [&](const Proposal& p, const Proposal& q) { return simplicity(p.changes) < simplicity(q.changes); });
-  if (!verified.empty()) {
-    v.changes = design_changes(model, verified.front().changes, start);
+}
+
+// Why no change set is proposed, when the search verified none.
+std::string no_change_note(const Model& model, const SearchOutcome& outcome, const Carriers& carriers, const Verdict& v) {
+  const std::string turned_down =
+      outcome.lost_motion > 0 ? fmt::format("; {} screened {} took part of the intended motion from {}", outcome.lost_motion,
+                                            outcome.lost_motion == 1 ? "copy was turned down: it" : "copies were turned down: they",
+                                            carrier_names(model, carriers))
+                              : "";
+  if (!v.rejected.empty())
+    return fmt::format("no change set passed the re-analysis ({} tried, none proposed){}", v.rejected.size(), turned_down);
+  if (outcome.work >= kNetworkDesignSearchWork)
+    return "no change set found within the search budget: analyse a smaller part of the network to get one" + turned_down;
+  return "no change of coupling types, removal or weld removes every extra motion and redundant constraint" + turned_down;
+}
+
+}  // namespace
+
+Verdict network_verdict(const Model& model, const network::NetworkResult& r, const network::AnalysisOptions& options) {
+  // The counts: intended motions (the inputs, or FN less the idle spins), extra and redundant.
+  Verdict v;
+  const Frame frame = frame_of(model);
+  const auto idle = idle_motions(model, r.exact, options.tolerances);
+  const Standing standing{r.FN, r.CN, std::min(idle_count(idle), r.FN)};
+  const int declared = static_cast<int>(model.inputs.size());
+  const int intended = model.inputs.empty() ? standing.FN - standing.idle : declared;
+  v.intended_motions = intended;
+  v.intended_basis = model.inputs.empty() ? "none declared ('inputs:'): every motion but idle spins (FN less idle spins)" : "the declared 'inputs:'";
+  const Tally start = tally(standing, intended);
+  v.extra_motions = start.extra;
+  v.redundant_constraints = r.CN + start.lost;  // inputs beyond the motions fight each other
+  v.exactly_constrained = v.extra_motions == 0 && v.redundant_constraints == 0;
+  v.summary = summary_sentence(v.extra_motions, v.redundant_constraints, intended);
+  note_near_rank_change(v, r.circulation.solution.rank.distance(), r.FN > 0);
+
+  // Where: idle spins, then motions beyond the declared inputs, then the self-stresses.
+  std::vector<std::string> names;
+  for (const auto& c : model.couplings) names.push_back(c.name);
+  add_idle_spin_states(model, idle, frame, names, v);
+  const int beyond = std::max(0, standing.FN - standing.idle - intended);
+  if (beyond > 0 && r.FN > 0) v.states.push_back(beyond_inputs_state(model, r, frame, names, beyond, declared));
+  add_self_stress_states(model, r, frame, names, v);
+  v.motion_participants = strongest(v.states, "extra motion");
+  v.constraint_participants = strongest(v.states, "self-stress");
+
+  // What to change: nothing, a note, or the simplest verified change set.
+  if (v.exactly_constrained) {
     v.changes_verified = true;
-    v.becomes = verified.front().check.becomes;
-    v.verification = verified.front().check.compared;
-    for (std::size_t i = 1; i < verified.size(); ++i) v.alternatives.push_back(design_changes(model, verified[i].changes, start));
+    v.becomes = "unchanged: already exactly constrained";
     return v;
   }
-  const std::string turned_down =
-      lost_motion > 0 ? fmt::format("; {} screened {} took part of the intended motion from {}", lost_motion,
-                                    lost_motion == 1 ? "copy was turned down: it" : "copies were turned down: they",
-                                    carrier_names(model, carriers))
-                      : "";
-  if (!v.rejected.empty())
-    v.note = fmt::format("no change set passed the re-analysis ({} tried, none proposed){}", v.rejected.size(), turned_down);
-  else if (work >= kNetworkDesignSearchWork)
-    v.note = "no change set found within the search budget: analyse a smaller part of the network to get one" + turned_down;
-  else
-    v.note = "no change of coupling types, removal or weld removes every extra motion and redundant constraint" + turned_down;
+  if (start.lost > 0) {
+    v.note = fmt::format("{} declared for {}: drop {} (or add the motions they drive)", counted(declared, "input is", "inputs are"),
+                         counted(standing.FN - standing.idle, "motion", "motions"), counted(start.lost, "input", "inputs"));
+    return v;
+  }
+  if (static_cast<int>(model.couplings.size()) > kNetworkDesignSearchCouplings) {
+    v.note = fmt::format("no change set searched: more than {} couplings", kNetworkDesignSearchCouplings);
+    return v;
+  }
+  const std::vector<int> order = search_order(v, names);
+  BasisCache cache(model, r.exact);
+  const Carriers carriers = carriers_of(model, cache, frame, r.FN, idle, start);
+  const SearchContext context{model, options, r.exact, intended, start, order, cache, carriers};
+  SearchOutcome outcome = search_and_verify(model, r, options, context, carriers, v);
+  sort_simplest_first(model, outcome.verified);
+  if (outcome.verified.empty()) {
+    v.note = no_change_note(model, outcome, carriers, v);
+    return v;
+  }
+  const Proposal& best = outcome.verified.front();
+  v.changes = design_changes(model, best.changes, start);
+  v.changes_verified = true;
+  v.becomes = best.check.becomes;
+  v.verification = best.check.compared;
+  for (std::size_t i = 1; i < outcome.verified.size(); ++i) v.alternatives.push_back(design_changes(model, outcome.verified[i].changes, start));
   return v;
 }
 

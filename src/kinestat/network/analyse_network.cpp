@@ -446,15 +446,10 @@ struct NetworkBasesStage {
   std::vector<PairSystem> pairs;  ///< decided; motion_system and action_system still empty
 };
 
-NetworkBasesStage choose_network_bases_stage(const Model& model, const NetworkTopologyStage& topology,
-                                             const ConditionedNetworkStage& c, NetworkRanksStage ranks,
-                                             const AnalysisOptions& options) {
-  const int d = model.space.dimension();
-  const int bodies = static_cast<int>(model.bodies.size());
-  NetworkBasesStage s;
-  s.ranks = std::move(ranks);
-
-  // Primary variables: the user's, or the earliest that can be free.
+// The user's primary variables (`options.primary`, else the model's), split into motions and
+// actions, made the free variables of the circulation and cutset laws. Throws ModelError naming
+// the first that is not a magnitude or not independent.
+void choose_primaries(const Model& model, const ConditionedNetworkStage& c, const AnalysisOptions& options, NetworkBasesStage& s) {
   const std::vector<std::string> requested = options.primary ? *options.primary : model.primary;
   std::vector<std::string> requested_motion, requested_action;
   std::vector<std::size_t> motion_request_index, action_request_index;
@@ -495,20 +490,14 @@ NetworkBasesStage choose_network_bases_stage(const Model& model, const NetworkTo
   };
   apply_choice(s.ranks.circulation, requested_motion, motion_request_index, c.motions, "motion", "FN");
   apply_choice(s.ranks.cutset_law, requested_action, action_request_index, c.actions, "action", "CN");
-  for (Index v : s.ranks.circulation.free_variables) s.primary_motion.push_back(static_cast<int>(v));
-  for (Index v : s.ranks.cutset_law.free_variables) s.primary_action.push_back(static_cast<int>(v));
+}
 
-  // Contracted matrices [M]d,e and [A]d,e by both methods each.
-  const LinearForms K_motion = solution_forms(s.ranks.circulation);
-  const LinearForms K_action = solution_forms(s.ranks.cutset_law);
-  s.M_i = contract_couplings(c.solved.MD, c.solved.first_motion, K_motion, d, c.exact);
-  s.A_ii = contract_couplings(c.solved.AD, c.solved.first_action, K_action, d, c.exact);
-  s.M_iii = contract_graph(solution_forms(s.ranks.cutset_motion), topology.Q, d, c.exact);
-  s.A_iv = contract_graph(solution_forms(s.ranks.circuit_action), topology.B, d, c.exact);
-  s.motion_methods_agree = same_span(s.M_i, s.M_iii, options.tolerances.pair_rank);
-  s.action_methods_agree = same_span(s.A_ii, s.A_iv, options.tolerances.pair_rank);
-
-  // Motion of every body relative to the ground, then of every pair (seed 000, section 2.7).
+// Motion of every body relative to the ground, then of every pair (seed 000, section 2.7): fij
+// of each pair, cij of each direct coupling, and the primaries that appear in them.
+void decide_pairs(const Model& model, const NetworkTopologyStage& topology, const ConditionedNetworkStage& c,
+                  const AnalysisOptions& options, NetworkBasesStage& s) {
+  const int d = model.space.dimension();
+  const int bodies = static_cast<int>(model.bodies.size());
   const auto FN = static_cast<Index>(s.primary_motion.size());
   const std::vector<LinearForms> body_motion = body_motions_along_tree(topology.walk, s.M_i, bodies, d, FN, c.exact);
   const double motion_scale = s.M_i.values.norm(), action_scale = s.A_ii.values.norm();
@@ -559,7 +548,53 @@ NetworkBasesStage choose_network_bases_stage(const Model& model, const NetworkTo
         s.pairs.push_back(row);
       }
     }
+}
+
+NetworkBasesStage choose_network_bases_stage(const Model& model, const NetworkTopologyStage& topology,
+                                             const ConditionedNetworkStage& c, NetworkRanksStage ranks,
+                                             const AnalysisOptions& options) {
+  const int d = model.space.dimension();
+  NetworkBasesStage s;
+  s.ranks = std::move(ranks);
+
+  // Primary variables: the user's, or the earliest that can be free.
+  choose_primaries(model, c, options, s);
+  for (Index v : s.ranks.circulation.free_variables) s.primary_motion.push_back(static_cast<int>(v));
+  for (Index v : s.ranks.cutset_law.free_variables) s.primary_action.push_back(static_cast<int>(v));
+
+  // Contracted matrices [M]d,e and [A]d,e by both methods each.
+  const LinearForms K_motion = solution_forms(s.ranks.circulation);
+  const LinearForms K_action = solution_forms(s.ranks.cutset_law);
+  s.M_i = contract_couplings(c.solved.MD, c.solved.first_motion, K_motion, d, c.exact);
+  s.A_ii = contract_couplings(c.solved.AD, c.solved.first_action, K_action, d, c.exact);
+  s.M_iii = contract_graph(solution_forms(s.ranks.cutset_motion), topology.Q, d, c.exact);
+  s.A_iv = contract_graph(solution_forms(s.ranks.circuit_action), topology.B, d, c.exact);
+  s.motion_methods_agree = same_span(s.M_i, s.M_iii, options.tolerances.pair_rank);
+  s.action_methods_agree = same_span(s.A_ii, s.A_iv, options.tolerances.pair_rank);
+
+  decide_pairs(model, topology, c, options, s);
   return s;
+}
+
+// The body motions (along the tree, from the user's contracted motions) and the pairs' motion
+// and action systems in the user's frame.
+void pair_systems_in_user_frame(const NetworkTopologyStage& topology, std::vector<PairSystem> pairs, double pair_relative,
+                                NetworkResult& r) {
+  const int d = r.d;
+  r.body_motions = body_motions_along_tree(topology.walk, r.circulation.contracted, r.bodies, d, r.FN, r.exact);
+  r.pairs = std::move(pairs);
+  // In floating point, what the difference of two body motions leaves below the threshold the
+  // pair decisions use (pair_relative of the whole network's forms) is rounding, and is shown
+  // as zero: a welded pair's motions print as 0, not as 1e-16 * s_R1 + ...
+  const double pair_noise = r.exact ? 0.0 : pair_relative * r.circulation.contracted.values.norm();
+  for (PairSystem& pair : r.pairs) {
+    pair.motion_system = combine(r.body_motions[static_cast<std::size_t>(pair.body_j)],
+                                 r.body_motions[static_cast<std::size_t>(pair.body_i)], -1);
+    if (!pair.motion_system.exact)
+      pair.motion_system.values = pair.motion_system.values.unaryExpr([pair_noise](double x) { return std::abs(x) <= pair_noise ? 0.0 : x; });
+    pair.action_system = pair.coupling ? block_rows(r.cutset_law.contracted, static_cast<Index>(*pair.coupling) * d, d)
+                                       : zero_forms(d, r.CN, r.exact);
+  }
 }
 
 // Stage 5, the one boundary back to the user's frame: everything decided above, with the
@@ -638,20 +673,7 @@ NetworkResult network_in_user_frame(const Model& model, NetworkTopologyStage top
   r.AN = std::move(c.user.AN);
 
   // Body motions and pair systems.
-  r.body_motions = body_motions_along_tree(topology.walk, r.circulation.contracted, r.bodies, d, r.FN, r.exact);
-  r.pairs = std::move(b.pairs);
-  // In floating point, what the difference of two body motions leaves below the threshold the
-  // pair decisions use (pair_relative of the whole network's forms) is rounding, and is shown
-  // as zero: a welded pair's motions print as 0, not as 1e-16 * s_R1 + ...
-  const double pair_noise = r.exact ? 0.0 : pair_relative * r.circulation.contracted.values.norm();
-  for (PairSystem& pair : r.pairs) {
-    pair.motion_system = combine(r.body_motions[static_cast<std::size_t>(pair.body_j)],
-                                 r.body_motions[static_cast<std::size_t>(pair.body_i)], -1);
-    if (!pair.motion_system.exact)
-      pair.motion_system.values = pair.motion_system.values.unaryExpr([pair_noise](double x) { return std::abs(x) <= pair_noise ? 0.0 : x; });
-    pair.action_system = pair.coupling ? block_rows(r.cutset_law.contracted, static_cast<Index>(*pair.coupling) * d, d)
-                                       : zero_forms(d, r.CN, r.exact);
-  }
+  pair_systems_in_user_frame(topology, std::move(b.pairs), pair_relative, r);
   return r;
 }
 

@@ -150,17 +150,17 @@ const char* trace_refusal_text(TraceRefusal refusal) {
   return "";
 }
 
-NetworkTrace trace_network_motion(const Model& model, const NetworkResult& r, const Eigen::VectorXd& direction,
-                                  const NetworkTraceOptions& options) {
-  NetworkTrace trace;
+namespace {
+
+// Why `direction` cannot be traced on this network, before any circuit is walked: a screw space
+// without a Lie group model, a circuit through a coupling without a product-of-exponentials
+// model (named in `trace`), too many magnitudes or rows for dense SVDs, or no usable direction.
+TraceRefusal refusal_of(const Model& model, const NetworkResult& r, const Eigen::VectorXd& direction,
+                        const NetworkTraceOptions& options, NetworkTrace& trace) {
   const auto F = static_cast<Eigen::Index>(r.motions.size());
   const auto l = static_cast<Eigen::Index>(r.B.rows());
-  const std::vector<int>& components = model.space.components;
-  const bool spherical = components == std::vector<int>{0, 1, 2};
-  if (!(model.space.is_spatial() || model.space.is_planar() || spherical)) {
-    trace.refusal = TraceRefusal::space_not_modelled;
-    return trace;
-  }
+  const bool spherical = model.space.components == std::vector<int>{0, 1, 2};
+  if (!(model.space.is_spatial() || model.space.is_planar() || spherical)) return TraceRefusal::space_not_modelled;
   for (Eigen::Index row = 0; row < l; ++row)
     for (Eigen::Index e = 0; e < r.B.cols(); ++e) {
       const auto& c = model.couplings[static_cast<std::size_t>(e)];
@@ -168,39 +168,29 @@ NetworkTrace trace_network_motion(const Model& model, const NetworkResult& r, co
           std::find(trace.unmodelled_couplings.begin(), trace.unmodelled_couplings.end(), c.name) == trace.unmodelled_couplings.end())
         trace.unmodelled_couplings.push_back(c.name);
     }
-  if (!trace.unmodelled_couplings.empty()) {
-    trace.refusal = TraceRefusal::unmodelled_coupling;
-    return trace;
-  }
-  const auto d = static_cast<Eigen::Index>(components.size());
-  if (F > kNetworkTraceSizeLimit || d * l > kNetworkTraceSizeLimit) {
-    trace.refusal = TraceRefusal::too_large;
-    return trace;
-  }
+  if (!trace.unmodelled_couplings.empty()) return TraceRefusal::unmodelled_coupling;
+  const auto d = static_cast<Eigen::Index>(model.space.components.size());
+  if (F > kNetworkTraceSizeLimit || d * l > kNetworkTraceSizeLimit) return TraceRefusal::too_large;
   if (direction.size() != F || F == 0 || !direction.allFinite() || direction.norm() == 0.0 || options.steps <= 0 ||
-      !(options.amplitude_fraction > 0.0)) {
-    trace.refusal = TraceRefusal::not_a_motion;
-    return trace;
-  }
+      !(options.amplitude_fraction > 0.0))
+    return TraceRefusal::not_a_motion;
+  return TraceRefusal::none;
+}
 
-  Loops loops;
-  loops.F = F;
-  loops.rows = components;
-  loops.walks = circuit_walks(model, r);
-  for (const auto& walk : loops.walks)
-    if (walk.empty()) {
-      trace.refusal = TraceRefusal::open_circuit;
-      return trace;
-    }
-  // The analysis frame: origin and L (spherical screw spaces: rotations about the user's origin).
+// The unit twist of every magnitude in the analysis frame (origin and L; spherical screw spaces:
+// rotations about the user's origin) with the factors between its coordinate and the user's:
+// rotations in rad about the unit axis, translations in lengths of L. False when a magnitude has
+// a zero screw (no motion to follow).
+bool scale_unit_twists(const Model& model, const NetworkResult& r, Loops& loops, double& L) {
+  const std::vector<int>& components = model.space.components;
   Eigen::Vector3d origin = Eigen::Vector3d::Zero();
-  double L = 1.0;
-  if (!spherical) {
+  L = 1.0;
+  if (components != std::vector<int>{0, 1, 2}) {
     const AnalysisFrame frame = AnalysisFrame::of(model);
     origin = Eigen::Vector3d(frame.origin[0].get_d(), frame.origin[1].get_d(), frame.origin[2].get_d());
     L = frame.scale.get_d();
   }
-  trace.characteristic_length = L;
+  const Eigen::Index F = loops.F;
   loops.to_scaled.resize(F);
   loops.to_user.resize(F);
   for (Eigen::Index i = 0; i < F; ++i) {
@@ -220,41 +210,45 @@ NetworkTrace trace_network_motion(const Model& model, const NetworkResult& r, co
       loops.to_scaled(i) = n / L;
       loops.to_user(i) = L;
     } else {
-      trace.refusal = TraceRefusal::not_a_motion;
-      return trace;
+      return false;
     }
     loops.unit.push_back(unit);
   }
+  return true;
+}
 
-  // The direction must be a first-order motion in this frame (otherwise the walk misread B).
-  Eigen::VectorXd tangent = loops.to_scaled.cwiseProduct(direction);
-  Eigen::VectorXd s = Eigen::VectorXd::Zero(F);
-  const Evaluation start = evaluate(loops, s);
-  if (start.jacobian.rows() > 0 && (start.jacobian * tangent).norm() > kModeZero * std::max(1.0, start.jacobian.norm() * tangent.norm())) {
-    trace.refusal = TraceRefusal::not_a_motion;
-    return trace;
+// Records the point `s` of the path (rank of the closure Jacobian there, residual, arc length,
+// user coordinates) and returns the null space of the Jacobian, along which the tangent goes on.
+Eigen::MatrixXd record_point(const Loops& loops, const Eigen::VectorXd& s, double arc, double L,
+                             const NetworkTraceOptions& options, NetworkTrace& trace) {
+  const Evaluation here = evaluate(loops, s);
+  Eigen::Index rank = 0;
+  Eigen::MatrixXd null_space = Eigen::MatrixXd::Identity(loops.F, loops.F);
+  if (here.jacobian.rows() > 0) {
+    linalg::RankTolerance tolerance = options.tolerance;
+    tolerance.input_rounding = std::max(tolerance.input_rounding, here.residual);
+    const linalg::SvdAnalysis svd = linalg::analyse_svd(here.jacobian, tolerance, linalg::SvdVectors::right_only);
+    rank = svd.rank.rank;
+    null_space = svd.null_space();
   }
-  tangent.normalize();
+  trace.rank_along_path.push_back(rank);
+  trace.residual_along_path.push_back(here.residual);
+  trace.arc_length_along_path.push_back(arc * L);
+  trace.coordinates.push_back(s.cwiseProduct(loops.to_user));
+  trace.max_residual = std::max(trace.max_residual, here.residual);
+  return null_space;
+}
 
+// Predictor-corrector steps from s = 0 along the unit `tangent` (scaled coordinates) for
+// options.steps steps: closed unless the tangent leaves the null space or the corrector loses
+// closure (then the failed step).
+void follow_motion(const Loops& loops, Eigen::VectorXd tangent, double L, const NetworkTraceOptions& options, NetworkTrace& trace) {
   const double step_length = options.amplitude_fraction / options.steps;  // scaled arc length per step
+  Eigen::VectorXd s = Eigen::VectorXd::Zero(loops.F);
   double arc = 0.0;
   trace.closed = true;
   for (int step = 0;; ++step) {
-    const Evaluation here = evaluate(loops, s);
-    Eigen::Index rank = 0;
-    Eigen::MatrixXd null_space = Eigen::MatrixXd::Identity(F, F);
-    if (here.jacobian.rows() > 0) {
-      linalg::RankTolerance tolerance = options.tolerance;
-      tolerance.input_rounding = std::max(tolerance.input_rounding, here.residual);
-      const linalg::SvdAnalysis svd = linalg::analyse_svd(here.jacobian, tolerance, linalg::SvdVectors::right_only);
-      rank = svd.rank.rank;
-      null_space = svd.null_space();
-    }
-    trace.rank_along_path.push_back(rank);
-    trace.residual_along_path.push_back(here.residual);
-    trace.arc_length_along_path.push_back(arc * L);
-    trace.coordinates.push_back(s.cwiseProduct(loops.to_user));
-    trace.max_residual = std::max(trace.max_residual, here.residual);
+    const Eigen::MatrixXd null_space = record_point(loops, s, arc, L, options, trace);
     if (step == options.steps) break;
     // The tangent follows the motion: the previous one projected on the null space here.
     const Eigen::VectorXd projected = null_space * (null_space.transpose() * tangent);
@@ -276,6 +270,44 @@ NetworkTrace trace_network_motion(const Model& model, const NetworkResult& r, co
     arc += (s - before).norm();
   }
   trace.amplitude = arc * L;
+}
+
+}  // namespace
+
+NetworkTrace trace_network_motion(const Model& model, const NetworkResult& r, const Eigen::VectorXd& direction,
+                                  const NetworkTraceOptions& options) {
+  NetworkTrace trace;
+  trace.refusal = refusal_of(model, r, direction, options, trace);
+  if (trace.refusal != TraceRefusal::none) return trace;
+
+  Loops loops;
+  loops.F = static_cast<Eigen::Index>(r.motions.size());
+  loops.rows = model.space.components;
+  loops.walks = circuit_walks(model, r);
+  for (const auto& walk : loops.walks)
+    if (walk.empty()) {
+      trace.refusal = TraceRefusal::open_circuit;
+      return trace;
+    }
+  double L = 1.0;
+  const bool scaled = scale_unit_twists(model, r, loops, L);
+  trace.characteristic_length = L;
+  if (!scaled) {
+    trace.refusal = TraceRefusal::not_a_motion;
+    return trace;
+  }
+
+  // The direction must be a first-order motion in this frame (otherwise the walk misread B).
+  Eigen::VectorXd tangent = loops.to_scaled.cwiseProduct(direction);
+  const Evaluation start = evaluate(loops, Eigen::VectorXd::Zero(loops.F));
+  if (start.jacobian.rows() > 0 && (start.jacobian * tangent).norm() > kModeZero * std::max(1.0, start.jacobian.norm() * tangent.norm())) {
+    trace.refusal = TraceRefusal::not_a_motion;
+    return trace;
+  }
+  tangent.normalize();
+  follow_motion(loops, tangent, L, options, trace);
+
+  // Points where the rank of the closure falls below its largest along the path.
   const Eigen::Index top = *std::max_element(trace.rank_along_path.begin(), trace.rank_along_path.end());
   for (std::size_t k = 0; k < trace.rank_along_path.size(); ++k)
     if (trace.rank_along_path[k] < top) trace.rank_drops.push_back(k);

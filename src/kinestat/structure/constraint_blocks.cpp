@@ -235,153 +235,190 @@ std::vector<int> components_in_topological_order(const std::vector<std::vector<i
   return component;
 }
 
-}  // namespace
+// The bodies breadth-first from the frame (unreached ones last) with their distances, and the
+// pairs by their nearer end. A greedy start leaves few augmenting paths for Dinic: in a
+// mechanism built of groups, a pair's constraints belong to the body solved later, which is
+// usually the one farther from the frame, so pairs are visited outward from the frame and give
+// their constraints to the farther end first.
+struct OutwardOrder {
+  std::vector<int> distance;        ///< per body; -1 when the frame does not reach it
+  std::vector<int> bodies, pairs;   ///< body and pair indices, outward
+};
 
-ConstraintBlocks find_constraint_blocks(const StructureModel& model) {
+OutwardOrder outward_order(const StructureModel& model) {
+  const int bodies = model.body_count();
+  const int pairs = static_cast<int>(model.pairs.size());
+  OutwardOrder order;
+  order.distance.assign(bodies, -1);
+  std::vector<std::vector<int>> neighbours(bodies);
+  for (const Pair& p : model.pairs) {
+    neighbours[p.a].push_back(p.b);
+    neighbours[p.b].push_back(p.a);
+  }
+  std::deque<int> queue{0};
+  if (bodies > 0) order.distance[0] = 0;
+  while (!queue.empty()) {
+    const int u = queue.front();
+    queue.pop_front();
+    order.bodies.push_back(u);
+    for (int v : neighbours[u])
+      if (order.distance[v] < 0) {
+        order.distance[v] = order.distance[u] + 1;
+        queue.push_back(v);
+      }
+  }
+  for (int b = 0; b < bodies; ++b)
+    if (order.distance[b] < 0) order.bodies.push_back(b);
+  order.pairs.resize(pairs);
+  for (int k = 0; k < pairs; ++k) order.pairs[k] = k;
+  auto near_end = [&](int k) {
+    const Pair& p = model.pairs[k];
+    const int da = order.distance[p.a] < 0 ? bodies : order.distance[p.a], db = order.distance[p.b] < 0 ? bodies : order.distance[p.b];
+    return std::min(da, db);
+  };
+  std::stable_sort(order.pairs.begin(), order.pairs.end(), [&](int x, int y) { return near_end(x) < near_end(y); });
+  return order;
+}
+
+// The flow network of constraint placement. Nodes: source, sink, one per pair (demand: its
+// constraint units), one per moving body (capacity: its d freedoms). The frame has no freedoms,
+// so constraints against it must be absorbed by the other body.
+struct ConstraintFlow {
+  static constexpr int source = 0, sink = 1;
+  FlowNetwork net;
+  int nodes = 0;
+  std::vector<int> pair_node, body_node;  ///< node of each pair, of each body (-1: the frame)
+  std::vector<int> supply_edge, body_edge;  ///< source -> pair, body -> sink
+  std::vector<std::array<int, 2>> pair_edge;  ///< pair -> its ends a, b (-1 at the frame)
+};
+
+// Pairs and bodies are numbered, and edges added, in the outward order the searches follow, so
+// that they touch nearby memory (body numbers of large models are often in no useful order).
+ConstraintFlow constraint_flow(const StructureModel& model, const OutwardOrder& order) {
   const int bodies = model.body_count();
   const int pairs = static_cast<int>(model.pairs.size());
   const int d = model.dimension;
-  // A greedy start leaves few augmenting paths for Dinic. In a mechanism built of groups,
-  // a pair's constraints belong to the body solved later, which is usually the one farther
-  // from the frame: visit pairs outward from the frame and give their constraints to the
-  // farther end first.
-  std::vector<int> distance(bodies, -1), outward_bodies;  // breadth-first from the frame
-  {
-    std::vector<std::vector<int>> neighbours(bodies);
-    for (const Pair& p : model.pairs) {
-      neighbours[p.a].push_back(p.b);
-      neighbours[p.b].push_back(p.a);
-    }
-    std::deque<int> queue{0};
-    if (bodies > 0) distance[0] = 0;
-    while (!queue.empty()) {
-      const int u = queue.front();
-      queue.pop_front();
-      outward_bodies.push_back(u);
-      for (int v : neighbours[u])
-        if (distance[v] < 0) {
-          distance[v] = distance[u] + 1;
-          queue.push_back(v);
-        }
-    }
-    for (int b = 0; b < bodies; ++b)
-      if (distance[b] < 0) outward_bodies.push_back(b);
-  }
-  std::vector<int> outward(pairs);
-  for (int k = 0; k < pairs; ++k) outward[k] = k;
-  auto near_end = [&](int k) {
-    const Pair& p = model.pairs[k];
-    const int da = distance[p.a] < 0 ? bodies : distance[p.a], db = distance[p.b] < 0 ? bodies : distance[p.b];
-    return std::min(da, db);
-  };
-  std::stable_sort(outward.begin(), outward.end(), [&](int x, int y) { return near_end(x) < near_end(y); });
-
-  // Nodes: source, sink, one per pair (demand: its constraint units), one per moving body
-  // (capacity: its d freedoms). The frame has no freedoms, so constraints against it must
-  // be absorbed by the other body. Pairs and bodies are numbered, and edges added, in the
-  // outward order the searches below follow, so that they touch nearby memory (body numbers
-  // of large models are often in no useful order).
-  const int source = 0, sink = 1, first_pair = 2, first_body = 2 + pairs;
-  std::vector<int> pair_node(pairs), body_node(bodies, -1);
-  for (int i = 0; i < pairs; ++i) pair_node[outward[i]] = first_pair + i;
-  {
-    int next = first_body;
-    for (int b : outward_bodies)
-      if (b != 0) body_node[b] = next++;
-  }
-  FlowNetwork net(2 + pairs + std::max(0, bodies - 1));
-  std::vector<int> supply_edge(pairs), body_edge(bodies, -1);
-  std::vector<std::array<int, 2>> pair_edge(pairs, {-1, -1});
-  for (int k : outward) {
+  const int first_pair = 2, first_body = 2 + pairs;
+  ConstraintFlow flow{FlowNetwork(2 + pairs + std::max(0, bodies - 1)), 2 + pairs + std::max(0, bodies - 1), {}, {}, {}, {}, {}};
+  flow.pair_node.resize(pairs);
+  flow.body_node.assign(bodies, -1);
+  for (int i = 0; i < pairs; ++i) flow.pair_node[order.pairs[i]] = first_pair + i;
+  int next = first_body;
+  for (int b : order.bodies)
+    if (b != 0) flow.body_node[b] = next++;
+  flow.supply_edge.resize(pairs);
+  flow.body_edge.assign(bodies, -1);
+  flow.pair_edge.assign(pairs, {-1, -1});
+  for (int k : order.pairs) {
     const Pair& p = model.pairs[k];
     const int units = constraint_units(p, d);
-    supply_edge[k] = net.add_edge(source, pair_node[k], units);
-    if (p.a != 0) pair_edge[k][0] = net.add_edge(pair_node[k], body_node[p.a], units);
-    if (p.b != 0) pair_edge[k][1] = net.add_edge(pair_node[k], body_node[p.b], units);
+    flow.supply_edge[k] = flow.net.add_edge(ConstraintFlow::source, flow.pair_node[k], units);
+    if (p.a != 0) flow.pair_edge[k][0] = flow.net.add_edge(flow.pair_node[k], flow.body_node[p.a], units);
+    if (p.b != 0) flow.pair_edge[k][1] = flow.net.add_edge(flow.pair_node[k], flow.body_node[p.b], units);
   }
-  for (int b : outward_bodies)
-    if (b != 0) body_edge[b] = net.add_edge(body_node[b], sink, d);
-  net.finish();
-  for (int k : outward) {
+  for (int b : order.bodies)
+    if (b != 0) flow.body_edge[b] = flow.net.add_edge(flow.body_node[b], ConstraintFlow::sink, d);
+  flow.net.finish();
+  return flow;
+}
+
+// A maximum placement: the greedy start (each pair outward, the farther end first), local
+// repairs near each pair, repairs at any distance within the work budget, and Dinic only when
+// those leave a pair unplaced that an augmenting path might still place.
+void place_constraints(const StructureModel& model, const OutwardOrder& order, ConstraintFlow& flow) {
+  FlowNetwork& net = flow.net;
+  for (int k : order.pairs) {
     const Pair& p = model.pairs[k];
-    const bool b_farther = distance[p.b] >= distance[p.a];
+    const bool b_farther = order.distance[p.b] >= order.distance[p.a];
     for (int side : {b_farther ? 1 : 0, b_farther ? 0 : 1}) {
       const int body = side == 0 ? p.a : p.b;
-      if (pair_edge[k][side] < 0) continue;
-      const int amount = std::min(net.residual(supply_edge[k]), net.residual(body_edge[body]));
+      if (flow.pair_edge[k][side] < 0) continue;
+      const int amount = std::min(net.residual(flow.supply_edge[k]), net.residual(flow.body_edge[body]));
       if (amount <= 0) continue;
-      net.push(supply_edge[k], amount);
-      net.push(pair_edge[k][side], amount);
-      net.push(body_edge[body], amount);
+      net.push(flow.supply_edge[k], amount);
+      net.push(flow.pair_edge[k][side], amount);
+      net.push(flow.body_edge[body], amount);
     }
   }
-  const long network_size = 2 + pairs + bodies;
+  const long network_size = 2 + static_cast<long>(model.pairs.size()) + model.body_count();
   long repair_work = kLocalRepairWork * network_size;
-  for (int k : outward) net.augment_nearby(supply_edge[k], source, sink, kLocalRepairNodes, repair_work);
+  for (int k : order.pairs) net.augment_nearby(flow.supply_edge[k], ConstraintFlow::source, ConstraintFlow::sink, kLocalRepairNodes, repair_work);
   repair_work = kLocalRepairWork * network_size;
   bool maximal = true;
-  for (int k : outward)
-    if (!net.augment_nearby(supply_edge[k], source, sink, std::numeric_limits<int>::max(), repair_work)) maximal = false;
-  if (!maximal) net.max_flow(source, sink);
+  for (int k : order.pairs)
+    if (!net.augment_nearby(flow.supply_edge[k], ConstraintFlow::source, ConstraintFlow::sink, std::numeric_limits<int>::max(), repair_work))
+      maximal = false;
+  if (!maximal) net.max_flow(ConstraintFlow::source, ConstraintFlow::sink);
+}
 
-  ConstraintBlocks result;
-  result.block_of.assign(bodies, -1);
-  const int nodes = 2 + pairs + std::max(0, bodies - 1);
-
-  // Over-constrained: everything reachable in the residual network from a pair whose
-  // constraints could not all be placed.
-  std::vector<char> seen(nodes, 0);
+// Over-constrained bodies: everything reachable in the residual network from a pair whose
+// constraints could not all be placed (their units counted in `redundant_units`).
+std::vector<char> over_constrained_bodies(const StructureModel& model, ConstraintFlow& flow, int& redundant_units) {
+  const int bodies = model.body_count();
+  const int pairs = static_cast<int>(model.pairs.size());
+  std::vector<char> seen(flow.nodes, 0);
   std::deque<int> queue;
   for (int k = 0; k < pairs; ++k) {
-    const int excess = net.residual(supply_edge[k]);
+    const int excess = flow.net.residual(flow.supply_edge[k]);
     if (excess > 0) {
-      result.redundant_units += excess;
-      seen[pair_node[k]] = 1;
-      queue.push_back(pair_node[k]);
+      redundant_units += excess;
+      seen[flow.pair_node[k]] = 1;
+      queue.push_back(flow.pair_node[k]);
     }
   }
   while (!queue.empty()) {
     const int u = queue.front();
     queue.pop_front();
-    for (int e : net.edges(u)) {
-      const int v = net.target(e);
-      if (v == source || v == sink || seen[v] || net.residual(e) <= 0) continue;
+    for (int e : flow.net.edges(u)) {
+      const int v = flow.net.target(e);
+      if (v == ConstraintFlow::source || v == ConstraintFlow::sink || seen[v] || flow.net.residual(e) <= 0) continue;
       seen[v] = 1;
       queue.push_back(v);
     }
   }
-  std::vector<char> over(bodies, 0), under(bodies, 0);
-  for (int b = 1; b < bodies; ++b) over[b] = seen[body_node[b]];
+  std::vector<char> over(bodies, 0);
+  for (int b = 1; b < bodies; ++b) over[b] = seen[flow.body_node[b]];
+  return over;
+}
 
-  // Under-constrained: everything that reaches, in the residual network, a body with
-  // freedoms left over (its constraints could be moved to free one of them).
-  std::fill(seen.begin(), seen.end(), 0);
+// Under-constrained bodies: everything that reaches, in the residual network, a body with
+// freedoms left over (its constraints could be moved to free one of them; the spare units
+// counted in `missing_units`).
+std::vector<char> under_constrained_bodies(const StructureModel& model, ConstraintFlow& flow, int& missing_units) {
+  const int bodies = model.body_count();
+  std::vector<char> seen(flow.nodes, 0);
+  std::deque<int> queue;
   for (int b = 1; b < bodies; ++b) {
-    const int spare = net.residual(body_edge[b]);
+    const int spare = flow.net.residual(flow.body_edge[b]);
     if (spare > 0) {
-      result.missing_units += spare;
-      seen[body_node[b]] = 1;
-      queue.push_back(body_node[b]);
+      missing_units += spare;
+      seen[flow.body_node[b]] = 1;
+      queue.push_back(flow.body_node[b]);
     }
   }
   while (!queue.empty()) {
     const int v = queue.front();
     queue.pop_front();
-    for (int e : net.edges(v)) {
-      const int u = net.target(e);  // edge e ^ 1 runs u -> v
-      if (u == source || u == sink || seen[u] || net.residual(e ^ 1) <= 0) continue;
+    for (int e : flow.net.edges(v)) {
+      const int u = flow.net.target(e);  // edge e ^ 1 runs u -> v
+      if (u == ConstraintFlow::source || u == ConstraintFlow::sink || seen[u] || flow.net.residual(e ^ 1) <= 0) continue;
       seen[u] = 1;
       queue.push_back(u);
     }
   }
-  for (int b = 1; b < bodies; ++b) under[b] = seen[body_node[b]];
-  for (int b = 1; b < bodies; ++b) {
-    if (over[b]) result.over_constrained.push_back(b);
-    if (under[b]) result.under_constrained.push_back(b);
-  }
+  std::vector<char> under(bodies, 0);
+  for (int b = 1; b < bodies; ++b) under[b] = seen[flow.body_node[b]];
+  return under;
+}
 
-  // Dependencies among the well-constrained bodies: a constraint placed on body y that also
-  // involves body x needs x known first (x -> y). Mutual dependence makes one block.
+// Dependencies among the well-constrained bodies: a constraint placed on body y that also
+// involves body x needs x known first (x -> y). Mutual dependence makes one block; the blocks
+// in topological order with their predecessors and the over-constrained bodies they need.
+void order_blocks(const StructureModel& model, ConstraintFlow& flow, const std::vector<char>& over,
+                  const std::vector<char>& under, ConstraintBlocks& result) {
+  const int bodies = model.body_count();
+  const int pairs = static_cast<int>(model.pairs.size());
+  const int d = model.dimension;
   std::vector<int> local(bodies, -1), global;
   for (int b = 1; b < bodies; ++b)
     if (!over[b] && !under[b]) {
@@ -395,8 +432,8 @@ ConstraintBlocks find_constraint_blocks(const StructureModel& model) {
     const int ends[2] = {p.a, p.b};
     for (int side = 0; side < 2; ++side) {
       const int y = ends[side], x = ends[1 - side];
-      if (pair_edge[k][side] < 0 || local[y] < 0) continue;
-      const int placed = constraint_units(p, d) - net.residual(pair_edge[k][side]);
+      if (flow.pair_edge[k][side] < 0 || local[y] < 0) continue;
+      const int placed = constraint_units(p, d) - flow.net.residual(flow.pair_edge[k][side]);
       if (placed <= 0 || x == 0) continue;
       if (over[x]) over_needed[local[y]].push_back(x);
       else if (local[x] >= 0) graph[local[x]].push_back(local[y]);
@@ -427,6 +464,23 @@ ConstraintBlocks find_constraint_blocks(const StructureModel& model) {
     for (int q : pred)
       if (result.needs_over_constrained[q]) result.needs_over_constrained[c] = true;  // q < c: already final
   }
+}
+
+}  // namespace
+
+ConstraintBlocks find_constraint_blocks(const StructureModel& model) {
+  const OutwardOrder order = outward_order(model);
+  ConstraintFlow flow = constraint_flow(model, order);
+  place_constraints(model, order, flow);
+  ConstraintBlocks result;
+  result.block_of.assign(model.body_count(), -1);
+  const std::vector<char> over = over_constrained_bodies(model, flow, result.redundant_units);
+  const std::vector<char> under = under_constrained_bodies(model, flow, result.missing_units);
+  for (int b = 1; b < model.body_count(); ++b) {
+    if (over[b]) result.over_constrained.push_back(b);
+    if (under[b]) result.under_constrained.push_back(b);
+  }
+  order_blocks(model, flow, over, under, result);
   return result;
 }
 
