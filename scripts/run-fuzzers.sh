@@ -27,6 +27,7 @@ run_harness() {
     fuzz_adjacency_matrix) seeds=fuzz/seeds/adjacency ;;
     fuzz_sweep_spec) seeds="fuzz/seeds/sweep examples/sweeps" ;;
     fuzz_spacar_file) seeds="examples/spacar tests/importers/data" ;;
+    fuzz_bar_table) seeds=fuzz/seeds/bars ;;
     fuzz_urdf_file | fuzz_sdformat_file | fuzz_mjcf_file) seeds="examples/robots tests/importers/data" ;;
     fuzz_valid_models) seeds=fuzz/seeds/valid ;;  # the bytes are choices of a generator; the seeds are past findings
     *) seeds="examples examples/json fuzz/seeds/model" ;;

@@ -2,6 +2,7 @@
 // `kinestat analyze FILE`: nett freedom and constraint of a coupling network or a framework.
 
 #include "cli/commands.hpp"
+#include "cli/input_size_option.hpp"
 #include "cli/option_checks.hpp"
 #include "kinestat/io/framework_reader.hpp"
 #include "kinestat/io/yaml_support.hpp"
@@ -46,7 +47,7 @@ void register_analyze(CLI::App& app, Action& action) {
       }
       // The parsed tree is let go once the model is read: it is not needed by the analysis
       // (about 0.2 GB for 10^6 bars).
-      std::optional<io::YamlFile> model(io::YamlFile::load(options->model_path));
+      std::optional<io::YamlFile> model(io::YamlFile::load(options->model_path, model_reading_limits()));
       const io::ModelKind kind = model_kind_of(*model);
       const std::string path = model->path();
       // Older spellings read: on standard error and in the JSON report.

@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "cli/input_size_option.hpp"
 #include "kinestat/io/model_file.hpp"
 #include "kinestat/io/printable_text.hpp"
 #include "kinestat/io/yaml_support.hpp"
@@ -22,7 +23,9 @@ io::ImportOptions& import_options() {
 }
 
 io::ModelFile read_with_notices(const std::string& path) {
-  io::ModelFile file = io::read_model_file(path, import_options());
+  io::ImportOptions options = import_options();
+  options.max_input_bytes = model_reading_limits().max_bytes;  // --max-input-size
+  io::ModelFile file = io::read_model_file(path, options);
   print_notices(file.notices);
   return file;
 }
@@ -48,6 +51,7 @@ void add_import_options(CLI::App& command) {
           "(fixed, the default) or floats (floating, as a legged or mobile robot, and a model in Gazebo); a link joined to "
           "nothing else floats unless fixed is given (docs/formats.md)")
       ->check(CLI::IsMember({"fixed", "floating"}));
+  add_input_size_option(command);
 }
 
 io::ModelFile read_model(const std::string& path) { return read_with_notices(path); }

@@ -69,6 +69,9 @@ StructureInput read_input(const StructureOptions& options) {
   if (format == io::ModelFormat::spacar)
     throw io::InputError({path, 1, 1}, "a SPACAR file is a framework of nodes and elements; "
                                        "'kinestat structure' reads mechanisms (kind: structure or network)");
+  if (format == io::ModelFormat::bar_table)
+    throw io::InputError({path, 1, 1}, "a bar table is a framework of nodes and bars; "
+                                       "'kinestat structure' reads mechanisms (kind: structure or network)");
   if (format != io::ModelFormat::kinestat) {
     io::ModelFile file = read_model(path);
     structure::StructureModel model = io::structure_of_network(*file.network, path);

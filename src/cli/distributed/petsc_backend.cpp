@@ -51,7 +51,7 @@ void read_petsc_model(const CommonOptions& options, PetscModel& out) {
   std::vector<std::string> pair_options;
   for (const std::string& name : given_network_options())
     if (petsc_pair_option(name)) pair_options.push_back(name);
-  if (format == io::ModelFormat::spacar) {
+  if (format == io::ModelFormat::spacar || format == io::ModelFormat::bar_table) {  // frameworks
     out.framework = read_spacar_model(options.model_path);
     reject_options(pair_options, "a framework", options.model_path);
     return;

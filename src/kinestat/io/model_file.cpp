@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/io/model_file.hpp"
 
+#include "kinestat/io/bar_table_reader.hpp"
 #include "kinestat/io/framework_reader.hpp"
 #include "kinestat/io/mjcf_reader.hpp"
 #include "kinestat/io/network_reader.hpp"
 #include "kinestat/io/sdformat_reader.hpp"
 #include "kinestat/io/spacar_reader.hpp"
 #include "kinestat/io/structure_reader.hpp"
+#include "kinestat/io/text_file.hpp"
 #include "kinestat/io/urdf_reader.hpp"
 #include "kinestat/io/yaml_support.hpp"
 
@@ -45,10 +47,15 @@ std::string_view kind_name(ModelKind kind) {
 
 ModelFile read_model_file(const std::string& path, const ImportOptions& options) {
   const ModelFormat format = model_format(path);
-  if (format == ModelFormat::kinestat) return read_parsed(YamlFile::load(path));
+  if (format == ModelFormat::kinestat) return read_parsed(YamlFile::load(path, reading_limits_for(options.max_input_bytes)));
   ModelFile model;
   model.path = path;
   model.format = format;
+  if (format == ModelFormat::bar_table) {
+    model.kind = ModelKind::framework;
+    model.framework = parse_bar_table(path, read_text_file(path, options.max_input_bytes));
+    return model;
+  }
   if (format == ModelFormat::spacar) {
     SpacarImport imported = read_spacar(path);
     model.kind = ModelKind::framework;

@@ -19,6 +19,7 @@ ModelFormat model_format(const std::string& path) {
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (extension == "dat") return ModelFormat::spacar;
+  if (extension == "bars") return ModelFormat::bar_table;
   if (extension == "urdf") return ModelFormat::urdf;
   if (extension == "sdf" || extension == "world") return ModelFormat::sdformat;
   if (extension == "xml") {

@@ -8,10 +8,10 @@
 
 namespace kinestat::io {
 
-enum class ModelFormat { kinestat, spacar, urdf, sdformat, mjcf };
+enum class ModelFormat { kinestat, spacar, urdf, sdformat, mjcf, bar_table };
 
 /// The format of the model file at `path`, from its extension (case-insensitive): `.dat`
-/// SPACAR, `.urdf` URDF, `.sdf` / `.world` SDFormat, `.xml` by its root element (<mujoco>
+/// SPACAR, `.bars` a bar table (a framework, io/bar_table_reader.hpp), `.urdf` URDF, `.sdf` / `.world` SDFormat, `.xml` by its root element (<mujoco>
 /// MJCF, <robot> URDF, <sdf> SDFormat, which reads the file); anything else kinestat YAML /
 /// JSON. Throws InputError for an .xml file with another root or none.
 ModelFormat model_format(const std::string& path);

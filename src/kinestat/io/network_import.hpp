@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 
+#include <cstddef>
 #include <map>
 #include <optional>
 #include <string>
@@ -39,6 +40,9 @@ struct ImportOptions {
     floating,        ///< the base and every loose link or group float (a free coupling to the world)
   };
   Base base = Base::format_default;
+  /// Largest model file read, in bytes (the command's --max-input-size): kinestat YAML / JSON
+  /// files and bar tables; 64 MiB by default (io::ReadingLimits::max_bytes).
+  std::size_t max_input_bytes = std::size_t{64} << 20;
 };
 
 /// Deepest chain of includes read (a file that includes a file that includes ...).

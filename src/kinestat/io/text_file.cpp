@@ -13,12 +13,20 @@ namespace kinestat::io {
 
 static_assert(kMaxTextFileBytes == ReadingLimits{}.max_bytes, "one byte limit for every input");
 
-std::string read_text_file(const std::string& path) {
+std::string read_text_file(const std::string& path, std::size_t max_bytes) {
   // The YAML reader's folder message asks for a .yaml model; this one fits every format.
   std::error_code error;
   if (std::filesystem::is_directory(path, error))
     throw InputError({path, 0, 0}, "this is a folder, not a file: give the path of the model file");
-  return read_model_text(path);
+  return read_model_text(path, reading_limits_for(max_bytes));
+}
+
+ReadingLimits reading_limits_for(std::size_t max_bytes) {
+  ReadingLimits limits;
+  const std::size_t bytes_per_node = limits.max_bytes / limits.max_nodes;
+  limits.max_nodes = std::max(limits.max_nodes, max_bytes / bytes_per_node);
+  limits.max_bytes = max_bytes;
+  return limits;
 }
 
 std::string xml_root_name(const std::string& text) {

@@ -11,6 +11,8 @@
 #include <utility>
 #include <vector>
 
+#include "kinestat/io/yaml_support.hpp"
+
 namespace kinestat::io {
 
 /// Largest input file read: the limit on YAML model files (ReadingLimits::max_bytes, 64 MiB;
@@ -18,9 +20,14 @@ namespace kinestat::io {
 inline constexpr std::size_t kMaxTextFileBytes = std::size_t{64} << 20;
 
 /// The whole of the file at `path` (a regular file, a device, a FIFO...), read at most
-/// kMaxTextFileBytes + 1 bytes far. Throws InputError naming the file if it is a folder, cannot
+/// `max_bytes` + 1 bytes far. Throws InputError naming the file if it is a folder, cannot
 /// be read, or holds more than the limit (the message names the limit).
-std::string read_text_file(const std::string& path);
+std::string read_text_file(const std::string& path, std::size_t max_bytes = kMaxTextFileBytes);
+
+/// The limits on model files for a byte limit of `max_bytes` (ImportOptions::max_input_bytes, the
+/// command's --max-input-size): the parsed nodes of a YAML file in proportion (2^24 per 64 MiB,
+/// the defaults' ratio of 4 bytes a node), never fewer than the default.
+ReadingLimits reading_limits_for(std::size_t max_bytes);
 
 /// The name of the first element of XML `text` ("robot", "sdf", "mujoco"), skipping the XML
 /// declaration, comments and doctype; "" when the text does not start like XML.

@@ -515,7 +515,9 @@ std::string size_text(std::size_t bytes) {
 
 [[noreturn]] void too_large(const std::string& source, const ReadingLimits& limits) {
   throw InputError({source, 0, 0}, fmt::format("the input is larger than the {} limit on model files (stopped "
-                                               "reading there)",
+                                               "reading there): the command's --max-input-size SIZE raises it "
+                                               "(e.g. 1GiB); a large framework reads faster as a bar table "
+                                               "(.bars, docs/formats.md)",
                                                size_text(limits.max_bytes)));
 }
 
