@@ -57,6 +57,8 @@ void register_sweep(CLI::App& app, Action& action);
 /// written as a kinestat YAML model; exit 4 when already exactly constrained, 5 without a verified set.
 void register_fix(CLI::App& app, Action& action);
 void register_export(CLI::App& app, Action& action);
+/// `kinestat stiffness MODEL --at NODE` (stiffness_command.cpp): linear stiffness of a framework at a node.
+void register_stiffness(CLI::App& app, Action& action);
 
 /// Prints `notices` (a model file's: older spellings read, what an import ignored or assumed)
 /// to standard error, one line each; returns them (the JSON reports carry them too).

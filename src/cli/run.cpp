@@ -86,6 +86,7 @@ int run(int argc, const char* const* argv) {
   register_sweep(app, action);
   register_fix(app, action);
   register_export(app, action);
+  register_stiffness(app, action);
   for (CLI::App* command : app.get_subcommands({}))
     if (command->get_name() != "sweep") add_import_options(*command);
   if (const auto unknown = unknown_command_message(app, argc, argv)) {

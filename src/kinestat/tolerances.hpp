@@ -202,6 +202,10 @@ inline constexpr double kRigidConstraintRank = 0x1p26 * kEpsilon;
 /// (2^16 ε ≈ 1.5e-11: rounding of the condensation; a thin flexure's motion stiffness is
 /// 1e-4 to 1e-8 of its support stiffness, well above).
 inline constexpr double kZeroStiffness = 0x1p16 * kEpsilon;
+/// An off-diagonal entry of a condensed stiffness or compliance (length-scaled), or a component of
+/// a principal direction (unit length, scaled), at most this × the largest is rounding and set to
+/// 0, so that a coupling the geometry rules out reads 0 and not 1e-11 (2^12 ε ≈ 9.1e-13).
+inline constexpr double kStiffnessRoundingZero = 0x1p12 * kEpsilon;
 /// A held deformation takes part in a self-stress (and gets the misfit in turn) when its largest
 /// component over the unit self-stress basis exceeds this × the largest of all; an element carries
 /// the worst misfit case when its force (or moment) exceeds this × the largest force (moment)

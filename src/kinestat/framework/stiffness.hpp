@@ -45,8 +45,9 @@ struct FrameworkStiffness {
   /// K = Dᵀ K_ε D over the free coordinates: force/length (translations), force (mixed),
   /// force·length/rad (rotations).
   Eigen::SparseMatrix<double> stiffness;
-  /// An orthonormal basis N (free × n_q) of the free motions that keep every rigid
-  /// deformation zero, from a rank-revealing factorisation; the identity when nothing is rigid.
+  /// A basis N (free × n_q) of the free motions that keep every rigid deformation zero, from a
+  /// rank-revealing SVD of the length-scaled rigid rows (orthonormal in the length-scaled
+  /// coordinates, rotations × characteristic_length); the identity when nothing is rigid.
   /// The reduced stiffness is Nᵀ K N and the reduced mass Nᵀ M N.
   Eigen::MatrixXd admissible;
 };
@@ -82,9 +83,10 @@ struct NodeStiffness {
   Eigen::MatrixXd matrix;                ///< condensed stiffness, model units
   /// Its inverse; nullopt when the node has a zero-stiffness motion (a mechanism).
   std::optional<Eigen::MatrixXd> compliance;
-  /// Eigen-decomposition of the length-scaled matrix (rotations × the characteristic length,
-  /// so the decomposition does not depend on the unit), ascending.
+  /// Eigen-decomposition of the length-scaled matrix (rotations × length_scale, so the
+  /// decomposition does not depend on the unit), ascending in that scaled measure.
   std::vector<PrincipalStiffness> principal;
+  double length_scale = 1.0;  ///< characteristic_length(model), length units
   /// The node's independent coordinates (the intended motions), and every other coordinate of
   /// the node (the supported directions): 1 / C_ii each. Empty motion list: none declared here.
   std::vector<DirectionStiffness> motion, support;
@@ -97,5 +99,9 @@ struct NodeStiffness {
 /// one-line message when the model has no elastic data, the node has no free coordinate, or a
 /// free coordinate of the node is held rigidly (rigid elements only).
 NodeStiffness stiffness_at(const FrameworkModel& model, std::size_t node);
+/// The stiffness at `node` from `assembled` as given (its `stiffness` may carry more than
+/// Dᵀ K_ε D, e.g. a geometric stiffness added by the caller); same errors, except that it does
+/// not check for elastic data.
+NodeStiffness stiffness_at(const FrameworkModel& model, const FrameworkStiffness& assembled, std::size_t node);
 
 }  // namespace kinestat::framework

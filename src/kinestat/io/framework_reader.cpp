@@ -8,6 +8,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <map>
 #include <cstdint>
@@ -83,11 +84,16 @@ class FrameworkReader {
   FrameworkModel read() {
     const TreeNode& root = file_.root();
     file_.check_keys(root, "the framework model",
-                     {"kinestat", kSchemaKey, "kind", "name", "description", "dimension", "units", "nodes", "supports", "independent", "inputs", "elements"});
+                     {"kinestat", kSchemaKey, "kind", "name", "description", "dimension", "units", "nodes", "supports", "independent", "inputs",
+                      "elements", "materials", "sections", "defaults", "masses"});
     if (auto name = file_.optional(root, "name"); name.defined()) model_.name = file_.string(name, "'name'");
     model_.dimension = read_planar(file_, root, "framework", false) ? 2 : 3;
     model_.units = read_units(file_, root);
     read_nodes(file_.required(root, "nodes", "the framework model"));
+    // Elastic data (issue 38) before the elements, which name it.
+    if (auto materials = file_.optional(root, "materials"); materials.defined()) read_materials(materials);
+    if (auto sections = file_.optional(root, "sections"); sections.defined()) read_sections(sections);
+    if (auto defaults = file_.optional(root, "defaults"); defaults.defined()) read_defaults(defaults);
     const TreeNode elements = file_.required(root, "elements", "the framework model");
     file_.expect_sequence(elements, "'elements'");
     element_nodes_.clear();
@@ -103,6 +109,7 @@ class FrameworkReader {
       file_.fail(inputs, "'inputs' and 'independent' both declare the intended motions: give one of them");
     if (inputs.defined()) read_independent(inputs);
     else if (independent.defined()) read_independent(independent);
+    if (auto masses = file_.optional(root, "masses"); masses.defined()) read_masses(masses);
     return std::move(model_);
   }
 
@@ -252,8 +259,11 @@ class FrameworkReader {
   // raised: the success path of an element formats nothing.
   void read_element(const TreeNode& item, std::size_t count) {
     const auto label = [this] { return fmt::format("element {}", model_.elements.size() + 1); };
-    if (!file_.keys_allowed(item, {"type", "name", "nodes", "released", "independent", "orientation", "torsion_coupling"}))
-      file_.check_keys(item, label(), {"type", "name", "nodes", "released", "independent", "orientation", "torsion_coupling"});
+    if (!file_.keys_allowed(item, {"type", "name", "nodes", "released", "independent", "orientation", "torsion_coupling", "material",
+                                   "section"})) {
+      file_.check_keys(item, label(),
+                       {"type", "name", "nodes", "released", "independent", "orientation", "torsion_coupling", "material", "section"});
+    }
     Element element;
     element.name = std::to_string(model_.elements.size() + 1);
     const TreeNode given_name = file_.optional(item, "name");
@@ -301,6 +311,14 @@ class FrameworkReader {
       read_roles(independent, element, DeformationRole::independent, "'independent' deformations");
     if (auto released = file_.optional(item, "released"); released.defined())
       read_roles(released, element, DeformationRole::released, "'released' deformations");
+    if (auto material = file_.optional(item, "material"); material.defined()) {
+      if (element.type == ElementType::rigid_body) file_.fail(material, "a rigid body takes no material: it stays rigid");
+      element.material = named(material, model_.materials, "material");
+    }
+    if (auto section = file_.optional(item, "section"); section.defined()) {
+      if (element.type == ElementType::rigid_body) file_.fail(section, "a rigid body takes no section: it stays rigid");
+      element.section = named(section, model_.sections, "section");
+    }
     orientations_.push_back(file_.optional(item, "orientation"));
     element_nodes_.push_back(nodes);
     model_.elements.push_back(std::move(element));
@@ -399,6 +417,144 @@ class FrameworkReader {
       result.push_back(slot);
     }
     return result;
+  }
+
+  // A number of the elastic data: checked as every number is, and then the double nearest to
+  // its decimal (not rounded toward zero as coordinates are), so that the shortest text the
+  // writer gives reads back as the same double.
+  double elastic_number(const TreeNode& node, const std::string& what) const {
+    const double checked = file_.number(node, what).value;
+    if (!node.is_scalar()) return checked;
+    const std::string_view text = node.scalar();
+    double nearest = 0.0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), nearest);
+    return error == std::errc() && end == text.data() + text.size() && std::isfinite(nearest) ? nearest : checked;
+  }
+
+  // A positive (or, with `allow_zero`, non-negative) finite number.
+  double positive(const TreeNode& node, const std::string& what, bool allow_zero = false) const {
+    const double value = elastic_number(node, what);
+    if (!(value > 0.0 || (allow_zero && value == 0.0)))
+      file_.fail(node, fmt::format("{} must be {}, found {}", what, allow_zero ? "zero or positive" : "positive", value));
+    return value;
+  }
+
+  void read_materials(const TreeNode& materials) {
+    file_.expect_map(materials, "'materials'");
+    for (const auto& entry : materials.entries()) {
+      framework::Material material;
+      material.name = file_.string(entry.first, "a material name");
+      for (const auto& other : model_.materials)
+        if (other.name == material.name) file_.fail(entry.first, fmt::format("duplicate material name '{}'", material.name));
+      const std::string what = fmt::format("material '{}'", material.name);
+      file_.expect_map(entry.second, what);
+      file_.check_keys(entry.second, what, {"E", "G", "poisson", "density"});
+      material.youngs_modulus = positive(file_.required(entry.second, "E", what), what + ": E");
+      const TreeNode g = file_.optional(entry.second, "G"), poisson = file_.optional(entry.second, "poisson");
+      if (g.defined() && poisson.defined()) file_.fail(poisson, fmt::format("{} gives both G and poisson: give one of them", what));
+      if (g.defined()) material.shear_modulus = positive(g, what + ": G");
+      if (poisson.defined()) {
+        const double nu = elastic_number(poisson, what + ": poisson");
+        if (!(nu > -1.0 && nu < 0.5)) file_.fail(poisson, fmt::format("{}: poisson must be between -1 and 0.5, found {}", what, nu));
+        material.poisson = nu;
+      }
+      if (auto density = file_.optional(entry.second, "density"); density.defined())
+        material.density = positive(density, what + ": density", true);
+      model_.materials.push_back(std::move(material));
+    }
+  }
+
+  void read_sections(const TreeNode& sections) {
+    file_.expect_map(sections, "'sections'");
+    for (const auto& entry : sections.entries()) {
+      framework::Section section;
+      section.name = file_.string(entry.first, "a section name");
+      for (const auto& other : model_.sections)
+        if (other.name == section.name) file_.fail(entry.first, fmt::format("duplicate section name '{}'", section.name));
+      const std::string what = fmt::format("section '{}'", section.name);
+      const TreeNode& value = entry.second;
+      file_.expect_map(value, what);
+      file_.check_keys(value, what, {"area", "circle", "rectangle", "Iy", "Iz", "J"});
+      const TreeNode circle = file_.optional(value, "circle"), rectangle = file_.optional(value, "rectangle");
+      const TreeNode area = file_.optional(value, "area");
+      const bool explicit_set = area.defined() && value.size() == 4 && file_.optional(value, "Iy").defined() &&
+                                file_.optional(value, "Iz").defined() && file_.optional(value, "J").defined();
+      const bool single = value.size() == 1 && (circle.defined() || rectangle.defined() || area.defined());
+      if (!explicit_set && !single) {
+        file_.fail(value, fmt::format("{} must be one of {{area}}, {{circle: DIAMETER}}, {{rectangle: [WIDTH, THICKNESS]}} or "
+                                      "{{area, Iy, Iz, J}}", what));
+      }
+      if (circle.defined()) {
+        section.shape = framework::SectionShape::circle;
+        section.dimensions[0] = positive(circle, what + ": the circle's diameter");
+      } else if (rectangle.defined()) {
+        section.shape = framework::SectionShape::rectangle;
+        static_cast<void>(file_.numbers(rectangle, what + ": rectangle [WIDTH, THICKNESS]", {2}));
+        for (std::size_t i = 0; i < 2; ++i) {
+          section.dimensions[i] = elastic_number(rectangle[i], what + ": rectangle side");
+          if (!(section.dimensions[i] > 0.0)) file_.fail(rectangle[i], fmt::format("{}: the rectangle's sides must be positive", what));
+        }
+      } else if (value.size() == 4) {
+        section.shape = framework::SectionShape::explicit_values;
+        section.area = positive(area, what + ": area");
+        section.iy = positive(file_.optional(value, "Iy"), what + ": Iy", true);
+        section.iz = positive(file_.optional(value, "Iz"), what + ": Iz", true);
+        section.torsion = positive(file_.optional(value, "J"), what + ": J", true);
+      } else {
+        section.shape = framework::SectionShape::area_only;
+        section.area = positive(area, what + ": area");
+      }
+      model_.sections.push_back(framework::completed_section(std::move(section)));
+    }
+  }
+
+  // The index of the material or section named by `item` in `list`.
+  template <typename Named>
+  std::size_t named(const TreeNode& item, const std::vector<Named>& list, const char* kind) const {
+    const std::string name = file_.string(item, fmt::format("a {} name", kind));
+    for (std::size_t i = 0; i < list.size(); ++i)
+      if (list[i].name == name) return i;
+    std::vector<std::string> names;
+    for (const auto& entry : list) names.push_back(entry.name);
+    file_.fail(item, fmt::format("unknown {} '{}'{}", kind, name,
+                                 names.empty() ? fmt::format("; the model has no '{}s'", kind) : "; expected one of: " + join(names)));
+  }
+
+  void read_defaults(const TreeNode& defaults) {
+    file_.expect_map(defaults, "'defaults'");
+    file_.check_keys(defaults, "'defaults'", {"material", "section"});
+    if (auto m = file_.optional(defaults, "material"); m.defined()) model_.default_material = named(m, model_.materials, "material");
+    if (auto s = file_.optional(defaults, "section"); s.defined()) model_.default_section = named(s, model_.sections, "section");
+  }
+
+  void read_masses(const TreeNode& masses) {
+    file_.expect_map(masses, "'masses'");
+    std::set<std::size_t> seen;
+    for (const auto& entry : masses.entries()) {
+      framework::NodeMass mass;
+      mass.node = node_index(entry.first);
+      const Node& node = model_.nodes[mass.node];
+      if (!seen.insert(mass.node).second) file_.fail(entry.first, fmt::format("duplicate mass for node '{}'", node.name));
+      const std::string what = fmt::format("the mass of node '{}'", node.name);
+      if (!entry.second.is_map()) {
+        mass.mass = positive(entry.second, what, true);
+      } else {
+        file_.check_keys(entry.second, what, {"mass", "inertia"});
+        mass.mass = positive(file_.required(entry.second, "mass", what), what, true);
+        if (auto inertia = file_.optional(entry.second, "inertia"); inertia.defined()) {
+          if (!node.rotational)
+            file_.fail(inertia, fmt::format("node '{}' has no rotations (only nodes of beams, rigid bodies or with an orientation "
+                                            "do): it takes no inertia", node.name));
+          static_cast<void>(file_.numbers(inertia, fmt::format("the inertia of node '{}' [Ixx, Iyy, Izz]", node.name), {3}));
+          Eigen::Vector3d principal;
+          for (std::size_t i = 0; i < 3; ++i) {
+            principal(static_cast<Eigen::Index>(i)) = positive(inertia[i], fmt::format("the inertia of node '{}'", node.name), true);
+          }
+          mass.inertia = principal;
+        }
+      }
+      model_.masses.push_back(std::move(mass));
+    }
   }
 
   void read_supports(const TreeNode& supports) {

@@ -41,6 +41,42 @@ std::string type_word(ElementType type) {
   return "truss";
 }
 
+// `materials:`, `sections:` and `defaults:` as they were read (sections in their given shape).
+std::string elastic_data_yaml(const FrameworkModel& model) {
+  std::string out;
+  if (!model.materials.empty()) out += "materials:\n";
+  for (const framework::Material& m : model.materials) {
+    out += fmt::format("  {}: {{E: {}", quoted(m.name), number(m.youngs_modulus));
+    if (m.shear_modulus) out += ", G: " + number(*m.shear_modulus);
+    if (m.poisson) out += ", poisson: " + number(*m.poisson);
+    if (m.density) out += ", density: " + number(*m.density);
+    out += "}\n";
+  }
+  if (!model.sections.empty()) out += "sections:\n";
+  for (const framework::Section& section : model.sections) {
+    out += "  " + quoted(section.name) + ": ";
+    switch (section.shape) {
+      case framework::SectionShape::circle: out += fmt::format("{{circle: {}}}\n", number(section.dimensions[0])); break;
+      case framework::SectionShape::rectangle:
+        out += fmt::format("{{rectangle: [{}, {}]}}\n", number(section.dimensions[0]), number(section.dimensions[1]));
+        break;
+      case framework::SectionShape::area_only: out += fmt::format("{{area: {}}}\n", number(section.area)); break;
+      case framework::SectionShape::explicit_values:
+        out += fmt::format("{{area: {}, Iy: {}, Iz: {}, J: {}}}\n", number(section.area), number(section.iy), number(section.iz),
+                           number(section.torsion));
+        break;
+    }
+  }
+  if (model.default_material || model.default_section) {
+    out += "defaults: {";
+    if (model.default_material) out += "material: " + quoted(model.materials[*model.default_material].name);
+    if (model.default_material && model.default_section) out += ", ";
+    if (model.default_section) out += "section: " + quoted(model.sections[*model.default_section].name);
+    out += "}\n";
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string framework_yaml(const FrameworkModel& model, const std::vector<std::string>& comments) {
@@ -70,6 +106,7 @@ std::string framework_yaml(const FrameworkModel& model, const std::vector<std::s
     }
     if (!block.empty()) out += std::string(key) + ":\n" + block;
   }
+  out += elastic_data_yaml(model);
   out += "elements:\n";
   for (const Element& element : model.elements) {
     std::vector<std::string> nodes;
@@ -82,6 +119,8 @@ std::string framework_yaml(const FrameworkModel& model, const std::vector<std::s
       out += fmt::format(", orientation: [{}, {}, {}]", vector(f.col(0), 3), vector(f.col(1), 3), vector(f.col(2), 3));
     }
     if (element.torsion_coupling != 0.0) out += ", torsion_coupling: " + number(element.torsion_coupling);
+    if (element.material) out += ", material: " + quoted(model.materials[*element.material].name);
+    if (element.section) out += ", section: " + quoted(model.sections[*element.section].name);
     const auto names = framework::deformation_names(model, element);
     for (const auto& [role, key] : {std::pair{DeformationRole::released, "released"}, std::pair{DeformationRole::independent, "independent"}}) {
       std::vector<std::string> chosen;
@@ -90,6 +129,16 @@ std::string framework_yaml(const FrameworkModel& model, const std::vector<std::s
       if (!chosen.empty()) out += fmt::format(", {}: {}", key, list(chosen));
     }
     out += "}\n";
+  }
+  if (!model.masses.empty()) {
+    out += "masses:\n";
+    for (const framework::NodeMass& m : model.masses) {
+      if (m.inertia) {
+        out += fmt::format("  {}: {{mass: {}, inertia: {}}}\n", quoted(model.nodes[m.node].name), number(m.mass), vector(*m.inertia, 3));
+      } else {
+        out += fmt::format("  {}: {}\n", quoted(model.nodes[m.node].name), number(m.mass));
+      }
+    }
   }
   return out;
 }
