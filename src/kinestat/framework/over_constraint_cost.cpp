@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/framework/over_constraint_cost.hpp"
 
+#include <cmath>
+#include <stdexcept>
+
 #include "kinestat/framework/geometric_stiffness.hpp"
 
 namespace kinestat::framework {
@@ -32,6 +35,9 @@ std::optional<VibrationModes> framework_vibration(const FrameworkModel& model, c
 
 OverConstraintCost over_constraint_cost(const FrameworkModel& model, const FrameworkResult& analysis, std::size_t node,
                                         double misfit) {
+  if (!model.has_elastic_data())
+    throw std::invalid_argument("the model has no elastic data: give materials and sections (docs/stiffness.md)");
+  if (!(misfit >= 0.0) || !std::isfinite(misfit)) throw std::invalid_argument("the misfit must be a finite length, zero or more");
   OverConstraintCost cost;
   cost.node = node;
   cost.indexing = analysis.indexing;
