@@ -52,6 +52,7 @@
 #include "kinestat/report/svg_writer.hpp"
 #include "kinestat/structure/decomposition.hpp"
 #include "kinestat/structure/transformations.hpp"
+#include "analysed.hpp"
 #include "interruptible_call.hpp"
 
 namespace py = pybind11;
@@ -64,17 +65,8 @@ namespace {
 // placements of the inputs.
 constexpr std::uint64_t kTransformationLimit = 1000;
 
-/// A model file read, and its analysis once run (pipeline::analyse_model or decompose_model).
-/// Results keep their model alive.
-struct Analysed {
-  io::ModelFile file;
-  pipeline::ModelAnalysis analysis;
-
-  const design::Verdict& verdict() const { return analysis.verdict(); }
-  /// The scene of `kinestat draw` and `kinestat report`; with `traced_motion`, frameworks carry
-  /// their finite modes traced both ways, as the report does.
-  report::Scene scene(bool traced_motion = false) const { return pipeline::model_scene(file, analysis, traced_motion); }
-};
+using kinestat::python::Analysed;
+using kinestat::python::AnalysedClass;
 
 std::shared_ptr<Analysed> read(const std::string& path, const std::optional<std::string>& text) {
   auto analysed = std::make_shared<Analysed>();
@@ -305,13 +297,10 @@ std::pair<std::vector<std::string>, std::uint64_t> sweep_lines(const std::string
   });
 }
 
-}  // namespace
+// The bindings, one function per kind of result (PYBIND11_MODULE calls them in order).
 
-PYBIND11_MODULE(_core, m) {
-  m.doc() = "kinestat's C++ library; use the `kinestat` package";
-  m.attr("__version__") = KINESTAT_VERSION;  // the project's version (CMake)
-
-  // Bad input: a Python exception that carries the file, line and column of the problem.
+// Bad input: a Python exception that carries the file, line and column of the problem.
+void register_errors(py::module_& m) {
   static py::exception<io::InputError> input_error(m, "InputError", PyExc_ValueError);
   py::register_exception_translator([](std::exception_ptr pointer) {
     try {
@@ -336,151 +325,172 @@ PYBIND11_MODULE(_core, m) {
       PyErr_SetObject(input_error.ptr(), instance.ptr());
     }
   });
+}
 
-  py::class_<Analysed, std::shared_ptr<Analysed>>(m, "Analysed")
-      .def_property_readonly("kind", [](const Analysed& a) { return std::string(io::kind_name(a.file.kind)); })
-      .def_property_readonly("path", [](const Analysed& a) { return a.file.path; })
-      .def_property_readonly("notices", [](const Analysed& a) { return a.file.notices; })
-      // The verdict every report leads with: its sentence and whether the design is exactly constrained.
-      .def_property_readonly("verdict_summary", [](const Analysed& a) { return a.verdict().summary; })
-      .def_property_readonly("exactly_constrained", [](const Analysed& a) { return a.verdict().exactly_constrained; })
-      .def("json", without_gil(&json_report), "The JSON report of `kinestat analyze --json` (or `structure --json`)")
-      .def("html", without_gil(&html_report), "The self-contained HTML report; empty when the viewer is not built in")
-      .def("svg", without_gil(&svg), py::arg("what"), py::arg("mode") = 1, py::arg("stress") = 1)
-      // Coupling networks (seed 000).
-      .def("network_counts", [](const Analysed& a) {
-        py::dict counts;
-        if (a.analysis.sparse_network) {
-          // Davies' m and a are the ranks of [M^N] and [A^N]: F − FN and C − CN (seed 000, eq. 6).
-          const auto& r = a.analysis.sparse_network->result;
-          counts["d"] = r.d, counts["n"] = r.bodies, counts["e"] = r.e, counts["l"] = r.l, counts["k"] = r.bodies - 1;
-          counts["F"] = r.F, counts["C"] = r.C, counts["m"] = r.F - r.FN, counts["a"] = r.C - r.CN;
-          counts["FN"] = r.FN, counts["CN"] = r.CN, counts["exact"] = false, counts["method"] = "sparse";
-          return counts;
-        }
-        const auto& r = network_of(a);
-        counts["method"] = "dense";
-        counts["d"] = r.d, counts["n"] = r.bodies, counts["e"] = r.e, counts["l"] = r.l, counts["k"] = r.k;
-        counts["F"] = r.F, counts["C"] = r.C, counts["m"] = r.m, counts["a"] = r.a, counts["FN"] = r.FN, counts["CN"] = r.CN;
-        counts["exact"] = r.exact;
-        return counts;
-      })
-      .def("circuit_matrix", [](const Analysed& a) { return Eigen::MatrixXi(network_of(a).B); })
-      .def("cutset_matrix", [](const Analysed& a) { return Eigen::MatrixXi(network_of(a).Q); })
-      .def("unit_motion_matrix", [](const Analysed& a) { return network_of(a).MN.to_double(); })
-      .def("unit_action_matrix", [](const Analysed& a) { return network_of(a).AN.to_double(); })
-      .def("motion_basis", [](const Analysed& a) { return network_of(a).motion_magnitudes.values; })
-      .def("action_basis", [](const Analysed& a) { return network_of(a).action_magnitudes.values; })
-      .def("motion_names", [](const Analysed& a) { return all_names(network_of(a).motions); })
-      .def("action_names", [](const Analysed& a) { return all_names(network_of(a).actions); })
-      .def("primary_motions", [](const Analysed& a) { return magnitude_names(network_of(a).motions, network_of(a).primary_motion); })
-      .def("primary_actions", [](const Analysed& a) { return magnitude_names(network_of(a).actions, network_of(a).primary_action); })
-      // The sparse path decides one rank, of K, from which both FN and CN follow.
-      .def("motion_rank", [](const Analysed& a) {
-        return a.analysis.sparse_network ? rank_evidence(a.analysis.sparse_network->result.rank) : rank_evidence(network_of(a).circulation.solution.rank);
-      })
-      .def("action_rank", [](const Analysed& a) {
-        return a.analysis.sparse_network ? rank_evidence(a.analysis.sparse_network->result.rank) : rank_evidence(network_of(a).cutset_law.solution.rank);
-      })
-      // Frameworks (seed 002).
-      .def("framework_counts", [](const Analysed& a) {
-        const auto& r = framework_of(a);
-        py::dict counts;
-        counts["rows"] = r.m, counts["columns"] = r.n, counts["rank"] = r.rank;
-        counts["mechanisms"] = r.mechanisms, counts["self_stresses"] = r.self_stresses;
-        counts["length"] = r.length, counts["vectors"] = r.vectors;
-        counts["dimension"] = a.file.framework->dimension;  // 2 planar, 3 spatial
-        return counts;
-      })
-      .def("singular_values", [](const Analysed& a) { return framework_of(a).singular_values; })
-      .def("rank_evidence", [](const Analysed& a) { return rank_evidence(framework_of(a).decision); })
-      .def("modes", [](const Analysed& a) {
-        const auto& r = framework_of(a);
-        return columns(r.modes, r.n, [](const framework::KinematicMode& mode) { return mode.velocities; });
-      })
-      .def("stress_states", [](const Analysed& a) {
-        const auto& r = framework_of(a);
-        return columns(r.stresses, r.m, [](const framework::StressState& state) { return state.resultants; });
-      })
-      .def("jacobian", [](const Analysed& a) {
-        // D(c) as the analysis decided its rank on it: non-dimensional (lengths / the
-        // characteristic length), before the row and column scaling.
-        const auto& r = framework_of(a);
-        const framework::FrameworkModel& model = *a.file.framework;
-        const Eigen::SparseMatrix<double> d = framework::dependent_jacobian(
-            model, r.indexing, r.partition, framework::deformation_derivative(model, r.indexing), r.length);
-        return Eigen::MatrixXd(d);
-      })
-      .def("jacobian_sparse", [](const Analysed& a) {
-        // The same D(c), as scipy.sparse (pybind11 imports scipy.sparse for it).
-        const auto& r = framework_of(a);
-        const framework::FrameworkModel& model = *a.file.framework;
-        return Eigen::SparseMatrix<double>(framework::dependent_jacobian(
-            model, r.indexing, r.partition, framework::deformation_derivative(model, r.indexing), r.length));
-      })
-      .def("node_positions", [](const Analysed& a) {
-        // Every node's position (length units; planar models have z = 0), in the file's order.
-        const framework::FrameworkModel& model = *a.file.framework;
-        Eigen::MatrixXd positions(static_cast<Eigen::Index>(model.nodes.size()), 3);
-        for (std::size_t i = 0; i < model.nodes.size(); ++i) positions.row(static_cast<Eigen::Index>(i)) = model.nodes[i].position.transpose();
-        return positions;
-      })
-      .def("coordinate_slots", [](const Analysed& a, const std::string& which) {
-        // (node index, slot) per coordinate: slot 0-2 translations x, y, z, 3-5 rotations about
-        // x, y, z. "dependent": the columns of D(c), in order; "held": fixed then independent.
-        const auto& r = framework_of(a);
-        std::vector<Eigen::Index> chosen = r.partition.dependent_coordinates;
-        if (which == "held") {
-          chosen = r.partition.fixed_coordinates;
-          chosen.insert(chosen.end(), r.partition.independent_coordinates.begin(), r.partition.independent_coordinates.end());
-        } else if (which != "dependent") {
-          throw py::value_error("which is 'dependent' or 'held'");
-        }
-        Eigen::Matrix<long long, Eigen::Dynamic, 2> slots(static_cast<Eigen::Index>(chosen.size()), 2);
-        for (std::size_t i = 0; i < chosen.size(); ++i) {
-          const framework::CoordinateRef& c = r.indexing.coordinates[static_cast<std::size_t>(chosen[i])];
-          slots(static_cast<Eigen::Index>(i), 0) = static_cast<long long>(c.node);
-          slots(static_cast<Eigen::Index>(i), 1) = c.slot;
-        }
-        return slots;
-      }, py::arg("which"))
-      .def("row_labels", [](const Analysed& a) {
-        std::vector<std::string> labels;
-        for (Eigen::Index i = 0; i < framework_of(a).m; ++i)
-          labels.push_back(report::framework_row_label(*a.file.framework, framework_of(a), i));
-        return labels;
-      })
-      .def("column_labels", [](const Analysed& a) {
-        std::vector<std::string> labels;
-        for (Eigen::Index j = 0; j < framework_of(a).n; ++j)
-          labels.push_back(report::framework_column_label(*a.file.framework, framework_of(a), j));
-        return labels;
-      })
-      // Structural groups (seed 004).
-      .def("groups", [](const Analysed& a) {
-        if (!a.analysis.structure) throw py::value_error("no structural decomposition");
-        py::list groups;
-        for (const auto& g : a.analysis.structure->decomposition.groups) {
-          py::dict group;
-          std::vector<std::string> names;
-          for (int body : g.bodies) names.push_back(structure::body_label(a.analysis.structure->model, body));
-          group["number"] = g.number, group["bodies"] = names, group["Nm"] = g.Nm, group["nc"] = g.nc;
-          group["P"] = g.P, group["Sc"] = g.Sc, group["stage"] = g.stage, group["after"] = g.after;
-          groups.append(group);
-        }
-        return groups;
-      })
-      .def("complete", [](const Analysed& a) { return a.analysis.structure && a.analysis.structure->decomposition.complete(); })
-      // Finite motion (issue 13): `kinestat move --json`.
-      .def("trace",
-           [](const std::shared_ptr<Analysed>& analysed, long long mode, double amplitude, long long steps) {
-             return call_interruptibly<std::string>([analysed, mode, amplitude, steps](const StopRequest& stop) {
-               return trace_json(*analysed, mode, amplitude, steps, stop);
-             });
-           },
-           py::arg("mode"), py::arg("amplitude"), py::arg("steps"))
-      .def("positions", without_gil(&positions_json), py::arg("inputs"), py::arg("sweep") = std::nullopt);
+// What every result has: its kind, file, notices, verdict and reports (JSON, HTML, SVG).
+void bind_reports(AnalysedClass& cls) {
+  cls.def_property_readonly("kind", [](const Analysed& a) { return std::string(io::kind_name(a.file.kind)); })
+    .def_property_readonly("path", [](const Analysed& a) { return a.file.path; })
+    .def_property_readonly("notices", [](const Analysed& a) { return a.file.notices; })
+    // The verdict every report leads with: its sentence and whether the design is exactly constrained.
+    .def_property_readonly("verdict_summary", [](const Analysed& a) { return a.verdict().summary; })
+    .def_property_readonly("exactly_constrained", [](const Analysed& a) { return a.verdict().exactly_constrained; })
+    .def("json", without_gil(&json_report), "The JSON report of `kinestat analyze --json` (or `structure --json`)")
+    .def("html", without_gil(&html_report), "The self-contained HTML report; empty when the viewer is not built in")
+    .def("svg", without_gil(&svg), py::arg("what"), py::arg("mode") = 1, py::arg("stress") = 1);
+}
 
+// Coupling networks (seed 000): counts, matrices, bases and rank evidence.
+void bind_network(AnalysedClass& cls) {
+  cls.def("network_counts", [](const Analysed& a) {
+      py::dict counts;
+      if (a.analysis.sparse_network) {
+        // Davies' m and a are the ranks of [M^N] and [A^N]: F − FN and C − CN (seed 000, eq. 6).
+        const auto& r = a.analysis.sparse_network->result;
+        counts["d"] = r.d, counts["n"] = r.bodies, counts["e"] = r.e, counts["l"] = r.l, counts["k"] = r.bodies - 1;
+        counts["F"] = r.F, counts["C"] = r.C, counts["m"] = r.F - r.FN, counts["a"] = r.C - r.CN;
+        counts["FN"] = r.FN, counts["CN"] = r.CN, counts["exact"] = false, counts["method"] = "sparse";
+        return counts;
+      }
+      const auto& r = network_of(a);
+      counts["method"] = "dense";
+      counts["d"] = r.d, counts["n"] = r.bodies, counts["e"] = r.e, counts["l"] = r.l, counts["k"] = r.k;
+      counts["F"] = r.F, counts["C"] = r.C, counts["m"] = r.m, counts["a"] = r.a, counts["FN"] = r.FN, counts["CN"] = r.CN;
+      counts["exact"] = r.exact;
+      return counts;
+    })
+    .def("circuit_matrix", [](const Analysed& a) { return Eigen::MatrixXi(network_of(a).B); })
+    .def("cutset_matrix", [](const Analysed& a) { return Eigen::MatrixXi(network_of(a).Q); })
+    .def("unit_motion_matrix", [](const Analysed& a) { return network_of(a).MN.to_double(); })
+    .def("unit_action_matrix", [](const Analysed& a) { return network_of(a).AN.to_double(); })
+    .def("motion_basis", [](const Analysed& a) { return network_of(a).motion_magnitudes.values; })
+    .def("action_basis", [](const Analysed& a) { return network_of(a).action_magnitudes.values; })
+    .def("motion_names", [](const Analysed& a) { return all_names(network_of(a).motions); })
+    .def("action_names", [](const Analysed& a) { return all_names(network_of(a).actions); })
+    .def("primary_motions", [](const Analysed& a) { return magnitude_names(network_of(a).motions, network_of(a).primary_motion); })
+    .def("primary_actions", [](const Analysed& a) { return magnitude_names(network_of(a).actions, network_of(a).primary_action); })
+    // The sparse path decides one rank, of K, from which both FN and CN follow.
+    .def("motion_rank", [](const Analysed& a) {
+      return a.analysis.sparse_network ? rank_evidence(a.analysis.sparse_network->result.rank) : rank_evidence(network_of(a).circulation.solution.rank);
+    })
+    .def("action_rank", [](const Analysed& a) {
+      return a.analysis.sparse_network ? rank_evidence(a.analysis.sparse_network->result.rank) : rank_evidence(network_of(a).cutset_law.solution.rank);
+    });
+}
+
+// Frameworks (seed 002): counts, singular values, rank evidence, modes and stress states.
+void bind_framework_counts(AnalysedClass& cls) {
+  cls.def("framework_counts", [](const Analysed& a) {
+      const auto& r = framework_of(a);
+      py::dict counts;
+      counts["rows"] = r.m, counts["columns"] = r.n, counts["rank"] = r.rank;
+      counts["mechanisms"] = r.mechanisms, counts["self_stresses"] = r.self_stresses;
+      counts["length"] = r.length, counts["vectors"] = r.vectors;
+      counts["dimension"] = a.file.framework->dimension;  // 2 planar, 3 spatial
+      return counts;
+    })
+    .def("singular_values", [](const Analysed& a) { return framework_of(a).singular_values; })
+    .def("rank_evidence", [](const Analysed& a) { return rank_evidence(framework_of(a).decision); })
+    .def("modes", [](const Analysed& a) {
+      const auto& r = framework_of(a);
+      return columns(r.modes, r.n, [](const framework::KinematicMode& mode) { return mode.velocities; });
+    })
+    .def("stress_states", [](const Analysed& a) {
+      const auto& r = framework_of(a);
+      return columns(r.stresses, r.m, [](const framework::StressState& state) { return state.resultants; });
+    });
+}
+
+// Frameworks: D(c), the nodes, and the labels of its rows and columns.
+void bind_framework_geometry(AnalysedClass& cls) {
+  cls.def("jacobian", [](const Analysed& a) {
+      // D(c) as the analysis decided its rank on it: non-dimensional (lengths / the
+      // characteristic length), before the row and column scaling.
+      const auto& r = framework_of(a);
+      const framework::FrameworkModel& model = *a.file.framework;
+      const Eigen::SparseMatrix<double> d = framework::dependent_jacobian(
+          model, r.indexing, r.partition, framework::deformation_derivative(model, r.indexing), r.length);
+      return Eigen::MatrixXd(d);
+    })
+    .def("jacobian_sparse", [](const Analysed& a) {
+      // The same D(c), as scipy.sparse (pybind11 imports scipy.sparse for it).
+      const auto& r = framework_of(a);
+      const framework::FrameworkModel& model = *a.file.framework;
+      return Eigen::SparseMatrix<double>(framework::dependent_jacobian(
+          model, r.indexing, r.partition, framework::deformation_derivative(model, r.indexing), r.length));
+    })
+    .def("node_positions", [](const Analysed& a) {
+      // Every node's position (length units; planar models have z = 0), in the file's order.
+      const framework::FrameworkModel& model = *a.file.framework;
+      Eigen::MatrixXd positions(static_cast<Eigen::Index>(model.nodes.size()), 3);
+      for (std::size_t i = 0; i < model.nodes.size(); ++i) positions.row(static_cast<Eigen::Index>(i)) = model.nodes[i].position.transpose();
+      return positions;
+    })
+    .def("coordinate_slots", [](const Analysed& a, const std::string& which) {
+      // (node index, slot) per coordinate: slot 0-2 translations x, y, z, 3-5 rotations about
+      // x, y, z. "dependent": the columns of D(c), in order; "held": fixed then independent.
+      const auto& r = framework_of(a);
+      std::vector<Eigen::Index> chosen = r.partition.dependent_coordinates;
+      if (which == "held") {
+        chosen = r.partition.fixed_coordinates;
+        chosen.insert(chosen.end(), r.partition.independent_coordinates.begin(), r.partition.independent_coordinates.end());
+      } else if (which != "dependent") {
+        throw py::value_error("which is 'dependent' or 'held'");
+      }
+      Eigen::Matrix<long long, Eigen::Dynamic, 2> slots(static_cast<Eigen::Index>(chosen.size()), 2);
+      for (std::size_t i = 0; i < chosen.size(); ++i) {
+        const framework::CoordinateRef& c = r.indexing.coordinates[static_cast<std::size_t>(chosen[i])];
+        slots(static_cast<Eigen::Index>(i), 0) = static_cast<long long>(c.node);
+        slots(static_cast<Eigen::Index>(i), 1) = c.slot;
+      }
+      return slots;
+    }, py::arg("which"))
+    .def("row_labels", [](const Analysed& a) {
+      std::vector<std::string> labels;
+      for (Eigen::Index i = 0; i < framework_of(a).m; ++i)
+        labels.push_back(report::framework_row_label(*a.file.framework, framework_of(a), i));
+      return labels;
+    })
+    .def("column_labels", [](const Analysed& a) {
+      std::vector<std::string> labels;
+      for (Eigen::Index j = 0; j < framework_of(a).n; ++j)
+        labels.push_back(report::framework_column_label(*a.file.framework, framework_of(a), j));
+      return labels;
+    });
+}
+
+// Structural groups (seed 004).
+void bind_structure(AnalysedClass& cls) {
+  cls.def("groups", [](const Analysed& a) {
+      if (!a.analysis.structure) throw py::value_error("no structural decomposition");
+      py::list groups;
+      for (const auto& g : a.analysis.structure->decomposition.groups) {
+        py::dict group;
+        std::vector<std::string> names;
+        for (int body : g.bodies) names.push_back(structure::body_label(a.analysis.structure->model, body));
+        group["number"] = g.number, group["bodies"] = names, group["Nm"] = g.Nm, group["nc"] = g.nc;
+        group["P"] = g.P, group["Sc"] = g.Sc, group["stage"] = g.stage, group["after"] = g.after;
+        groups.append(group);
+      }
+      return groups;
+    })
+    .def("complete", [](const Analysed& a) { return a.analysis.structure && a.analysis.structure->decomposition.complete(); });
+}
+
+// Finite motion (issue 13): `kinestat move --json`.
+void bind_motion(AnalysedClass& cls) {
+  cls.def("trace",
+         [](const std::shared_ptr<Analysed>& analysed, long long mode, double amplitude, long long steps) {
+           return call_interruptibly<std::string>([analysed, mode, amplitude, steps](const StopRequest& stop) {
+             return trace_json(*analysed, mode, amplitude, steps, stop);
+           });
+         },
+         py::arg("mode"), py::arg("amplitude"), py::arg("steps"))
+    .def("positions", without_gil(&positions_json), py::arg("inputs"), py::arg("sweep") = std::nullopt);
+}
+
+// The module's functions: read, analyse, decompose, sweep, and what this build reads and writes.
+void bind_functions(py::module_& m) {
   m.def("analyse", &analyse, py::arg("path"), py::arg("text") = std::nullopt, py::arg("tolerance") = std::nullopt,
         py::arg("arithmetic") = "auto", py::arg("primary") = std::vector<std::string>{}, py::arg("method") = "auto",
         "Reads a model file (or `text` named `path`) and runs the analysis of its kind");
@@ -491,5 +501,22 @@ PYBIND11_MODULE(_core, m) {
         py::arg("full") = false, "The JSON lines of a design sweep (one shard of it) and how many variants failed");
   m.def("html_built_in", &report::html_report_built_in);
   m.def("formats", &io::readable_format_names, "The model file formats this kinestat reads");
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "kinestat's C++ library; use the `kinestat` package";
+  m.attr("__version__") = KINESTAT_VERSION;  // the project's version (CMake)
+  register_errors(m);
+  AnalysedClass analysed(m, "Analysed");
+  bind_reports(analysed);
+  bind_network(analysed);
+  bind_framework_counts(analysed);
+  bind_framework_geometry(analysed);
+  bind_structure(analysed);
+  bind_motion(analysed);
+  // Bindings of a further kind of result go here, each defined in its own file (analysed.hpp).
+  bind_functions(m);
   kinestat::python::stop_work_at_exit();
 }
