@@ -136,9 +136,12 @@ class _Result:
         own files."""
         return list(self._analysed.notices)
 
-    def to_dict(self):
+    def to_dict(self, full_vectors=False):
         """The command's JSON report (``kinestat analyze --json``, ``kinestat structure --json``)
-        as Python data, key for key."""
+        as Python data, key for key. A framework's modes and stress states list their non-zero
+        entries; ``full_vectors=True`` lists every entry (``--full-vectors``, docs/report.md)."""
+        if full_vectors:
+            return _json.loads(self._analysed.json(True))
         if self._dict is None:
             self._dict = _json.loads(self._analysed.json())
         return _json.loads(_json.dumps(self._dict))  # a copy the caller may change
@@ -161,9 +164,10 @@ class _Result:
         no redundant constraint (the JSON report's ``verdict.exactly_constrained``)."""
         return self._analysed.exactly_constrained
 
-    def to_json(self):
-        """The JSON report text, byte for byte as the command writes it."""
-        return self._analysed.json()
+    def to_json(self, full_vectors=False):
+        """The JSON report text, byte for byte as the command writes it (``full_vectors=True``:
+        as ``--full-vectors`` writes it)."""
+        return self._analysed.json(full_vectors)
 
     def html(self):
         """The self-contained interactive HTML report (``kinestat report``). Raises RuntimeError

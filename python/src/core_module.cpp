@@ -146,10 +146,12 @@ auto without_gil(Result (*function)(const Analysed&, Arguments...)) {
   };
 }
 
-std::string json_report(const Analysed& a) {
+/// `full_vectors`: every entry of a framework's modes and stress states (`--full-vectors`).
+std::string json_report(const Analysed& a, bool full_vectors) {
   const pipeline::ModelAnalysis& r = a.analysis;
   if (!r.network && !r.sparse_network && !r.framework && !r.structure) throw py::value_error("the model has not been analysed");
-  return pipeline::report_json_text(a.file, r);  // as `kinestat analyze --json` (or `structure --json`)
+  // As `kinestat analyze --json` (or `structure --json`).
+  return pipeline::report_json_text(a.file, r, full_vectors ? report::VectorListing::full : report::VectorListing::non_zero);
 }
 
 /// The self-contained HTML report, as `kinestat report` writes it; empty without the viewer.
@@ -335,7 +337,8 @@ void bind_reports(AnalysedClass& cls) {
     // The verdict every report leads with: its sentence and whether the design is exactly constrained.
     .def_property_readonly("verdict_summary", [](const Analysed& a) { return a.verdict().summary; })
     .def_property_readonly("exactly_constrained", [](const Analysed& a) { return a.verdict().exactly_constrained; })
-    .def("json", without_gil(&json_report), "The JSON report of `kinestat analyze --json` (or `structure --json`)")
+    .def("json", without_gil(&json_report), "The JSON report of `kinestat analyze --json` (or `structure --json`); "
+         "full_vectors: every entry of a framework's modes and stress states (`--full-vectors`)", py::arg("full_vectors") = false)
     .def("html", without_gil(&html_report), "The self-contained HTML report; empty when the viewer is not built in")
     .def("svg", without_gil(&svg), py::arg("what"), py::arg("mode") = 1, py::arg("stress") = 1);
 }
