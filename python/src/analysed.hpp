@@ -32,4 +32,8 @@ struct Analysed {
 /// The Python class of Analysed (shared: a result keeps its model alive past the call).
 using AnalysedClass = pybind11::class_<Analysed, std::shared_ptr<Analysed>>;
 
+/// Stiffness matrix, eigenpairs and the misfit cost of a framework with elastic data
+/// (stiffness_bindings.cpp).
+void bind_stiffness(AnalysedClass& cls);
+
 }  // namespace kinestat::python

@@ -520,6 +520,7 @@ PYBIND11_MODULE(_core, m) {
   bind_structure(analysed);
   bind_motion(analysed);
   // Bindings of a further kind of result go here, each defined in its own file (analysed.hpp).
+  bind_stiffness(analysed);
   bind_functions(m);
   kinestat::python::stop_work_at_exit();
 }
