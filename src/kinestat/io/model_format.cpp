@@ -35,7 +35,7 @@ ModelFormat model_format(const std::string& path) {
 }
 
 std::vector<std::string> readable_format_names() {
-  std::vector<std::string> names{"kinestat", "SPACAR"};
+  std::vector<std::string> names{"kinestat", "SPACAR", "bar table"};
   if (urdf_reader_built_in()) names.emplace_back("URDF");
   if (sdformat_reader_built_in()) names.emplace_back("SDFormat");
   if (mjcf_reader_built_in()) names.emplace_back("MJCF");

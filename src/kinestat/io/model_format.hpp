@@ -16,9 +16,9 @@ enum class ModelFormat { kinestat, spacar, urdf, sdformat, mjcf, bar_table };
 /// JSON. Throws InputError for an .xml file with another root or none.
 ModelFormat model_format(const std::string& path);
 
-/// The names of the formats this build reads, as users know them: "kinestat" and "SPACAR"
-/// always, then "URDF", "SDFormat" and "MJCF" where their libraries were found at build time
-/// (tinyxml2, libsdformat, libmujoco).
+/// The names of the formats this build reads, as users know them: "kinestat", "SPACAR" and
+/// "bar table" always, then "URDF", "SDFormat" and "MJCF" where their libraries were found at
+/// build time (tinyxml2, libsdformat, libmujoco).
 std::vector<std::string> readable_format_names();
 
 }  // namespace kinestat::io
