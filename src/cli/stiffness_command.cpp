@@ -9,9 +9,12 @@
 
 #include "cli/commands.hpp"
 #include "cli/option_checks.hpp"
+#include "kinestat/framework/over_constraint_cost.hpp"
 #include "kinestat/framework/stiffness.hpp"
 #include "kinestat/io/input_error.hpp"
+#include "kinestat/pipeline/framework_pipeline.hpp"
 #include "kinestat/report/json_text.hpp"
+#include "kinestat/report/stiffness_report.hpp"
 
 namespace kinestat::cli {
 
@@ -148,18 +151,28 @@ int run_stiffness(const StiffnessOptions& options) {
     throw io::InputError({path, 1, 1}, fmt::format("--at: unknown node '{}'; the model's nodes are: {}", options.at, names));
   }
   framework::NodeStiffness result;
+  // `--misfit`: the cost of over-constraint (S2's misfit, prestress and frequencies) beside it.
+  std::optional<framework::OverConstraintCost> cost;
   try {
     result = framework::stiffness_at(model, node);
+    if (options.misfit) {
+      const pipeline::FrameworkAnalysis analysis = pipeline::analyse_framework(model, framework::AnalysisOptions{});
+      cost = framework::over_constraint_cost(model, analysis.result, node, *options.misfit);
+    }
   } catch (const std::invalid_argument& error) {
     throw io::InputError({path, 1, 1}, error.what());
   }
   if (options.common.json) {
-    nlohmann::ordered_json report = report::json_object(3);
+    nlohmann::ordered_json report = report::json_object(6);
     report["stiffness"] = stiffness_json(model, result);
+    if (cost) {
+      const nlohmann::ordered_json extra = report::over_constraint_json(model, *cost);
+      for (auto item = extra.begin(); item != extra.end(); ++item) report[item.key()] = item.value();
+    }
     report::add_versions(report);
     emit(options.common, report::json_text(report));
   } else {
-    emit(options.common, stiffness_text(model, result));
+    emit(options.common, stiffness_text(model, result) + (cost ? "\n" + report::over_constraint_text(model, *cost) : ""));
   }
   return 0;
 }
@@ -173,6 +186,10 @@ void register_stiffness(CLI::App& app, Action& action) {
   command->add_option("model", options->common.model_path, "Framework model: kinestat YAML / JSON (kind: framework) or SPACAR .dat")
       ->required();
   command->add_option("--at", options->at, "The node whose stiffness is condensed (every other free coordinate free)")->required();
+  command->add_option("--misfit", options->misfit,
+                      "A manufacturing misfit (model length unit): the stress it locks into each redundant constraint, and "
+                      "the stiffness and eigenfrequencies without and with it")
+      ->check(positive_finite_number());
   command->add_flag("--json", options->common.json, "Machine-readable output: a `stiffness` object");
   command->add_option("-o,--output", options->common.output_path, "Write to this file instead of standard output");
   command->callback([options, &action] { action = [options] { return run_stiffness(*options); }; });

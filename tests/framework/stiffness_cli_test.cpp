@@ -72,6 +72,21 @@ TEST(StiffnessCommand, JsonCarriesTheContract) {
   EXPECT_EQ(run_cli("stiffness " + kGuide + " --at P --json").out, r.out);
 }
 
+TEST(StiffnessCommand, MisfitAddsTheCostOfOverConstraint) {
+  // The guide is over-constrained (the leaves twist against each other about x): a misfit
+  // gives a worst case in one of the two (symmetric) leaves; the misfit figures themselves are
+  // tested with S2's misfit tests. A misfit must be a positive length.
+  const auto r = run_cli("stiffness " + kGuide + " --at P --misfit 0.01 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto report = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(report.contains("stiffness"));
+  ASSERT_TRUE(report.contains("misfit"));
+  EXPECT_EQ(report["misfit"]["value"], 0.01);
+  const std::string worst = report["misfit"]["worst"]["element"];
+  EXPECT_TRUE(worst == "leaf1" || worst == "leaf2") << worst;
+  EXPECT_EQ(run_cli("stiffness " + kGuide + " --at P --misfit -1").exit_code, 2);
+}
+
 TEST(StiffnessCommand, UnknownNodeIsALocatedOneLineError) {
   const auto r = run_cli("stiffness " + kGuide + " --at Q9");
   EXPECT_EQ(r.exit_code, 2);
