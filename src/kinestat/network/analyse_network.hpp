@@ -25,7 +25,7 @@ namespace kinestat::network {
 
 enum class Arithmetic {
   automatic,  ///< exact when every literal has at most kExactMaxSignificantDigits digits
-  exact,      ///< exact rational elimination (GMP)
+  exact,      ///< exact rational elimination (FLINT; GMP in a build without it)
   floating,   ///< double precision: SVD ranks with the named tolerance
 };
 
@@ -33,10 +33,14 @@ enum class Arithmetic {
 /// full), for which floating point with a tolerance gives the intended answer.
 inline constexpr int kExactMaxSignificantDigits = 12;
 /// Automatic arithmetic on short decimals uses exact elimination only while rows · columns ·
-/// min(rows, columns) of M^N stays below this (measured: a 234 x 157 M^N, 5.8e6, takes 8 s
-/// exactly and 0.7 s in floating point); above it, floating point with every rank of M^N checked
-/// by its rank modulo large primes (linalg::modular_rank), which the decisions then follow.
-inline constexpr double kExactEliminationWork = 2e6;
+/// min(rows, columns) of M^N stays below this; above it, floating point with every rank of M^N
+/// checked by its rank modulo large primes (linalg::modular_rank), which the decisions then
+/// follow. 8e6 (was 2e6 with GMP elimination): with FLINT the exact path costs about 1 s of CPU
+/// over floating point at 8e6, what GMP's cost at 2e6 (measured, whole command: random networks
+/// with M^N 102 x 89, 174 x 151, 246 x 218 cost 0.16, 0.8, 1.3 s over floating point with FLINT,
+/// 0.5, 2.1, 3.4 s with GMP; bench/README.md). A build without FLINT keeps this cap, at about
+/// 3 s over floating point.
+inline constexpr double kExactEliminationWork = 8e6;
 
 struct AnalysisOptions {
   Arithmetic arithmetic = Arithmetic::automatic;
