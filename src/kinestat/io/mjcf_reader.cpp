@@ -18,7 +18,6 @@
 #include <memory>
 #include <numbers>
 #include <optional>
-#include <regex>
 #include <set>
 #include <string_view>
 #include <unordered_map>
@@ -32,6 +31,46 @@ namespace kinestat::io {
 #if KINESTAT_HAVE_MUJOCO && KINESTAT_HAVE_TINYXML2
 
 namespace {
+
+/// The digits of `text` from `at` on (at most `most`), as read by MuJoCo's "line N".
+std::size_t digits_at(const std::string& text, std::size_t at, std::size_t most) {
+  std::size_t n = 0;
+  while (at + n < text.size() && n < most && std::isdigit(static_cast<unsigned char>(text[at + n]))) ++n;
+  return n;
+}
+
+/// The first "line N" of a MuJoCo message (N of at most 9 digits), 0 when there is none.
+/// Hand-written rather than <regex>: std::regex cost this file 20 s of compile time.
+int mujoco_message_line(const std::string& message) {
+  for (std::size_t at = message.find("line "); at != std::string::npos; at = message.find("line ", at + 1)) {
+    const std::size_t n = digits_at(message, at + 5, 9);
+    if (n > 0) return std::stoi(message.substr(at + 5, n));
+  }
+  return 0;
+}
+
+/// `message` without its ", line N" and ", column M" places (the line is reported apart).
+std::string without_mujoco_places(const std::string& message) {
+  std::string out;
+  std::size_t copied = 0;
+  for (std::size_t at = message.find("line "); at != std::string::npos; at = message.find("line ", at + 1)) {
+    const std::size_t n = digits_at(message, at + 5, std::string::npos);
+    if (n == 0 || at < copied) continue;
+    std::size_t begin = at;
+    if (begin > copied && message[begin - 1] == ' ') --begin;
+    if (begin > copied && message[begin - 1] == ',') --begin;
+    std::size_t end = at + 5 + n;
+    if (message.compare(end, 9, ", column ") == 0) {
+      const std::size_t m = digits_at(message, end + 9, std::string::npos);
+      if (m > 0) end += 9 + m;
+    }
+    out.append(message, copied, begin - copied);
+    copied = end;
+    at = end - 1;
+  }
+  return out.append(message, copied, std::string::npos);
+}
+
 
 struct ModelDeleter {
   void operator()(mjModel* m) const { mj_deleteModel(m); }
@@ -631,10 +670,8 @@ class MjcfReader {
       // MuJoCo's messages end with "Element 'x', line N" (sometimes a column too), a line of the
       // printed document: it is mapped back to the file (an included one) and line written.
       std::string message = error;
-      std::smatch match;
-      int line = 0;
-      if (std::regex_search(message, match, std::regex("line (\\d{1,9})"))) line = std::stoi(match[1]);
-      message = std::regex_replace(message, std::regex(",? ?line \\d+(, column \\d+)?"), "");
+      const int line = mujoco_message_line(message);
+      message = without_mujoco_places(message);
       for (char& c : message)
         if (c == '\n' || c == '\r') c = ' ';
       while (!message.empty() && message.back() == ' ') message.pop_back();
