@@ -398,6 +398,38 @@ class FrameworkResult(_Result):
         --steps S --json`` as a dict (see :func:`trace`)."""
         return _json.loads(self._analysed.trace(int(mode), float(amplitude), int(steps)))
 
+    def stiffness_matrix(self):
+        """The linear stiffness K = Dᵀ K_ε D over the free coordinates (``stiffness_labels``), a
+        symmetric numpy array in the model's units (docs/stiffness.md): force per length for
+        translation pairs, force·length per rad for rotation pairs, force per rad where they
+        couple. Coordinates are global: x, y, z and small rotations rx, ry, rz about the global
+        axes through the node. Needs elastic data (materials and sections); ValueError otherwise."""
+        return self._analysed.stiffness_matrix()[0]
+
+    @property
+    def stiffness_labels(self):
+        """The free coordinates of :meth:`stiffness_matrix` and :meth:`eigenpairs`, in order, as
+        "NODE.slot" (slot x, y, z, rx, ry, rz; planar x, y, rz)."""
+        return list(self._analysed.stiffness_matrix()[1])
+
+    def eigenpairs(self, misfit=0.0):
+        """The eigenfrequencies (Hz, ascending, a numpy vector) and mode shapes (a numpy array,
+        one mass-normalised column per frequency over ``stiffness_labels``; massless coordinates
+        condensed out) of the framework with its masses. ``misfit`` (a length in the model's
+        unit): under the prestress of the worst misfit (``kinestat stiffness --misfit``); a
+        negative frequency is a mode the prestress buckled, −√|ω²| / 2π. ValueError without
+        elastic data or masses."""
+        frequencies, shapes, _ = self._analysed.eigenpairs(float(misfit))
+        return frequencies, shapes
+
+    def over_constraint(self, at, misfit):
+        """What over-constraint costs (``kinestat stiffness MODEL --at AT --misfit MISFIT
+        --json``): the ``misfit`` block (``value``, ``worst``: ``element``, ``force`` in N,
+        tension positive, ``stress`` peak in N/length², …; ``worst`` None for an exactly
+        constrained design) and ``frequencies`` (Hz, ascending; with ``frequencies_with_misfit``)
+        as a dict. ``misfit`` is a length in the model's unit; ValueError for a negative one."""
+        return _json.loads(self._analysed.over_constraint(str(at), float(misfit)))
+
     @property
     def row_labels(self):
         return self._analysed.row_labels()
