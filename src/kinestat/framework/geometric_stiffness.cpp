@@ -5,51 +5,9 @@
 #include <vector>
 
 #include "kinestat/framework/deformation_functions.hpp"
+#include "kinestat/framework/element_second_derivatives.hpp"
 
 namespace kinestat::framework {
-
-namespace {
-
-// d²ε/dt² of every deformation of `element` along the motion with node rates `rates` (one
-// (ẋ, ω) per element node, model units), in the order of deformation_names.
-Eigen::VectorXd prestress_element_second_derivatives(const FrameworkModel& model, const DisplacedConfiguration& analysed,
-                                           const Element& element, const std::vector<Vector6>& rates) {
-  const bool planar = model.dimension == 2;
-  auto pair = [&](std::size_t p, std::size_t q) {
-    NodeRates12 both;
-    both << rates[p], rates[q];
-    return both;
-  };
-  Eigen::VectorXd values(static_cast<Eigen::Index>(deformation_count(model.dimension, element)));
-  switch (element.type) {
-    case ElementType::truss:
-      values(0) = truss_elongation_second_derivative(model.nodes[element.nodes[0]].position, model.nodes[element.nodes[1]].position,
-                                                     rates[0].head<3>(), rates[1].head<3>());
-      break;
-    case ElementType::beam: {
-      const Vector6 second = beam_deformation_second_derivative(beam_at(model, element, analysed), pair(0, 1));
-      // A planar beam keeps elongation and the in-plane bending (framework_jacobian.cpp).
-      if (planar)
-        values << second(0), second(4), second(5);
-      else
-        values = second;
-      break;
-    }
-    case ElementType::rigid_body: {
-      const std::vector<Eigen::Index> kept = planar ? std::vector<Eigen::Index>{0, 1, 5} : std::vector<Eigen::Index>{0, 1, 2, 3, 4, 5};
-      const Eigen::Vector3d& reference = model.nodes[element.nodes[0]].position;
-      Eigen::Index row = 0;
-      for (std::size_t k = 1; k < element.nodes.size(); ++k) {
-        const Vector6 second = rigid_link_second_derivative(reference, model.nodes[element.nodes[k]].position, pair(0, k));
-        for (Eigen::Index slot : kept) values(row++) = second(slot);
-      }
-      break;
-    }
-  }
-  return values;
-}
-
-}  // namespace
 
 Eigen::MatrixXd prestress_geometric_stiffness(const FrameworkModel& model, const FrameworkIndexing& indexing,
                                               const Eigen::VectorXd& resultants) {
@@ -80,7 +38,7 @@ Eigen::MatrixXd prestress_geometric_stiffness(const FrameworkModel& model, const
       std::vector<Vector6> rates(element.nodes.size(), Vector6::Zero());
       rates[i->node](i->slot) += 1.0;
       if (j != nullptr) rates[j->node](j->slot) += 1.0;
-      return stress.dot(prestress_element_second_derivatives(model, analysed, element, rates));
+      return stress.dot(element_second_derivatives(model, analysed, element, 1.0, rates));
     };
     std::vector<double> diagonal(slots.size());
     for (std::size_t i = 0; i < slots.size(); ++i) diagonal[i] = form(&slots[i], nullptr);
