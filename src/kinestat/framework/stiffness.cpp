@@ -46,6 +46,157 @@ void clear_rounded_couplings(Eigen::MatrixXd& matrix) {
       if (i != j && std::abs(matrix(i, j)) <= threshold) matrix(i, j) = 0.0;
 }
 
+
+// A node's free coordinates: their positions among the free coordinates (rows of K) and their
+// indices among all coordinates.
+struct NodeFreeCoordinates {
+  std::vector<Eigen::Index> positions, coordinates;
+};
+
+// The free coordinates of `node`; appends their slot names ("x" ... "rz") to `names`.
+NodeFreeCoordinates node_free_coordinates(const FrameworkStiffness& assembled, std::size_t node, std::vector<std::string>& names) {
+  NodeFreeCoordinates own;
+  for (std::size_t i = 0; i < assembled.free.size(); ++i) {
+    const CoordinateRef& c = assembled.indexing.coordinates[static_cast<std::size_t>(assembled.free[i])];
+    if (c.node != node) continue;
+    own.positions.push_back(static_cast<Eigen::Index>(i));
+    own.coordinates.push_back(assembled.free[i]);
+    names.emplace_back(kSlotNames[static_cast<std::size_t>(c.slot)]);
+  }
+  return own;
+}
+
+std::invalid_argument held_rigidly(const Node& n) {
+  return std::invalid_argument(fmt::format("node '{}' is held rigidly in some direction (rigid bodies or elements without "
+                                           "elastic data): its stiffness is infinite there; give those elements a material and "
+                                           "a section",
+                                           n.name));
+}
+
+// The stiffness over an orthonormal basis of the admissible motions, in length-scaled
+// coordinates (rotations × L): basis columns and K̂ reduced to them, all force/length.
+struct AdmissibleStiffness {
+  Eigen::MatrixXd basis, reduced;
+};
+
+AdmissibleStiffness admissible_scaled_stiffness(const FrameworkStiffness& assembled, double length) {
+  const Eigen::VectorXd scale = stiffness_coordinate_scale(assembled.indexing, assembled.free, length);
+  const Eigen::MatrixXd scaled_basis = scale.cwiseInverse().asDiagonal() * assembled.admissible;
+  const Eigen::HouseholderQR<Eigen::MatrixXd> basis_qr(scaled_basis);
+  AdmissibleStiffness out;
+  out.basis = basis_qr.householderQ() * Eigen::MatrixXd::Identity(scaled_basis.rows(), scaled_basis.cols());
+  const Eigen::MatrixXd scaled_k = scale.asDiagonal() * Eigen::MatrixXd(assembled.stiffness) * scale.asDiagonal();
+  out.reduced = out.basis.transpose() * scaled_k * out.basis;
+  return out;
+}
+
+// Static condensation onto the node's coordinates (rows `at` of the basis), length-scaled,
+// symmetric, with rounding-level couplings cleared. Throws held_rigidly when a direction of the
+// node is held by rigid parts alone.
+Eigen::MatrixXd condensed_scaled_stiffness(const FrameworkStiffness& assembled, const std::vector<Eigen::Index>& at, double length,
+                                           const Node& n) {
+  const AdmissibleStiffness admissible = admissible_scaled_stiffness(assembled, length);
+  const Eigen::MatrixXd& basis = admissible.basis;
+  const Eigen::MatrixXd& reduced = admissible.reduced;
+  const auto m = static_cast<Eigen::Index>(at.size());
+  // G maps the reduced motions q to the node's coordinates; it must have full row rank, else a
+  // direction of the node is held rigidly (infinitely stiff).
+  Eigen::MatrixXd g(m, basis.cols());
+  for (Eigen::Index r = 0; r < m; ++r) g.row(r) = basis.row(at[static_cast<std::size_t>(r)]);
+  const Eigen::Index n_q = basis.cols();
+  if (n_q < m) throw held_rigidly(n);
+  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> gt_qr(g.transpose());
+  {
+    // Column pivoting orders |R_ii| decreasing: the last is the smallest.
+    const Eigen::VectorXd r_diagonal = gt_qr.matrixR().diagonal().head(m).cwiseAbs();
+    if (!(r_diagonal(m - 1) > kRigidConstraintRank * r_diagonal(0))) throw held_rigidly(n);
+  }
+  // q = A u + Z z with G A = I and G Z = 0; the node stiffness is the Schur complement of the
+  // reduced stiffness over z: Aᵀ K A − Aᵀ K Z (Zᵀ K Z)⁺ Zᵀ K A (a pseudo-inverse from the
+  // eigen-decomposition: a zero-stiffness motion that leaves the node still is no load path).
+  const Eigen::MatrixXd q_full = gt_qr.householderQ() * Eigen::MatrixXd::Identity(n_q, n_q);
+  const Eigen::MatrixXd r_top = gt_qr.matrixR().topLeftCorner(m, m).triangularView<Eigen::Upper>();
+  // Gᵀ P = Q R → G = P⁻ᵀ Rᵀ Q1ᵀ: A = Q1 R⁻ᵀ Pᵀ.
+  const Eigen::MatrixXd r_inverse_t = r_top.transpose().triangularView<Eigen::Lower>().solve(Eigen::MatrixXd::Identity(m, m));
+  const Eigen::MatrixXd a = q_full.leftCols(m) * r_inverse_t * gt_qr.colsPermutation().transpose();
+  const Eigen::MatrixXd z = q_full.rightCols(n_q - m);
+  const Eigen::MatrixXd kaa = a.transpose() * reduced * a;
+  Eigen::MatrixXd scaled_node = kaa;
+  if (z.cols() > 0) {
+    const Eigen::MatrixXd kaz = a.transpose() * reduced * z;
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> inner(z.transpose() * reduced * z);
+    const Eigen::VectorXd& lambda = inner.eigenvalues();
+    const double largest = std::max(lambda.cwiseAbs().maxCoeff(), kaa.cwiseAbs().maxCoeff());
+    Eigen::VectorXd inverse = Eigen::VectorXd::Zero(lambda.size());
+    for (Eigen::Index i = 0; i < lambda.size(); ++i)
+      if (lambda(i) > kZeroStiffness * largest) inverse(i) = 1.0 / lambda(i);
+    const Eigen::MatrixXd projected = kaz * inner.eigenvectors();
+    scaled_node -= projected * inverse.asDiagonal() * projected.transpose();
+  }
+  scaled_node = (scaled_node + scaled_node.transpose()) / 2.0;
+  clear_rounded_couplings(scaled_node);
+  return scaled_node;
+}
+
+// Principal stiffnesses of the length-scaled `scaled_node` (unit-independent), ascending,
+// appended to result.principal (result.matrix must be set). True when the node has a
+// zero-stiffness (or buckled) direction: then it has no compliance.
+bool add_principal_stiffnesses(const Eigen::MatrixXd& scaled_node, const Eigen::VectorXd& node_scale, NodeStiffness& result) {
+  const Eigen::Index m = scaled_node.rows();
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> principal(scaled_node);
+  const double largest = principal.eigenvalues().cwiseAbs().maxCoeff();
+  bool mechanism = !(largest > 0.0);
+  for (Eigen::Index i = 0; i < m; ++i) {
+    Eigen::VectorXd scaled_direction = principal.eigenvectors().col(i);
+    for (Eigen::Index k = 0; k < m; ++k)
+      if (std::abs(scaled_direction(k)) <= kStiffnessRoundingZero) scaled_direction(k) = 0.0;
+    double translation = 0.0, rotation = 0.0;
+    for (Eigen::Index k = 0; k < m; ++k)
+      (node_scale(k) == 1.0 ? translation : rotation) += scaled_direction(k) * scaled_direction(k);
+    PrincipalStiffness p;
+    p.rotation = rotation > translation;
+    p.direction = node_scale.asDiagonal() * scaled_direction;
+    double part = 0.0;
+    for (Eigen::Index k = 0; k < m; ++k)
+      if ((node_scale(k) != 1.0) == p.rotation) part += p.direction(k) * p.direction(k);
+    p.direction /= std::sqrt(part);
+    Eigen::Index biggest = 0;
+    p.direction.cwiseAbs().maxCoeff(&biggest);
+    if (p.direction(biggest) < 0) p.direction = -p.direction;
+    const double lambda = principal.eigenvalues()(i);
+    if (lambda <= kZeroStiffness * largest) mechanism = true;
+    // Negative with a caller's geometric stiffness: the node buckles; no compliance then either.
+    p.stiffness = std::abs(lambda) <= kZeroStiffness * largest ? 0.0 : p.direction.dot(result.matrix * p.direction);
+    result.principal.push_back(std::move(p));
+  }
+  return mechanism;
+}
+
+// Intended motions (the node's independent coordinates) and supported directions, each 1 / C_ii
+// (result.compliance must be set), and the support / motion ratio.
+void add_motion_and_support(const FrameworkStiffness& assembled, const std::vector<Eigen::Index>& at_coordinates, const Node& n,
+                            NodeStiffness& result) {
+  double largest_motion = 0.0;
+  bool motion_rotation = false;
+  for (Eigen::Index k = 0; k < static_cast<Eigen::Index>(at_coordinates.size()); ++k) {
+    const int slot = assembled.indexing.coordinates[static_cast<std::size_t>(at_coordinates[static_cast<std::size_t>(k)])].slot;
+    DirectionStiffness d{result.coordinates[static_cast<std::size_t>(k)], 1.0 / (*result.compliance)(k, k), !is_translation(slot)};
+    if (n.roles[static_cast<std::size_t>(slot)] == CoordinateRole::independent) {
+      if (d.stiffness > largest_motion) motion_rotation = d.rotation;
+      largest_motion = std::max(largest_motion, d.stiffness);
+      result.motion.push_back(d);
+    } else {
+      result.support.push_back(d);
+    }
+  }
+  if (!result.motion.empty()) {
+    std::optional<double> weakest;
+    for (const DirectionStiffness& d : result.support)
+      if (d.rotation == motion_rotation && (!weakest || d.stiffness < *weakest)) weakest = d.stiffness;
+    if (weakest) result.support_ratio = *weakest / largest_motion;
+  }
+}
+
 }  // namespace
 
 std::optional<Eigen::MatrixXd> element_deformation_stiffness(const FrameworkModel& model, const Element& element) {
@@ -199,125 +350,23 @@ NodeStiffness stiffness_at(const FrameworkModel& model, const FrameworkStiffness
   NodeStiffness result;
   result.node = node;
   result.length_scale = length;
-  // The node's free coordinates: their positions among the free coordinates.
-  std::vector<Eigen::Index> at, at_coordinates;
-  for (std::size_t i = 0; i < assembled.free.size(); ++i) {
-    const CoordinateRef& c = assembled.indexing.coordinates[static_cast<std::size_t>(assembled.free[i])];
-    if (c.node != node) continue;
-    at.push_back(static_cast<Eigen::Index>(i));
-    at_coordinates.push_back(assembled.free[i]);
-    result.coordinates.emplace_back(kSlotNames[static_cast<std::size_t>(c.slot)]);
-  }
+  const NodeFreeCoordinates own = node_free_coordinates(assembled, node, result.coordinates);
   const Node& n = model.nodes[node];
-  if (at.empty()) throw std::invalid_argument(fmt::format("node '{}' has no free coordinate: it is fixed by its support", n.name));
-  const auto m = static_cast<Eigen::Index>(at.size());
+  if (own.positions.empty()) throw std::invalid_argument(fmt::format("node '{}' has no free coordinate: it is fixed by its support", n.name));
 
   // Everything in length-scaled coordinates (rotations × L): K̂ = S K S, all force/length.
-  const Eigen::VectorXd scale = stiffness_coordinate_scale(assembled.indexing, assembled.free, length);
-  const Eigen::VectorXd node_scale = stiffness_coordinate_scale(assembled.indexing, at_coordinates, length);
-  // Orthonormal basis of the admissible motions in the scaled coordinates.
-  const Eigen::MatrixXd scaled_basis = scale.cwiseInverse().asDiagonal() * assembled.admissible;
-  const Eigen::HouseholderQR<Eigen::MatrixXd> basis_qr(scaled_basis);
-  const Eigen::MatrixXd basis =
-      basis_qr.householderQ() * Eigen::MatrixXd::Identity(scaled_basis.rows(), scaled_basis.cols());
-  const Eigen::MatrixXd scaled_k = scale.asDiagonal() * Eigen::MatrixXd(assembled.stiffness) * scale.asDiagonal();
-  const Eigen::MatrixXd reduced = basis.transpose() * scaled_k * basis;
-  // G maps the reduced motions q to the node's coordinates; it must have full row rank, else a
-  // direction of the node is held rigidly (infinitely stiff).
-  Eigen::MatrixXd g(m, basis.cols());
-  for (Eigen::Index r = 0; r < m; ++r) g.row(r) = basis.row(at[static_cast<std::size_t>(r)]);
-  const Eigen::Index n_q = basis.cols();
-  const auto held_rigidly = [&n] {
-    return std::invalid_argument(fmt::format("node '{}' is held rigidly in some direction (rigid bodies or elements without "
-                                             "elastic data): its stiffness is infinite there; give those elements a material and "
-                                             "a section", n.name));
-  };
-  if (n_q < m) throw held_rigidly();
-  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> gt_qr(g.transpose());
-  {
-    // Column pivoting orders |R_ii| decreasing: the last is the smallest.
-    const Eigen::VectorXd r_diagonal = gt_qr.matrixR().diagonal().head(m).cwiseAbs();
-    if (!(r_diagonal(m - 1) > kRigidConstraintRank * r_diagonal(0))) throw held_rigidly();
-  }
-  // q = A u + Z z with G A = I and G Z = 0; the node stiffness is the Schur complement of the
-  // reduced stiffness over z: Aᵀ K A − Aᵀ K Z (Zᵀ K Z)⁺ Zᵀ K A (a pseudo-inverse from the
-  // eigen-decomposition: a zero-stiffness motion that leaves the node still is no load path).
-  const Eigen::MatrixXd q_full = gt_qr.householderQ() * Eigen::MatrixXd::Identity(n_q, n_q);
-  const Eigen::MatrixXd r_top = gt_qr.matrixR().topLeftCorner(m, m).triangularView<Eigen::Upper>();
-  // Gᵀ P = Q R → G = P⁻ᵀ Rᵀ Q1ᵀ: A = Q1 R⁻ᵀ Pᵀ.
-  const Eigen::MatrixXd r_inverse_t = r_top.transpose().triangularView<Eigen::Lower>().solve(Eigen::MatrixXd::Identity(m, m));
-  const Eigen::MatrixXd a = q_full.leftCols(m) * r_inverse_t * gt_qr.colsPermutation().transpose();
-  const Eigen::MatrixXd z = q_full.rightCols(n_q - m);
-  const Eigen::MatrixXd kaa = a.transpose() * reduced * a;
-  Eigen::MatrixXd scaled_node = kaa;
-  if (z.cols() > 0) {
-    const Eigen::MatrixXd kaz = a.transpose() * reduced * z;
-    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> inner(z.transpose() * reduced * z);
-    const Eigen::VectorXd& lambda = inner.eigenvalues();
-    const double largest = std::max(lambda.cwiseAbs().maxCoeff(), kaa.cwiseAbs().maxCoeff());
-    Eigen::VectorXd inverse = Eigen::VectorXd::Zero(lambda.size());
-    for (Eigen::Index i = 0; i < lambda.size(); ++i)
-      if (lambda(i) > kZeroStiffness * largest) inverse(i) = 1.0 / lambda(i);
-    const Eigen::MatrixXd projected = kaz * inner.eigenvectors();
-    scaled_node -= projected * inverse.asDiagonal() * projected.transpose();
-  }
-  scaled_node = (scaled_node + scaled_node.transpose()) / 2.0;
-  clear_rounded_couplings(scaled_node);
+  const Eigen::VectorXd node_scale = stiffness_coordinate_scale(assembled.indexing, own.coordinates, length);
+  const Eigen::MatrixXd scaled_node = condensed_scaled_stiffness(assembled, own.positions, length, n);
   result.matrix = node_scale.cwiseInverse().asDiagonal() * scaled_node * node_scale.cwiseInverse().asDiagonal();
 
-  // Principal stiffnesses of the scaled matrix (unit-independent), ascending.
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> principal(scaled_node);
-  const double largest = principal.eigenvalues().cwiseAbs().maxCoeff();
-  bool mechanism = !(largest > 0.0);
-  for (Eigen::Index i = 0; i < m; ++i) {
-    Eigen::VectorXd scaled_direction = principal.eigenvectors().col(i);
-    for (Eigen::Index k = 0; k < m; ++k)
-      if (std::abs(scaled_direction(k)) <= kStiffnessRoundingZero) scaled_direction(k) = 0.0;
-    double translation = 0.0, rotation = 0.0;
-    for (Eigen::Index k = 0; k < m; ++k)
-      (node_scale(k) == 1.0 ? translation : rotation) += scaled_direction(k) * scaled_direction(k);
-    PrincipalStiffness p;
-    p.rotation = rotation > translation;
-    p.direction = node_scale.asDiagonal() * scaled_direction;
-    double part = 0.0;
-    for (Eigen::Index k = 0; k < m; ++k)
-      if ((node_scale(k) != 1.0) == p.rotation) part += p.direction(k) * p.direction(k);
-    p.direction /= std::sqrt(part);
-    Eigen::Index biggest = 0;
-    p.direction.cwiseAbs().maxCoeff(&biggest);
-    if (p.direction(biggest) < 0) p.direction = -p.direction;
-    const double lambda = principal.eigenvalues()(i);
-    if (lambda <= kZeroStiffness * largest) mechanism = true;
-    // Negative with a caller's geometric stiffness: the node buckles; no compliance then either.
-    p.stiffness = std::abs(lambda) <= kZeroStiffness * largest ? 0.0 : p.direction.dot(result.matrix * p.direction);
-    result.principal.push_back(std::move(p));
-  }
+  const bool mechanism = add_principal_stiffnesses(scaled_node, node_scale, result);
   if (mechanism) return result;
+  const auto m = static_cast<Eigen::Index>(own.positions.size());
   Eigen::MatrixXd scaled_compliance = scaled_node.ldlt().solve(Eigen::MatrixXd::Identity(m, m));
   scaled_compliance = (scaled_compliance + scaled_compliance.transpose()) / 2.0;
   clear_rounded_couplings(scaled_compliance);
   result.compliance = node_scale.asDiagonal() * scaled_compliance * node_scale.asDiagonal();
-
-  // Intended motions (the node's independent coordinates) and supported directions.
-  double largest_motion = 0.0;
-  bool motion_rotation = false;
-  for (Eigen::Index k = 0; k < m; ++k) {
-    const int slot = assembled.indexing.coordinates[static_cast<std::size_t>(at_coordinates[static_cast<std::size_t>(k)])].slot;
-    DirectionStiffness d{result.coordinates[static_cast<std::size_t>(k)], 1.0 / (*result.compliance)(k, k), !is_translation(slot)};
-    if (n.roles[static_cast<std::size_t>(slot)] == CoordinateRole::independent) {
-      if (d.stiffness > largest_motion) motion_rotation = d.rotation;
-      largest_motion = std::max(largest_motion, d.stiffness);
-      result.motion.push_back(d);
-    } else {
-      result.support.push_back(d);
-    }
-  }
-  if (!result.motion.empty()) {
-    std::optional<double> weakest;
-    for (const DirectionStiffness& d : result.support)
-      if (d.rotation == motion_rotation && (!weakest || d.stiffness < *weakest)) weakest = d.stiffness;
-    if (weakest) result.support_ratio = *weakest / largest_motion;
-  }
+  add_motion_and_support(assembled, own.coordinates, n, result);
   return result;
 }
 
