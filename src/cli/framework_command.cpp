@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <memory>
+#include <optional>
 
 #include "cli/commands.hpp"
 #include "cli/option_checks.hpp"
@@ -20,14 +21,16 @@ namespace {
 long long dense_limit = 1500;
 long long sparse_vectors = 0;
 bool full_vectors = false;
+std::optional<double> misfit;  ///< `--misfit`: frameworks with elastic data (issue 38)
 CLI::Option* dense_limit_option = nullptr;
 CLI::Option* vectors_option = nullptr;
 CLI::Option* full_vectors_option = nullptr;
+CLI::Option* misfit_option = nullptr;
 }  // namespace
 
 std::vector<std::string> given_framework_options() {
   std::vector<std::string> given;
-  for (const CLI::Option* option : {dense_limit_option, vectors_option, full_vectors_option})
+  for (const CLI::Option* option : {dense_limit_option, vectors_option, full_vectors_option, misfit_option})
     if (option != nullptr && option->count() > 0) given.push_back(option->get_name());
   return given;
 }
@@ -54,23 +57,31 @@ void register_framework_options(CLI::App& analyze) {
                      fmt::format("Frameworks, with --json: list every entry of each mode and stress state, zeros included "
                                  "(default: the non-zero ones, above {:.2g} times the vector's largest entry; docs/report.md)",
                                  kModeZero));
+  misfit_option = analyze.add_option("--misfit", misfit,
+                     "Frameworks with materials and sections: a manufacturing misfit (model length unit) for the cost of "
+                     "over-constraint after the verdict (default: the cost per unit of misfit; docs/stiffness.md)")
+      ->check(positive_finite_number());
 }
 
 int run_framework_analysis(const CommonOptions& options, const framework::FrameworkModel& model, const std::string& path,
                            const std::vector<std::string>& notices) {
   reject_options(given_network_options(), "a framework", path);
+  if (misfit && !model.has_elastic_data())
+    throw io::InputError({path, 1, 1}, "--misfit needs a model with materials and sections (docs/stiffness.md); remove it");
   framework::AnalysisOptions analysis_options;
   analysis_options.tolerances = Tolerances::with_rank(options.tolerance);
   analysis_options.dense_limit = static_cast<Eigen::Index>(dense_limit);
   analysis_options.sparse_vectors = static_cast<Eigen::Index>(sparse_vectors);
-  const pipeline::FrameworkAnalysis analysis = pipeline::analyse_framework(model, analysis_options);
+  const pipeline::FrameworkAnalysis analysis = pipeline::analyse_framework(model, analysis_options, misfit);
+  const framework::AnalysedCost* cost = analysis.cost ? &*analysis.cost : nullptr;
   if (options.json) {
     emit(options, report::json_text(report::with_notices(
                       report::framework_report_json(model, analysis.result, &analysis.verdict, analysis.shown_generic(),
-                                                    full_vectors ? report::VectorListing::full : report::VectorListing::non_zero),
+                                                    full_vectors ? report::VectorListing::full : report::VectorListing::non_zero,
+                                                    cost),
                       notices)));
   } else {
-    emit(options, report::framework_report_text(model, analysis.result, &analysis.verdict, analysis.shown_generic()));
+    emit(options, report::framework_report_text(model, analysis.result, &analysis.verdict, analysis.shown_generic(), cost));
   }
   return verdict_exit_code(options.fail_unless, analysis.verdict);
 }

@@ -13,6 +13,7 @@
 #include "kinestat/framework/stiffness.hpp"
 #include "kinestat/io/input_error.hpp"
 #include "kinestat/pipeline/framework_pipeline.hpp"
+#include "kinestat/report/analysed_cost_report.hpp"
 #include "kinestat/report/json_text.hpp"
 #include "kinestat/report/stiffness_report.hpp"
 
@@ -34,50 +35,6 @@ struct StiffnessUnits {
 StiffnessUnits stiffness_units(const framework::FrameworkModel& model) {
   const std::string length = model.units.empty() ? "m" : model.units;
   return {length, "N/" + length, "N*" + length + "/rad", "N/rad"};
-}
-
-nlohmann::ordered_json matrix_json(const Eigen::MatrixXd& matrix) {
-  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
-  for (Eigen::Index i = 0; i < matrix.rows(); ++i) {
-    nlohmann::ordered_json row = nlohmann::ordered_json::array();
-    for (Eigen::Index j = 0; j < matrix.cols(); ++j) row.push_back(report::rounded_for_report(matrix(i, j)));
-    rows.push_back(std::move(row));
-  }
-  return rows;
-}
-
-nlohmann::ordered_json stiffness_json(const framework::FrameworkModel& model, const framework::NodeStiffness& result) {
-  const StiffnessUnits units = stiffness_units(model);
-  nlohmann::ordered_json out = report::json_object(10);
-  out["at"] = model.nodes[result.node].name;
-  out["coordinates"] = result.coordinates;
-  out["matrix"] = matrix_json(result.matrix);
-  out["compliance"] = result.compliance ? matrix_json(*result.compliance) : nlohmann::ordered_json(nullptr);
-  out["units"] = {{"length", units.length}, {"force", "N"}, {"translation", units.translation}, {"rotation", units.rotation},
-                  {"coupling", units.coupling}};
-  nlohmann::ordered_json principal = nlohmann::ordered_json::array();
-  for (const framework::PrincipalStiffness& p : result.principal) {
-    nlohmann::ordered_json direction = nlohmann::ordered_json::array();
-    for (Eigen::Index k = 0; k < p.direction.size(); ++k) direction.push_back(report::rounded_for_report(p.direction(k)));
-    principal.push_back({{"stiffness", report::rounded_for_report(p.stiffness)},
-                         {"kind", p.rotation ? "rotation" : "translation"},
-                         {"unit", p.rotation ? units.rotation : units.translation},
-                         {"direction", std::move(direction)}});
-  }
-  out["principal"] = std::move(principal);
-  out["length_scale"] = report::rounded_for_report(result.length_scale);
-  auto directions = [&](const std::vector<framework::DirectionStiffness>& list) {
-    nlohmann::ordered_json array = nlohmann::ordered_json::array();
-    for (const framework::DirectionStiffness& d : list)
-      array.push_back({{"coordinate", d.coordinate}, {"stiffness", report::rounded_for_report(d.stiffness)},
-                       {"unit", d.rotation ? units.rotation : units.translation}});
-    return array;
-  };
-  out["motion"] = directions(result.motion);
-  out["support"] = directions(result.support);
-  out["support_ratio"] = result.support_ratio ? nlohmann::ordered_json(report::rounded_for_report(*result.support_ratio))
-                                              : nlohmann::ordered_json(nullptr);
-  return out;
 }
 
 std::string number_text(double value) { return fmt::format("{:.6g}", value); }
@@ -164,7 +121,7 @@ int run_stiffness(const StiffnessOptions& options) {
   }
   if (options.common.json) {
     nlohmann::ordered_json report = report::json_object(6);
-    report["stiffness"] = stiffness_json(model, result);
+    report["stiffness"] = report::node_stiffness_json(model, result);
     if (cost) {
       const nlohmann::ordered_json extra = report::over_constraint_json(model, *cost);
       for (auto item = extra.begin(); item != extra.end(); ++item) report[item.key()] = item.value();

@@ -82,7 +82,7 @@ ModelAnalysis analyse_model(const io::ModelFile& file, const AnalysisRequest& re
       keep(analysis, located_network_analysis(file, network_request(request)));
       break;
     case io::ModelKind::framework:
-      analysis.framework = pipeline::analyse_framework(*file.framework, framework_options(request));
+      analysis.framework = pipeline::analyse_framework(*file.framework, framework_options(request), request.misfit);
       break;
     case io::ModelKind::structure:
       analysis.structure = pipeline::analyse_structure(*file.structure, request.structure);
@@ -115,7 +115,8 @@ ModelAnalysis decompose_model(const io::ModelFile& file, const AnalysisRequest& 
 nlohmann::ordered_json analysis_json(const io::ModelFile& file, const ModelAnalysis& analysis, report::VectorListing listing) {
   if (analysis.framework)
     return report::framework_report_json(*file.framework, analysis.framework->result, &analysis.framework->verdict,
-                                         analysis.framework->shown_generic(), listing);
+                                         analysis.framework->shown_generic(), listing,
+                                         analysis.framework->cost ? &*analysis.framework->cost : nullptr);
   if (analysis.network)
     return report::network_report_json(file.network->model, analysis.network->result, analysis.network->report_options());
   if (analysis.sparse_network)

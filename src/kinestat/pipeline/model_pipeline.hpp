@@ -41,6 +41,9 @@ struct AnalysisRequest {
   StructureRequest structure;
   /// The caller's request to stop (Ctrl-C in Python), polled between the stages.
   StopRequest stop;
+  /// Frameworks with elastic data: the misfit (model length unit) of the cost of
+  /// over-constraint (`analyze --misfit`); none: the cost per unit misfit.
+  std::optional<double> misfit;
 };
 
 /// A model analysed: the kind's results, exactly one analysis per kind (a network has the

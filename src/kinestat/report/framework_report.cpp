@@ -14,7 +14,9 @@
 
 #include "kinestat/design/screw_text.hpp"
 #include "kinestat/framework/body_motions.hpp"
+#include "kinestat/framework/analysed_cost.hpp"
 #include "kinestat/io/printable_text.hpp"
+#include "kinestat/report/analysed_cost_report.hpp"
 #include "kinestat/report/generic_text.hpp"
 #include "kinestat/report/rank_status_text.hpp"
 #include "kinestat/report/verdict_report.hpp"
@@ -419,7 +421,8 @@ void add_proposal_keys(nlohmann::ordered_json& j, const FrameworkModel& model, c
 const char* vector_listing_name(VectorListing listing) { return listing == VectorListing::full ? "full" : "non_zero"; }
 
 nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const FrameworkResult& a, const design::Verdict* verdict,
-                                             const framework::GenericFramework* generic, VectorListing listing) {
+                                             const framework::GenericFramework* generic, VectorListing listing,
+                                             const framework::AnalysedCost* cost) {
   nlohmann::ordered_json j = json_object(48);
   add_count_keys(j, model, a, generic);
   add_rank_keys(j, model, a);
@@ -434,6 +437,7 @@ nlohmann::ordered_json framework_report_json(const FrameworkModel& model, const 
   for (std::size_t k = 0; k < a.modes.size(); ++k) modes.push_back(mode_json(model, a, k, generic, listing));
   if (a.prestress.tested) j["prestress_stability"] = prestress_json(model, a, listing);
   j["stresses"] = stresses_json(model, a, generic, listing);
+  if (cost) j.update(analysed_cost_json(model, *cost));  // issue 38: stiffness, misfit, frequencies
   add_proposal_keys(j, model, a);
   if (verdict) return lead_with_verdict(*verdict, std::move(j), model.units);
   return j;
@@ -598,9 +602,10 @@ void proposal_text(TextLines& line, const FrameworkModel& model, const Framework
 }  // namespace
 
 std::string framework_report_text(const FrameworkModel& model, const FrameworkResult& a, const design::Verdict* verdict,
-                                  const framework::GenericFramework* generic) {
+                                  const framework::GenericFramework* generic, const framework::AnalysedCost* cost) {
   TextLines line;
   if (verdict) line.out = verdict_text(*verdict);
+  if (cost) line.out += analysed_cost_text(model, *cost);  // issue 38: the cost of over-constraint
   count_text(line, model, a);
   rank_section_text(line, a);
   if (generic) generic_section_text(line, model, a, *generic);

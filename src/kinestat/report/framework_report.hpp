@@ -13,6 +13,10 @@
 #include "kinestat/framework/generic_framework.hpp"
 #include "kinestat/framework/framework_model.hpp"
 
+namespace kinestat::framework {
+struct AnalysedCost;  // analysed_cost.hpp
+}  // namespace kinestat::framework
+
 namespace kinestat::report {
 
 /// Label of row `row` of D(c): "<element>.<deformation>".
@@ -43,15 +47,20 @@ const char* vector_listing_name(VectorListing listing);
 /// The report as JSON (keys documented in docs/framework.md and docs/report.md).
 /// With a `verdict`, the report leads with it (design::framework_verdict decides it); with a
 /// `generic` answer (framework::generic_framework), it has `generic` and every mode and stress
-/// state a `cause`. `listing`: the entries of each mode and stress state listed.
+/// state a `cause`. `listing`: the entries of each mode and stress state listed. With a `cost`
+/// (a model with elastic data), the keys `stiffness`, `misfit` and, with masses, `frequencies`
+/// (docs/stiffness.md) before the proposal.
 nlohmann::ordered_json framework_report_json(const framework::FrameworkModel& model,
                                              const framework::FrameworkResult& analysis,
                                              const design::Verdict* verdict = nullptr,
                                              const framework::GenericFramework* generic = nullptr,
-                                             VectorListing listing = VectorListing::non_zero);
-/// The report as readable text, the verdict block first when given.
+                                             VectorListing listing = VectorListing::non_zero,
+                                             const framework::AnalysedCost* cost = nullptr);
+/// The report as readable text, the verdict block first when given; with a `cost`, the "cost
+/// of over-constraint" block right after the verdict.
 std::string framework_report_text(const framework::FrameworkModel& model, const framework::FrameworkResult& analysis,
                                   const design::Verdict* verdict = nullptr,
-                                  const framework::GenericFramework* generic = nullptr);
+                                  const framework::GenericFramework* generic = nullptr,
+                                  const framework::AnalysedCost* cost = nullptr);
 
 }  // namespace kinestat::report
