@@ -130,6 +130,12 @@ nlohmann::ordered_json analysed_cost_json(const framework::FrameworkModel& model
   const nlohmann::ordered_json block = over_constraint_json(model, *cost.cost);
   for (auto item = block.begin(); item != block.end(); ++item) out[item.key()] = item.value();
   out["misfit"]["per_unit"] = cost.per_unit;
+  if (cost.per_unit) {
+    // The prestressed stiffness and frequencies depend on the misfit's size (and the
+    // frequencies not linearly): only for a given --misfit.
+    out["misfit"]["stiffness"].erase("with");
+    out.erase("frequencies_with_misfit");
+  }
   return out;
 }
 

@@ -28,8 +28,9 @@ std::string analysed_cost_text(const framework::FrameworkModel& model, const fra
 /// The block as JSON members to merge into the report: `stiffness` (node_stiffness_json),
 /// `misfit` (over_constraint_json's, with `per_unit`: true when no misfit was given and the
 /// figures are per model length unit of misfit) and, with masses, `frequencies` and
-/// `frequencies_with_misfit`; when not computed `stiffness` and `misfit` are null and
-/// `cost_not_computed` says why.
+/// `frequencies_with_misfit`; per unit misfit without `misfit.stiffness.with` and
+/// `frequencies_with_misfit` (they depend on the misfit's size). When not computed
+/// `stiffness` and `misfit` are null and `cost_not_computed` says why.
 nlohmann::ordered_json analysed_cost_json(const framework::FrameworkModel& model, const framework::AnalysedCost& cost);
 
 }  // namespace kinestat::report
