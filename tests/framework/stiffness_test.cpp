@@ -155,6 +155,33 @@ TEST(Stiffness, ParallelLeafSpringGuideMotionAndSupport) {
   EXPECT_GT(*s.support_ratio, 100.0);
 }
 
+TEST(Stiffness, ReleasedRigidBodyDeformationIsAJointWithoutSpring) {
+  // The guide as `kinestat fix` makes it exactly constrained: the platform lets T2 turn about x
+  // relative to P (released: [T2.rx]). Turning the platform about x (θ = 1) with everything
+  // else free, by hand: each tip lies on the x-axis through P, so θ bends a leaf in its stiff
+  // plane (Iz) and moves no tip. Held (both tips turn with the platform), y1 = y2 by symmetry:
+  // 2 (4 E Iz / L − (6 E Iz / L²)² / (12 E Iz / L³)) = 2 E Iz / L. Released, leaf 2's tip turns
+  // freely (a lateral spring k2 = 3 E Iz / L³ on y2), and y, rz move y1 = y − 25 rz and
+  // y2 = y + 25 rz apart, held together only by the leaves' torsion kt = 2 G J / L on
+  // rz = (y2 − y1)/50: k_rx = kθθ − k1θ² (k2 + c) / ((k11 + c)(k2 + c) − c²), c = kt / 50².
+  std::string released = leaf_guide("mm", 1, 1);
+  const std::string platform = "nodes: [P, T1, T2]}";
+  released.replace(released.find(platform), platform.size(), "nodes: [P, T1, T2], released: [T2.rx]}");
+  const FrameworkModel held_model = parse_model(leaf_guide("mm", 1, 1));
+  const FrameworkModel released_model = parse_model(released);
+  auto rx_support = [&](const FrameworkModel& model) {
+    for (const auto& d : stiffness_at(model, node_named(model, "P")).support)
+      if (d.coordinate == "rx") return d.stiffness;
+    throw std::logic_error("no rx support");
+  };
+  const double e = 210000, g = e / 2.6, l = 40, iz = 0.2 * 1000 / 12;
+  const double j = 10 * 0.008 * (1.0 / 3 - 0.21 * 0.02 * (1 - 0.02 * 0.02 * 0.02 * 0.02 / 12));
+  expect_relative(rx_support(held_model), 2 * e * iz / l, 1e-6);
+  const double k11 = 12 * e * iz / (l * l * l), k1t = 6 * e * iz / (l * l), ktt = 4 * e * iz / l, k2 = 3 * e * iz / (l * l * l);
+  const double c = 2 * g * j / l / 2500;
+  expect_relative(rx_support(released_model), ktt - k1t * k1t * (k2 + c) / ((k11 + c) * (k2 + c) - c * c), 1e-6);
+}
+
 TEST(Stiffness, WireFlexureAxialAndLateral) {
   // A wire along x, diameter d = 0.5, L = 30, E = 200000 (units mm): clamped at A, free at P.
   // A = π d²/4, I = π d⁴/64. Axial E A / L; lateral 12 E I / L³ with the end held from

@@ -259,7 +259,12 @@ FrameworkStiffness assemble_stiffness(const FrameworkModel& model) {
     const std::optional<Eigen::MatrixXd> k = element_deformation_stiffness(model, model.elements[e]);
     const std::size_t count = deformation_count(model.dimension, model.elements[e]);
     if (!k) {
-      for (std::size_t d = 0; d < count; ++d) result.rigid[static_cast<std::size_t>(first) + d] = true;
+      // Without elastic data an element is rigid where the model holds it (fixed deformations);
+      // a released or independent deformation of it is a joint without a spring: zero stiffness
+      // (the platform of a guide released at its reference node turns freely there).
+      const std::vector<DeformationRole>& roles = model.elements[e].roles;
+      for (std::size_t d = 0; d < count; ++d)
+        result.rigid[static_cast<std::size_t>(first) + d] = d >= roles.size() || roles[d] == DeformationRole::fixed;
       continue;
     }
     for (Eigen::Index r = 0; r < k->rows(); ++r)

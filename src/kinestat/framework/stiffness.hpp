@@ -4,8 +4,8 @@
 // style: every deformation of an elastic element gets its stiffness (released ones are
 // compliant, held ones stiff but finite), K = Dᵀ K_ε D over the free coordinates, with D the
 // first-order deformation derivative of seed 002 (framework_jacobian.hpp). Elements without
-// elastic data and rigid bodies stay rigid: their deformations are exact constraints
-// (docs/stiffness.md).
+// elastic data and rigid bodies are rigid where the model holds them (fixed deformations: exact
+// constraints) and free where it releases them (joints without a spring; docs/stiffness.md).
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
