@@ -52,13 +52,13 @@ void register_analyze(CLI::App& app, Action& action) {
       const std::string path = model->path();
       // Older spellings read: on standard error and in the JSON report.
       if (kind == io::ModelKind::network) {
-        const auto network = io::read_network_model(*model);
+        const auto network = io::keeping_notices(*model, io::read_network_model);
         const std::vector<std::string> notices = print_notices(model->notices());
         model.reset();
         return run_network_analysis(*options, network, path, notices);
       }
       if (kind == io::ModelKind::framework) {
-        const framework::FrameworkModel framework = io::read_framework_model(*model);
+        const framework::FrameworkModel framework = io::keeping_notices(*model, io::read_framework_model);
         const std::vector<std::string> notices = print_notices(model->notices());
         model.reset();
         return run_framework_analysis(*options, framework, path, notices);

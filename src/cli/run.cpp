@@ -105,6 +105,7 @@ int run(int argc, const char* const* argv) {
   try {
     return action ? action() : 2;
   } catch (const io::InputError& error) {
+    print_notices(error.notices());
     std::cerr << error.what() << '\n';
     return error.exit_code();
   } catch (const Error& error) {  // not converted to a file position on the way: still the input's fault

@@ -61,7 +61,7 @@ StructureInput read_input(const StructureOptions& options) {
     const std::string text = io::read_model_text(std::cin, "<stdin>");
     // A bare matrix starts with a code (after blank lines and '#' comments); anything else
     // is read as a YAML model (kind: structure or network, as from a file).
-    if (!starts_with_matrix(text)) return read_yaml_input(io::YamlFile::parse("<stdin>", text));
+    if (!starts_with_matrix(text)) return io::keeping_notices(io::YamlFile::parse("<stdin>", text), read_yaml_input);
     return {io::read_adjacency_text(text, "<stdin>"), std::nullopt, "<stdin>"};
   }
   const std::string& path = options.common.model_path;
@@ -77,7 +77,7 @@ StructureInput read_input(const StructureOptions& options) {
     structure::StructureModel model = io::structure_of_network(*file.network, path);
     return {std::move(model), std::move(*file.network), path, std::move(file.notices)};
   }
-  return read_yaml_input(io::YamlFile::load(path));
+  return io::keeping_notices(io::YamlFile::load(path), read_yaml_input);
 }
 
 // A kinestat YAML / JSON model of kind structure, or network (its couplings' structure).

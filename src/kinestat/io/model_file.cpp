@@ -16,7 +16,7 @@ namespace kinestat::io {
 
 namespace {
 
-ModelFile read_parsed(const YamlFile& file) {
+ModelFile read_parsed_model(const YamlFile& file) {
   ModelFile model;
   model.path = file.path();
   const std::string kind = model_kind(file);
@@ -33,6 +33,9 @@ ModelFile read_parsed(const YamlFile& file) {
   model.notices = file.notices();  // older spellings read
   return model;
 }
+
+// read_parsed_model; an input error carries the notices given before it.
+ModelFile read_parsed(const YamlFile& file) { return keeping_notices(file, read_parsed_model); }
 
 }  // namespace
 

@@ -111,6 +111,19 @@ class YamlFile {
   std::shared_ptr<std::vector<std::string>> notices_;
 };
 
+/// read(file), with the notices `file` gave before an InputError carried by that error: an older
+/// spelling read as format version 1 meant it often explains the error that follows, and the
+/// command prints the notices before the error line.
+template <class Read>
+auto keeping_notices(const YamlFile& file, Read&& read) -> decltype(read(file)) {
+  try {
+    return read(file);
+  } catch (InputError& error) {
+    if (error.notices().empty()) error.set_notices(file.notices());
+    throw;
+  }
+}
+
 /// Significant digits of a decimal literal ("0.8660254" -> 7, "-1.50e3" -> 3, "0" -> 1).
 int significant_digits(std::string_view literal);
 
