@@ -204,12 +204,8 @@ std::vector<Vector3d> node_velocities(const Scene& scene, const std::vector<std:
   return velocity;
 }
 
-}  // namespace
-
-Scene network_scene(const network::Model& model, const network::NetworkResult& result) {
-  Scene scene;
-  const auto& r = result;
-  const NetworkLayout layout = network_drawing(model, r.ground, scene);
+// The summary table of a dense network result.
+void add_network_summary(const network::NetworkResult& r, Scene& scene) {
   scene.summary = {
       {"kind", "coupling network (Davies, seed 000)"},
       {"d", std::to_string(r.d)},
@@ -226,6 +222,10 @@ Scene network_scene(const network::Model& model, const network::NetworkResult& r
       {"class", network::class_description(r.classification)},
       {"arithmetic", r.exact ? "exact" : "floating point"},
   };
+}
+
+// Each coupling's unit motions and actions (glyphs and graph edges) and the chords of its tree.
+void add_network_glyphs(const network::Model& model, const network::NetworkResult& r, Scene& scene) {
   for (std::size_t e = 0; e < model.couplings.size(); ++e) {
     SceneGlyph& glyph = scene.glyphs[e];
     GraphEdge& edge = scene.edges[e];
@@ -243,9 +243,9 @@ Scene network_scene(const network::Model& model, const network::NetworkResult& r
     glyph.c = edge.c = static_cast<int>(glyph.actions.size());
   }
   for (int chord : r.chords) scene.edges[static_cast<std::size_t>(chord)].branch = false;
-  scene.B = r.B;
-  scene.Q = r.Q;
+}
 
+void add_network_modes(const network::Model& model, const network::NetworkResult& r, const NetworkLayout& layout, Scene& scene) {
   // The motion of every body relative to the ground, per motion primary, as the analysis keeps
   // it (NetworkResult::body_motions: user frame and length unit).
   const std::size_t n = model.bodies.size();
@@ -272,6 +272,9 @@ Scene network_scene(const network::Model& model, const network::NetworkResult& r
     mode.velocity = node_velocities(scene, twists);
     scene.modes.push_back(std::move(mode));
   }
+}
+
+void add_network_stresses(const network::Model& model, const network::NetworkResult& r, const NetworkLayout& layout, Scene& scene) {
   // Self-stresses: action primary k = +1; the wrench each coupling transmits (the sum of its
   // unit actions times their magnitudes), in ray formation, as a line of action.
   for (std::size_t k = 0; k < r.primary_action.size(); ++k) {
@@ -295,6 +298,10 @@ Scene network_scene(const network::Model& model, const network::NetworkResult& r
     }
     scene.stresses.push_back(std::move(stress));
   }
+}
+
+// The motion systems of the pairs of bodies, one entry per pair.
+void add_network_pairs(const network::NetworkResult& r, Scene& scene) {
   for (const auto& pair : r.pairs) {
     bool seen = false;
     for (const auto& p : scene.pairs) seen = seen || (p.body_i == pair.body_i && p.body_j == pair.body_j);
@@ -307,16 +314,10 @@ Scene network_scene(const network::Model& model, const network::NetworkResult& r
     }
     scene.pairs.push_back(std::move(sp));
   }
-  scene.large = scene.elements.size() > kLargeSceneElements;
-  return scene;
 }
 
-Scene sparse_network_scene(const network::Model& model, const network::SparseNetworkResult& r) {
-  Scene scene;
-  scene.sparse = true;
-  scene.mode_total = static_cast<std::size_t>(r.FN);
-  scene.stress_total = static_cast<std::size_t>(r.CN);
-  const NetworkLayout layout = network_drawing(model, r.ground, scene);
+// The summary table of a sparse network result.
+void add_sparse_network_summary(const network::SparseNetworkResult& r, Scene& scene) {
   scene.summary = {
       {"kind", "coupling network (sparse body-twist form)"},
       {"d", std::to_string(r.d)},
@@ -333,6 +334,9 @@ Scene sparse_network_scene(const network::Model& model, const network::SparseNet
       {"couplings that move", std::to_string(r.moving.size())},
       {"arithmetic", "floating point"},
   };
+}
+
+void add_sparse_network_glyphs(const network::Model& model, const network::SparseNetworkResult& r, Scene& scene) {
   // Each row of K is one unit action of its coupling (user frame in row_actions); f = d − c.
   for (std::size_t row = 0; row < r.row_coupling.size(); ++row) {
     const auto e = static_cast<std::size_t>(r.row_coupling[row]);
@@ -349,7 +353,9 @@ Scene sparse_network_scene(const network::Model& model, const network::SparseNet
   for (const auto& c : model.couplings) edges.push_back({c.from, c.to});
   for (int chord : graph::CouplingGraph(static_cast<int>(model.bodies.size()), edges).breadth_first_tree(r.ground).chords)
     scene.edges[static_cast<std::size_t>(chord)].branch = false;
+}
 
+void add_sparse_network_modes(const network::Model& model, const network::SparseNetworkResult& r, const NetworkLayout& layout, Scene& scene) {
   // The basis vectors are in the user's frame, per unit of their primary (network::
   // analyse_network_sparse); which bodies move is decided on their sizes in the conditioned
   // analysis frame (placement- and unit-free), as the analysis decides its supports.
@@ -386,6 +392,9 @@ Scene sparse_network_scene(const network::Model& model, const network::SparseNet
     mode.velocity = node_velocities(scene, twists);
     scene.modes.push_back(std::move(mode));
   }
+}
+
+void add_sparse_network_stresses(const network::Model& model, const network::SparseNetworkResult& r, const NetworkLayout& layout, Scene& scene) {
   // Self-stresses: the wrench each coupling transmits (its unit actions times their magnitudes,
   // user frame: the magnitudes are the same in both frames), primary = 1.
   for (Eigen::Index j = 0; j < r.stress_basis.cols(); ++j) {
@@ -409,6 +418,35 @@ Scene sparse_network_scene(const network::Model& model, const network::SparseNet
     }
     scene.stresses.push_back(std::move(stress));
   }
+}
+
+}  // namespace
+
+Scene network_scene(const network::Model& model, const network::NetworkResult& result) {
+  Scene scene;
+  const auto& r = result;
+  const NetworkLayout layout = network_drawing(model, r.ground, scene);
+  add_network_summary(r, scene);
+  add_network_glyphs(model, r, scene);
+  scene.B = r.B;
+  scene.Q = r.Q;
+  add_network_modes(model, r, layout, scene);
+  add_network_stresses(model, r, layout, scene);
+  add_network_pairs(r, scene);
+  scene.large = scene.elements.size() > kLargeSceneElements;
+  return scene;
+}
+
+Scene sparse_network_scene(const network::Model& model, const network::SparseNetworkResult& r) {
+  Scene scene;
+  scene.sparse = true;
+  scene.mode_total = static_cast<std::size_t>(r.FN);
+  scene.stress_total = static_cast<std::size_t>(r.CN);
+  const NetworkLayout layout = network_drawing(model, r.ground, scene);
+  add_sparse_network_summary(r, scene);
+  add_sparse_network_glyphs(model, r, scene);
+  add_sparse_network_modes(model, r, layout, scene);
+  add_sparse_network_stresses(model, r, layout, scene);
   scene.large = scene.elements.size() > kLargeSceneElements;
   return scene;
 }
