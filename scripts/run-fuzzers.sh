@@ -1,18 +1,23 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSD-3-Clause
 # Runs every libFuzzer harness for SECONDS (default 30) each, seeded with the shipped
-# examples. Crashes are written to build/fuzz/crashes/ and fail the script.
+# examples. The harnesses are those of the `asan` preset's tree (build/asan-clang, built with the
+# sanitized tests; CI's), or of another tree given as FUZZ_BUILD (e.g. build/fuzz, the `fuzz`
+# preset: the harnesses alone, optimised). Crashes are written to FUZZ_BUILD/fuzz-run/crashes/
+# and fail the script; the corpora and each harness's log are kept beside them.
 # The seed is fixed (FUZZ_SEED, default 1): a run from an empty corpus then explores the same
 # inputs in the same order on every machine, so a longer local run covers what CI's short run
 # will try, and a CI failure repeats locally.
 # FUZZ_JOBS harnesses (default 2, one a core of CI's machines) run at a time, each for the full
 # SECONDS on a core of its own; each prints its lines when it ends.
-# Usage: [FUZZ_SEED=N] [FUZZ_JOBS=N] scripts/run-fuzzers.sh [SECONDS]
+# Usage: [FUZZ_BUILD=DIR] [FUZZ_SEED=N] [FUZZ_JOBS=N] scripts/run-fuzzers.sh [SECONDS]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-30}
 seed=${FUZZ_SEED:-1}
-out=build/fuzz/crashes
+tree=${FUZZ_BUILD:-build/asan-clang}
+run=$tree/fuzz-run
+out=$run/crashes
 mkdir -p "$out"
 jobs=${FUZZ_JOBS:-2}
 
@@ -20,7 +25,7 @@ jobs=${FUZZ_JOBS:-2}
 run_harness() {
   local harness=$1 name corpus seeds
   name=$(basename "$harness")
-  corpus=build/fuzz/corpus/$name
+  corpus=$run/corpus/$name
   mkdir -p "$corpus"
   case "$name" in
     fuzz_cli_arguments) seeds=fuzz/seeds/cli ;;
@@ -39,18 +44,23 @@ run_harness() {
   local status=0
   # shellcheck disable=SC2086 # seeds: one folder a word
   "$harness" -max_total_time="$seconds" -timeout="$timeout" -rss_limit_mb=4096 -max_len=65536 -seed="$seed" \
-    -artifact_prefix="$out/$name-" -print_final_stats=1 "$corpus" $seeds >/dev/null 2>"build/fuzz/$name.log" || status=1
+    -artifact_prefix="$out/$name-" -print_final_stats=1 "$corpus" $seeds >/dev/null 2>"$run/$name.log" || status=1
   # One write, so that the reports of harnesses that end together do not interleave.
   local report="== $name for ${seconds}s"
-  if ((status != 0)); then report+=$'\n'$(tail -40 "build/fuzz/$name.log"); fi
-  report+=$'\n'$(grep -E "stat::number_of_executed_units|stat::peak_rss_mb" "build/fuzz/$name.log" || true)
+  if ((status != 0)); then report+=$'\n'$(tail -40 "$run/$name.log"); fi
+  report+=$'\n'$(grep -E "stat::number_of_executed_units|stat::peak_rss_mb" "$run/$name.log" || true)
   printf '%s\n' "$report"
   return $status
 }
 
+harnesses=("$tree"/fuzz/fuzz_*)
+if [[ ! -x ${harnesses[0]} ]]; then
+  echo "no fuzz harnesses in $tree/fuzz (build the asan preset, or set FUZZ_BUILD)" >&2
+  exit 1
+fi
 status=0
 running=0
-for harness in build/fuzz/fuzz/fuzz_*; do
+for harness in "${harnesses[@]}"; do
   if ((running >= jobs)); then
     wait -n || status=1
     running=$((running - 1))
