@@ -37,7 +37,7 @@ struct LabelledMatrix {
 };
 
 // A number as the shortest text that reads back to the same double; -0 as 0.
-std::string number_text(double value) { return value == 0.0 ? std::string("0") : fmt::format("{}", value); }
+std::string export_number_text(double value) { return value == 0.0 ? std::string("0") : fmt::format("{}", value); }
 
 // A CSV field (RFC 4180): quoted when it holds a comma, a quote, a line end or outer blanks.
 std::string csv_field(const std::string& text) {
@@ -64,7 +64,7 @@ std::string csv_text(const LabelledMatrix& m) {
   out += "\n";
   for (std::size_t i = 0; i < m.rows.size(); ++i) {
     out += csv_field(m.rows[i]);
-    for (std::size_t j = 0; j < m.columns.size(); ++j) out += "," + number_text(dense[i * m.columns.size() + j]);
+    for (std::size_t j = 0; j < m.columns.size(); ++j) out += "," + export_number_text(dense[i * m.columns.size() + j]);
     out += "\n";
   }
   return out;
@@ -78,7 +78,7 @@ std::string matrix_market_text(const LabelledMatrix& m) {
   out += "% columns:\n";
   for (std::size_t j = 0; j < m.columns.size(); ++j) out += fmt::format("% {} {}\n", j + 1, comment_label(m.columns[j]));
   out += fmt::format("{} {} {}\n", m.rows.size(), m.columns.size(), m.entries.size());
-  for (const auto& [i, j, value] : m.entries) out += fmt::format("{} {} {}\n", i + 1, j + 1, number_text(value));
+  for (const auto& [i, j, value] : m.entries) out += fmt::format("{} {} {}\n", i + 1, j + 1, export_number_text(value));
   return out;
 }
 
