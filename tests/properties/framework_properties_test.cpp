@@ -15,6 +15,7 @@
 #include "kinestat/framework/framework_analysis.hpp"
 #include "kinestat/io/framework_reader.hpp"
 #include "kinestat/io/yaml_support.hpp"
+#include "support/sanitizer_sample.hpp"
 
 namespace kinestat::framework {
 namespace {
@@ -101,7 +102,8 @@ TEST(FrameworkProperties, EveryExampleUnderRenamingAndReordering) {
 TEST(FrameworkProperties, RandomTrusses) {
   const Eigen::Matrix3d spatial_rotation = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
   const Eigen::Matrix3d planar_rotation = Eigen::AngleAxisd(-1.1, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-  for (int seed = 0; seed < 150; ++seed) {
+  // Under AddressSanitizer the first quarter of the seeds, both dimensions (support/sanitizer_sample.hpp).
+  for (int seed = 0; seed < testing::sampled_seed_count(150); ++seed) {
     std::mt19937 rng(static_cast<unsigned>(seed));
     const int dimension = seed % 2 == 0 ? 2 : 3;
     const FrameworkModel model = random_truss(rng, dimension);

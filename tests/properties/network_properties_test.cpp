@@ -10,13 +10,16 @@
 #include "kinestat/graph/coupling_graph.hpp"
 #include "kinestat/network/analyse_network.hpp"
 #include "random_network.hpp"
+#include "support/sanitizer_sample.hpp"
 
 namespace kinestat::network {
 namespace {
 
 using screw::Rational;
 
-constexpr int kCases = 120;  // per dimension; each case runs about a dozen analyses
+// Per dimension; each case runs about a dozen analyses. Under AddressSanitizer the first
+// quarter of the seeds (support/sanitizer_sample.hpp).
+constexpr int kCases = testing::sampled_seed_count(120);
 
 // fij and cij of every pair, keyed by body names (and coupling name) so that renamed or
 // reordered models can be compared.

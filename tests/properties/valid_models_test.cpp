@@ -13,14 +13,16 @@
 #include "kinestat/io/yaml_support.hpp"
 #include "kinestat/network/analyse_network.hpp"
 #include "support/cli_run.hpp"
+#include "support/sanitizer_sample.hpp"
 #include "support/valid_models.hpp"
 
 namespace kinestat::testing {
 namespace {
 
 // Each seed is one random model; a failure prints the model file, ready to save and run. The
-// fuzz harness fuzz_valid_models runs the same checks for as long as it is given.
-constexpr int kSeedsPerKind = 150;
+// fuzz harness fuzz_valid_models runs the same checks for as long as it is given. Under
+// AddressSanitizer the first quarter of the seeds (support/sanitizer_sample.hpp).
+constexpr int kSeedsPerKind = sampled_seed_count(150);
 
 // Checks `kSeedsPerKind` models of one generator; at least half must be accepted by the reader,
 // or the generator tests nothing.
