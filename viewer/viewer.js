@@ -69,7 +69,9 @@
   verdictBox.appendChild(text('p', 'Lengths in ' + S.units + '. Signs as in the text report: modes and self-stresses as the analysis decided them (tension positive).', 'note'));
   const viewSelect = $('mode');
   const views = [{ kind: 'configuration', label: 'configuration' }];
-  S.modes.forEach((m, i) => views.push({ kind: 'mode', index: i, label: m.label + (m.trace ? ' (finite motion, traced)' : ' (kinematic)') }));
+  // Eigenmodes of vibration (issue 38) carry their frequency in the label.
+  S.modes.forEach((m, i) => views.push({ kind: 'mode', index: i,
+    label: m.label + (m.kind === 'vibration' ? '' : m.trace ? ' (finite motion, traced)' : ' (kinematic)') }));
   S.stresses.forEach((s, i) => views.push({ kind: 'stress', index: i, label: s.label }));
   views.forEach((v, i) => {
     const o = text('option', v.label);
@@ -387,9 +389,9 @@
     table.appendChild(row(['element'].concat(columns), true));
     rows.forEach((el) => table.appendChild(row([el].concat(columns.map((c) => {
       const r = st.resultants.find((x) => x[0] === el && x[1] === c);
-      return r ? r[2].toFixed(3) : '';
+      return r ? (st.unit ? r[2].toPrecision(4) : r[2].toFixed(3)) : '';
     })))));
-    $('resultants').appendChild(text('h2', 'Resultants (element \u00d7 deformation)'));
+    $('resultants').appendChild(text('h2', st.unit ? 'Resultants of the misfit stress (per element)' : 'Resultants (element \u00d7 deformation)'));
     $('resultants').appendChild(table);
   };
   const applyColours = () => {
@@ -440,7 +442,9 @@
         if (seen.has('torsion')) kindsShown.push('torsion green');
         if (seen.has('rigid')) kindsShown.push('rigid-body constraint brown');
         legend.appendChild(text('span', (seen.has('elongation') && kindsShown.length ? '; ' : '') + kindsShown.join('; ') +
-          '. ' + st.label + ': each element by its dominant resultant, shade by magnitude; largest = ' + largest.toPrecision(4) + ' (unit-norm stress state)'));
+          '. ' + st.label + (st.unit
+            ? ': each element by its peak stress, shade by magnitude; largest = ' + largest.toPrecision(4) + ' ' + st.unit
+            : ': each element by its dominant resultant, shade by magnitude; largest = ' + largest.toPrecision(4) + ' (unit-norm stress state)')));
         resultantTable(st);
       }
     } else if (v.kind === 'mode') {

@@ -81,7 +81,9 @@ io::ModelKind model_kind_of(const io::YamlFile& file);
 /// `report`. `traced_motion`: frameworks also get the finite motion of their finite modes
 /// traced both ways (framework::animation_traces), which the HTML report animates; SVG drawings
 /// do not need it.
-pipeline::ModelPictures load_scene(const std::string& path, std::optional<double> tolerance, bool traced_motion = false);
+/// `misfit`: `kinestat report --misfit` (frameworks with elastic data; pipeline::picture_model).
+pipeline::ModelPictures load_scene(const std::string& path, std::optional<double> tolerance, bool traced_motion = false,
+                                   std::optional<double> misfit = std::nullopt);
 
 // `analyze` dispatches on the model's kind to one of these; each kind adds its own options.
 void register_network_options(CLI::App& analyze);

@@ -13,8 +13,9 @@ io::ModelKind model_kind_of(const io::YamlFile& file) {
   return io::kind_named(io::model_kind(file)).value();
 }
 
-pipeline::ModelPictures load_scene(const std::string& path, std::optional<double> tolerance, bool traced_motion) {
-  return pipeline::picture_model(read_model(path), tolerance, traced_motion);  // any format, notices on stderr
+pipeline::ModelPictures load_scene(const std::string& path, std::optional<double> tolerance, bool traced_motion,
+                                   std::optional<double> misfit) {
+  return pipeline::picture_model(read_model(path), tolerance, traced_motion, misfit);  // any format, notices on stderr
 }
 
 }  // namespace kinestat::cli

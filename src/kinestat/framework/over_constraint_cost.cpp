@@ -43,6 +43,7 @@ OverConstraintCost over_constraint_cost(const FrameworkModel& model, const Frame
   cost.indexing = analysis.indexing;
   cost.misfit = analyse_misfit(model, analysis, element_compliance(model), misfit);
   const FrameworkStiffness assembled = assemble_stiffness(model);
+  cost.free = assembled.free;
   cost.without = stiffness_at(model, assembled, node);
   const Eigen::MatrixXd prestress = prestress_geometric_stiffness(model, assembled.indexing, cost.misfit.worst_resultants);
   FrameworkStiffness prestressed = assembled;

@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <vector>
 
 #include "kinestat/framework/framework_analysis.hpp"
 #include "kinestat/framework/framework_model.hpp"
@@ -31,6 +32,9 @@ struct OverConstraintCost {
   /// the admissible motions of the free coordinates (FrameworkStiffness::admissible), massless
   /// ones condensed out.
   std::optional<VibrationModes> modes_without, modes_with;
+  /// The rows of the modes' shapes: the free coordinates (FrameworkStiffness::free, indices
+  /// into indexing.coordinates).
+  std::vector<Eigen::Index> free;
 };
 
 /// The cost of a misfit of `misfit` (model length unit) in `model`, analysed as `analysis`

@@ -155,6 +155,7 @@ report::Scene model_scene(const io::ModelFile& file, const ModelAnalysis& analys
     if (traced_motion) traces = framework_traces(*file.framework, *analysis.framework);
     scene = report::framework_scene(*file.framework, analysis.framework->result, traces);
     scene.units = file.framework->units;
+    if (analysis.framework->cost) report::add_framework_cost(scene, *file.framework, *analysis.framework->cost);
   } else {
     scene = report::structure_scene(analysis.structure->model, analysis.structure->decomposition);
     scene.units = analysis.structure->model.units;
@@ -163,9 +164,14 @@ report::Scene model_scene(const io::ModelFile& file, const ModelAnalysis& analys
   return scene;
 }
 
-ModelPictures picture_model(const io::ModelFile& file, std::optional<double> tolerance, bool traced_motion) {
+ModelPictures picture_model(const io::ModelFile& file, std::optional<double> tolerance, bool traced_motion,
+                            std::optional<double> misfit) {
+  if (misfit && !(file.framework && file.framework->has_elastic_data()))
+    throw io::InputError({file.path, 1, 1}, "--misfit needs a framework model with materials and sections "
+                                            "(docs/stiffness.md); remove it");
   AnalysisRequest request;
   request.tolerance = tolerance;
+  request.misfit = misfit;
   request.network.second_order = false;
   request.structure.max_transformations = 0;
   const ModelAnalysis analysis = analyse_model(file, request);

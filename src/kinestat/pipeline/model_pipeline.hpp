@@ -109,7 +109,10 @@ struct ModelPictures {
 };
 
 /// `file` analysed for `kinestat draw` / `kinestat report` (no second-order classification of
-/// network motions: the pictures do not need it).
-ModelPictures picture_model(const io::ModelFile& file, std::optional<double> tolerance, bool traced_motion = false);
+/// network motions: the pictures do not need it). A framework with elastic data gets its cost
+/// of over-constraint in the scene (report::add_framework_cost) for `misfit` (model length
+/// unit; none: per unit misfit); a misfit for any other model is an io::InputError.
+ModelPictures picture_model(const io::ModelFile& file, std::optional<double> tolerance, bool traced_motion = false,
+                            std::optional<double> misfit = std::nullopt);
 
 }  // namespace kinestat::pipeline

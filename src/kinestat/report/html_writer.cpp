@@ -210,6 +210,7 @@ SceneJson scene_mode_json(const Scene& scene, const SceneMode& mode) {
   SceneJson entry = {{"label", mode.label}, {"velocity", velocity}, {"moving", mode.moving}, {"twists", twists}};
   if (mode.trace) entry["trace"] = trace_json(scene, *mode.trace);
   if (!mode.first_order_reason.empty()) entry["first_order"] = mode.first_order_reason;
+  if (!mode.kind.empty()) entry["kind"] = mode.kind;
   return entry;
 }
 
@@ -220,7 +221,9 @@ SceneJson scene_stress_json(const SceneStress& stress) {
   for (const auto& r : stress.resultants) resultants.push_back({r.element, r.deformation, scene_rounded(r.value)});
   auto wrenches = SceneJson::array();
   for (const auto& w : stress.wrenches) wrenches.push_back(screw_json(w));
-  return {{"label", stress.label}, {"value", value}, {"kind", stress.kind}, {"resultants", resultants}, {"wrenches", wrenches}};
+  SceneJson entry = {{"label", stress.label}, {"value", value}, {"kind", stress.kind}, {"resultants", resultants}, {"wrenches", wrenches}};
+  if (!stress.unit.empty()) entry["unit"] = stress.unit;  // a misfit stress (issue 38), not a unit-norm state
+  return entry;
 }
 
 }  // namespace

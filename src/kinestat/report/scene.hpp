@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "kinestat/design/verdict.hpp"
+#include "kinestat/framework/analysed_cost.hpp"
 #include "kinestat/framework/framework_analysis.hpp"
 #include "kinestat/framework/framework_model.hpp"
 #include "kinestat/framework/two_way_trace.hpp"
@@ -115,6 +116,9 @@ struct SceneMode {
   /// Frameworks without `trace`: why the animation is first order only, e.g. "blocked at second
   /// order by a self-stress". Empty for networks.
   std::string first_order_reason;
+  /// "" a kinematic mode; "vibration" an eigenmode of small free vibration (issue 38: models
+  /// with elastic data and mass), its frequency in the label.
+  std::string kind;
 };
 
 /// One generalised stress resultant of a self-stress (the element x deformation table).
@@ -135,6 +139,9 @@ struct SceneStress {
   std::vector<std::string> kind;
   std::vector<SceneResultant> resultants;  ///< frameworks: every non-zero resultant, in row order
   std::vector<SceneScrew> wrenches;        ///< networks: couplings that transmit an action
+  /// "" for a self-stress state (unit norm, no unit); otherwise the unit of `value` and of the
+  /// resultants: the stress a misfit locks in (issue 38), e.g. "N/mm^2".
+  std::string unit;
 };
 
 /// An edge of the coupling graph (networks) or of the pair graph (structures).
@@ -211,6 +218,14 @@ Scene sparse_network_scene(const network::Model& model, const network::SparseNet
 /// reason it is drawn to first order only.
 Scene framework_scene(const framework::FrameworkModel& model, const framework::FrameworkResult& analysis,
                       const std::vector<std::optional<framework::TwoWayTrace>>& traces = {});
+/// Adds the cost of over-constraint of a framework with elastic data (issue 38, item 5) to its
+/// scene: a stress entry colouring every element by the peak stress the worst misfit locks in
+/// (signed by the axial force when the element carries no moment; the worst element named in
+/// the label with its stress and unit), the lowest eigenmodes of free vibration as modes (kind
+/// "vibration", each node's translation in the mode shape, largest 1, frequency in Hz in the
+/// label) and two summary lines. A cost not computed adds one summary line saying why.
+void add_framework_cost(Scene& scene, const framework::FrameworkModel& model, const framework::AnalysedCost& cost);
+
 Scene structure_scene(const structure::StructureModel& model, const structure::StructureResult& decomposition);
 
 /// Fixed-precision text of a number for drawings and JSON: at most `digits` decimals,
