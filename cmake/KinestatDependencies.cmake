@@ -25,21 +25,11 @@ target_link_libraries(kinestat_suitesparse INTERFACE SuiteSparse::SPQR kinestat:
 #   libmujoco-dev -> MJCF.
 find_package(tinyxml2 QUIET)
 find_package(sdformat12 QUIET)
-find_package(mujoco QUIET)
-# Debian's libmujoco-dev names /usr/include/libqhull_r (package libqhull-dev) among its include
-# folders without depending on it; CMake refuses a target with a missing include folder.
-if(mujoco_FOUND)
-  get_target_property(mujoco_include_dirs mujoco::mujoco INTERFACE_INCLUDE_DIRECTORIES)
-  foreach(dir IN LISTS mujoco_include_dirs)
-    if(NOT EXISTS ${dir})
-      message(STATUS "MJCF reader off: ${dir} (named by libmujoco-dev) is missing; install libqhull-dev")
-      set(mujoco_FOUND FALSE)
-    endif()
-  endforeach()
-endif()
+# MuJoCo by its header and library, not its CMake package (which needs libgl-dev and libqhull-dev).
+include(${CMAKE_CURRENT_LIST_DIR}/kinestatMuJoCo.cmake)
 option(KINESTAT_WITH_TINYXML2 "URDF reader (libtinyxml2-dev)" ${tinyxml2_FOUND})
 option(KINESTAT_WITH_SDFORMAT "SDFormat reader (libsdformat-dev)" ${sdformat12_FOUND})
-option(KINESTAT_WITH_MUJOCO "MJCF reader (libmujoco-dev)" ${mujoco_FOUND})
+option(KINESTAT_WITH_MUJOCO "MJCF reader (libmujoco-dev)" ${KinestatMuJoCo_FOUND})
 # The include folders of imported target `imported` and of the imported targets it links,
 # without the compiler's own /usr/include (naming it breaks libstdc++'s #include_next).
 function(kinestat_include_folders imported out)
@@ -85,7 +75,20 @@ function(kinestat_add_readers target)
     set(have 0)
     if(KINESTAT_WITH_${reader})
       set(have 1)
-      find_package(${package} REQUIRED)
+      if(reader STREQUAL "MUJOCO")
+        if(NOT KinestatMuJoCo_FOUND)
+          message(FATAL_ERROR "KINESTAT_WITH_MUJOCO needs mujoco/mujoco.h and libmujoco (Debian: libmujoco-dev)")
+        endif()
+        string(APPEND dependencies "include(\${CMAKE_CURRENT_LIST_DIR}/kinestatMuJoCo.cmake)\n"
+               "if(NOT KinestatMuJoCo_FOUND)\n"
+               "  set(kinestat_FOUND FALSE)\n"
+               "  set(kinestat_NOT_FOUND_MESSAGE \"kinestat was built with the MJCF reader: it needs libmujoco (Debian: libmujoco-dev)\")\n"
+               "  return()\n"
+               "endif()\n")
+      else()
+        find_package(${package} REQUIRED)
+        string(APPEND dependencies "find_dependency(${package})\n")
+      endif()
       # As system headers (-isystem), so that their warnings do not stop a -Werror build.
       kinestat_include_folders(${imported} folders)
       set(options "")
@@ -94,7 +97,6 @@ function(kinestat_add_readers target)
       endforeach()
       set_property(SOURCE ${${reader}_sources} TARGET_DIRECTORY ${target} APPEND PROPERTY COMPILE_OPTIONS ${options})
       target_link_libraries(${target} PRIVATE $<LINK_ONLY:${imported}>)
-      string(APPEND dependencies "find_dependency(${package})\n")
     endif()
     set_property(SOURCE ${dir}/urdf_reader.cpp ${dir}/sdformat_reader.cpp ${dir}/mjcf_reader.cpp TARGET_DIRECTORY ${target}
                  APPEND PROPERTY COMPILE_DEFINITIONS KINESTAT_HAVE_${reader}=${have})

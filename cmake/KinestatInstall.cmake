@@ -50,6 +50,7 @@ configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/kinestatConfig.cmake.i
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/kinestatConfigVersion.cmake COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/kinestatConfig.cmake ${PROJECT_BINARY_DIR}/kinestatConfigVersion.cmake
               ${KINESTAT_VIEWER_WORK}/viewer_built_in.cmake ${PROJECT_SOURCE_DIR}/cmake/kinestatSuiteSparse.cmake
+              ${PROJECT_SOURCE_DIR}/cmake/kinestatMuJoCo.cmake
         DESTINATION ${KINESTAT_CMAKE_DIR} COMPONENT Development)
 
 # pkg-config: the prefix is found from the file's own folder (${pcfiledir}), so the file is

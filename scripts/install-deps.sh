@@ -3,11 +3,12 @@
 # Installs kinestat's build and test dependencies from Debian 12 packages. Run it as root, or
 # as a user who may use sudo; anything else stops here with a message.
 # The readers of other formats are optional (docs/formats.md): libtinyxml2-dev for URDF,
-# libsdformat-dev for SDFormat, libmujoco-dev for MJCF (its CMake package names the headers of
-# libqhull-dev, which it does not depend on); CI installs them so every reader is tested.
+# libsdformat-dev for SDFormat, libmujoco-dev for MJCF; CI installs them so every reader is tested.
 set -euo pipefail
-# --minimal: only what the `user` preset needs (library, command, Python module, HTML viewer,
-# every reader); no test frameworks, benchmarks, clang, Chromium, PETSc or MPI.
+# --minimal: only what the `user` preset needs for the library, the command and every reader;
+# no test frameworks, benchmarks, clang, Chromium, PETSc or MPI, no Python module (python3-dev
+# python3-pybind11 python3-numpy) and no npm for the HTML report's viewer (without npm the build
+# leaves the viewer out and `kinestat report` says so). Install those and build again to add them.
 minimal=false
 case "${1:-}" in
   --minimal) minimal=true ;;
@@ -17,14 +18,15 @@ esac
 packages=(
   git build-essential cmake ninja-build pkg-config
   libeigen3-dev libsuitesparse-dev libopenblas-dev libgmp-dev libflint-dev libyaml-dev libcli11-dev nlohmann-json3-dev libfmt-dev
-  # libmujoco-dev's CMake package also asks for OpenGL's headers (libgl-dev) and names
-  # libqhull-dev's; without them the MJCF reader is left out quietly.
-  libtinyxml2-dev libsdformat-dev libmujoco-dev libqhull-dev libgl-dev
-  # The Python module (pybind11), for Debian's /usr/bin/python3.
-  python3-dev python3-pybind11 python3-numpy
+  # MuJoCo is found by its header and library (cmake/kinestatMuJoCo.cmake), not by its CMake
+  # package, which would also want libgl-dev (Mesa, LLVM) and libqhull-dev.
+  libtinyxml2-dev libsdformat-dev libmujoco-dev
 )
 if ! $minimal; then
   packages+=(
+    # The Python module (pybind11), for Debian's /usr/bin/python3; the `user` preset builds it
+    # too when these are installed (KINESTAT_PYTHON=AUTO).
+    python3-dev python3-pybind11 python3-numpy
     libgtest-dev libgmock-dev libbenchmark-dev python3-pytest
     # The Python tests: pip install into a venv, the sparse rigidity matrix, the example notebook
     # executed by Jupyter (each test is skipped without its package).
@@ -42,11 +44,11 @@ if ! $minimal; then
     # (ctest label `mpi`, under mpirun -n 2); a build without them simply leaves it out.
     petsc-dev slepc-dev libopenmpi-dev openmpi-bin
   )
+  # Node.js and npm build the HTML report viewer. Machines that already have them (for example
+  # NodeSource's nodejs, which conflicts with Debian's npm package) keep their own.
+  if ! command -v node >/dev/null 2>&1; then packages+=(nodejs); fi
+  if ! command -v npm >/dev/null 2>&1; then packages+=(npm); fi
 fi
-# Node.js and npm build the HTML report viewer. Machines that already have them (for example
-# NodeSource's nodejs, which conflicts with Debian's npm package) keep their own.
-if ! command -v node >/dev/null 2>&1; then packages+=(nodejs); fi
-if ! command -v npm >/dev/null 2>&1; then packages+=(npm); fi
 as_root=()
 if [ "$(id -u)" -ne 0 ]; then
   if ! command -v sudo >/dev/null 2>&1; then
