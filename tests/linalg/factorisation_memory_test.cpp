@@ -40,19 +40,12 @@ bool two_or_more_per_column(const Eigen::SparseMatrix<double>& a) {
   return true;
 }
 
-class FactorisationMemory : public ::testing::Test {
- protected:
-  void TearDown() override { set_factorisation_memory_limit(0); }
-};
-
-TEST_F(FactorisationMemory, DefaultLimitIsTheMachinesMemory) {
-  set_factorisation_memory_limit(0);
-  EXPECT_GT(factorisation_memory_limit(), std::uint64_t{1} << 26);  // any machine that runs this suite has 64 MB
-  set_factorisation_memory_limit(12345);
-  EXPECT_EQ(factorisation_memory_limit(), 12345U);
+TEST(FactorisationMemory, DefaultLimitIsTheMachinesMemory) {
+  EXPECT_GT(MemoryLimit{}.resolved(), std::uint64_t{1} << 26);  // any machine that runs this suite has 64 MB
+  EXPECT_EQ(MemoryLimit{12345}.resolved(), 12345U);
 }
 
-TEST_F(FactorisationMemory, TooLargeIsRefusedAfterTheAnalysisWithWhatItWouldNeed) {
+TEST(FactorisationMemory, TooLargeIsRefusedAfterTheAnalysisWithWhatItWouldNeed) {
   const Eigen::SparseMatrix<double> a = random_three_per_column(600, 400, 7);
   ASSERT_TRUE(two_or_more_per_column(a));
   bool asked = false;
@@ -60,10 +53,9 @@ TEST_F(FactorisationMemory, TooLargeIsRefusedAfterTheAnalysisWithWhatItWouldNeed
     asked = true;
     return 1e-10;
   };
-  set_factorisation_memory_limit(1000);
   double needed = 0.0;
   try {
-    const SparseQr refused(a, threshold);
+    const SparseQr refused(a, threshold, MemoryLimit{1000});
     FAIL() << "a factorisation beyond the limit was made";
   } catch (const FactorisationTooLarge& error) {
     needed = error.bytes_needed();
@@ -75,14 +67,12 @@ TEST_F(FactorisationMemory, TooLargeIsRefusedAfterTheAnalysisWithWhatItWouldNeed
   EXPECT_FALSE(asked) << "refused before the numeric factorisation, which needs the threshold";
   EXPECT_GT(needed, 1000.0);
 
-  set_factorisation_memory_limit(0);
-  const SparseQr made(a, threshold);
+  const SparseQr made(a, threshold);  // the default limit: the machine's memory
   EXPECT_TRUE(asked);
   EXPECT_GE(needed, 8.0 * static_cast<double>(made.r().nonZeros()));
   EXPECT_LE(needed, static_cast<double>(made.peak_memory()));
   // Well below the limit nothing is refused.
-  set_factorisation_memory_limit(static_cast<std::uint64_t>(needed));
-  EXPECT_NO_THROW(SparseQr(a, threshold));
+  EXPECT_NO_THROW(SparseQr(a, threshold, MemoryLimit{static_cast<std::uint64_t>(needed)}));
 }
 
 }  // namespace

@@ -106,12 +106,13 @@ double relative_residual(const Eigen::SparseMatrix<double>& a, const Eigen::Matr
 // Sparse path with vectors: the first `limit` modes from the QR of D(c), the first `limit`
 // stress states and the releases from the QR of the row-weighted D(c)ᵀ, and the coordinates
 // to constrain from the QR of the kept rows. Same threshold for all three.
-void sparse_vectors(FrameworkResult& result, const Eigen::SparseMatrix<double>& jacobian, Eigen::Index limit) {
+void sparse_vectors(FrameworkResult& result, const Eigen::SparseMatrix<double>& jacobian, Eigen::Index limit,
+                    linalg::MemoryLimit memory_limit) {
   const double threshold = result.decision.threshold;
   const double largest = result.decision.largest;
   result.vector_limit = limit;
   {
-    const linalg::SparseQr qr(jacobian, threshold);
+    const linalg::SparseQr qr(jacobian, threshold, memory_limit);
     linalg::record_rank(result.decision, qr);
     // The modes are solved through R11: its σ_min is the evidence that matters for them.
     linalg::record_factor_smallest(result.decision, qr);
@@ -129,12 +130,12 @@ void sparse_vectors(FrameworkResult& result, const Eigen::SparseMatrix<double>& 
   std::vector<Eigen::Index> kept_rows;
   {
     const Eigen::SparseMatrix<double> transposed = jacobian.transpose();
-    linalg::SparseQr qr(transposed * weights.asDiagonal(), threshold);
+    linalg::SparseQr qr(transposed * weights.asDiagonal(), threshold, memory_limit);
     // Heath's rule on columns weighted by 10³ can keep a dependent one (its rounding residual
     // is weighted too): then the weights are dropped rather than the rank changed.
     Eigen::VectorXd used = weights;
     if (qr.rank() != result.decision.rank) {
-      qr = linalg::SparseQr(transposed, threshold);
+      qr = linalg::SparseQr(transposed, threshold, memory_limit);
       used.setOnes();
     }
     result.factor_memory = std::max(result.factor_memory, qr.peak_memory());
@@ -154,7 +155,7 @@ void sparse_vectors(FrameworkResult& result, const Eigen::SparseMatrix<double>& 
   for (std::size_t i = 0; i < kept_rows.size(); ++i) ones.emplace_back(static_cast<Eigen::Index>(i), kept_rows[i], 1.0);
   selection.setFromTriplets(ones.begin(), ones.end());
   const Eigen::SparseMatrix<double> kept = selection * jacobian;
-  const linalg::SparseQr qr(kept, threshold);
+  const linalg::SparseQr qr(kept, threshold, memory_limit);
   result.factor_memory = std::max(result.factor_memory, qr.peak_memory());
   result.constrain = qr.live_and_dead_columns().second;
   result.vectors = true;
@@ -214,13 +215,14 @@ FrameworkResult analyse_framework(const FrameworkModel& model, const AnalysisOpt
     result.method = RankMethod::sparse_qr;
     if (options.sparse_vectors > 0 && result.m > 0 && result.n > 0) {
       result.decision = linalg::sparse_rank_threshold(jacobian, tolerance);
-      sparse_vectors(result, jacobian, options.sparse_vectors);
+      sparse_vectors(result, jacobian, options.sparse_vectors, options.memory_limit);
     } else {
       // Counts only: D(c) ordered node by node (a nested dissection of the node graph) where
       // that graph keeps most of D(c)'s structure; it costs a fraction of METIS on the columns
       // of D(c)ᵀD(c). The vector path keeps METIS: its dead columns pick the printed bases and
       // the release proposal.
-      result.decision = linalg::sparse_numerical_rank(jacobian, tolerance, &result.factor_memory, node_of_columns(result));
+      result.decision = linalg::sparse_numerical_rank(jacobian, tolerance, &result.factor_memory, node_of_columns(result),
+                                                      options.memory_limit);
     }
   } else if (!options.vectors) {
     // Counts only: singular values without singular vectors.

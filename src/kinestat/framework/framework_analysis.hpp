@@ -14,6 +14,7 @@
 #include "kinestat/framework/framework_jacobian.hpp"
 #include "kinestat/framework/framework_model.hpp"
 #include "kinestat/framework/mode_order.hpp"
+#include "kinestat/linalg/factorisation_memory.hpp"
 #include "kinestat/linalg/rank_decision.hpp"
 #include "kinestat/stop_request.hpp"
 #include "kinestat/tolerances.hpp"
@@ -32,6 +33,9 @@ struct AnalysisOptions {
   /// and the first k stress states (null vectors from the sparse R factors) and the release
   /// proposal, at the cost of three sparse QR factorisations (D(c), D(c)ᵀ, kept rows of D(c)).
   Eigen::Index sparse_vectors = 0;
+  /// Sparse path: the most memory one sparse QR factorisation may plan to use (default: the
+  /// machine's physical memory); beyond it the analysis throws linalg::FactorisationTooLarge.
+  linalg::MemoryLimit memory_limit;
   /// Dense path with vectors: classify every mode at second order and trace the modes that pass
   /// (framework/second_order.hpp); bars only, up to kSecondOrderSizeLimit rows and columns.
   bool second_order = true;

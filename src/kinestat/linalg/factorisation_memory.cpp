@@ -4,15 +4,12 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
-#include <atomic>
 #include <limits>
 #include <string>
 
 namespace kinestat::linalg {
 
 namespace {
-
-std::atomic<std::uint64_t> memory_limit{0};  // 0: the machine's physical memory
 
 std::uint64_t physical_memory_bytes() {
   const long pages = ::sysconf(_SC_PHYS_PAGES);
@@ -38,11 +35,6 @@ FactorisationTooLarge::FactorisationTooLarge(double bytes_needed, bool at_least,
       bytes_allowed_(bytes_allowed),
       flops_(flops) {}
 
-std::uint64_t factorisation_memory_limit() {
-  const std::uint64_t set = memory_limit.load();
-  return set != 0 ? set : physical_memory_bytes();
-}
-
-void set_factorisation_memory_limit(std::uint64_t bytes) { memory_limit.store(bytes); }
+std::uint64_t MemoryLimit::resolved() const { return bytes != 0 ? bytes : physical_memory_bytes(); }
 
 }  // namespace kinestat::linalg

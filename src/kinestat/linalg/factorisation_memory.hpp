@@ -7,7 +7,9 @@
 // stack grows with the square of the model: a random network of 3·10⁴ couplings took 11 GB and
 // 6 minutes, one of 10⁵ would need far more than a workstation has. Such a factorisation is
 // refused after the analysis with what it would need, instead of failing in an allocation
-// (or, memory being overcommitted, being killed by the system) later.
+// (or, memory being overcommitted, being killed by the system) later. The limit is the caller's
+// option (MemoryLimit, carried by the analysis options down to SparseQr), never process-wide
+// state: two analyses in one process may have different limits.
 
 #include <cstdint>
 
@@ -19,7 +21,7 @@ namespace kinestat::linalg {
 inline constexpr int kExitTooLarge = 3;
 
 /// A sparse factorisation that needs more memory than it may have: refused after SuiteSparseQR's
-/// symbolic analysis predicted more than factorisation_memory_limit(), or stopped when an
+/// symbolic analysis predicted more than its MemoryLimit, or stopped when an
 /// allocation failed after that analysis (then the analysis's R alone gives a lower bound).
 /// what() says how much, why and what to do.
 class FactorisationTooLarge : public Error {
@@ -37,11 +39,13 @@ class FactorisationTooLarge : public Error {
   double bytes_needed_, bytes_allowed_, flops_;
 };
 
-/// The most memory (bytes) one sparse factorisation may plan to use: the limit set with
-/// set_factorisation_memory_limit, else the machine's physical memory. Thread-safe.
-std::uint64_t factorisation_memory_limit();
-
-/// Sets that limit in bytes; 0 restores the default (the machine's physical memory). Thread-safe.
-void set_factorisation_memory_limit(std::uint64_t bytes);
+/// The most memory one sparse factorisation may plan to use (SuiteSparseQR's stack of fronts):
+/// an option of the caller, passed to SparseQr and sparse_qr_rank by the analyses
+/// (framework::AnalysisOptions::memory_limit, network::AnalysisOptions::memory_limit).
+struct MemoryLimit {
+  std::uint64_t bytes = 0;  ///< bytes; 0: the machine's physical memory
+  /// `bytes`, or the machine's physical memory when 0 (no limit when the system does not say).
+  std::uint64_t resolved() const;
+};
 
 }  // namespace kinestat::linalg

@@ -91,18 +91,17 @@ struct SpqrInput {
 // SuiteSparseQR does when Q is not asked for, so the same factorisation, rank and R.
 class FrontalFactorisation {
  public:
-  FrontalFactorisation(SpqrInput& input, bool given_order, double threshold) {
-    start();
-    factor_whole(input, given_order, threshold);
-  }
-
-  // The same factorisation (METIS order), the threshold asked for after the order and the
-  // symbolic analysis where they do not depend on it: with every column holding two or more
+  // The factorisation, the threshold asked for after the METIS order and the symbolic analysis
+  // where they do not depend on it: with every column holding two or more
   // entries spqr_1factor finds no column singletons, whatever the threshold, and factors A
   // itself in the order of spqr_1colamd, which is METIS on the pattern of Aᵀ, postordered. The
   // calls below are spqr_1factor's and spqr_1colamd's in that case, in their order, with their
-  // arguments (SuiteSparse 5.12, SPQR/Source/spqr_1factor.cpp and spqr_1colamd.cpp).
-  FrontalFactorisation(SpqrInput& input, bool given_order, const std::function<double()>& threshold) {
+  // arguments (SuiteSparse 5.12, SPQR/Source/spqr_1factor.cpp and spqr_1colamd.cpp). Every
+  // factorisation that can takes this way, whether or not its threshold is known, so that one
+  // whose stack of fronts would exceed `memory_limit` is refused before any numeric work.
+  FrontalFactorisation(SpqrInput& input, bool given_order, const std::function<double()>& threshold,
+                       MemoryLimit memory_limit)
+      : memory_limit_(memory_limit.resolved()) {
     start();
     if (given_order || !every_column_has_two_entries(input.view)) {
       factor_whole(input, given_order, ask(threshold));
@@ -130,7 +129,7 @@ class FrontalFactorisation {
     check(qr_->QRsym != nullptr);
     // spqr_factorize allocates this stack of doubles (the fronts, and R in place of each) at once.
     const double stack_bytes = static_cast<double>(sizeof(double)) * static_cast<double>(qr_->QRsym->maxstack);
-    if (const auto limit = static_cast<double>(factorisation_memory_limit()); stack_bytes > limit) {
+    if (const auto limit = static_cast<double>(memory_limit_); stack_bytes > limit) {
       const double flops = cc_.SPQR_flopcount_bound;
       release();
       throw FactorisationTooLarge(stack_bytes, /*at_least*/ false, flops, limit);
@@ -250,7 +249,7 @@ class FrontalFactorisation {
     const double r_bytes = static_cast<double>(sizeof(double)) * static_cast<double>(cc_.SPQR_istat[0]);
     const double flops = cc_.SPQR_flopcount_bound;
     release();
-    if (status == CHOLMOD_OUT_OF_MEMORY && r_bytes > static_cast<double>(factorisation_memory_limit()) / 8)
+    if (status == CHOLMOD_OUT_OF_MEMORY && r_bytes > static_cast<double>(memory_limit_) / 8)
       throw FactorisationTooLarge(r_bytes, /*at_least*/ true, flops, 0.0);
     if (status == CHOLMOD_OUT_OF_MEMORY) throw std::bad_alloc();
     throw std::runtime_error("SuiteSparseQR failed (status " + std::to_string(status) + ")");
@@ -261,6 +260,7 @@ class FrontalFactorisation {
   }
   cholmod_common cc_{};
   SuiteSparseQR_factorization<double>* qr_ = nullptr;
+  std::uint64_t memory_limit_;  // bytes (MemoryLimit::resolved)
 };
 
 }  // namespace
@@ -271,25 +271,27 @@ struct SparseQr::Factor {
   std::vector<double> values;
 };
 
-SparseQr::SparseQr(const Eigen::SparseMatrix<double>& a, double threshold)
+SparseQr::SparseQr(const Eigen::SparseMatrix<double>& a, double threshold, MemoryLimit memory_limit)
     : factor_(std::make_unique<Factor>()), rows_(a.rows()), cols_(a.cols()) {
-  factor(a, [threshold] { return threshold; }, {}, false);
+  factor(a, [threshold] { return threshold; }, {}, memory_limit);
 }
 
-SparseQr::SparseQr(const Eigen::SparseMatrix<double>& a, const std::function<double()>& threshold)
+SparseQr::SparseQr(const Eigen::SparseMatrix<double>& a, const std::function<double()>& threshold,
+                   MemoryLimit memory_limit)
     : factor_(std::make_unique<Factor>()), rows_(a.rows()), cols_(a.cols()) {
-  factor(a, threshold, {}, true);
+  factor(a, threshold, {}, memory_limit);
 }
 
-SparseQr::SparseQr(const Eigen::SparseMatrix<double>& a, double threshold, const std::vector<Eigen::Index>& column_order)
+SparseQr::SparseQr(const Eigen::SparseMatrix<double>& a, double threshold, const std::vector<Eigen::Index>& column_order,
+                   MemoryLimit memory_limit)
     : factor_(std::make_unique<Factor>()), rows_(a.rows()), cols_(a.cols()) {
   if (static_cast<Eigen::Index>(column_order.size()) != cols_)
     throw std::invalid_argument("SparseQr: the column order must list every column once");
-  factor(a, [threshold] { return threshold; }, column_order, false);
+  factor(a, [threshold] { return threshold; }, column_order, memory_limit);
 }
 
 void SparseQr::factor(const Eigen::SparseMatrix<double>& a, const std::function<double()>& threshold,
-                      const std::vector<Eigen::Index>& column_order, bool threshold_late) {
+                      const std::vector<Eigen::Index>& column_order, MemoryLimit memory_limit) {
   if (rows_ == 0 || cols_ == 0) {
     threshold();  // asked for in every case, so that a caller's promise is always collected
     for (Eigen::Index j = 0; j < cols_; ++j) permutation_.push_back(j);
@@ -298,8 +300,7 @@ void SparseQr::factor(const Eigen::SparseMatrix<double>& a, const std::function<
   }
   const bool given = !column_order.empty();
   SpqrInput input(a, column_order);
-  const FrontalFactorisation qr = threshold_late ? FrontalFactorisation(input, given, threshold)
-                                                 : FrontalFactorisation(input, given, threshold());
+  const FrontalFactorisation qr(input, given, threshold, memory_limit);
   rank_ = static_cast<Eigen::Index>(qr.factor().rank);
   // R assembled once, straight into trapezoidal form: the live columns first, each group in
   // the factorisation's order, every entry in its row of the squeezed R. SuiteSparseQR makes
@@ -335,13 +336,14 @@ void SparseQr::factor(const Eigen::SparseMatrix<double>& a, const std::function<
   }
 }
 
-SparseRankCount sparse_qr_rank(const Eigen::SparseMatrix<double>& a, double threshold, const std::vector<Eigen::Index>& column_order) {
+SparseRankCount sparse_qr_rank(const Eigen::SparseMatrix<double>& a, double threshold, const std::vector<Eigen::Index>& column_order,
+                               MemoryLimit memory_limit) {
   if (!column_order.empty() && static_cast<Eigen::Index>(column_order.size()) != a.cols())
     throw std::invalid_argument("SparseQr: the column order must list every column once");
   SparseRankCount count;
   if (a.rows() == 0 || a.cols() == 0) return count;
   SpqrInput input(a, column_order);
-  const FrontalFactorisation qr(input, !column_order.empty(), threshold);
+  const FrontalFactorisation qr(input, !column_order.empty(), [threshold] { return threshold; }, memory_limit);
   count.rank = static_cast<Eigen::Index>(qr.factor().rank);
   count.peak_memory = qr.peak_memory();
   double smallest = std::numeric_limits<double>::infinity();

@@ -14,6 +14,8 @@
 #include <memory>
 #include <vector>
 
+#include "kinestat/linalg/factorisation_memory.hpp"
+
 namespace kinestat::linalg {
 
 /// The R factor: compressed columns with 64-bit indices, as SuiteSparse stores sparse matrices.
@@ -22,11 +24,13 @@ using SparseFactorView = Eigen::Map<const Eigen::SparseMatrix<double, Eigen::Col
 /// A·P = Q·R of an m × n sparse matrix A, Q discarded. Columns whose remaining 2-norm falls to
 /// `threshold` or below during the factorisation (Heath's rule, as in SuiteSparseQR) are dead:
 /// P puts the `rank` live columns first, so R = [R11 R12] with R11 rank × rank upper
-/// triangular and non-singular.
+/// triangular and non-singular. `memory_limit`: a factorisation whose symbolic analysis predicts
+/// more memory than this is refused with FactorisationTooLarge before the numeric work (METIS
+/// order and every column with two or more entries; otherwise when an allocation fails).
 class SparseQr {
  public:
   /// Factors `a`; `threshold` is absolute (same units as the entries of `a`).
-  SparseQr(const Eigen::SparseMatrix<double>& a, double threshold);
+  SparseQr(const Eigen::SparseMatrix<double>& a, double threshold, MemoryLimit memory_limit = {});
   /// Factors `a` with the caller's fill-reducing order instead of METIS: column_order[k] is the
   /// column of `a` placed k-th (a permutation of 0 … cols − 1). SuiteSparseQR keeps that order
   /// apart from its column singletons and the postorder of the column elimination tree; the
@@ -34,7 +38,8 @@ class SparseQr {
   /// depends on the order (Heath's rule drops a column dependent on those before it), the rank
   /// only where the gap at the threshold is clear. Throws std::invalid_argument unless
   /// column_order is a permutation of the columns.
-  SparseQr(const Eigen::SparseMatrix<double>& a, double threshold, const std::vector<Eigen::Index>& column_order);
+  SparseQr(const Eigen::SparseMatrix<double>& a, double threshold, const std::vector<Eigen::Index>& column_order,
+           MemoryLimit memory_limit = {});
   /// Factors `a` as SparseQr(a, threshold()) does, the same factorisation, but calls
   /// `threshold` (which may block, e.g. on a future) only once METIS has ordered the columns
   /// and SuiteSparseQR has analysed the structure, so that the caller can compute the threshold
@@ -42,7 +47,7 @@ class SparseQr {
   /// threshold then changes nothing before the numeric factorisation (SuiteSparseQR's column
   /// singletons are the columns with one entry above it, or none). Otherwise `threshold` is
   /// called first.
-  SparseQr(const Eigen::SparseMatrix<double>& a, const std::function<double()>& threshold);
+  SparseQr(const Eigen::SparseMatrix<double>& a, const std::function<double()>& threshold, MemoryLimit memory_limit = {});
   ~SparseQr();
   SparseQr(const SparseQr&) = delete;
   SparseQr& operator=(const SparseQr&) = delete;
@@ -86,10 +91,9 @@ class SparseQr {
  private:
   struct Factor;
   // Factors `a` with its columns taken in `column_order` (empty: as they are, ordered by METIS);
-  // with `threshold_late`, the threshold is asked for as late as the factorisation allows (see
-  // the constructor), else first.
+  // the threshold is asked for as late as the factorisation allows (see the constructor).
   void factor(const Eigen::SparseMatrix<double>& a, const std::function<double()>& threshold,
-              const std::vector<Eigen::Index>& column_order, bool threshold_late);
+              const std::vector<Eigen::Index>& column_order, MemoryLimit memory_limit);
   // In place: w ← R11⁻ᵀ w and w ← R11⁻¹ w (w has rank() entries, in the order of P).
   void solve_transposed_live(Eigen::VectorXd& w) const;
   void solve_live(Eigen::VectorXd& w) const;
@@ -111,9 +115,9 @@ struct SparseRankCount {
 /// but read from its frontal blocks: R is never assembled as a sparse matrix, which saves
 /// nnz(R)·16 bytes of memory and a pass over R (peak RSS 2.2 → 1.35 GB on a 10⁶-bar
 /// triangular lattice). For counts only; null vectors and solves need SparseQr. `threshold`
-/// is absolute (units of the entries of `a`). Throws std::invalid_argument unless
-/// column_order is empty or a permutation of the columns.
+/// is absolute (units of the entries of `a`); `memory_limit` as SparseQr's. Throws
+/// std::invalid_argument unless column_order is empty or a permutation of the columns.
 SparseRankCount sparse_qr_rank(const Eigen::SparseMatrix<double>& a, double threshold,
-                               const std::vector<Eigen::Index>& column_order = {});
+                               const std::vector<Eigen::Index>& column_order = {}, MemoryLimit memory_limit = {});
 
 }  // namespace kinestat::linalg

@@ -102,7 +102,8 @@ void record_factor_smallest(RankDecision& decision, const SparseQr& qr) {
 }
 
 RankDecision sparse_numerical_rank(const Eigen::SparseMatrix<double>& a, const RankTolerance& tolerance,
-                                   std::size_t* peak_memory, const std::vector<Eigen::Index>& column_groups) {
+                                   std::size_t* peak_memory, const std::vector<Eigen::Index>& column_groups,
+                                   MemoryLimit memory_limit) {
   if (a.rows() == 0 || a.cols() == 0) return sparse_rank_threshold(a, tolerance);
   // SPQR is fastest on tall matrices; rank(A) = rank(Aᵀ).
   const bool tall = a.rows() >= a.cols();
@@ -113,8 +114,9 @@ RankDecision sparse_numerical_rank(const Eigen::SparseMatrix<double>& a, const R
       grouped ? grouped_nested_dissection_order(a, column_groups, kGroupedOrderMinShare) : std::vector<Eigen::Index>{};
   RankDecision decision = sparse_rank_threshold(a, tolerance);
   // Counts only: R is not needed beyond its pivots (sparse_qr_rank).
-  const SparseRankCount count = tall ? sparse_qr_rank(a, decision.threshold, order)
-                                     : sparse_qr_rank(Eigen::SparseMatrix<double>(a.transpose()), decision.threshold);
+  const SparseRankCount count =
+      tall ? sparse_qr_rank(a, decision.threshold, order, memory_limit)
+           : sparse_qr_rank(Eigen::SparseMatrix<double>(a.transpose()), decision.threshold, {}, memory_limit);
   record_rank(decision, count);
   if (peak_memory != nullptr) *peak_memory = count.peak_memory;
   return decision;

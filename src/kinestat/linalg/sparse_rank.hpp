@@ -24,8 +24,10 @@ namespace kinestat::linalg {
 /// provided the group graph keeps at least 0.4 of the column couplings (see that function; the
 /// same rank wherever the gap at the threshold is clear, a cheaper ordering of a graph with a
 /// fraction of the vertices). Otherwise, and for a wider matrix (factored as Aᵀ), METIS.
+/// `memory_limit`: as SparseQr's (FactorisationTooLarge beyond it).
 RankDecision sparse_numerical_rank(const Eigen::SparseMatrix<double>& a, const RankTolerance& tolerance = {},
-                                   std::size_t* peak_memory = nullptr, const std::vector<Eigen::Index>& column_groups = {});
+                                   std::size_t* peak_memory = nullptr, const std::vector<Eigen::Index>& column_groups = {},
+                                   MemoryLimit memory_limit = {});
 
 
 /// The absolute threshold of the rank rule for `a`, with σ_max estimated: `decision.largest`,

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "kinestat/linalg/factorisation_memory.hpp"
 #include "kinestat/linalg/rank_decision.hpp"
 #include "kinestat/network/model.hpp"
 #include "kinestat/network/network_result.hpp"
@@ -49,6 +50,9 @@ struct AnalysisOptions {
   std::vector<std::pair<std::string, screw::Rational>> values;  ///< added to / overriding Model::values
   bool all_pairs = true;                               ///< every pair of bodies, or only coupled pairs
   StopRequest stop;  ///< the caller's request to stop (Ctrl-C in Python), polled between stages; throws Stopped
+  /// Sparse path: the most memory one sparse QR factorisation may plan to use (default: the
+  /// machine's physical memory); beyond it the analysis throws linalg::FactorisationTooLarge.
+  linalg::MemoryLimit memory_limit;
 };
 
 /// A problem with the model that the reader cannot see (it needs the analysis): `field` names

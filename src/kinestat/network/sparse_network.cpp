@@ -107,10 +107,10 @@ struct FactorSide {
 // Factors `a` (K or Kᵀ) with the rank rule `undecided` (threshold and σ_max of the system,
 // rank not yet decided) and fills a FactorSide.
 FactorSide factor_side(const Eigen::SparseMatrix<double>& a, const linalg::RankDecision& undecided, Index vectors,
-                       bool pair_vectors, Index d) {
+                       bool pair_vectors, Index d, linalg::MemoryLimit memory_limit) {
   FactorSide side;
   side.rank = undecided;
-  const linalg::SparseQr qr(a, side.rank.threshold);
+  const linalg::SparseQr qr(a, side.rank.threshold, memory_limit);
   linalg::record_rank(side.rank, qr);
   linalg::record_factor_smallest(side.rank, qr);
   side.support_zero = support_zero(side.rank);
@@ -344,7 +344,8 @@ void sparse_network_in_user_frame(const screw::ScrewSpace& space, SparseNetworkR
       r.motion_basis.col(j).segment(block, d) = r.frame.twist_to_user(r.motion_basis.col(j).segment(block, d), space);
 }
 
-SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances& tolerances, Index vectors, bool pair_vectors) {
+SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances& tolerances, Index vectors, bool pair_vectors,
+                                           linalg::MemoryLimit memory_limit) {
   // 1. System: K in the conditioned frame, the row actions in the user's, the rank rule.
   SparseNetworkResult r = build_body_twist_system(model, tolerances);
   std::vector<bool> stressed(static_cast<std::size_t>(r.e), false), moving(static_cast<std::size_t>(r.e), false);
@@ -355,10 +356,10 @@ SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances&
     const Eigen::SparseMatrix<double> kt = r.K.transpose();
     // 2. Motions: a generic body-twist vector with K T = 0 (the null space of (Kᵀ)ᵀ, from the QR
     // of Kᵀ; its null vectors are self-stresses); a coupling moves when T_to ≠ T_from.
-    FactorSide motions = factor_side(kt, r.rank, vectors, pair_vectors, r.d);
+    FactorSide motions = factor_side(kt, r.rank, vectors, pair_vectors, r.d, memory_limit);
     // 3. Self-stresses: generic action magnitudes λ with Kᵀ λ = 0 (every body in equilibrium),
     // from the QR of K; its null vectors are motions.
-    FactorSide stresses = factor_side(r.K, r.rank, vectors, pair_vectors, r.d);
+    FactorSide stresses = factor_side(r.K, r.rank, vectors, pair_vectors, r.d, memory_limit);
     // 4. Merge.
     merge_factor_sides(model, kt, motions, stresses, vectors, pair_vectors, r, stressed, moving);
   } else {

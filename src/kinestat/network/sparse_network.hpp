@@ -16,6 +16,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include "kinestat/linalg/factorisation_memory.hpp"
 #include "kinestat/linalg/rank_decision.hpp"
 #include "kinestat/network/model.hpp"
 #include "kinestat/network/network_result.hpp"
@@ -158,7 +159,9 @@ void sparse_network_in_user_frame(const screw::ScrewSpace& space, SparseNetworkR
 /// With `vectors` > 0 also the first `vectors` basis vectors of the motions and of the
 /// self-stresses (motion_basis, stress_basis), at the cost of one triangular solve each. With
 /// `pair_vectors` also generic_motions and generic_stresses (2d least-squares solves).
+/// `memory_limit`: of each factorisation (linalg::FactorisationTooLarge beyond it).
 SparseNetworkResult analyse_network_sparse(const Model& model, const Tolerances& tolerances = {},
-                                           Eigen::Index vectors = 0, bool pair_vectors = false);
+                                           Eigen::Index vectors = 0, bool pair_vectors = false,
+                                           linalg::MemoryLimit memory_limit = {});
 
 }  // namespace kinestat::network

@@ -85,12 +85,13 @@ NetworkAnalysis analyse_dense_network(const network::Model& model, const network
 }
 
 SparseNetworkAnalysis analyse_sparse_network(const network::Model& model, const Tolerances& tolerances,
-                                             const std::vector<std::pair<int, int>>& chosen, bool coupled_pairs) {
+                                             const std::vector<std::pair<int, int>>& chosen, bool coupled_pairs,
+                                             linalg::MemoryLimit memory_limit) {
   SparseNetworkAnalysis a;
   a.listed_pairs = !chosen.empty() || coupled_pairs;
   // The analysis, then the verdict's idle spins (which need only K): one after the other, no
   // callback between the factorisations (issue 36: running them beside K's factor saved nothing).
-  a.result = network::analyse_network_sparse(model, tolerances, design::kSparseVerdictStates, a.listed_pairs);
+  a.result = network::analyse_network_sparse(model, tolerances, design::kSparseVerdictStates, a.listed_pairs, memory_limit);
   const std::vector<design::IdleMotion> idle_spins = design::sparse_idle_spins(model, a.result, tolerances);
   if (a.listed_pairs) a.pairs = network::sparse_pair_freedoms(model, a.result, chosen, coupled_pairs, tolerances);
   a.verdict = design::sparse_network_verdict(model, a.result, idle_spins);
@@ -100,7 +101,8 @@ SparseNetworkAnalysis analyse_sparse_network(const network::Model& model, const 
 NetworkAnalyses analyse_network(const network::Model& model, const NetworkRequest& request) {
   NetworkAnalyses analyses;
   if (network_path(model, request) == NetworkPath::sparse) {
-    analyses.sparse = analyse_sparse_network(model, request.options.tolerances, request.pairs, request.coupled_pairs);
+    analyses.sparse = analyse_sparse_network(model, request.options.tolerances, request.pairs, request.coupled_pairs,
+                                             request.options.memory_limit);
     request.options.stop.throw_if_requested();
   } else {
     analyses.dense = analyse_dense_network(model, request.options, request.second_order);

@@ -81,10 +81,11 @@ NetworkAnalysis analyse_dense_network(const network::Model& model, const network
                                       bool second_order = true);
 
 /// The sparse path: relative rank tolerances from `tolerances`; with `chosen` pairs (body
-/// indices) or `coupled_pairs`, also fij and cij of those pairs. Throws network::ModelError.
+/// indices) or `coupled_pairs`, also fij and cij of those pairs; each factorisation within
+/// `memory_limit` (linalg::FactorisationTooLarge beyond it). Throws network::ModelError.
 SparseNetworkAnalysis analyse_sparse_network(const network::Model& model, const Tolerances& tolerances,
                                              const std::vector<std::pair<int, int>>& chosen = {},
-                                             bool coupled_pairs = false);
+                                             bool coupled_pairs = false, linalg::MemoryLimit memory_limit = {});
 
 /// A network analysed on the path network_path chose: exactly one of the two is set.
 struct NetworkAnalyses {
