@@ -12,6 +12,7 @@
 #include "kinestat/io/model_format.hpp"
 #include "kinestat/io/output_file.hpp"
 #include "kinestat/io/printable_text.hpp"
+#include "kinestat/linalg/flint_elimination.hpp"
 #include "kinestat/linalg/gmp_allocation.hpp"
 #include "kinestat/report/html_writer.hpp"
 #include "kinestat/report/json_text.hpp"
@@ -101,7 +102,10 @@ int run(int argc, const char* const* argv) {
     app.exit(error);
     return 2;
   }
+  // GMP's and FLINT's allocation failures as std::bad_alloc (exit 3) instead of their abort():
+  // process-wide hooks, so the command sets them, never the library.
   linalg::install_throwing_gmp_allocation();
+  linalg::install_throwing_flint_allocation();
   try {
     return action ? action() : 2;
   } catch (const io::InputError& error) {

@@ -22,8 +22,9 @@ namespace kinestat::linalg {
 namespace {
 
 // FLINT's own allocation functions abort() when memory runs out; these throw std::bad_alloc
-// instead, as GMP's do in kinestat (gmp_allocation.cpp), so a model too large for the machine
-// ends as a clean error. FLINT's temporaries of the failing operation leak on the way out.
+// instead, as GMP's do in the command (gmp_allocation.cpp), so a model too large for the machine
+// ends as a clean error (install_throwing_flint_allocation). FLINT's temporaries of the failing
+// operation leak on the way out.
 void* flint_allocate(std::size_t size) {
   void* block = std::malloc(size);
   if (block == nullptr && size > 0) throw std::bad_alloc();
@@ -44,18 +45,10 @@ void* flint_reallocate(void* block, std::size_t size) {
 
 void flint_release(void* block) { std::free(block); }
 
-void install_throwing_flint_allocation() {
-  static std::once_flag once;
-  std::call_once(once, [] {
-    __flint_set_memory_functions(flint_allocate, flint_allocate_zeroed, flint_reallocate, flint_release);
-  });
-}
-
 // An fmpq_mat_t that clears itself.
 class FlintRationalMatrix {
  public:
   FlintRationalMatrix(Eigen::Index rows, Eigen::Index cols) {
-    install_throwing_flint_allocation();
     fmpq_mat_init(matrix_, static_cast<slong>(rows), static_cast<slong>(cols));
   }
   FlintRationalMatrix(const FlintRationalMatrix&) = delete;
@@ -104,6 +97,13 @@ std::vector<Eigen::Index> echelon_pivots(const FlintRationalMatrix& echelon, Eig
 }
 
 }  // namespace
+
+void install_throwing_flint_allocation() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    __flint_set_memory_functions(flint_allocate, flint_allocate_zeroed, flint_reallocate, flint_release);
+  });
+}
 
 bool flint_available() { return true; }
 
@@ -198,6 +198,7 @@ namespace {
 }
 }  // namespace
 
+void install_throwing_flint_allocation() {}  // no FLINT, nothing to install
 bool flint_available() { return false; }
 Eigen::Index flint_rank(const RationalMatrix&) { flint_missing(); }
 RightPivotNullSpace flint_right_pivot_null_space(const RationalMatrix&) { flint_missing(); }

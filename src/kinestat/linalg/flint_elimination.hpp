@@ -22,6 +22,15 @@ namespace kinestat::linalg {
 /// Whether this build eliminates with FLINT (KINESTAT_FLINT was on at configure time).
 bool flint_available();
 
+/// Installs (once per process; later calls do nothing) FLINT memory functions that throw
+/// std::bad_alloc when an allocation fails, where FLINT's own abort(), so that exact
+/// elimination of a model too large for the machine ends as a clean error; FLINT's temporaries
+/// of the failing operation leak on the way out. Process-wide (FLINT has one set of memory
+/// functions), so the library never calls it: the `kinestat` command does, beside
+/// install_throwing_gmp_allocation, before any work. Other callers (the Python module, whose
+/// process may hold the user's own FLINT) keep FLINT's default. Nothing without FLINT.
+void install_throwing_flint_allocation();
+
 /// Rank of `a` over the rationals (each row's denominators cleared, fmpz_mat_rank).
 Eigen::Index flint_rank(const RationalMatrix& a);
 
