@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "cli/commands.hpp"
+#include "cli/input_size_option.hpp"
 #include "cli/option_checks.hpp"
 #include "kinestat/framework/framework_analysis.hpp"
 #include "kinestat/io/framework_reader.hpp"
@@ -35,7 +36,7 @@ std::string extension(const std::string& path) {
 framework::FrameworkModel read_framework_input(const std::string& path) {
   const io::ModelFormat format = io::model_format(path);
   if (format == io::ModelFormat::spacar || format == io::ModelFormat::bar_table) return read_spacar_model(path);
-  const io::YamlFile file = io::YamlFile::load(path);
+  const io::YamlFile file = io::YamlFile::load(path, model_reading_limits());  // --max-input-size
   const io::ModelKind kind = model_kind_of(file);
   if (kind != io::ModelKind::framework)
     throw io::InputError({path, 1, 1}, "'kinestat convert' converts frameworks (SPACAR files and kind: framework); this model "

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "cli/commands.hpp"
+#include "cli/input_size_option.hpp"
 #include "cli/option_checks.hpp"
 #include "kinestat/io/network_reader.hpp"
 #include "kinestat/io/network_structure.hpp"
@@ -77,7 +78,7 @@ StructureInput read_input(const StructureOptions& options) {
     structure::StructureModel model = io::structure_of_network(*file.network, path);
     return {std::move(model), std::move(*file.network), path, std::move(file.notices)};
   }
-  return io::keeping_notices(io::YamlFile::load(path), read_yaml_input);
+  return io::keeping_notices(io::YamlFile::load(path, model_reading_limits()), read_yaml_input);
 }
 
 // A kinestat YAML / JSON model of kind structure, or network (its couplings' structure).

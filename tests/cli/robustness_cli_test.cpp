@@ -3,7 +3,10 @@
 // that overflow, geometry that must be given, and the messages that used to mislead.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "kinestat/report/markup_escape.hpp"
 #include "support/cli_run.hpp"
@@ -169,6 +172,31 @@ TEST(RobustCli, ErrorsShowControlCharactersFromTheCommandLineEscaped) {
   EXPECT_EQ(file.exit_code, 2);
   EXPECT_TRUE(has(file.err, "no\\x1Bsuch.yaml")) << file.err;
   EXPECT_FALSE(raw_control(file.err)) << file.err;
+}
+
+// --max-input-size (issue 41, item 4) on every command that reads a model and in every reader:
+// each file below is larger than 500 bytes, so a 500-byte limit refuses it with one line naming
+// the file and the limit (exit 2), and the default limit (64 MiB) reads it.
+TEST(RobustCli, MaxInputSizeReachesEveryCommandAndReader) {
+  const std::string out = (testing::scratch_folder() / "max_input_size_converted.yaml").string();
+  const std::vector<std::pair<std::string, std::string>> runs = {
+      {"structure", "four-bar-planar.yaml"},       {"structure", "robots/four-bar.urdf"},
+      {"analyze", "robots/four-bar.sdf"},          {"analyze", "robots/four-bar.xml"},
+      {"analyze", "spacar/folded-sheet-guide-5.dat"}, {"convert", "parallel-leaf-spring-guide.yaml"},
+      {"convert", "robots/four-bar.urdf"},
+  };
+  for (const auto& [command, name] : runs) {
+    const std::string path = example_path(name);
+    ASSERT_GT(std::filesystem::file_size(path), 500U) << path;
+    const std::string output = command == "convert" ? " " + out : "";
+    const auto refused = run_cli(command + " " + path + output + " --max-input-size 500B");
+    EXPECT_EQ(refused.exit_code, 2) << command << " " << name << ": " << refused.err;
+    EXPECT_TRUE(has(refused.err, name + ": error: the input is larger than the 500 bytes limit")) << refused.err;
+    EXPECT_EQ(refused.err.find('\n'), refused.err.size() - 1) << refused.err;
+    const auto read = run_cli(command + " " + path + output);
+    EXPECT_FALSE(has(read.err, "limit on model files")) << command << " " << name << ": " << read.err;
+  }
+  std::filesystem::remove(out);
 }
 
 }  // namespace

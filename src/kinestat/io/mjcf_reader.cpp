@@ -16,6 +16,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
+#include <mutex>
 #include <numbers>
 #include <optional>
 #include <set>
@@ -86,8 +87,10 @@ struct VfsDeleter {
 };
 
 /// MuJoCo's default warning handler prints to standard output and appends to MUJOCO_LOG.TXT
-/// in the working directory; kinestat collects the warnings as notices instead.
-thread_local std::vector<std::string>* warnings = nullptr;
+/// in the working directory; kinestat collects the warnings as notices instead, into the
+/// reader of the one load in progress (guarded by load_mutex).
+std::vector<std::string>* warnings = nullptr;
+std::mutex load_mutex;
 void collect_warning(const char* message) {
   if (warnings && warnings->size() < 16) warnings->push_back(message);
 }
@@ -303,10 +306,11 @@ class MjcfDocument {
     if (!included_.insert(canonical).second)
       throw InputError(at, fmt::format("'{}' is {}, which is already included: MuJoCo includes a file once (a file that includes "
                                        "itself never ends)", printable_text(written), printable_text(canonical)));
-    const std::string& text = texts_.emplace(canonical, std::make_unique<FileText>(read_text_file(canonical))).first->second->text;
+    const std::string& text = texts_.emplace(canonical, std::make_unique<FileText>(read_text_file(canonical, options_.max_input_bytes))).first->second->text;
     total_bytes_ += text.size();
-    if (total_bytes_ > kMaxTextFileBytes)
-      throw InputError(at, fmt::format("with its includes the model is larger than the {} MiB limit on model files", kMaxTextFileBytes >> 20));
+    if (total_bytes_ > options_.max_input_bytes)
+      throw InputError(at, fmt::format("with its includes the model is larger than the {} limit on model files (--max-input-size)",
+                                       size_text(options_.max_input_bytes)));
     tinyxml2::XMLDocument& part = *parts_.emplace_back(std::make_unique<tinyxml2::XMLDocument>());
     if (part.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS)
       throw InputError({canonical, part.ErrorLineNum(), 1}, fmt::format("malformed XML: {}", printable_text(part.ErrorStr())));
@@ -666,17 +670,7 @@ class MjcfReader {
   MjcfReader(std::string path, const MjcfDocument& document) : path_(std::move(path)), document_(document) {}
 
   ImportedNetwork read(mjModel* raw, const char* error) {
-    if (!raw) {
-      // MuJoCo's messages end with "Element 'x', line N" (sometimes a column too), a line of the
-      // printed document: it is mapped back to the file (an included one) and line written.
-      std::string message = error;
-      const int line = mujoco_message_line(message);
-      message = without_mujoco_places(message);
-      for (char& c : message)
-        if (c == '\n' || c == '\r') c = ' ';
-      while (!message.empty() && message.back() == ' ') message.pop_back();
-      throw InputError(document_.at_printed_line(line), "MuJoCo: " + printable_text(message));
-    }
+    if (!raw) refuse_failed_load(error);
     const std::unique_ptr<mjModel, ModelDeleter> model(raw);
     const mjModel* m = model.get();
     if (static_cast<double>(m->nstack) * sizeof(mjtNum) + static_cast<double>(m->nbuffer) > kMaxDataBytes)
@@ -687,6 +681,34 @@ class MjcfReader {
     // MuJoCo has no length unit of its own; the model name comes first in `names`.
     NetworkBuilder builder(path_, m->nnames > 0 ? std::string(m->names) : std::string(), "");
     builder.set_ground(body_name(m, 0));
+    couple_bodies(m, d, builder);
+    const EqualityCouplings equalities = couple_equalities(m, d, builder);
+    ImportedNetwork out{builder.finish(), document_.notices};
+    if (!equalities.welds_as_connects.empty())
+      out.notices.push_back(fmt::format("{}: note: weld(s) {} with torquescale 0 read as connect (a spherical coupling): MuJoCo "
+                                        "then constrains the position only", path_, equalities.welds_as_connects));
+    for (const std::string& w : warnings_) out.notices.push_back(fmt::format("{}: note: MuJoCo: {}", path_, w));
+    if (!equalities.ignored.empty())
+      out.notices.push_back(fmt::format("{}: note: equality constraint(s) {} ignored: only active connect and weld "
+                                        "constraints are kinematic couplings", path_, equalities.ignored));
+    return out;
+  }
+
+ private:
+  // MuJoCo's messages end with "Element 'x', line N" (sometimes a column too), a line of the
+  // printed document: it is mapped back to the file (an included one) and line written.
+  [[noreturn]] void refuse_failed_load(const char* error) const {
+    std::string message = error;
+    const int line = mujoco_message_line(message);
+    message = without_mujoco_places(message);
+    for (char& c : message)
+      if (c == '\n' || c == '\r') c = ' ';
+    while (!message.empty() && message.back() == ' ') message.pop_back();
+    throw InputError(document_.at_printed_line(line), "MuJoCo: " + printable_text(message));
+  }
+
+  // Each body's joints to its parent (a weld without joints: rigid), at the poses of `d`.
+  void couple_bodies(const mjModel* m, const mjData* d, NetworkBuilder& builder) const {
     for (int b = 1; b < m->nbody; ++b) {
       const std::string body = body_name(m, b);
       std::string from = body_name(m, m->body_parentid[b]);
@@ -721,16 +743,26 @@ class MjcfReader {
         from = to;
       }
     }
+  }
+
+  // The equality constraints not read as couplings, and the welds read as connects (names,
+  // comma-separated), for the notices.
+  struct EqualityCouplings {
     std::string ignored, welds_as_connects;
+  };
+
+  // Each active connect (spherical) and weld (rigid; spherical with torquescale 0) equality.
+  EqualityCouplings couple_equalities(const mjModel* m, const mjData* d, NetworkBuilder& builder) const {
+    EqualityCouplings out;
     for (int e = 0; e < m->neq; ++e) {
       const std::string eq = name(m, mjOBJ_EQUALITY, e, "equality" + std::to_string(e));
       const int type = m->eq_type[e];
       if (type != mjEQ_CONNECT && type != mjEQ_WELD) {
-        ignored += (ignored.empty() ? "" : ", ") + eq;
+        out.ignored += (out.ignored.empty() ? "" : ", ") + eq;
         continue;
       }
       if (!m->eq_active[e]) {
-        ignored += (ignored.empty() ? "" : ", ") + eq + " (inactive)";
+        out.ignored += (out.ignored.empty() ? "" : ", ") + eq + " (inactive)";
         continue;
       }
       const int b1 = m->eq_obj1id[e], b2 = m->eq_obj2id[e];
@@ -740,32 +772,28 @@ class MjcfReader {
       if (point_only) {
         // A weld with torquescale 0 holds a point of body 2 (its anchor, in body 2's frame: the
         // first three numbers of a weld's eq_data) in place on body 1 and lets it turn.
-        const mjtNum* local = m->eq_data + mjNEQDATA * e;
-        const mjtNum* x = d->xpos + 3 * b2;
-        const mjtNum* r = d->xmat + 9 * b2;
-        for (int i = 0; i < 3; ++i) g.point(i) = x[i] + r[3 * i] * local[0] + r[3 * i + 1] * local[1] + r[3 * i + 2] * local[2];
-        welds_as_connects += (welds_as_connects.empty() ? "" : ", ") + eq;
+        g.point = anchor_in_world(m, d, e, b2);
+        out.welds_as_connects += (out.welds_as_connects.empty() ? "" : ", ") + eq;
       } else if (type == mjEQ_CONNECT) {
-        // The anchor is given in body 1's frame.
-        const mjtNum* local = m->eq_data + mjNEQDATA * e;
-        const mjtNum* x = d->xpos + 3 * b1;
-        const mjtNum* r = d->xmat + 9 * b1;
-        for (int i = 0; i < 3; ++i) g.point(i) = x[i] + r[3 * i] * local[0] + r[3 * i + 1] * local[1] + r[3 * i + 2] * local[2];
+        g.point = anchor_in_world(m, d, e, b1);  // the anchor is given in body 1's frame
       } else {
         g.point = vec(d->xpos + 3 * b1);
       }
       builder.couple(eq, type == mjEQ_CONNECT || point_only ? screw::CouplingType::spherical : screw::CouplingType::rigid,
                      body_name(m, b1), body_name(m, b2), g, locate(eq));
     }
-    ImportedNetwork out{builder.finish(), document_.notices};
-    if (!welds_as_connects.empty())
-      out.notices.push_back(fmt::format("{}: note: weld(s) {} with torquescale 0 read as connect (a spherical coupling): MuJoCo "
-                                        "then constrains the position only", path_, welds_as_connects));
-    for (const std::string& w : warnings_) out.notices.push_back(fmt::format("{}: note: MuJoCo: {}", path_, w));
-    if (!ignored.empty())
-      out.notices.push_back(fmt::format("{}: note: equality constraint(s) {} ignored: only active connect and weld "
-                                        "constraints are kinematic couplings", path_, ignored));
     return out;
+  }
+
+  // The anchor of equality `e` (the first three numbers of its eq_data, in body `b`'s frame) in
+  // the world, at the poses of `d`.
+  static Eigen::Vector3d anchor_in_world(const mjModel* m, const mjData* d, int e, int b) {
+    const mjtNum* local = m->eq_data + mjNEQDATA * e;
+    const mjtNum* x = d->xpos + 3 * b;
+    const mjtNum* r = d->xmat + 9 * b;
+    Eigen::Vector3d point;
+    for (int i = 0; i < 3; ++i) point(i) = x[i] + r[3 * i] * local[0] + r[3 * i + 1] * local[1] + r[3 * i + 2] * local[2];
+    return point;
   }
 
  private:
@@ -788,13 +816,29 @@ class MjcfReader {
   std::vector<std::string> warnings_;
 };
 
-// Loads through MuJoCo with its warnings collected into `reader`.
+// Loads through MuJoCo with its warnings collected into `reader`. MuJoCo's warning hook is one
+// process-wide pointer (there is no per-call one in MuJoCo 2.2), so it is pointed at the
+// collector only while mj_loadXML runs, one load at a time in the process, and the hook found
+// (the caller's own, or null for MuJoCo's default) is put back after: the library leaves
+// MuJoCo's global state as it found it. A warning another thread's MuJoCo raises during the load
+// is collected too (the hook cannot tell threads apart). mju_user_error is left alone: the
+// checks before the load (refuse_empty, the size limits) keep MuJoCo's fatal errors away.
 mjModel* load(const char* file, const mjVFS* vfs, char (&error)[1024], MjcfReader& reader) {
-  warnings = &reader.warnings_;
-  mju_user_warning = collect_warning;
-  mjModel* m = mj_loadXML(file, vfs, error, sizeof error);
-  warnings = nullptr;
-  return m;
+  const std::lock_guard<std::mutex> lock(load_mutex);
+  struct Hook {  // installed for this scope, the previous one restored however it is left
+    void (*previous)(const char*) = mju_user_warning;
+    explicit Hook(std::vector<std::string>* into) {
+      warnings = into;
+      mju_user_warning = collect_warning;
+    }
+    Hook(const Hook&) = delete;
+    Hook& operator=(const Hook&) = delete;
+    ~Hook() {
+      mju_user_warning = previous;
+      warnings = nullptr;
+    }
+  } hook(&reader.warnings_);
+  return mj_loadXML(file, vfs, error, sizeof error);
 }
 
 // MuJoCo ends the process (mju_error, not an error message) on an empty file, and libmujoco
@@ -832,7 +876,7 @@ ImportedNetwork compile(const std::string& path, const std::string& text, const 
 }  // namespace
 
 ImportedNetwork read_mjcf(const std::string& path, const ImportOptions& options) {
-  return compile(path, read_text_file(path), options, true);
+  return compile(path, read_text_file(path, options.max_input_bytes), options, true);
 }
 
 ImportedNetwork parse_mjcf(const std::string& path, const std::string& text) { return compile(path, text, {}, false); }

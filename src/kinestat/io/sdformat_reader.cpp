@@ -333,14 +333,15 @@ class ModelFiles {
           refuse(where, fmt::format("'{}' is {}, which is already being read: a file that includes itself{}", printable_text(written),
                                     printable_text(target), k + 1 < chain.size() ? " through the files it includes" : ""));
       chain.push_back(target);
-      const File& child = process(target, target, read_text_file(target), chain);
+      const File& child = process(target, target, read_text_file(target, options_.max_input_bytes), chain);
       chain.pop_back();
       file.expanded_bytes += child.expanded_bytes;
       file.links_and_joints += child.links_and_joints;
       check_size(file, true);
-      if (file.expanded_bytes > kMaxTextFileBytes)
-        refuse(where, fmt::format("with its includes expanded the model is larger than the {} MiB limit on model files",
-                                  kMaxTextFileBytes >> 20));
+      if (file.expanded_bytes > options_.max_input_bytes)
+        refuse(where, fmt::format("with its includes expanded the model is larger than the {} limit on model files "
+                                  "(--max-input-size)",
+                                  size_text(options_.max_input_bytes)));
       uri->SetText(child.copy.c_str());
       file.includes = true;
     }
@@ -403,7 +404,7 @@ class ModelFiles {
       if (fs::exists(folder / "model.sdf", error)) return folder / "model.sdf";
       refuse(where, fmt::format("the included folder {} has neither a model.config nor a model.sdf", printable_text(folder.string())));
     }
-    const std::string text = read_text_file(config.string());
+    const std::string text = read_text_file(config.string(), options_.max_input_bytes);
     tinyxml2::XMLDocument document;
     if (document.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS)
       refuse({config.string(), document.ErrorLineNum(), 1}, fmt::format("malformed XML: {}", printable_text(document.ErrorStr())));
@@ -705,7 +706,7 @@ ImportedNetwork load(const std::string& path, const ModelFiles& files, ReadInto 
 
 ImportedNetwork read_sdformat(const std::string& path, const ImportOptions& options) {
   ModelFiles files(path, options, true);
-  const std::string read = files.prepare(read_text_file(path));  // the copy libsdformat reads
+  const std::string read = files.prepare(read_text_file(path, options.max_input_bytes));  // the copy libsdformat reads
   return load(
       path, files,
       [&](const sdf::ParserConfig& config, const sdf::SDFPtr& document, sdf::Errors& errors) {

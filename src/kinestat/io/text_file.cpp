@@ -21,6 +21,11 @@ std::string read_text_file(const std::string& path, std::size_t max_bytes) {
   return read_model_text(path, reading_limits_for(max_bytes));
 }
 
+std::string size_text(std::size_t bytes) {
+  constexpr std::size_t kMiB = std::size_t{1} << 20;
+  return bytes % kMiB == 0 ? std::to_string(bytes / kMiB) + " MiB" : std::to_string(bytes) + " bytes";
+}
+
 ReadingLimits reading_limits_for(std::size_t max_bytes) {
   ReadingLimits limits;
   const std::size_t bytes_per_node = limits.max_bytes / limits.max_nodes;

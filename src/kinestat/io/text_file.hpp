@@ -24,6 +24,9 @@ inline constexpr std::size_t kMaxTextFileBytes = std::size_t{64} << 20;
 /// be read, or holds more than the limit (the message names the limit).
 std::string read_text_file(const std::string& path, std::size_t max_bytes = kMaxTextFileBytes);
 
+/// A byte limit in words: "64 MiB" for whole MiB, else "500 bytes".
+std::string size_text(std::size_t bytes);
+
 /// The limits on model files for a byte limit of `max_bytes` (ImportOptions::max_input_bytes, the
 /// command's --max-input-size): the parsed nodes of a YAML file in proportion (2^24 per 64 MiB,
 /// the defaults' ratio of 4 bytes a node), never fewer than the default.

@@ -385,7 +385,7 @@ ImportedNetwork parse_urdf(const std::string& path, const std::string&, const Im
 #endif
 
 ImportedNetwork read_urdf(const std::string& path, const ImportOptions& options) {
-  return parse_urdf(path, read_text_file(path), options);
+  return parse_urdf(path, read_text_file(path, options.max_input_bytes), options);
 }
 
 }  // namespace kinestat::io

@@ -2,6 +2,7 @@
 #include "kinestat/io/yaml_support.hpp"
 
 #include "kinestat/io/printable_text.hpp"
+#include "kinestat/io/text_file.hpp"
 
 #include <fcntl.h>
 #include <fmt/format.h>
@@ -506,11 +507,6 @@ std::string describe(const TreeNode& node) {
     case TreeNode::Kind::map: return "a map";
     default: return "nothing";
   }
-}
-
-std::string size_text(std::size_t bytes) {
-  if (bytes % (std::size_t{1} << 20) == 0) return fmt::format("{} MiB", bytes >> 20);
-  return fmt::format("{} bytes", bytes);
 }
 
 [[noreturn]] void too_large(const std::string& source, const ReadingLimits& limits) {
