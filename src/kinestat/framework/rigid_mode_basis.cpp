@@ -80,6 +80,74 @@ void set_mode(KinematicMode& mode, Eigen::VectorXd v) {
     if (mode.velocities(i) != 0.0) mode.moving.push_back(i);
 }
 
+// The rigid motions as modes: when nothing holds the model (`rigid` has as many columns as the
+// generators `g`), the named generators, each normalised; when it is partly held, each
+// orthonormal free rigid motion of `rigid`, in words from its generator coefficients.
+std::vector<KinematicMode> rigid_modes(const FrameworkModel& model, const FrameworkResult& a, const Eigen::MatrixXd& rigid,
+                                       const Eigen::MatrixXd& g, const Eigen::Vector3d& centroid) {
+  std::vector<KinematicMode> separated;
+  if (rigid.cols() == g.cols()) {
+    static const char* const spatial[] = {"translation along x", "translation along y", "translation along z",
+                                          "rotation about x", "rotation about y", "rotation about z"};
+    static const char* const planar[] = {"translation along x", "translation along y", "rotation about z"};
+    for (Index j = 0; j < g.cols(); ++j) {
+      KinematicMode mode;
+      set_mode(mode, g.col(j));
+      mode.rigid_motion = model.dimension == 2 ? planar[j] : spatial[j];
+      if (j >= (model.dimension == 2 ? 2 : 3)) mode.rigid_motion += " through the centroid " + vector_text(centroid, model.dimension);
+      separated.push_back(std::move(mode));
+    }
+  } else {
+    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> solve(g);
+    for (Index j = 0; j < rigid.cols(); ++j) {
+      KinematicMode mode;
+      Eigen::VectorXd v = rigid.col(j);
+      linalg::orient_unit_vector(v, kModeZero);
+      set_mode(mode, v);
+      mode.rigid_motion = rigid_words(solve.solve(v), model.dimension, centroid, a.length);
+      separated.push_back(std::move(mode));
+    }
+  }
+  return separated;
+}
+
+// Internal modes: `modes` less their part in the span of `rigid_q` (orthonormal), orthonormalised
+// by a column-pivoted QR, each oriented: k − r columns.
+Eigen::MatrixXd internal_modes(const Eigen::MatrixXd& modes, const Eigen::MatrixXd& rigid_q) {
+  const Index n = modes.rows(), k = modes.cols(), r = rigid_q.cols();
+  const Eigen::MatrixXd rest = modes - rigid_q * (rigid_q.transpose() * modes);
+  Eigen::MatrixXd internal(n, k - r);
+  if (k > r) {
+    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(rest);
+    internal = qr.householderQ() * Eigen::MatrixXd::Identity(n, k - r);
+    for (Index j = 0; j < internal.cols(); ++j) {
+      Eigen::VectorXd v = internal.col(j);
+      linalg::orient_unit_vector(v, kModeZero);
+      internal.col(j) = v;
+    }
+  }
+  return internal;
+}
+
+// The generic answer's causes of the separated modes: the r rigid motions persist at every
+// realisation (topology); the internal modes are split against the generic model's persisting
+// modes less their rigid part.
+void split_generic_causes(GenericFramework& generic, const Eigen::MatrixXd& internal, const Eigen::MatrixXd& rigid_q) {
+  const Index n = rigid_q.rows(), r = rigid_q.cols(), internal_count = internal.cols();
+  std::vector<linalg::Cause> causes(static_cast<std::size_t>(r), linalg::Cause::topology);
+  const Index persisting_internal = std::max<Index>(0, generic.mechanisms - r);
+  linalg::CauseSplit split = linalg::split_by_count(internal_count, persisting_internal);
+  if (generic.mode_basis && persisting_internal > 0 && persisting_internal < internal_count) {
+    const Eigen::MatrixXd persisting = generic.mode_basis->leftCols(generic.mechanisms);
+    const Eigen::MatrixXd own = persisting - rigid_q * (rigid_q.transpose() * persisting);
+    split = linalg::split_by_subspace(internal, Eigen::ColPivHouseholderQR<Eigen::MatrixXd>(own).householderQ() *
+                                                    Eigen::MatrixXd::Identity(n, persisting_internal));
+  }
+  causes.insert(causes.end(), split.causes.begin(), split.causes.end());
+  generic.mode_causes = causes;
+  generic.mode_basis.reset();  // the separated modes are the basis now
+}
+
 }  // namespace
 
 void separate_rigid_motions(const FrameworkModel& model, FrameworkResult& a, std::optional<GenericFramework>& generic,
@@ -98,70 +166,18 @@ void separate_rigid_motions(const FrameworkModel& model, FrameworkResult& a, std
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
   for (const Node& node : model.nodes) centroid += node.position;
   centroid /= static_cast<double>(model.nodes.size());
-  const Eigen::MatrixXd g = generators(model, a, centroid);
-  std::vector<KinematicMode> separated;
-  if (r == g.cols()) {
-    // Nothing holds the model: the named generators, each normalised.
-    static const char* const spatial[] = {"translation along x", "translation along y", "translation along z",
-                                          "rotation about x", "rotation about y", "rotation about z"};
-    static const char* const planar[] = {"translation along x", "translation along y", "rotation about z"};
-    for (Index j = 0; j < g.cols(); ++j) {
-      KinematicMode mode;
-      set_mode(mode, g.col(j));
-      mode.rigid_motion = model.dimension == 2 ? planar[j] : spatial[j];
-      if (j >= (model.dimension == 2 ? 2 : 3)) mode.rigid_motion += " through the centroid " + vector_text(centroid, model.dimension);
-      separated.push_back(std::move(mode));
-    }
-  } else {
-    // Partly held: each orthonormal free rigid motion, in words from its generator coefficients.
-    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> solve(g);
-    for (Index j = 0; j < r; ++j) {
-      KinematicMode mode;
-      Eigen::VectorXd v = rigid.col(j);
-      linalg::orient_unit_vector(v, kModeZero);
-      set_mode(mode, v);
-      mode.rigid_motion = rigid_words(solve.solve(v), model.dimension, centroid, a.length);
-      separated.push_back(std::move(mode));
-    }
-  }
-  // Internal modes: the modes less their rigid part, orthonormalised by a column-pivoted QR.
+  std::vector<KinematicMode> separated = rigid_modes(model, a, rigid, generators(model, a, centroid), centroid);
   Eigen::MatrixXd rigid_q(a.n, r);
   for (Index j = 0; j < r; ++j) rigid_q.col(j) = separated[static_cast<std::size_t>(j)].velocities;
   rigid_q = Eigen::HouseholderQR<Eigen::MatrixXd>(rigid_q).householderQ() * Eigen::MatrixXd::Identity(a.n, r);
-  const Eigen::MatrixXd rest = modes - rigid_q * (rigid_q.transpose() * modes);
-  Eigen::MatrixXd internal(a.n, k - r);
-  if (k > r) {
-    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(rest);
-    internal = qr.householderQ() * Eigen::MatrixXd::Identity(a.n, k - r);
-    for (Index j = 0; j < internal.cols(); ++j) {
-      Eigen::VectorXd v = internal.col(j);
-      linalg::orient_unit_vector(v, kModeZero);
-      internal.col(j) = v;
-    }
-  }
+  const Eigen::MatrixXd internal = internal_modes(modes, rigid_q);
   for (Index j = 0; j < internal.cols(); ++j) {
     KinematicMode mode;
     set_mode(mode, internal.col(j));
     separated.push_back(std::move(mode));
   }
   a.modes = std::move(separated);
-
-  if (generic) {
-    // Rigid motions persist at every realisation; the internal modes are split against the
-    // generic model's persisting modes less their rigid part.
-    std::vector<linalg::Cause> causes(static_cast<std::size_t>(r), linalg::Cause::topology);
-    const Index persisting_internal = std::max<Index>(0, generic->mechanisms - r);
-    linalg::CauseSplit split = linalg::split_by_count(k - r, persisting_internal);
-    if (generic->mode_basis && persisting_internal > 0 && persisting_internal < k - r) {
-      const Eigen::MatrixXd persisting = generic->mode_basis->leftCols(generic->mechanisms);
-      const Eigen::MatrixXd own = persisting - rigid_q * (rigid_q.transpose() * persisting);
-      split = linalg::split_by_subspace(internal, Eigen::ColPivHouseholderQR<Eigen::MatrixXd>(own).householderQ() *
-                                                      Eigen::MatrixXd::Identity(a.n, persisting_internal));
-    }
-    causes.insert(causes.end(), split.causes.begin(), split.causes.end());
-    generic->mode_causes = causes;
-    generic->mode_basis.reset();  // the modes above are the basis now
-  }
+  if (generic) split_generic_causes(*generic, internal, rigid_q);
   classify_second_order(model, a, options);
 }
 

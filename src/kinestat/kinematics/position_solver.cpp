@@ -114,95 +114,99 @@ AssemblyStatus judge(double discriminant) {
 
 std::string quoted(const network::Coupling& c) { return "'" + c.name + "'"; }
 
-// Solves a dyad for branch `sign` (±1) at `poses` (A and B placed).
-ClosedForm solve_dyad(const std::string& type, const DyadParts& d, const std::vector<Pose>& poses, int sign, double length) {
+// The closed form of each dyad type for branch `s` (±1), with A at `pa` and B at `pb`
+// (solve_dyad chooses by type).
+ClosedForm solve_rrr(const DyadParts& d, const Pose& pa, const Pose& pb, double s, double length) {
   ClosedForm out;
-  const Pose& pa = poses[static_cast<std::size_t>(d.a)];
-  const Pose& pb = poses[static_cast<std::size_t>(d.b)];
-  const double s = sign < 0 ? -1.0 : 1.0;
-  if (type == "RRR") {
-    const Vec2 p1 = point_of(*d.j1), p2 = point_of(*d.j2), p3 = point_of(*d.j3);
-    const Vec2 P1 = apply(pa, p1), P3 = apply(pb, p3);
-    const double l1 = (p2 - p1).norm(), l2 = (p3 - p2).norm();
-    const Vec2 D = P3 - P1;
-    const double dist = D.norm();
-    const double scale = std::max(l1, l2) * std::max(l1, l2);
-    if (dist <= kCoincident * length) {
-      out.status = std::abs(l1 - l2) <= kCoincident * length ? AssemblyStatus::singular : AssemblyStatus::not_assembled;
-      out.reason = fmt::format("couplings {} and {} coincide", quoted(*d.j1), quoted(*d.j3));
-      if (out.status == AssemblyStatus::not_assembled) return out;
-    }
-    const double along = dist > 0 ? (dist * dist + l1 * l1 - l2 * l2) / (2 * dist) : 0.0;
-    const double h2 = l1 * l1 - along * along;
-    out.discriminant = h2 / scale;
-    if (out.status == AssemblyStatus::assembled) out.status = judge(out.discriminant);
-    if (out.status == AssemblyStatus::not_assembled) {
-      out.reason = fmt::format("the distance {:.6g} between couplings {} and {} is outside [{:.6g}, {:.6g}] (|l1 - l2|, l1 + l2)",
-                               dist, quoted(*d.j1), quoted(*d.j3), std::abs(l1 - l2), l1 + l2);
-      return out;
-    }
-    if (out.status == AssemblyStatus::singular && out.reason.empty())
-      out.reason = fmt::format("couplings {}, {} and {} are collinear (two branches meet)", quoted(*d.j1), quoted(*d.j2), quoted(*d.j3));
-    const double h = out.status == AssemblyStatus::singular ? 0.0 : std::sqrt(h2);
-    const Vec2 e = dist > 0 ? Vec2(D / dist) : Vec2(1, 0);
-    const Vec2 P2 = P1 + along * e + s * h * quarter(e);
-    out.pose1 = pose_through(p1, p2, P1, P2);
-    out.pose2 = pose_through(p2, p3, P2, P3);
+  const Vec2 p1 = point_of(*d.j1), p2 = point_of(*d.j2), p3 = point_of(*d.j3);
+  const Vec2 P1 = apply(pa, p1), P3 = apply(pb, p3);
+  const double l1 = (p2 - p1).norm(), l2 = (p3 - p2).norm();
+  const Vec2 D = P3 - P1;
+  const double dist = D.norm();
+  const double scale = std::max(l1, l2) * std::max(l1, l2);
+  if (dist <= kCoincident * length) {
+    out.status = std::abs(l1 - l2) <= kCoincident * length ? AssemblyStatus::singular : AssemblyStatus::not_assembled;
+    out.reason = fmt::format("couplings {} and {} coincide", quoted(*d.j1), quoted(*d.j3));
+    if (out.status == AssemblyStatus::not_assembled) return out;
+  }
+  const double along = dist > 0 ? (dist * dist + l1 * l1 - l2 * l2) / (2 * dist) : 0.0;
+  const double h2 = l1 * l1 - along * along;
+  out.discriminant = h2 / scale;
+  if (out.status == AssemblyStatus::assembled) out.status = judge(out.discriminant);
+  if (out.status == AssemblyStatus::not_assembled) {
+    out.reason = fmt::format("the distance {:.6g} between couplings {} and {} is outside [{:.6g}, {:.6g}] (|l1 - l2|, l1 + l2)",
+                             dist, quoted(*d.j1), quoted(*d.j3), std::abs(l1 - l2), l1 + l2);
     return out;
   }
-  if (type == "RRP") {
-    const Vec2 p1 = point_of(*d.j1), p2 = point_of(*d.j2);
-    const Vec2 P1 = apply(pa, p1);
-    const Vec2 u = rotation(pb.angle) * axis_of(*d.j3);
-    const Vec2 Q = apply(pb, p2);  // b2 keeps B's orientation: its point p2 slides on the line through Q along u
-    const Vec2 foot = Q + (P1 - Q).dot(u) * u;
-    const double l1 = (p2 - p1).norm();
-    const double h2 = l1 * l1 - (P1 - foot).squaredNorm();
-    out.discriminant = h2 / (l1 * l1);
-    out.status = judge(out.discriminant);
-    if (out.status == AssemblyStatus::not_assembled) {
-      out.reason = fmt::format("coupling {} is {:.6g} from the slide line of {}, more than the length {:.6g} to {}",
-                               quoted(*d.j1), (P1 - foot).norm(), quoted(*d.j3), l1, quoted(*d.j2));
-      return out;
-    }
-    if (out.status == AssemblyStatus::singular)
-      out.reason = fmt::format("link {}-{} is normal to the slide axis of {} (two branches meet)", quoted(*d.j1), quoted(*d.j2), quoted(*d.j3));
-    const double h = out.status == AssemblyStatus::singular ? 0.0 : std::sqrt(h2);
-    const Vec2 P2 = foot + s * h * u;
-    out.pose1 = pose_through(p1, p2, P1, P2);
-    out.pose2 = pose_through(pb.angle, p2, P2);
+  if (out.status == AssemblyStatus::singular && out.reason.empty())
+    out.reason = fmt::format("couplings {}, {} and {} are collinear (two branches meet)", quoted(*d.j1), quoted(*d.j2), quoted(*d.j3));
+  const double h = out.status == AssemblyStatus::singular ? 0.0 : std::sqrt(h2);
+  const Vec2 e = dist > 0 ? Vec2(D / dist) : Vec2(1, 0);
+  const Vec2 P2 = P1 + along * e + s * h * quarter(e);
+  out.pose1 = pose_through(p1, p2, P1, P2);
+  out.pose2 = pose_through(p2, p3, P2, P3);
+  return out;
+}
+
+ClosedForm solve_rrp(const DyadParts& d, const Pose& pa, const Pose& pb, double s) {
+  ClosedForm out;
+  const Vec2 p1 = point_of(*d.j1), p2 = point_of(*d.j2);
+  const Vec2 P1 = apply(pa, p1);
+  const Vec2 u = rotation(pb.angle) * axis_of(*d.j3);
+  const Vec2 Q = apply(pb, p2);  // b2 keeps B's orientation: its point p2 slides on the line through Q along u
+  const Vec2 foot = Q + (P1 - Q).dot(u) * u;
+  const double l1 = (p2 - p1).norm();
+  const double h2 = l1 * l1 - (P1 - foot).squaredNorm();
+  out.discriminant = h2 / (l1 * l1);
+  out.status = judge(out.discriminant);
+  if (out.status == AssemblyStatus::not_assembled) {
+    out.reason = fmt::format("coupling {} is {:.6g} from the slide line of {}, more than the length {:.6g} to {}",
+                             quoted(*d.j1), (P1 - foot).norm(), quoted(*d.j3), l1, quoted(*d.j2));
     return out;
   }
-  if (type == "RPR") {
-    const Vec2 p1 = point_of(*d.j1), p3 = point_of(*d.j3);
-    const Vec2 a = axis_of(*d.j2), n = quarter(a);
-    const Vec2 P1 = apply(pa, p1), P3 = apply(pb, p3);
-    const Vec2 D = P3 - P1;
-    const double dist = D.norm();
-    const double c = n.dot(p3 - p1);  // offset of J3 from the slide line through J1, kept by every position
-    if (dist <= kCoincident * length) {
-      out.status = std::abs(c) <= kCoincident * length ? AssemblyStatus::singular : AssemblyStatus::not_assembled;
-      out.reason = fmt::format("couplings {} and {} coincide", quoted(*d.j1), quoted(*d.j3));
-      if (out.status == AssemblyStatus::not_assembled) return out;
-    }
-    const double ratio = dist > 0 ? c / dist : 0.0;
-    out.discriminant = 1 - ratio * ratio;
-    if (out.status == AssemblyStatus::assembled) out.status = judge(out.discriminant);
-    if (out.status == AssemblyStatus::not_assembled) {
-      out.reason = fmt::format("couplings {} and {} are {:.6g} apart, less than the offset {:.6g} of the slide axis of {}",
-                               quoted(*d.j1), quoted(*d.j3), dist, std::abs(c), quoted(*d.j2));
-      return out;
-    }
-    if (out.status == AssemblyStatus::singular && out.reason.empty())
-      out.reason = fmt::format("the slide axis of {} is normal to {}-{} (two branches meet)", quoted(*d.j2), quoted(*d.j1), quoted(*d.j3));
-    // (R(φ) n)·D = c: the angle of R(φ) n from D is ±acos(c / d); (R(φ) a)·D = d sin(that angle).
-    const double gamma = std::acos(std::clamp(ratio, -1.0, 1.0));
-    const double phi = std::atan2(D.y(), D.x()) - std::atan2(n.y(), n.x()) + s * gamma;
-    out.pose1 = pose_through(phi, p1, P1);
-    out.pose2 = pose_through(phi, p3, P3);
+  if (out.status == AssemblyStatus::singular)
+    out.reason = fmt::format("link {}-{} is normal to the slide axis of {} (two branches meet)", quoted(*d.j1), quoted(*d.j2), quoted(*d.j3));
+  const double h = out.status == AssemblyStatus::singular ? 0.0 : std::sqrt(h2);
+  const Vec2 P2 = foot + s * h * u;
+  out.pose1 = pose_through(p1, p2, P1, P2);
+  out.pose2 = pose_through(pb.angle, p2, P2);
+  return out;
+}
+
+ClosedForm solve_rpr(const DyadParts& d, const Pose& pa, const Pose& pb, double s, double length) {
+  ClosedForm out;
+  const Vec2 p1 = point_of(*d.j1), p3 = point_of(*d.j3);
+  const Vec2 a = axis_of(*d.j2), n = quarter(a);
+  const Vec2 P1 = apply(pa, p1), P3 = apply(pb, p3);
+  const Vec2 D = P3 - P1;
+  const double dist = D.norm();
+  const double c = n.dot(p3 - p1);  // offset of J3 from the slide line through J1, kept by every position
+  if (dist <= kCoincident * length) {
+    out.status = std::abs(c) <= kCoincident * length ? AssemblyStatus::singular : AssemblyStatus::not_assembled;
+    out.reason = fmt::format("couplings {} and {} coincide", quoted(*d.j1), quoted(*d.j3));
+    if (out.status == AssemblyStatus::not_assembled) return out;
+  }
+  const double ratio = dist > 0 ? c / dist : 0.0;
+  out.discriminant = 1 - ratio * ratio;
+  if (out.status == AssemblyStatus::assembled) out.status = judge(out.discriminant);
+  if (out.status == AssemblyStatus::not_assembled) {
+    out.reason = fmt::format("couplings {} and {} are {:.6g} apart, less than the offset {:.6g} of the slide axis of {}",
+                             quoted(*d.j1), quoted(*d.j3), dist, std::abs(c), quoted(*d.j2));
     return out;
   }
-  // PRP: line–line.
+  if (out.status == AssemblyStatus::singular && out.reason.empty())
+    out.reason = fmt::format("the slide axis of {} is normal to {}-{} (two branches meet)", quoted(*d.j2), quoted(*d.j1), quoted(*d.j3));
+  // (R(φ) n)·D = c: the angle of R(φ) n from D is ±acos(c / d); (R(φ) a)·D = d sin(that angle).
+  const double gamma = std::acos(std::clamp(ratio, -1.0, 1.0));
+  const double phi = std::atan2(D.y(), D.x()) - std::atan2(n.y(), n.x()) + s * gamma;
+  out.pose1 = pose_through(phi, p1, P1);
+  out.pose2 = pose_through(phi, p3, P3);
+  return out;
+}
+
+// PRP: line–line.
+ClosedForm solve_prp(const DyadParts& d, const Pose& pa, const Pose& pb, double length) {
+  ClosedForm out;
   const Vec2 p2 = point_of(*d.j2);
   const Vec2 u1 = rotation(pa.angle) * axis_of(*d.j1), u3 = rotation(pb.angle) * axis_of(*d.j3);
   const Vec2 Q1 = apply(pa, p2), Q3 = apply(pb, p2);
@@ -219,6 +223,17 @@ ClosedForm solve_dyad(const std::string& type, const DyadParts& d, const std::ve
   out.pose1 = pose_through(pa.angle, p2, P2);
   out.pose2 = pose_through(pb.angle, p2, P2);
   return out;
+}
+
+// Solves a dyad for branch `sign` (±1) at `poses` (A and B placed).
+ClosedForm solve_dyad(const std::string& type, const DyadParts& d, const std::vector<Pose>& poses, int sign, double length) {
+  const Pose& pa = poses[static_cast<std::size_t>(d.a)];
+  const Pose& pb = poses[static_cast<std::size_t>(d.b)];
+  const double s = sign < 0 ? -1.0 : 1.0;
+  if (type == "RRR") return solve_rrr(d, pa, pb, s, length);
+  if (type == "RRP") return solve_rrp(d, pa, pb, s);
+  if (type == "RPR") return solve_rpr(d, pa, pb, s, length);
+  return solve_prp(d, pa, pb, length);  // one position: no branch
 }
 
 // The branch indicator of a dyad at `poses` (whose dyad bodies are placed): RRR the orientation
@@ -410,8 +425,11 @@ const char* assembly_status_name(AssemblyStatus status) {
   return "not_reached";
 }
 
-PositionPlan plan_positions(const network::Model& model, const structure::StructureModel& structure,
-                            const structure::StructureResult& decomposition) {
+namespace {
+
+// Position solving handles planar revolute and prismatic couplings (a prismatic one with an axis
+// in the plane); anything else is a PositionModelError at the coupling.
+void refuse_unsolvable_couplings(const network::Model& model) {
   if (!model.space.is_planar()) throw PositionModelError("position solving needs a planar model (dimension: planar)");
   for (std::size_t i = 0; i < model.couplings.size(); ++i) {
     const auto& c = model.couplings[i];
@@ -422,101 +440,141 @@ PositionPlan plan_positions(const network::Model& model, const structure::Struct
     if (c.type == CouplingType::prismatic && (!c.geometry.axis || ((*c.geometry.axis)[0] == 0 && (*c.geometry.axis)[1] == 0)))
       throw PositionModelError(fmt::format("prismatic coupling '{}' needs an axis in the plane", c.name), static_cast<int>(i));
   }
-  PositionPlan plan;
-  plan.frame = model.ground.value_or(0);
-  plan.length = characteristic_length(model);
+}
+
+// The coupling index of each of the model's inputs, in order; each coupling driven once.
+std::vector<int> driving_couplings(const network::Model& model) {
+  std::vector<int> drivers;
   for (const std::string& name : model.inputs) {
     const auto it = std::find_if(model.couplings.begin(), model.couplings.end(), [&](const auto& c) { return c.name == name; });
     if (it == model.couplings.end()) throw PositionModelError(fmt::format("input '{}' names no coupling", name));
     const int index = static_cast<int>(it - model.couplings.begin());
-    if (std::find(plan.drivers.begin(), plan.drivers.end(), index) != plan.drivers.end())
+    if (std::find(drivers.begin(), drivers.end(), index) != drivers.end())
       throw PositionModelError(fmt::format("coupling '{}' is driven twice; a revolute or prismatic coupling takes one input", name), index);
-    plan.drivers.push_back(index);
+    drivers.push_back(index);
   }
-  if (!decomposition.complete()) {
-    const auto& u = decomposition.undecomposed;
-    std::string why;
-    if (u.missing > 0) why = fmt::format("{} more input{} needed", u.missing, u.missing == 1 ? " is" : "s are");
-    else if (u.redundant > 0) why = fmt::format("{} input{} or pair{} too many", u.redundant, u.redundant == 1 ? "" : "s", u.redundant == 1 ? "" : "s");
-    else why = "some bodies are not connected to the frame";
-    throw PositionModelError(fmt::format("the inputs do not decompose the mechanism into structural groups ({}); position solving needs as many "
-                            "inputs as the mobility, placed so that every body is driven",
-                            why));
-  }
-  // Structure bodies → network bodies, by name.
+  return drivers;
+}
+
+// A decomposition that leaves bodies out cannot be solved group by group: says why.
+void refuse_incomplete(const structure::StructureResult& decomposition) {
+  if (decomposition.complete()) return;
+  const auto& u = decomposition.undecomposed;
+  std::string why;
+  if (u.missing > 0) why = fmt::format("{} more input{} needed", u.missing, u.missing == 1 ? " is" : "s are");
+  else if (u.redundant > 0) why = fmt::format("{} input{} or pair{} too many", u.redundant, u.redundant == 1 ? "" : "s", u.redundant == 1 ? "" : "s");
+  else why = "some bodies are not connected to the frame";
+  throw PositionModelError(fmt::format("the inputs do not decompose the mechanism into structural groups ({}); position solving needs as many "
+                          "inputs as the mobility, placed so that every body is driven",
+                          why));
+}
+
+// Structure bodies → network bodies, by name.
+std::vector<int> network_bodies(const network::Model& model, const structure::StructureModel& structure) {
   std::vector<int> body_of(structure.body_names.size(), -1);
   for (std::size_t k = 0; k < structure.body_names.size(); ++k) {
     const auto it = std::find(model.bodies.begin(), model.bodies.end(), structure.body_names[k]);
     if (it == model.bodies.end()) throw PositionModelError("structure model and network model name different bodies");
     body_of[k] = static_cast<int>(it - model.bodies.begin());
   }
+  return body_of;
+}
+
+// A group of two bodies and three couplings, none driven: a dyad J1 (to A) – J2 – J3 (to B),
+// solved in closed form when its type has one and no link of it is degenerate, else by Newton.
+// Leaves `group.type` empty when the couplings do not form such a chain.
+void plan_dyad(const network::Model& model, const PositionPlan& plan, GroupPlan& group) {
+  auto C = [&](int i) -> const network::Coupling& { return model.couplings[static_cast<std::size_t>(i)]; };
+  const int b1 = group.bodies[0], b2 = group.bodies[1];
+  std::vector<int> internal, on1, on2;
+  for (int c : group.couplings) {
+    const bool t1 = touches(C(c), b1), t2 = touches(C(c), b2);
+    (t1 && t2 ? internal : t1 ? on1 : on2).push_back(c);
+  }
+  if (internal.size() != 1 || on1.size() != 1 || on2.size() != 1) return;
+  group.chain = {on1[0], internal[0], on2[0]};
+  if (!is_revolute(C(group.chain[0])) && is_revolute(C(group.chain[2]))) std::swap(group.chain[0], group.chain[2]);
+  const std::string type{letter(C(group.chain[0])), letter(C(group.chain[1])), letter(C(group.chain[2]))};
+  group.type = "dyad " + type;
+  const bool closed = type == "RRR" || type == "RRP" || type == "RPR" || type == "PRP";
+  // Coincident joints on a link give it no direction: such a dyad goes to Newton.
+  bool degenerate = false;
+  if (type == "RRR" || type == "RRP")
+    degenerate = (point_of(C(group.chain[1])) - point_of(C(group.chain[0]))).norm() <= kCoincident * plan.length;
+  if (type == "RRR")
+    degenerate = degenerate || (point_of(C(group.chain[2])) - point_of(C(group.chain[1]))).norm() <= kCoincident * plan.length;
+  group.method = closed && !degenerate ? GroupMethod::closed_form : GroupMethod::newton;
+  if (group.method == GroupMethod::closed_form) {
+    const DyadParts parts = dyad_parts(model, group);
+    const std::vector<Pose> file(model.bodies.size());  // the configuration as written
+    const double indicator = branch_indicator(type, parts, file);
+    group.branch_sign = indicator < 0 ? -1 : 1;
+    group.branch = branch_text(type, parts, group.branch_sign);
+    if (type != "PRP" && indicator == 0) group.branch += " (chosen: the file's configuration is itself singular)";
+  }
+}
+
+// The plan of structural group `sg` (bodies already in network numbering through `body_of`):
+// its couplings (within it, or to a body `solved` before it), the groups it comes after, and
+// how it is solved — a driving link, a dyad in closed form, or Newton's method.
+GroupPlan plan_group(const network::Model& model, const PositionPlan& plan, const structure::StructuralGroup& sg,
+                     const std::vector<int>& body_of, const std::vector<std::size_t>& index_of_number,
+                     const std::vector<bool>& solved) {
+  GroupPlan group;
+  group.number = sg.number;
+  for (int b : sg.bodies) group.bodies.push_back(body_of[static_cast<std::size_t>(b)]);
+  for (int a : sg.after)
+    if (a > 0 && static_cast<std::size_t>(a) < index_of_number.size()) group.after.push_back(index_of_number[static_cast<std::size_t>(a)]);
+  auto in_group = [&](int body) { return std::find(group.bodies.begin(), group.bodies.end(), body) != group.bodies.end(); };
+  for (std::size_t i = 0; i < model.couplings.size(); ++i) {
+    const auto& c = model.couplings[i];
+    const bool from = in_group(c.from), to = in_group(c.to);
+    if ((from && (to || solved[static_cast<std::size_t>(c.to)])) || (to && solved[static_cast<std::size_t>(c.from)]))
+      group.couplings.push_back(static_cast<int>(i));
+  }
+  auto driven = [&](int c) { return std::find(plan.drivers.begin(), plan.drivers.end(), c) != plan.drivers.end(); };
+  const bool any_driver = std::any_of(group.couplings.begin(), group.couplings.end(), driven);
+  auto C = [&](int i) -> const network::Coupling& { return model.couplings[static_cast<std::size_t>(i)]; };
+  if (group.bodies.size() == 1 && group.couplings.size() == 1 && driven(group.couplings[0])) {
+    group.method = GroupMethod::driving_link;
+    group.type = fmt::format("driving link {}", letter(C(group.couplings[0])));
+    group.branch = "single solution";
+  } else if (group.bodies.size() == 2 && group.couplings.size() == 3 && !any_driver) {
+    plan_dyad(model, plan, group);
+  }
+  if (group.type.empty()) {
+    // Four bodies and six couplings: a triad (a ternary link and three binary links, three
+    // internal couplings) or a tetrad (a closed loop of four links, four internal couplings).
+    const auto internal = std::count_if(group.couplings.begin(), group.couplings.end(),
+                                        [&](int c) { return in_group(C(c).from) && in_group(C(c).to); });
+    std::string name = "group";
+    if (group.bodies.size() == 4 && group.couplings.size() == 6 && internal == 3) name = "triad (class III)";
+    if (group.bodies.size() == 4 && group.couplings.size() == 6 && internal == 4) name = "tetrad (class IV)";
+    if (group.bodies.size() == 2 && group.couplings.size() == 3 && internal == 1) name = "dyad";
+    group.type = fmt::format("{} of {} bodies and {} couplings", name, group.bodies.size(), group.couplings.size());
+  }
+  if (group.method == GroupMethod::newton) group.branch = "the one Newton's method reaches from the previous configuration";
+  return group;
+}
+
+}  // namespace
+
+PositionPlan plan_positions(const network::Model& model, const structure::StructureModel& structure,
+                            const structure::StructureResult& decomposition) {
+  refuse_unsolvable_couplings(model);
+  PositionPlan plan;
+  plan.frame = model.ground.value_or(0);
+  plan.length = characteristic_length(model);
+  plan.drivers = driving_couplings(model);
+  refuse_incomplete(decomposition);
+  const std::vector<int> body_of = network_bodies(model, structure);
   std::vector<bool> solved(model.bodies.size(), false);
   solved[static_cast<std::size_t>(plan.frame)] = true;
   std::vector<std::size_t> index_of_number(decomposition.groups.size() + 1, 0);
-  std::vector<Pose> file(model.bodies.size());
   for (std::size_t g = 0; g < decomposition.groups.size(); ++g) {
     const structure::StructuralGroup& sg = decomposition.groups[g];
     if (static_cast<std::size_t>(sg.number) < index_of_number.size()) index_of_number[static_cast<std::size_t>(sg.number)] = g;
-    GroupPlan group;
-    group.number = sg.number;
-    for (int b : sg.bodies) group.bodies.push_back(body_of[static_cast<std::size_t>(b)]);
-    for (int a : sg.after)
-      if (a > 0 && static_cast<std::size_t>(a) < index_of_number.size()) group.after.push_back(index_of_number[static_cast<std::size_t>(a)]);
-    auto in_group = [&](int body) { return std::find(group.bodies.begin(), group.bodies.end(), body) != group.bodies.end(); };
-    for (std::size_t i = 0; i < model.couplings.size(); ++i) {
-      const auto& c = model.couplings[i];
-      const bool from = in_group(c.from), to = in_group(c.to);
-      if ((from && (to || solved[static_cast<std::size_t>(c.to)])) || (to && solved[static_cast<std::size_t>(c.from)]))
-        group.couplings.push_back(static_cast<int>(i));
-    }
-    auto driven = [&](int c) { return std::find(plan.drivers.begin(), plan.drivers.end(), c) != plan.drivers.end(); };
-    const bool any_driver = std::any_of(group.couplings.begin(), group.couplings.end(), driven);
-    auto C = [&](int i) -> const network::Coupling& { return model.couplings[static_cast<std::size_t>(i)]; };
-    if (group.bodies.size() == 1 && group.couplings.size() == 1 && driven(group.couplings[0])) {
-      group.method = GroupMethod::driving_link;
-      group.type = fmt::format("driving link {}", letter(C(group.couplings[0])));
-      group.branch = "single solution";
-    } else if (group.bodies.size() == 2 && group.couplings.size() == 3 && !any_driver) {
-      const int b1 = group.bodies[0], b2 = group.bodies[1];
-      std::vector<int> internal, on1, on2;
-      for (int c : group.couplings) {
-        const bool t1 = touches(C(c), b1), t2 = touches(C(c), b2);
-        (t1 && t2 ? internal : t1 ? on1 : on2).push_back(c);
-      }
-      if (internal.size() == 1 && on1.size() == 1 && on2.size() == 1) {
-        group.chain = {on1[0], internal[0], on2[0]};
-        if (!is_revolute(C(group.chain[0])) && is_revolute(C(group.chain[2]))) std::swap(group.chain[0], group.chain[2]);
-        const std::string type{letter(C(group.chain[0])), letter(C(group.chain[1])), letter(C(group.chain[2]))};
-        group.type = "dyad " + type;
-        const bool closed = type == "RRR" || type == "RRP" || type == "RPR" || type == "PRP";
-        // Coincident joints on a link give it no direction: such a dyad goes to Newton.
-        bool degenerate = false;
-        if (type == "RRR" || type == "RRP")
-          degenerate = (point_of(C(group.chain[1])) - point_of(C(group.chain[0]))).norm() <= kCoincident * plan.length;
-        if (type == "RRR")
-          degenerate = degenerate || (point_of(C(group.chain[2])) - point_of(C(group.chain[1]))).norm() <= kCoincident * plan.length;
-        group.method = closed && !degenerate ? GroupMethod::closed_form : GroupMethod::newton;
-        if (group.method == GroupMethod::closed_form) {
-          const DyadParts parts = dyad_parts(model, group);
-          const double indicator = branch_indicator(type, parts, file);
-          group.branch_sign = indicator < 0 ? -1 : 1;
-          group.branch = branch_text(type, parts, group.branch_sign);
-          if (type != "PRP" && indicator == 0) group.branch += " (chosen: the file's configuration is itself singular)";
-        }
-      }
-    }
-    if (group.type.empty()) {
-      // Four bodies and six couplings: a triad (a ternary link and three binary links, three
-      // internal couplings) or a tetrad (a closed loop of four links, four internal couplings).
-      const auto internal = std::count_if(group.couplings.begin(), group.couplings.end(),
-                                          [&](int c) { return in_group(C(c).from) && in_group(C(c).to); });
-      std::string name = "group";
-      if (group.bodies.size() == 4 && group.couplings.size() == 6 && internal == 3) name = "triad (class III)";
-      if (group.bodies.size() == 4 && group.couplings.size() == 6 && internal == 4) name = "tetrad (class IV)";
-      if (group.bodies.size() == 2 && group.couplings.size() == 3 && internal == 1) name = "dyad";
-      group.type = fmt::format("{} of {} bodies and {} couplings", name, group.bodies.size(), group.couplings.size());
-    }
-    if (group.method == GroupMethod::newton) group.branch = "the one Newton's method reaches from the previous configuration";
+    GroupPlan group = plan_group(model, plan, sg, body_of, index_of_number, solved);
     for (int b : group.bodies) solved[static_cast<std::size_t>(b)] = true;
     plan.groups.push_back(std::move(group));
   }

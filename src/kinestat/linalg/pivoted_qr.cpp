@@ -26,7 +26,9 @@ constexpr Eigen::Index kPivotPanel = 32;
 // the diagonal) and F = (A − V_prev F_prevᵀ)ᵀ V T built one column per step. Each step brings its
 // pivot column and its row of R up to date, which is all the pivot choice and the norm
 // downdates need. A norm that has cancelled too far ends the panel, so that it is recomputed
-// from its updated column before the next choice, as the unblocked factorisation does.
+// from its updated column before the next choice, as the unblocked factorisation does. Kept
+// whole (over 80 lines): one algorithm, LAPACK's, whose steps share all of its state (R, F, the
+// norms and the order), to be read beside dlaqps.
 std::vector<Eigen::Index> pivoted_column_order(const Eigen::MatrixXd& a) {
   const Eigen::Index m = a.rows(), n = a.cols();
   std::vector<Eigen::Index> order(static_cast<std::size_t>(n));

@@ -143,7 +143,8 @@ struct SpatialBasis {
 
 // The spatial screws of seed 000's Tables 3 and 4 for a (checked, non-custom) coupling type:
 // rotations before translations, torques before forces, each in frame-axis order. A table, one
-// case per type: its length is the number of coupling types, not of steps.
+// case per type: its length (over 80 lines) is the number of coupling types, not of steps, so it
+// is kept whole to be read beside the seed's tables.
 template <typename Scalar>
 SpatialBasis<Scalar> spatial_basis(CouplingType type, const CouplingGeometry& g) {
   using Vec = Vector3<Scalar>;
