@@ -8,6 +8,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/option_checks.hpp"
+#include "kinestat/error.hpp"
 #include "kinestat/pipeline/framework_pipeline.hpp"
 #include "kinestat/report/framework_report.hpp"
 #include "kinestat/report/json_text.hpp"
@@ -66,6 +67,11 @@ void register_framework_options(CLI::App& analyze) {
 int run_framework_analysis(const CommonOptions& options, const framework::FrameworkModel& model, const std::string& path,
                            const std::vector<std::string>& notices) {
   reject_options(given_network_options(), "a framework", path);
+  // The text report lists each mode's and stress state's non-zero entries, as a reader wants
+  // them; every entry, zeros included, is for programs (the JSON report).
+  if (full_vectors && !options.json)
+    throw Error("--full-vectors lists every entry in the JSON report: add --json (the text report lists the non-zero "
+                "entries of each mode and stress state), or remove --full-vectors");
   if (misfit && !model.has_elastic_data())
     throw io::InputError({path, 1, 1}, "--misfit needs a model with materials and sections (docs/stiffness.md); remove it");
   framework::AnalysisOptions analysis_options;

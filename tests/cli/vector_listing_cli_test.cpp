@@ -114,3 +114,19 @@ TEST(VectorListingCommand, NetworkRefusesFullVectorsWithExitCode2) {
 }
 
 }  // namespace
+
+namespace {
+
+// The text report lists the non-zero entries of each vector whatever is asked, so --full-vectors
+// without --json would be ignored silently: it is refused, one line, exit code 2, nothing on
+// standard output.
+TEST(VectorListingCommand, FullVectorsWithoutJsonIsRefusedWithExitCode2) {
+  const auto r = run_cli("analyze " + kinestat::testing::example_path("braced-square.yaml") + " --full-vectors");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  EXPECT_NE(r.err.find("--full-vectors"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--json"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
+}
+
+}  // namespace
