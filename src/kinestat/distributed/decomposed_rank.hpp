@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+// The rank of a large sparse matrix decided on many processes by domain decomposition with the
+// serial sparse QR (docs/scaling.md, "The distributed rank decision"): the columns are split
+// into one interior per process and an interface (partition_columns); each process reduces
+// the rows that touch its interior with SuiteSparseQR at the serial rule's absolute threshold
+// (reduce_interior) and sends rank 0 a block on the interface of at most its interface
+// columns' rows; rank 0 decides the rank of those blocks stacked with the interface-only rows
+// at the same threshold. rank(A) = Σ interior ranks + the interface's rank.
+
+#include <Eigen/SparseCore>
+
+#include <cstddef>
+#include <vector>
+
+#include "kinestat/linalg/rank_decision.hpp"
+
+namespace kinestat::distributed {
+
+/// Outcome of a decomposed rank decision; the same on every process but where noted.
+struct DecomposedRank {
+  /// The decision in the serial sparse form: rank, threshold, largest (σ_max, the serial
+  /// Lanczos estimate), rounding_level, smallest_kept (the smallest kept |R_kk| over the
+  /// interiors' and the interface's factors), largest_dropped 0 (SuiteSparseQR drops columns
+  /// without reporting them, as in the serial path), `sparse` set.
+  linalg::RankDecision decision;
+  int processes = 1;
+  /// Columns of the matrix factored (A, or Aᵀ when A is wider than tall, as the serial path
+  /// chooses) in the interface, and rows of the interface's stacked matrix (the processes'
+  /// blocks and the interface-only rows). 0 at P = 1 (no decomposition).
+  Eigen::Index interface_columns = 0, interface_rows = 0;
+  std::vector<Eigen::Index> interior_ranks;  ///< per process (at P = 1: the whole rank)
+  Eigen::Index interface_rank = 0;
+  /// Wall time, seconds: σ_max and the threshold (rank 0), the slowest process's interior
+  /// (partition, assembly, factorisation, compression), the interface's factorisation on rank 0.
+  double threshold_seconds = 0.0, interior_seconds = 0.0, interface_seconds = 0.0;
+  /// Per process (index = MPI rank; rank 0 only): peak resident memory and SuiteSparse's own
+  /// count of its factorisations' peak, bytes.
+  std::vector<std::size_t> peak_memory, factor_memory;
+};
+
+/// Which matrix is factored: rank(A) = rank(Aᵀ), but which one a rank-revealing QR factors
+/// decides which near-threshold values it keeps, so the backend factors the serial path's.
+enum class FactoredSide {
+  taller,      ///< A, or Aᵀ when A is wider than tall (linalg::sparse_numerical_rank: frameworks)
+  transposed,  ///< Aᵀ always (a network's rank K from the QR of Kᵀ, network::analyse_network_sparse)
+};
+
+/// Decides rank(a) on all processes of MPI_COMM_WORLD (collective). Every process passes the
+/// whole matrix `a` (each builds it from the model itself) and the same `tolerance`; the
+/// threshold is the serial rule's (linalg::sparse_rank_threshold, computed on rank 0 and
+/// broadcast). `column_groups` (a framework's node of each coordinate) is passed to the serial
+/// decision at P = 1, which is then linalg::sparse_numerical_rank itself (FactoredSide::taller). Throws std::bad_alloc
+/// when memory runs out and std::runtime_error when SuiteSparseQR fails; the caller aborts the
+/// run (the other processes would wait in a collective call).
+DecomposedRank decomposed_rank(const Eigen::SparseMatrix<double>& a, const linalg::RankTolerance& tolerance,
+                               const std::vector<Eigen::Index>& column_groups = {},
+                               FactoredSide side = FactoredSide::taller);
+
+}  // namespace kinestat::distributed

@@ -1,0 +1,110 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The distributed rank decision (domain decomposition) against counts known by hand
+// (tests/support/lattice_generator.hpp: Maxwell's rule, the (n − 1)² self-stresses of a pinned
+// triangular lattice, the shear of square grids and of cubic layers) and against the serial
+// sparse path on the same model. Run under mpirun -n 2: every process runs every test (the
+// calls are collective); every process checks the counts, rank 0 the serial path.
+
+#include <gtest/gtest.h>
+#include <mpi.h>
+
+#include <numeric>
+
+#include "kinestat/distributed/column_partition.hpp"
+#include "kinestat/distributed/distributed_pipeline.hpp"
+#include "kinestat/framework/framework_analysis.hpp"
+#include "support/lattice_generator.hpp"
+
+namespace kinestat::distributed {
+namespace {
+
+int world_rank() {
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  return rank;
+}
+
+int world_size() {
+  int size = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  return size;
+}
+
+// The distributed counts equal the hand counts on every process, and the serial sparse path's
+// counts and threshold on rank 0.
+void check_framework(const framework::FrameworkModel& model, Eigen::Index mechanisms, Eigen::Index self_stresses,
+                     const char* name) {
+  framework::AnalysisOptions options;
+  const pipeline::DistributedFrameworkAnalysis r = pipeline::analyse_framework_distributed(model, options);
+  EXPECT_EQ(r.result.mechanisms, mechanisms) << name;
+  EXPECT_EQ(r.result.self_stresses, self_stresses) << name;
+  EXPECT_EQ(r.backend.processes, world_size()) << name;
+  EXPECT_EQ(std::accumulate(r.backend.interior_ranks.begin(), r.backend.interior_ranks.end(), r.backend.interface_rank),
+            r.result.rank)
+      << name;
+  if (world_size() > 1) {
+    EXPECT_GT(r.backend.interface_columns, 0) << name;  // a decomposition was made
+    for (Eigen::Index interior : r.backend.interior_ranks) EXPECT_GT(interior, 0) << name;
+  }
+  EXPECT_GT(r.result.decision.smallest_kept, r.result.decision.threshold) << name;
+  if (world_rank() != 0) return;
+  framework::AnalysisOptions serial_options;
+  serial_options.dense_limit = 0;  // the serial sparse path, whatever the size
+  serial_options.vectors = false;
+  const framework::FrameworkResult serial = framework::analyse_framework(model, serial_options);
+  EXPECT_EQ(serial.method, framework::RankMethod::sparse_qr) << name;
+  EXPECT_EQ(r.result.rank, serial.rank) << name;
+  EXPECT_EQ(r.result.decision.threshold, serial.decision.threshold) << name;
+  EXPECT_EQ(r.result.decision.largest, serial.decision.largest) << name;
+}
+
+// A pinned triangular lattice of 9,861 bars: rigid, (n − 1)² = 3,249 self-stresses.
+TEST(DecomposedRank, TriangularLatticeWithManySelfStresses) {
+  const int n = 58;
+  check_framework(framework::planar_lattice(n, true), 0, (n - 1) * (n - 1), "triangular 58");
+}
+
+// A square grid: n − 1 mechanisms (each row of vertical bars shears) and n − 1 self-stresses.
+TEST(DecomposedRank, SquareGrid) {
+  const int n = 40;
+  check_framework(framework::planar_lattice(n, false), n - 1, n - 1, "square 40");
+}
+
+// A cubic lattice with triangulated horizontal faces: 3(n − 1) mechanisms; the self-stresses by
+// Maxwell's rule, m − (3 free coordinates per free node − mechanisms).
+TEST(DecomposedRank, CubicLattice) {
+  const int n = 8;
+  const Eigen::Index bars = 3 * n * n * (n - 1) + n * (n - 1) * (n - 1);
+  const Eigen::Index coordinates = 3 * n * n * (n - 1);
+  const Eigen::Index mechanisms = 3 * (n - 1);
+  check_framework(framework::spatial_lattice(n), mechanisms, bars - (coordinates - mechanisms), "cubic 8");
+}
+
+// The partition's defining property on a lattice's D(c), for 2 and 4 parts: no row has entries
+// in the interiors of two parts, each interior is non-empty and the interface is small.
+TEST(ColumnPartition, NoRowJoinsTwoInteriors) {
+  framework::FrameworkResult scratch;
+  const Eigen::SparseMatrix<double> a = framework::prepare_analysis(framework::planar_lattice(30, true), scratch);
+  for (int parts : {2, 4}) {
+    const ColumnPartition partition = partition_columns(a, parts);
+    std::vector<Eigen::Index> sizes(static_cast<std::size_t>(parts), 0);
+    for (int part : partition.column_part)
+      if (part != ColumnPartition::kInterface) ++sizes[static_cast<std::size_t>(part)];
+    for (Eigen::Index size : sizes) EXPECT_GT(size, a.cols() / (2 * parts)) << parts;
+    EXPECT_LT(partition.interface_columns, a.cols() / 4) << parts;
+    const Eigen::SparseMatrix<double, Eigen::RowMajor> rows(a);
+    for (Eigen::Index i = 0; i < rows.rows(); ++i) {
+      int seen = ColumnPartition::kInterface;
+      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(rows, i); it; ++it) {
+        const int part = partition.column_part[static_cast<std::size_t>(it.col())];
+        if (part == ColumnPartition::kInterface) continue;
+        EXPECT_TRUE(seen == ColumnPartition::kInterface || seen == part) << "row " << i << " parts " << parts;
+        seen = part;
+      }
+      EXPECT_EQ(partition.row_part[static_cast<std::size_t>(i)], seen) << i;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace kinestat::distributed
