@@ -253,30 +253,54 @@ class SpacarReader {
     return 3 + static_cast<int>(along);
   }
 
+  // A kinematic-part record that is no element: X, role and dynamic cards are read elsewhere,
+  // output cards are noted; anything else is refused.
+  void skip_or_refuse(const Record& r) {
+    const std::string& k = r.keyword.text;
+    if (k == "X" || spacar::is_role_keyword(k) || spacar::is_dynamic_keyword(k)) return;
+    if (spacar::is_output_keyword(k)) {
+      if (ignored_kinematic_.insert(k).second)
+        notices_.push_back(fmt::format("{}:{}:{}: note: {} controls SPACAR's output and is ignored", path_, r.keyword.line,
+                                       r.keyword.column, k));
+      return;
+    }
+    // CYLINDER, PLRBEAM and SLIDER are SPACAR elements whose cards no public description
+    // gives (docs/formats.md): the user is told which cards can replace them.
+    const bool element = k == "CYLINDER" || k == "PLRBEAM" || k == "SLIDER";
+    fail(r.keyword, fmt::format("unsupported SPACAR keyword '{}' in the kinematic part; kinestat reads {} up to END or HALT{}",
+                                k, spacar::kSupportedKeywords,
+                                element ? " (no public description of this element's card was found: write the part with "
+                                          "BEAM, TRUSS, HINGE and PINBODY elements, docs/formats.md)"
+                                        : ""));
+  }
+
   void read_element(const Record& r) {
     const std::string& k = r.keyword.text;
     const auto type = spacar::element_keyword(k);
     if (!type) {
-      if (k == "X" || spacar::is_role_keyword(k) || spacar::is_dynamic_keyword(k)) return;
-      if (spacar::is_output_keyword(k)) {
-        if (ignored_kinematic_.insert(k).second)
-          notices_.push_back(fmt::format("{}:{}:{}: note: {} controls SPACAR's output and is ignored", path_, r.keyword.line,
-                                         r.keyword.column, k));
-        return;
-      }
-      // CYLINDER, PLRBEAM and SLIDER are SPACAR elements whose cards no public description
-      // gives (docs/formats.md): the user is told which cards can replace them.
-      const bool element = k == "CYLINDER" || k == "PLRBEAM" || k == "SLIDER";
-      fail(r.keyword, fmt::format("unsupported SPACAR keyword '{}' in the kinematic part; kinestat reads {} up to END or HALT{}",
-                                  k, spacar::kSupportedKeywords,
-                                  element ? " (no public description of this element's card was found: write the part with "
-                                            "BEAM, TRUSS, HINGE and PINBODY elements, docs/formats.md)"
-                                          : ""));
+      skip_or_refuse(r);  // no element: read elsewhere, noted, or refused
+      return;
     }
     PendingElement e;
     e.keyword = r.keyword;
     e.kind = type->kind;
     e.warping = k == "BEAMW";
+    expect_element_count(r);
+    e.number = integer(r.values[0], "an element number");
+    if (element_lines_.count(e.number))
+      fail(r.values[0], fmt::format("element {} is defined twice (first on line {})", e.number, element_lines_[e.number]));
+    element_lines_[e.number] = r.keyword.line;
+    read_element_nodes(r, e);
+    if (e.kind != spacar::ElementKind::hinge && e.p == e.q)
+      fail(e.node_tokens.back(), fmt::format("element {} connects node {} to itself", e.number, e.p));
+    if ((e.kind == spacar::ElementKind::beam || e.kind == spacar::ElementKind::hinge) && e.rp == e.rq)
+      fail(e.node_tokens.back(), fmt::format("element {} has the same orientation node {} at both ends", e.number, e.rp));
+    elements_.push_back(std::move(e));
+  }
+
+  // The count of numbers each element card takes.
+  void expect_element_count(const Record& r) const {
+    const std::string& k = r.keyword.text;
     if (k == "TRUSS" || k == "PLTRUSS") {
       expect_count(r, {3}, "an element number and two position nodes");
     } else if (k == "PLBEAM") {
@@ -296,10 +320,11 @@ class SpacarReader {
     } else {
       expect_count(r, {4}, "an element number, the position and orientation node of the body, and the position node it carries");
     }
-    e.number = integer(r.values[0], "an element number");
-    if (element_lines_.count(e.number))
-      fail(r.values[0], fmt::format("element {} is defined twice (first on line {})", e.number, element_lines_[e.number]));
-    element_lines_[e.number] = r.keyword.line;
+  }
+
+  // The nodes of element card `r` (and a beam's local y, a hinge's axis) into `e`.
+  void read_element_nodes(const Record& r, PendingElement& e) {
+    const std::string& k = r.keyword.text;
     switch (e.kind) {
       case spacar::ElementKind::truss:
         e.p = position_node(r.values[1]);
@@ -340,11 +365,6 @@ class SpacarReader {
         break;
       }
     }
-    if (e.kind != spacar::ElementKind::hinge && e.p == e.q)
-      fail(e.node_tokens.back(), fmt::format("element {} connects node {} to itself", e.number, e.p));
-    if ((e.kind == spacar::ElementKind::beam || e.kind == spacar::ElementKind::hinge) && e.rp == e.rq)
-      fail(e.node_tokens.back(), fmt::format("element {} has the same orientation node {} at both ends", e.number, e.rp));
-    elements_.push_back(std::move(e));
   }
 
   // Each orientation node belongs to one position node; the first orientation node seen at a
@@ -459,99 +479,110 @@ class SpacarReader {
     }
   }
 
+  // Every pending element as a framework element (named by its SPACAR number), then the joints.
   void build_elements() {
-    const double length = framework::characteristic_length(model_);
-    const std::size_t translations = model_.dimension == 2 ? 2 : 3;
     for (const PendingElement& e : elements_) {
       Element element;
       element.name = std::to_string(e.number);
       switch (e.kind) {
-        case spacar::ElementKind::hinge:
-          // Two orientations joined: relative translations free, relative rotations rigid (the
-          // one about the axis is deformation 1; see read_role).
-          element.type = ElementType::rigid_body;
-          element.nodes = {orientation_index_.at(e.rp), orientation_index_.at(e.rq)};
-          element.roles.assign(framework::deformation_count(model_.dimension, element), DeformationRole::fixed);
-          for (std::size_t k = 0; k < translations; ++k) element.roles[k] = DeformationRole::released;
-          break;
-        case spacar::ElementKind::pin_body: {
-          // The carried position node moves with the body; its orientation is free.
-          const std::size_t carried = position_index_.at(e.q);
-          if (!model_.nodes[carried].rotational)
-            fail(e.node_tokens[2], fmt::format("PINBODY {} carries position node {}, which no BEAM or HINGE gives an "
-                                               "orientation node: kinestat cannot pin a node without one to a body",
-                                               e.number, e.q));
-          element.type = ElementType::rigid_body;
-          element.nodes = {orientation_index_.at(e.rp), carried};
-          element.roles.assign(framework::deformation_count(model_.dimension, element), DeformationRole::released);
-          for (std::size_t k = 0; k < translations; ++k) element.roles[k] = DeformationRole::fixed;
-          break;
-        }
-        case spacar::ElementKind::rigid_beam: {
-          // RBEAM e p rp q: q = p + R(rp)·(q0 − p0), three constraints, and q has no orientation
-          // node of its own. A rigid body on rp (its reference node: position p, orientation rp)
-          // carrying q holds q's three relative translations. Framework rigid-body nodes are
-          // rotational, so q's relative rotations must be dealt with without changing the count:
-          // when q has an orientation from another element (the next link's rp) they are
-          // released, as in PINBODY (3 constraints); when it has none, q is given three rotations
-          // that are held to the body's (3 coordinates and 3 constraints more, which determine
-          // each other, so the motions and redundancies are those of the 3 constraints alone). A
-          // beam with every deformation held would also hold q's orientation, which is not
-          // SPACAR's RBEAM when q carries one.
-          const std::size_t carried = position_index_.at(e.q);
-          element.type = ElementType::rigid_body;
-          element.nodes = {orientation_index_.at(e.rp), carried};
-          const bool welded = welded_ends_.count(e.q) != 0;
-          element.roles.assign(framework::deformation_count(model_.dimension, element),
-                               welded ? DeformationRole::fixed : DeformationRole::released);
-          for (std::size_t k = 0; k < translations; ++k) element.roles[k] = DeformationRole::fixed;
-          const Eigen::Vector3d axis = model_.nodes[carried].position - model_.nodes[element.nodes[0]].position;
-          if (!(axis.norm() > kCoincident * length))
-            fail(e.node_tokens.back(), fmt::format("zero-length element {}: nodes {} and {} coincide", e.number, e.p, e.q));
-          break;
-        }
+        case spacar::ElementKind::hinge: build_hinge(e, element); break;
+        case spacar::ElementKind::pin_body: build_pin_body(e, element); break;
+        case spacar::ElementKind::rigid_beam: build_rigid_beam(e, element); break;
         case spacar::ElementKind::truss:
-        case spacar::ElementKind::beam: {
-          const bool beam = e.kind == spacar::ElementKind::beam;
-          element.type = beam ? ElementType::beam : ElementType::truss;
-          const std::size_t p = beam ? orientation_index_.at(e.rp) : position_index_.at(e.p);
-          const std::size_t q = beam ? orientation_index_.at(e.rq) : position_index_.at(e.q);
-          element.nodes = {p, q};
-          const Eigen::Vector3d axis = model_.nodes[q].position - model_.nodes[p].position;
-          if (!(axis.norm() > kCoincident * length))
-            fail(e.node_tokens.back(), fmt::format("zero-length element {}: nodes {} and {} coincide", e.number, e.p, e.q));
-          const Eigen::Vector3d x = axis.normalized();
-          if (beam) {
-            if (model_.dimension == 2) {
-              element.frame << x, Eigen::Vector3d::UnitZ().cross(x), Eigen::Vector3d::UnitZ();
-            } else {
-              // SPACAR Light's default local y is the global y axis.
-              const Eigen::Vector3d given = e.y.value_or(Eigen::Vector3d::UnitY());
-              const Eigen::Vector3d across = given - given.dot(x) * x;
-              if (!(given.norm() > 0) || !(across.norm() > kParallelAxes * given.norm()))
-                fail(e.keyword, fmt::format("element {}: the local y direction ({}, {}, {}) is parallel to the element "
-                                            "axis from node {} to node {}", e.number, given.x(), given.y(), given.z(), e.p, e.q));
-              const Eigen::Vector3d y = across.normalized();
-              element.frame << x, y, x.cross(y);
-            }
-          }
-          element.roles.assign(framework::deformation_count(model_.dimension, element), DeformationRole::fixed);
-          break;
-        }
+        case spacar::ElementKind::beam: build_bar_or_beam(e, element); break;
       }
       element_index_[e.number] = model_.elements.size();
       element_types_.push_back(&e);
       model_.elements.push_back(std::move(element));
     }
-    // A position shared by several orientation nodes is a joint: the positions stay together,
-    // the orientations are free relative to each other (a spherical joint in 3-D, a pin in 2-D).
+    build_joints();
+  }
+
+  std::size_t translation_count() const { return model_.dimension == 2 ? 2 : 3; }
+
+  // Two orientations joined: relative translations free, relative rotations rigid (the one
+  // about the axis is deformation 1; see read_role).
+  void build_hinge(const PendingElement& e, Element& element) const {
+    element.type = ElementType::rigid_body;
+    element.nodes = {orientation_index_.at(e.rp), orientation_index_.at(e.rq)};
+    element.roles.assign(framework::deformation_count(model_.dimension, element), DeformationRole::fixed);
+    for (std::size_t k = 0; k < translation_count(); ++k) element.roles[k] = DeformationRole::released;
+  }
+
+  // The carried position node moves with the body; its orientation is free.
+  void build_pin_body(const PendingElement& e, Element& element) const {
+    const std::size_t carried = position_index_.at(e.q);
+    if (!model_.nodes[carried].rotational)
+      fail(e.node_tokens[2], fmt::format("PINBODY {} carries position node {}, which no BEAM or HINGE gives an "
+                                         "orientation node: kinestat cannot pin a node without one to a body",
+                                         e.number, e.q));
+    element.type = ElementType::rigid_body;
+    element.nodes = {orientation_index_.at(e.rp), carried};
+    element.roles.assign(framework::deformation_count(model_.dimension, element), DeformationRole::released);
+    for (std::size_t k = 0; k < translation_count(); ++k) element.roles[k] = DeformationRole::fixed;
+  }
+
+  // RBEAM e p rp q: q = p + R(rp)·(q0 − p0), three constraints, and q has no orientation
+  // node of its own. A rigid body on rp (its reference node: position p, orientation rp)
+  // carrying q holds q's three relative translations. Framework rigid-body nodes are
+  // rotational, so q's relative rotations must be dealt with without changing the count:
+  // when q has an orientation from another element (the next link's rp) they are
+  // released, as in PINBODY (3 constraints); when it has none, q is given three rotations
+  // that are held to the body's (3 coordinates and 3 constraints more, which determine
+  // each other, so the motions and redundancies are those of the 3 constraints alone). A
+  // beam with every deformation held would also hold q's orientation, which is not
+  // SPACAR's RBEAM when q carries one.
+  void build_rigid_beam(const PendingElement& e, Element& element) const {
+    const std::size_t carried = position_index_.at(e.q);
+    element.type = ElementType::rigid_body;
+    element.nodes = {orientation_index_.at(e.rp), carried};
+    const bool welded = welded_ends_.count(e.q) != 0;
+    element.roles.assign(framework::deformation_count(model_.dimension, element),
+                         welded ? DeformationRole::fixed : DeformationRole::released);
+    for (std::size_t k = 0; k < translation_count(); ++k) element.roles[k] = DeformationRole::fixed;
+    const Eigen::Vector3d axis = model_.nodes[carried].position - model_.nodes[element.nodes[0]].position;
+    if (!(axis.norm() > kCoincident * framework::characteristic_length(model_)))
+      fail(e.node_tokens.back(), fmt::format("zero-length element {}: nodes {} and {} coincide", e.number, e.p, e.q));
+  }
+
+  // A truss between position nodes, or a beam between the nodes of its orientation nodes with
+  // its local frame (SPACAR Light's default local y is the global y axis).
+  void build_bar_or_beam(const PendingElement& e, Element& element) const {
+    const bool beam = e.kind == spacar::ElementKind::beam;
+    element.type = beam ? ElementType::beam : ElementType::truss;
+    const std::size_t p = beam ? orientation_index_.at(e.rp) : position_index_.at(e.p);
+    const std::size_t q = beam ? orientation_index_.at(e.rq) : position_index_.at(e.q);
+    element.nodes = {p, q};
+    const Eigen::Vector3d axis = model_.nodes[q].position - model_.nodes[p].position;
+    if (!(axis.norm() > kCoincident * framework::characteristic_length(model_)))
+      fail(e.node_tokens.back(), fmt::format("zero-length element {}: nodes {} and {} coincide", e.number, e.p, e.q));
+    const Eigen::Vector3d x = axis.normalized();
+    if (beam) {
+      if (model_.dimension == 2) {
+        element.frame << x, Eigen::Vector3d::UnitZ().cross(x), Eigen::Vector3d::UnitZ();
+      } else {
+        const Eigen::Vector3d given = e.y.value_or(Eigen::Vector3d::UnitY());
+        const Eigen::Vector3d across = given - given.dot(x) * x;
+        if (!(given.norm() > 0) || !(across.norm() > kParallelAxes * given.norm()))
+          fail(e.keyword, fmt::format("element {}: the local y direction ({}, {}, {}) is parallel to the element "
+                                      "axis from node {} to node {}", e.number, given.x(), given.y(), given.z(), e.p, e.q));
+        const Eigen::Vector3d y = across.normalized();
+        element.frame << x, y, x.cross(y);
+      }
+    }
+    element.roles.assign(framework::deformation_count(model_.dimension, element), DeformationRole::fixed);
+  }
+
+  // A position shared by several orientation nodes is a joint: the positions stay together,
+  // the orientations are free relative to each other (a spherical joint in 3-D, a pin in 2-D).
+  void build_joints() {
     for (const auto& [a, b] : joints_) {
       Element joint;
       joint.name = "joint " + model_.nodes[b].name;
       joint.type = ElementType::rigid_body;
       joint.nodes = {a, b};
       joint.roles.assign(framework::deformation_count(model_.dimension, joint), DeformationRole::fixed);
-      for (std::size_t k = translations; k < joint.roles.size(); ++k) joint.roles[k] = DeformationRole::released;
+      for (std::size_t k = translation_count(); k < joint.roles.size(); ++k) joint.roles[k] = DeformationRole::released;
       model_.elements.push_back(std::move(joint));
     }
   }

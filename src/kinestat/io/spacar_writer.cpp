@@ -222,6 +222,18 @@ class SpacarWriter {
   // RLSE / INPUTE for deformations, FIX / INPUTX for coordinates, of `model` (the model itself
   // or, for the proposal, only what the proposal adds).
   void roles(const FrameworkModel& model, std::string& out, const FrameworkModel* base = nullptr, const char* prefix = "") {
+    std::size_t written = element_role_lines(model, out, base, prefix);
+    const std::vector<std::string> lines = coordinate_role_lines(model, base, prefix);
+    for (const auto& line : lines) out += line + "\n";
+    written += lines.size();
+    if (!base && written) out += "\n";
+    // A comment also when the proposal is applied (prefix ""): the reader takes any other line as a keyword.
+    if (base && written == 0) out += "# (nothing to add: the model is exactly constrained)\n";
+  }
+
+  // The RLSE and INPUTE lines of every element (with `base`: only the roles it does not have);
+  // returns how many were written.
+  std::size_t element_role_lines(const FrameworkModel& model, std::string& out, const FrameworkModel* base, const char* prefix) {
     std::size_t written = 0;
     for (std::size_t e = 0, n = 0; e < model.elements.size(); ++e) {
       const Element& element = model.elements[e];
@@ -258,6 +270,11 @@ class SpacarWriter {
         }
       }
     }
+    return written;
+  }
+
+  // The FIX and INPUTX lines of every node (with `base`: only the roles it does not have).
+  std::vector<std::string> coordinate_role_lines(const FrameworkModel& model, const FrameworkModel* base, const char* prefix) {
     std::vector<std::string> lines;  // joint partners share a position node: no line twice
     std::set<std::string> seen;
     const auto add = [&](std::string line) {
@@ -297,11 +314,7 @@ class SpacarWriter {
         }
       }
     }
-    for (const auto& line : lines) out += line + "\n";
-    written += lines.size();
-    if (!base && written) out += "\n";
-    // A comment also when the proposal is applied (prefix ""): the reader takes any other line as a keyword.
-    if (base && written == 0) out += "# (nothing to add: the model is exactly constrained)\n";
+    return lines;
   }
 
   void proposal() {
