@@ -9,6 +9,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/option_checks.hpp"
+#include "kinestat/framework/generic_framework.hpp"
 #include "kinestat/framework/over_constraint_cost.hpp"
 #include "kinestat/framework/stiffness.hpp"
 #include "kinestat/io/input_error.hpp"
@@ -111,10 +112,17 @@ int run_stiffness(const StiffnessOptions& options) {
   // `--misfit`: the cost of over-constraint (S2's misfit, prestress and frequencies) beside it.
   std::optional<framework::OverConstraintCost> cost;
   try {
-    result = framework::stiffness_at(model, node);
     if (options.misfit) {
-      const pipeline::FrameworkAnalysis analysis = pipeline::analyse_framework(model, framework::AnalysisOptions{});
-      cost = framework::over_constraint_cost(model, analysis.result, node, *options.misfit);
+      // The analysis as every report gives it (the generic answer may re-choose the basis of the
+      // self-stresses), without the pipeline's own cost at the intended-motion node: the cost is
+      // computed once, here, at --at, and carries the stiffness without the misfit.
+      std::optional<framework::GenericFramework> generic;
+      const framework::FrameworkResult analysis =
+          framework::analyse_framework_as_reported(model, framework::AnalysisOptions{}, &generic);
+      cost = framework::over_constraint_cost(model, analysis, node, *options.misfit);
+      result = cost->without;
+    } else {
+      result = framework::stiffness_at(model, node);
     }
   } catch (const std::invalid_argument& error) {
     throw io::InputError({path, 1, 1}, error.what());
