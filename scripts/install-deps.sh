@@ -9,11 +9,16 @@ set -euo pipefail
 # no test frameworks, benchmarks, clang, Chromium, PETSc or MPI, no Python module (python3-dev
 # python3-pybind11 python3-numpy) and no npm for the HTML report's viewer (without npm the build
 # leaves the viewer out and `kinestat report` says so). Install those and build again to add them.
-minimal=false
+# --build: what the `release` preset needs to configure and compile, with Python and PETSc (CI's
+# release-build stage); not what only the tests or the `asan` preset use (pytest, SciPy, Jupyter,
+# jsonschema, Doxygen, Sphinx, clang, Chromium). .ci/run installs those with a second, full run
+# while the release preset builds: apt mostly waits on the network, the build on the cores.
+mode=full
 case "${1:-}" in
-  --minimal) minimal=true ;;
+  --minimal) mode=minimal ;;
+  --build) mode=build ;;
   "") ;;
-  *) echo "usage: scripts/install-deps.sh [--minimal]" >&2; exit 2 ;;
+  *) echo "usage: scripts/install-deps.sh [--minimal | --build]" >&2; exit 2 ;;
 esac
 packages=(
   git build-essential cmake ninja-build pkg-config
@@ -22,21 +27,12 @@ packages=(
   # package, which would also want libgl-dev (Mesa, LLVM) and libqhull-dev.
   libtinyxml2-dev libsdformat-dev libmujoco-dev
 )
-if ! $minimal; then
+if [[ $mode != minimal ]]; then
   packages+=(
     # The Python module (pybind11), for Debian's /usr/bin/python3; the `user` preset builds it
     # too when these are installed (KINESTAT_PYTHON=AUTO).
     python3-dev python3-pybind11 python3-numpy
-    libgtest-dev libgmock-dev libbenchmark-dev python3-pytest
-    # The Python tests: pip install into a venv, the sparse rigidity matrix, the example notebook
-    # executed by Jupyter (each test is skipped without its package).
-    python3-venv python3-setuptools python3-wheel python3-scipy jupyter-nbconvert python3-ipykernel
-    # JSON Schema validation of every example and report (schemas/).
-    python3-jsonschema python3-yaml
-    # The documentation site (`cmake --build ... --target docs`, test docs_site).
-    doxygen python3-sphinx python3-myst-parser
-    clang libclang-rt-14-dev
-    chromium
+    libgtest-dev libgmock-dev libbenchmark-dev
     # ccache: .ci/run uses it when present (objects shared between CI clones).
     ccache
     # The optional distributed backend (`analyze --backend petsc`, cmake/KinestatPetsc.cmake):
@@ -48,6 +44,20 @@ if ! $minimal; then
   # NodeSource's nodejs, which conflicts with Debian's npm package) keep their own.
   if ! command -v node >/dev/null 2>&1; then packages+=(nodejs); fi
   if ! command -v npm >/dev/null 2>&1; then packages+=(npm); fi
+fi
+if [[ $mode == full ]]; then
+  packages+=(
+    python3-pytest
+    # The Python tests: pip install into a venv, the sparse rigidity matrix, the example notebook
+    # executed by Jupyter (each test is skipped without its package).
+    python3-venv python3-setuptools python3-wheel python3-scipy jupyter-nbconvert python3-ipykernel
+    # JSON Schema validation of every example and report (schemas/).
+    python3-jsonschema python3-yaml
+    # The documentation site (`cmake --build ... --target docs`, test docs_site).
+    doxygen python3-sphinx python3-myst-parser
+    clang libclang-rt-14-dev
+    chromium
+  )
 fi
 as_root=()
 if [ "$(id -u)" -ne 0 ]; then
