@@ -4,19 +4,18 @@
 // docs/scaling.md), reported by the serial sparse path's writers. Every process reads the
 // model itself and takes part in the decision; rank 0 writes the report. Built into
 // `kinestat-mpi` only, to which `kinestat` hands such a command over (petsc_handover.cpp), so
-// that no other command loads PETSc and MPI. Nothing here runs, and MPI is never initialised,
+// that no other command loads MPI. Nothing here runs, and MPI is never initialised,
 // unless `--backend petsc` is given.
 
 #include <fmt/format.h>
 #include <mpi.h>
 
-#include <cstdlib>
 #include <iostream>
 #include <optional>
 
 #include "cli/commands.hpp"
 #include "kinestat/distributed/distributed_pipeline.hpp"
-#include "kinestat/distributed/petsc_session.hpp"
+#include "kinestat/distributed/mpi_session.hpp"
 #include "kinestat/io/framework_reader.hpp"
 #include "kinestat/io/input_error.hpp"
 #include "kinestat/io/loaded_network.hpp"
@@ -159,7 +158,7 @@ void report_network(const CommonOptions& options, const io::LoadedNetwork& loade
 
 // Reads the model on this process (notices and errors from rank 0 only); the exit code agreed by
 // all processes (the largest), so that every process stops together on bad input.
-int read_everywhere(const CommonOptions& options, const distributed::PetscSession& session, PetscModel& model) {
+int read_everywhere(const CommonOptions& options, const distributed::MpiSession& session, PetscModel& model) {
   int code = 0;
   std::string message;
   const bool quiet = session.rank() != 0;
@@ -187,9 +186,7 @@ int read_everywhere(const CommonOptions& options, const distributed::PetscSessio
 }  // namespace
 
 int run_petsc_analysis(const CommonOptions& options) {
-  // KINESTAT_PETSC_TRACEBACK set: PETSc prints its own traceback too (the command reads the
-  // environment; the library takes it as an argument).
-  const distributed::PetscSession session(std::getenv("KINESTAT_PETSC_TRACEBACK") != nullptr);
+  const distributed::MpiSession session;
   PetscModel model;
   if (const int code = read_everywhere(options, session, model); code != 0) return code;
   const Tolerances tolerances = Tolerances::with_rank(options.tolerance);
@@ -209,14 +206,14 @@ int run_petsc_analysis(const CommonOptions& options) {
     return 2;
   } catch (const Error& error) {
     std::cerr << "kinestat: error: " << error.what() << '\n';
-    distributed::PetscSession::abort(error.exit_code());
+    distributed::MpiSession::abort(error.exit_code());
   } catch (const std::bad_alloc&) {
     std::cerr << "kinestat: error: out of memory on process " << session.rank() << " of " << session.size()
               << " (this process's part does not fit: run on more processes or machines)\n";
-    distributed::PetscSession::abort(3);
+    distributed::MpiSession::abort(3);
   } catch (const std::exception& error) {
     std::cerr << "kinestat: error: " << error.what() << " (process " << session.rank() << ")\n";
-    distributed::PetscSession::abort(3);
+    distributed::MpiSession::abort(3);
   }
   if (session.rank() != 0) return 0;
   if (model.framework) report_framework(options, *model.framework, framework_analysis);
