@@ -6,10 +6,10 @@
 # libsdformat-dev for SDFormat, libmujoco-dev for MJCF; CI installs them so every reader is tested.
 set -euo pipefail
 # --minimal: only what the `user` preset needs for the library, the command and every reader;
-# no test frameworks, benchmarks, clang, Chromium, PETSc or MPI, no Python module (python3-dev
+# no test frameworks, benchmarks, clang, Chromium or MPI, no Python module (python3-dev
 # python3-pybind11 python3-numpy) and no npm for the HTML report's viewer (without npm the build
 # leaves the viewer out and `kinestat report` says so). Install those and build again to add them.
-# --build: what the `release` preset needs to configure and compile, with Python and PETSc (CI's
+# --build: what the `release` preset needs to configure and compile, with Python and MPI (CI's
 # release-build stage); not what only the tests or the `asan` preset use (pytest, SciPy, Jupyter,
 # jsonschema, Doxygen, Sphinx, clang, Chromium). .ci/run installs those with a second, full run
 # while the release preset builds: apt mostly waits on the network, the build on the cores.
@@ -36,9 +36,10 @@ if [[ $mode != minimal ]]; then
     # ccache: .ci/run uses it when present (objects shared between CI clones).
     ccache
     # The optional distributed backend (`analyze --backend petsc`, cmake/KinestatPetsc.cmake):
-    # PETSc with MUMPS, SLEPc and OpenMPI. CI builds it in the release preset and runs its tests
-    # (ctest label `mpi`, under mpirun -n 2); a build without them simply leaves it out.
-    petsc-dev slepc-dev libopenmpi-dev openmpi-bin
+    # OpenMPI (the decomposition's processes; SuiteSparseQR factors each part). CI builds it in the
+    # release preset and runs its tests (ctest label `mpi`, under mpirun -n 2); a build without
+    # them simply leaves it out.
+    libopenmpi-dev openmpi-bin
   )
   # Node.js and npm build the HTML report viewer. Machines that already have them (for example
   # NodeSource's nodejs, which conflicts with Debian's npm package) keep their own.

@@ -24,9 +24,9 @@ void register_analyze(CLI::App& app, Action& action) {
                       "Relative rank tolerance (fraction of the largest singular value); default max(rows,cols)*eps")
       ->check(positive_finite_number());
   command->add_option("--backend", options->backend,
-                      "serial (default), or petsc: a framework's or a coupling network's counts (and --vectors) decided by "
-                      "PETSc/MUMPS on every process of "
-                      "`mpirun -n P kinestat analyze --backend petsc FILE` (docs/scaling.md)")
+                      "serial (default), or petsc: a framework's or a coupling network's counts and rank evidence decided "
+                      "by domain decomposition on every process of "
+                      "`mpirun -n P kinestat analyze --backend petsc FILE` (no null vectors; docs/scaling.md)")
       ->check(CLI::IsMember({"serial", "petsc"}));
   command->add_flag("--timings", options->timings,
                     "With --backend petsc: add each stage's wall time and every process's peak memory to the report "

@@ -111,8 +111,8 @@ void reject_options(const std::vector<std::string>& given, const std::string& ki
 /// `notices`: the import's notices (io::ModelFile::notices), given in the JSON report too.
 int run_framework_analysis(const CommonOptions& options, const framework::FrameworkModel& model, const std::string& path,
                            const std::vector<std::string>& notices = {});
-/// `analyze --backend petsc` (petsc_backend.cpp): initialises MPI and PETSc, reads the model on
-/// rank 0 and decides its counts on every process; without the backend built, an error (exit 2).
+/// `analyze --backend petsc` (petsc_backend.cpp): initialises MPI, reads the model on every
+/// process and decides its counts by domain decomposition; without the backend built, an error (exit 2).
 int run_petsc_analysis(const CommonOptions& options);
 
 }  // namespace kinestat::cli

@@ -51,8 +51,8 @@ void register_framework_options(CLI::App& analyze) {
       ->check(non_negative_whole_number());
   vectors_option = analyze.add_option("--vectors", sparse_vectors,
                      "Frameworks above --dense-limit: also the first K modes and K stress states (from the sparse QR) "
-                     "and the release proposal; default 0 (counts only). With --backend petsc: the first K of each (no "
-                     "proposal), for frameworks and networks")
+                     "and the release proposal; default 0 (counts only). With --backend petsc: not computed (the report "
+                     "says so; the distributed path decides counts only)")
       ->check(non_negative_whole_number());
   full_vectors_option = analyze.add_flag("--full-vectors", full_vectors,
                      fmt::format("Frameworks, with --json: list every entry of each mode and stress state, zeros included "

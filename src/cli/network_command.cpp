@@ -98,7 +98,7 @@ void register_network_options(CLI::App& analyze) {
              analyze.add_option("--primary", o.primary, "Networks: primary variables, e.g. --primary sa,ta,vc,Ub,We")->delimiter(','),
              analyze.add_option("--value", o.values, "Networks: numeric value of a primary variable, NAME=NUMBER (repeatable)"),
              analyze.add_option("--pair", o.pairs,
-                                "Networks, sparse path and --backend petsc: fij and cij of the pair of bodies BODY1:BODY2 (repeatable; "
+                                "Networks, sparse path: fij and cij of the pair of bodies BODY1:BODY2 (repeatable; "
                                 "--coupled-pairs adds every coupled pair); the dense path lists every pair")};
 }
 

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // `kinestat analyze --backend petsc`: handed over to `kinestat-mpi`, the same command line
 // interface built with the distributed backend (distributed/petsc_backend.cpp), found beside
-// this executable. Linking PETSc, SLEPc and MPI into `kinestat` itself made every command load
-// about 120 shared libraries at startup (0.1-0.2 s of CPU before the first line of work); now
-// only `--backend petsc` pays for them. The handover replaces this process (execv) before MPI
+// this executable. Linking the backend (then PETSc, SLEPc and MPI) into `kinestat` itself made
+// every command load about 120 shared libraries at startup (0.1-0.2 s of CPU before the first
+// line of work); now only `--backend petsc` loads MPI. The handover replaces this process (execv) before MPI
 // is initialised, so under mpirun each rank simply becomes a `kinestat-mpi` process.
 
 #include <fmt/format.h>
@@ -65,7 +65,7 @@ int run_petsc_analysis(const CommonOptions&) {
 
 int run_petsc_analysis(const CommonOptions&) {
   throw Error("--backend petsc needs the distributed backend, and this kinestat was built without it "
-              "(install petsc-dev slepc-dev libopenmpi-dev and configure with -DKINESTAT_PETSC=ON)");
+              "(install libopenmpi-dev openmpi-bin and configure with -DKINESTAT_PETSC=ON)");
 }
 
 #endif

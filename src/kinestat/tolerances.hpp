@@ -44,44 +44,6 @@ inline constexpr double kSparseToleranceFactor = 20.0;
 /// Pair and coupling systems of a network are ranked against the size of the whole network's
 /// forms, not their own, so a pair whose entries are all rounding noise gets rank 0 (2^19 ε ≈ 1.2e-10).
 inline constexpr double kPairRankRelative = 0x1p19 * kEpsilon;
-/// The distributed backend (kinestat/distributed) accepts SLEPc's smallest kept singular value
-/// σ_r when its singular vector pair u satisfies ‖H u − σ_r u‖ ≤ this × σ_max ‖u‖, H the
-/// Jordan–Wielandt matrix [[0, A], [Aᵀ, 0]] (2^26 ε ≈ 1.5e-8: the eigensolver's own tolerance is
-/// 1e-10 relative, and the check must not reject a pair that rounding alone perturbs).
-inline constexpr double kDistributedSingularResidual = 0x1p26 * kEpsilon;
-/// The distributed backend's reported evidence (kinestat/distributed, docs/scaling.md,
-/// "Repeatability"): with P ≥ 2 processes MUMPS sums in the order messages arrive, so residuals
-/// at rounding level change from run to run. Every residual it reports (relative to σ_max) and
-/// its bound on the largest dropped singular value are upper bounds rounded up to a power of
-/// ten, and never below the floor: the largest power of ten at or below this fraction of its own
-/// rank threshold t / σ_max. A value reported at the floor says "below the threshold", no more
-/// (measured below it: 10⁻¹⁷ to 10⁻¹³ on the examples and generated models, which moved across
-/// 10⁻¹³ and 10⁻¹⁴ from run to run).
-inline constexpr double kDistributedReportFloor = 1.0;
-/// The distributed backend rounds every reported null vector's entries to a multiple of this
-/// fraction of its largest entry (2⁻⁴⁴ ≈ 5.7e-14): entries equal but for P ≥ 2's last-bit noise
-/// become equal, and the printed vectors repeat from run to run but for entries on a rounding
-/// boundary.
-inline constexpr double kDistributedVectorGrid = 0x1p-44;
-/// The distributed backend's solver settings (not decision tolerances: every pair SLEPc returns
-/// is checked on H itself, and the decision is σ > t on its Rayleigh quotient). The search for
-/// singular values in the window (t, s]: SLEPc's absolute tolerance on the window operator
-/// (eigenvalues of order 1), its iteration limit, the first number of pairs asked for and the
-/// most (asked for in batches 4 times larger while every pair found lies in the window).
-inline constexpr double kDistributedWindowTolerance = 1e-12;
-inline constexpr int kDistributedWindowIterations = 1000;
-inline constexpr int kDistributedWindowBatch = 2;
-inline constexpr int kDistributedWindowMostPairs = 128;
-/// SLEPc's relative tolerance and iteration limit for the smallest kept singular value with the
-/// whole null space deflated (Krylov–Schur on (H + s·I)⁻¹).
-inline constexpr double kDistributedSmallestTolerance = 1e-10;
-inline constexpr int kDistributedSmallestIterations = 500;
-/// Refinement steps x ← x − (H + s·I)⁻¹ H x after the two inverse-iteration steps of each null
-/// vector: each shrinks the kept part by s/(σ + s) and keeps the factorisation's backward error
-/// out of the vector. A fixed count: the size of a correction is no test of convergence (the
-/// rounding of H x along the null space comes back multiplied by 1/s). Eight suffice for the
-/// generated ladders of up to 3 000 couplings, whose smallest kept σ is within 100 s.
-inline constexpr int kDistributedRefinementSteps = 8;
 /// Column-pivoted QR (linalg::pivoted_column_order): remaining column norms within this
 /// fraction of the largest are a tie, taken in the columns' original order, so that rounding
 /// (a model moved, turned or rescaled) cannot pick among equally good rows to release or
