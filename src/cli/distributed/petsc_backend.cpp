@@ -133,6 +133,8 @@ void report_framework(const CommonOptions& options, const framework::FrameworkMo
   }
   std::string text = report::framework_report_text(model, analysis.result, &analysis.verdict, nullptr);
   petsc_replace_first(text, "sparse QR", fmt::format("sparse QR by domain decomposition on {} process(es)", analysis.backend.processes));
+  // The serial counts-only sentence offers --vectors, which this path does not answer.
+  petsc_replace_first(text, "; --vectors K gives the first K)", "; the distributed path computes none)");
   emit(options, text + backend_text(analysis, options.timings));
 }
 
