@@ -32,11 +32,13 @@ TEST(SpacarCli, AnalyzeReadsDatFilesAndPrintsWhatWasIgnored) {
   EXPECT_EQ(j["rank"], 11);
   EXPECT_EQ(j["self_stresses"], 1);
   EXPECT_EQ(j["mechanisms"], 0);
-  // One note line: what followed END (stiffness, solver steps, visualisation).
-  EXPECT_NE(r.err.find("note: ignored after the kinematic part (line 33): BEAMPROPS CROSSDIM CROSSTYPE ESTIFF ITERSTEP "
+  // A note line on what followed END (solver steps, visualisation; ESTIFF is read, its shear
+  // terms noted).
+  EXPECT_NE(r.err.find("note: ignored after the kinematic part (line 33): BEAMPROPS CROSSDIM CROSSTYPE ITERSTEP "
                        "VISUALIZATION"),
             std::string::npos)
       << r.err;
+  EXPECT_NE(r.err.find("ESTIFF of element 1: the shear-flexibility and warping terms are ignored"), std::string::npos) << r.err;
 }
 
 TEST(SpacarCli, DrawAndReportAcceptDatFiles) {

@@ -38,7 +38,8 @@ Section completed_section(Section section) {
       break;
     }
     case SectionShape::area_only: section.iy = section.iz = section.torsion = 0.0; break;
-    case SectionShape::explicit_values: break;
+    case SectionShape::explicit_values:
+    case SectionShape::rigidities: break;
   }
   return section;
 }

@@ -25,7 +25,7 @@ struct Material {
 };
 
 /// How a cross-section was given; kept so that a model is written back as it was read.
-enum class SectionShape { area_only, circle, rectangle, explicit_values };
+enum class SectionShape { area_only, circle, rectangle, explicit_values, rigidities };
 
 /// A beam or truss cross-section in the element's local axes y and z (docs/framework.md).
 struct Section {
@@ -37,6 +37,11 @@ struct Section {
   double iy = 0.0;    ///< second moment about local y (bending in the local xz-plane), length⁴
   double iz = 0.0;    ///< second moment about local z (bending in the local xy-plane), length⁴
   double torsion = 0.0;  ///< torsion constant J, length⁴
+  /// `rigidities` (SPACAR's ESTIFF, docs/formats.md): the section is given by its products
+  /// with the material, and `area`, `iy`, `iz`, `torsion` hold E A (force), E Iy, E Iz and G J
+  /// (force·length²); such an element needs no material and has no peak stress (A and E are
+  /// not known apart). Its mass per unit length (SPACAR's EM; mass/length), 0 for none.
+  double mass_per_length = 0.0;
 };
 
 /// A lumped mass on a node: its mass and, when given, principal inertias about the global

@@ -101,6 +101,7 @@ std::vector<ElementCompliance> element_compliance(const FrameworkModel& model) {
     if (std::optional<Eigen::MatrixXd> k = element_deformation_stiffness(model, element)) c.stiffness = std::move(*k);
     const Section* section = element_section(model, element);
     if (section == nullptr || element.type == ElementType::rigid_body) continue;
+    if (section->shape == SectionShape::rigidities) continue;  // E A, E I only: no stress (A and E unknown apart)
     c.area = section->area;
     c.second_moment_y = section->iy;
     c.second_moment_z = section->iz;
@@ -114,7 +115,8 @@ std::vector<ElementCompliance> element_compliance(const FrameworkModel& model) {
         c.fibre_z = section->dimensions[1] / 2;
         break;
       case SectionShape::area_only:
-      case SectionShape::explicit_values: break;
+      case SectionShape::explicit_values:
+      case SectionShape::rigidities: break;
     }
   }
   return out;

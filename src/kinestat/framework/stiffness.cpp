@@ -203,9 +203,11 @@ std::optional<Eigen::MatrixXd> element_deformation_stiffness(const FrameworkMode
   if (element.type == ElementType::rigid_body) return std::nullopt;
   const Material* material = element_material(model, element);
   const Section* section = element_section(model, element);
-  if (material == nullptr || section == nullptr) return std::nullopt;
+  // A section given by its rigidities (E A, E I, G J) needs no material: E = G = 1 below.
+  const bool rigidities = section != nullptr && section->shape == SectionShape::rigidities;
+  if (section == nullptr || (material == nullptr && !rigidities)) return std::nullopt;
   const double l0 = (model.nodes[element.nodes[1]].position - model.nodes[element.nodes[0]].position).norm();
-  const double e = material->youngs_modulus;
+  const double e = rigidities ? 1.0 : material->youngs_modulus;
   const std::size_t count = deformation_count(model.dimension, element);
   Eigen::MatrixXd k = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(count), static_cast<Eigen::Index>(count));
   k(0, 0) = e * section->area / l0;
@@ -214,7 +216,7 @@ std::optional<Eigen::MatrixXd> element_deformation_stiffness(const FrameworkMode
     k.block<2, 2>(1, 1) = bending_pair(e * section->iz, l0);
     return k;
   }
-  const double g = shear_modulus(*material);
+  const double g = rigidities ? 1.0 : shear_modulus(*material);
   if (!(g > 0.0) && section->torsion > 0.0) {
     throw std::invalid_argument(fmt::format("material '{}' of beam '{}' gives neither G nor poisson: a spatial beam needs its "
                                             "shear modulus for torsion", material->name, element.name));
@@ -324,9 +326,12 @@ Eigen::SparseMatrix<double> lumped_mass(const FrameworkModel& model, const Frame
     if (element.type == ElementType::rigid_body) continue;
     const Material* material = element_material(model, element);
     const Section* section = element_section(model, element);
-    if (material == nullptr || section == nullptr || !material->density) continue;
+    if (section == nullptr) continue;
+    const bool rigidities = section->shape == SectionShape::rigidities;
+    if (rigidities ? !(section->mass_per_length > 0.0) : (material == nullptr || !material->density)) continue;
+    const double per_length = rigidities ? section->mass_per_length : *material->density * section->area;
     const double l0 = (model.nodes[element.nodes[1]].position - model.nodes[element.nodes[0]].position).norm();
-    const double half = *material->density * section->area * l0 / 2.0;
+    const double half = per_length * l0 / 2.0;
     add_translation(element.nodes[0], half);
     add_translation(element.nodes[1], half);
   }

@@ -474,7 +474,11 @@ class FrameworkReader {
       const std::string what = fmt::format("section '{}'", section.name);
       const TreeNode& value = entry.second;
       file_.expect_map(value, what);
-      file_.check_keys(value, what, {"area", "circle", "rectangle", "Iy", "Iz", "J"});
+      file_.check_keys(value, what, {"area", "circle", "rectangle", "Iy", "Iz", "J", "EA", "EIy", "EIz", "GJ", "mass_per_length"});
+      if (file_.optional(value, "EA").defined()) {
+        model_.sections.push_back(rigidity_section(std::move(section), value, what));
+        continue;
+      }
       const TreeNode circle = file_.optional(value, "circle"), rectangle = file_.optional(value, "rectangle");
       const TreeNode area = file_.optional(value, "area");
       const bool explicit_set = area.defined() && value.size() == 4 && file_.optional(value, "Iy").defined() &&
@@ -506,6 +510,24 @@ class FrameworkReader {
       }
       model_.sections.push_back(framework::completed_section(std::move(section)));
     }
+  }
+
+  // A section given by its rigidities {EA, EIy, EIz, GJ[, mass_per_length]} (SPACAR's ESTIFF
+  // and EM, docs/stiffness.md): no material needed, no peak stress.
+  framework::Section rigidity_section(framework::Section section, const TreeNode& value, const std::string& what) const {
+    const TreeNode mass = file_.optional(value, "mass_per_length");
+    for (const char* key : {"EIy", "EIz", "GJ"})
+      if (!file_.optional(value, key).defined())
+        file_.fail(value, fmt::format("{} given by rigidities needs EA, EIy, EIz and GJ (and optionally mass_per_length)", what));
+    if (value.size() != (mass.defined() ? 5u : 4u))
+      file_.fail(value, fmt::format("{}: rigidities {{EA, EIy, EIz, GJ, mass_per_length}} take no area, circle or rectangle", what));
+    section.shape = framework::SectionShape::rigidities;
+    section.area = positive(file_.optional(value, "EA"), what + ": EA", true);
+    section.iy = positive(file_.optional(value, "EIy"), what + ": EIy", true);
+    section.iz = positive(file_.optional(value, "EIz"), what + ": EIz", true);
+    section.torsion = positive(file_.optional(value, "GJ"), what + ": GJ", true);
+    if (mass.defined()) section.mass_per_length = positive(mass, what + ": mass_per_length", true);
+    return section;
   }
 
   // The index of the material or section named by `item` in `list`.

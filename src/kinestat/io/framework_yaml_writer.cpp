@@ -65,6 +65,12 @@ std::string elastic_data_yaml(const FrameworkModel& model) {
         out += fmt::format("{{area: {}, Iy: {}, Iz: {}, J: {}}}\n", number(section.area), number(section.iy), number(section.iz),
                            number(section.torsion));
         break;
+      case framework::SectionShape::rigidities:
+        out += fmt::format("{{EA: {}, EIy: {}, EIz: {}, GJ: {}", number(section.area), number(section.iy), number(section.iz),
+                           number(section.torsion));
+        if (section.mass_per_length > 0.0) out += ", mass_per_length: " + number(section.mass_per_length);
+        out += "}\n";
+        break;
     }
   }
   if (model.default_material || model.default_section) {

@@ -29,6 +29,10 @@ using framework::Node;
 
 namespace {
 
+/// The stiffness and mass cards read after the kinematic part (docs/formats.md: as SPACAR Light
+/// 1.38 writes them).
+const std::set<std::string> kElasticCards = {"ESTIFF", "EM", "XM"};
+
 /// Largest node or element number accepted: keeps every count far from overflow.
 constexpr long kMaxNumber = 100'000'000;
 
@@ -76,6 +80,7 @@ class SpacarReader {
     build_nodes();
     build_elements();
     for (const Record& r : records_) read_role(r);
+    read_elastic();
     if (!warped_.empty()) {
       notices_.push_back(fmt::format("{}: note: BEAMW element(s) {} read as BEAM: warping nodes and warping deformations "
                                      "(7, 8) have no counterpart in kinestat and are ignored",
@@ -129,9 +134,19 @@ class SpacarReader {
       start = stop + 1;
       if (tokens.empty()) continue;
       if (ended) {
-        // After END / HALT only the first word of each line is kept, for the notice.
+        // After END / HALT: the stiffness and mass cards are kept (read_elastic); of the others
+        // only the first word, for the notice.
         const std::string word = upper(tokens[0].text);
-        if (!starts_number(word) && word != "END" && word != "HALT" && ignored_.size() < 64) ignored_.insert(word);
+        elastic_continues_ = (elastic_continues_ && starts_number(word)) || kElasticCards.count(word) != 0;
+        if (elastic_continues_ && starts_number(word)) {
+          auto& values = elastic_records_.back().values;
+          values.insert(values.end(), tokens.begin(), tokens.end());
+        } else if (elastic_continues_) {
+          tokens[0].text = word;
+          elastic_records_.push_back({tokens[0], {tokens.begin() + 1, tokens.end()}});
+        } else if (!starts_number(word) && word != "END" && word != "HALT" && ignored_.size() < 64) {
+          ignored_.insert(word);
+        }
         continue;
       }
       if (starts_number(tokens[0].text)) {
@@ -587,6 +602,77 @@ class SpacarReader {
     }
   }
 
+  // The stiffness and mass cards (docs/formats.md, after spacarlight.m 1.38): ESTIFF e EA GIt EIy
+  // EIz [cy cz [ECw]] and EM e ρA [rotational inertias per length] of a spatial beam become a
+  // section given by its rigidities (named "ESTIFF e"); XM n m on a position node and XM n Ixx
+  // Ixy Ixz Iyy Iyz Izz on an orientation node become the node's lumped mass and inertia. What
+  // kinestat has no counterpart for (shear flexibility, warping, rotational inertia per length,
+  // products of inertia, cards on other elements) is left out with one note each.
+  void read_elastic() {
+    std::map<long, std::size_t> section_of;  // SPACAR element -> its ESTIFF section
+    for (const std::string pass : {"ESTIFF", "EM", "XM"})
+      for (const Record& r : elastic_records_)
+        if (r.keyword.text == pass) pass == "XM" ? read_node_mass(r) : read_element_elastic(r, section_of);
+  }
+
+  void elastic_note(const Record& r, const std::string& what) {
+    notices_.push_back(fmt::format("{}:{}:{}: note: {} {}", path_, r.keyword.line, r.keyword.column, r.keyword.text, what));
+  }
+
+  void read_element_elastic(const Record& r, std::map<long, std::size_t>& section_of) {
+    const bool stiffness = r.keyword.text == "ESTIFF";
+    if (r.values.size() < 2) expect_count(r, {stiffness ? 5u : 2u}, "an element number and its values");
+    const long number = integer(r.values[0], "an element number");
+    const auto found = element_index_.find(number);
+    if (found == element_index_.end()) fail(r.values[0], fmt::format("{}: no element {}", r.keyword.text, number));
+    const framework::Element& element = model_.elements[found->second];
+    if (element.type != ElementType::beam || model_.dimension != 3 || (!stiffness && !section_of.count(number))) {
+      elastic_note(r, fmt::format("of element {} ignored: kinestat reads ESTIFF and EM of spatial beams (EM after an ESTIFF)", number));
+      return;
+    }
+    if (stiffness) expect_count(r, {5, 7, 8}, "an element number, EA, GIt, EIy, EIz, and optionally the shear terms and ECw");
+    std::vector<double> v;
+    for (std::size_t i = 1; i < r.values.size(); ++i) v.push_back(real(r.values[i], "a stiffness or mass value"));
+    if (!stiffness) {
+      model_.sections[section_of[number]].mass_per_length = v[0];
+      if (std::any_of(v.begin() + 1, v.end(), [](double x) { return x != 0.0; }))
+        elastic_note(r, fmt::format("of element {}: the rotational inertias per length are ignored (kinestat lumps an "
+                                    "element's mass on its nodes' translations)", number));
+      return;
+    }
+    framework::Section section;
+    section.name = "ESTIFF " + std::to_string(number);
+    section.shape = framework::SectionShape::rigidities;
+    section.area = v[0], section.torsion = v[1], section.iy = v[2], section.iz = v[3];
+    if (std::any_of(v.begin() + 4, v.end(), [](double x) { return x != 0.0; }))
+      elastic_note(r, fmt::format("of element {}: the shear-flexibility and warping terms are ignored (Euler-Bernoulli beams)", number));
+    section_of[number] = model_.sections.size();
+    model_.elements[found->second].section = model_.sections.size();
+    model_.sections.push_back(std::move(section));
+  }
+
+  void read_node_mass(const Record& r) {
+    expect_count(r, {2, 7}, "a position node and its mass, or an orientation node and Ixx Ixy Ixz Iyy Iyz Izz");
+    const long number = integer(r.values[0], "a node number");
+    const bool inertia = r.values.size() == 7;
+    const auto& index = inertia ? orientation_index_ : position_index_;
+    const auto found = index.find(number);
+    if (found == index.end()) {
+      elastic_note(r, fmt::format("of node {} ignored: no {} node of the model carries it", number, inertia ? "orientation" : "position"));
+      return;
+    }
+    std::vector<double> v;
+    for (std::size_t i = 1; i < r.values.size(); ++i) v.push_back(real(r.values[i], "a mass or inertia value"));
+    if (inertia && (v[1] != 0.0 || v[2] != 0.0 || v[4] != 0.0)) {
+      elastic_note(r, fmt::format("of node {} ignored: kinestat's node inertia has no products of inertia (Ixy, Ixz, Iyz)", number));
+      return;
+    }
+    auto mass = std::find_if(model_.masses.begin(), model_.masses.end(), [&](const auto& m) { return m.node == found->second; });
+    if (mass == model_.masses.end()) mass = model_.masses.insert(model_.masses.end(), framework::NodeMass{found->second, 0.0, std::nullopt});
+    if (inertia) mass->inertia = Eigen::Vector3d(v[0], v[3], v[5]);
+    else mass->mass += v[0];
+  }
+
   // DYNX: the nodal coordinates that SPACAR's dynamic analysis integrates, its degrees of
   // freedom. SPACAR requires the input (INPUTX, INPUTE) and dynamic coordinates together to
   // determine the configuration, so they are read as kinestat's independent coordinates: a
@@ -714,6 +800,8 @@ class SpacarReader {
 
   std::string path_;
   std::vector<Record> records_;
+  std::vector<Record> elastic_records_;  // ESTIFF, EM, XM after END (read_elastic)
+  bool elastic_continues_ = false;       // the last line after END was one of them
   Token end_;
   std::set<std::string> ignored_;
   std::set<std::string> ignored_kinematic_;

@@ -8,6 +8,7 @@
 #include <map>
 #include <set>
 
+#include "kinestat/framework/elastic_properties.hpp"
 #include "kinestat/io/input_error.hpp"
 #include "kinestat/io/printable_text.hpp"
 #include "kinestat/tolerances.hpp"
@@ -38,11 +39,50 @@ class SpacarWriter {
     roles(model_, out_);
     if (options_.proposed) proposal();
     out_ += "\nEND\nHALT\n";
+    if (model_.has_elastic_data()) elastic();
     return out_;
   }
 
  private:
   [[noreturn]] void refuse(const std::string& problem) const { throw InputError({options_.source, 0, 0}, problem); }
+
+  // The stiffness and mass cards after the kinematic part, as SPACAR Light writes them
+  // (docs/formats.md): ESTIFF e EA GIt EIy EIz 0 0 (no shear flexibility: Euler-Bernoulli) and
+  // EM e ρA ρ(Iy+Iz) ρIy ρIz 0 for every spatial beam with elastic data, XM on the nodes with a
+  // mass (position node) and an inertia (orientation node, no products). A truss's cards are
+  // not written: no public description of their layout was found.
+  void elastic() {
+    out_ += "\n#STIFFNESS  Ne  EA  GIt  EIy  EIz  shear y  shear z   (kinestat's elastic data; consistent units)\n";
+    std::string masses = "\n#MASS  Ne  M/L  Jxx/L  Jyy/L  Jzz/L  Jyz/L\n";
+    for (std::size_t e = 0, n = 0; e < model_.elements.size(); ++e) {
+      const Element& element = model_.elements[e];
+      if (is_shared_joint(element)) continue;
+      const long number = number_[n++];
+      const framework::Section* section = framework::element_section(model_, element);
+      const framework::Material* material = framework::element_material(model_, element);
+      const bool rigidities = section && section->shape == framework::SectionShape::rigidities;
+      if (planar_ || element.type != ElementType::beam || !section || (!material && !rigidities)) continue;
+      const double e_modulus = rigidities ? 1.0 : material->youngs_modulus, g = rigidities ? 1.0 : framework::shear_modulus(*material);
+      out_ += fmt::format("ESTIFF  {:4}  {}  {}  {}  {}  0  0  # {}\n", number, spacar_number(e_modulus * section->area),
+                          spacar_number(g * section->torsion), spacar_number(e_modulus * section->iy),
+                          spacar_number(e_modulus * section->iz), printable_text(element.name));
+      const double rho = rigidities || !material->density ? 0.0 : *material->density;
+      const double per_length = rigidities ? section->mass_per_length : rho * section->area;
+      if (per_length > 0.0)
+        masses += fmt::format("EM  {:4}  {}  {}  {}  {}  0  # {}\n", number, spacar_number(per_length),
+                              spacar_number(rho * (section->iy + section->iz)), spacar_number(rho * section->iy),
+                              spacar_number(rho * section->iz), printable_text(element.name));
+    }
+    out_ += masses + "\n#NODAL MASS  Nn  M, or Ixx Ixy Ixz Iyy Iyz Izz\n";
+    for (const framework::NodeMass& m : model_.masses) {
+      const std::string name = printable_text(model_.nodes[m.node].name);
+      if (m.mass != 0.0) out_ += fmt::format("XM  {:6}  {}  # node {}\n", position_[m.node], spacar_number(m.mass), name);
+      if (m.inertia && !planar_ && used_orientations_.count(m.node))
+        out_ += fmt::format("XM  {:6}  {}  0  0  {}  0  {}  # node {} inertia\n", orientation(m.node), spacar_number(m.inertia->x()),
+                            spacar_number(m.inertia->y()), spacar_number(m.inertia->z()), name);
+    }
+    out_ += "END\nEND\n";
+  }
 
   bool is_joint(const Element& e) const { return holds_translations_only(e) && coincident(e); }
 
@@ -129,7 +169,11 @@ class SpacarWriter {
   void header() {
     out_ += fmt::format("# SPACAR input written by kinestat{}\n", options_.source.empty() ? "" : " from " + printable_text(options_.source));
     if (!model_.name.empty()) out_ += fmt::format("# model: {}\n", printable_text(model_.name));
-    out_ += "# Kinematic part only. Node numbering as SPACAR Light: node i has position node 2i-1 and orientation\n"
+    out_ += std::string(model_.has_elastic_data() ? "# Kinematic part, then stiffness and mass (ESTIFF, EM, XM; model units: "
+                                                    + (model_.units.empty() ? std::string("m") : printable_text(model_.units)) +
+                                                    ", N, s). "
+                                                  : "# Kinematic part only. ") +
+            "Node numbering as SPACAR Light: node i has position node 2i-1 and orientation\n"
             "# node 2i. Deformations not listed under RLSE or INPUTE are rigid; mark flexible ones DYNE.\n\n";
   }
 
