@@ -53,14 +53,22 @@ SceneStress misfit_stress(const Scene& scene, const framework::FrameworkModel& m
   const CostUnits u = cost_units(model);
   const bool stresses = std::all_of(m.elements.begin(), m.elements.end(),
                                     [](const framework::ElementStressResultants& e) { return std::isfinite(e.stress); });
+  // Without a stress (sections given by rigidities): the bending moment when some element
+  // carries one, else the axial force.
+  const bool moments = !stresses && std::any_of(m.elements.begin(), m.elements.end(),
+                                                [](const framework::ElementStressResultants& e) { return e.moment != 0.0; });
+  const auto shown = [&](const framework::ElementStressResultants& e) {
+    return stresses ? e.stress : moments ? e.moment : std::abs(e.force);
+  };
   SceneStress entry;
-  entry.unit = stresses ? u.stress : "N";
+  entry.unit = stresses ? u.stress : moments ? u.moment : "N";
   const std::string amount = analysed.per_unit ? fmt::format("per {} of misfit", u.length)
                                                : fmt::format("from a misfit of {} {}", cost_number(m.value), u.length);
   const framework::ElementStressResultants& w = m.worst;
   entry.label = fmt::format("misfit stress {} in {}: worst {}, {} {} {}", amount,
                             cost_deformation_label(model, cost.indexing, *m.worst_source), model.elements[w.element].name,
-                            stresses ? "peak stress" : "axial force", cost_number(stresses ? w.stress : w.force), entry.unit);
+                            stresses ? "peak stress" : moments ? "bending moment" : "axial force",
+                            cost_number(stresses || moments ? shown(w) : w.force), entry.unit);
   entry.value.assign(scene.elements.size(), 0.0);
   entry.kind.assign(scene.elements.size(), "");
   std::map<std::string, const framework::ElementStressResultants*> carried;
@@ -72,7 +80,7 @@ SceneStress misfit_stress(const Scene& scene, const framework::FrameworkModel& m
     const framework::ElementStressResultants& e = *found->second;
     const bool axial = e.moment == 0.0 && e.torque == 0.0;
     entry.kind[line] = axial ? "elongation" : e.moment != 0.0 ? "bending" : "torsion";
-    const double size = stresses ? e.stress : std::abs(e.force);
+    const double size = shown(e);
     entry.value[line] = axial && e.force < 0.0 ? -size : size;
   }
   for (const auto& e : m.elements) {
