@@ -83,7 +83,7 @@ io::ModelKind model_kind_of(const io::YamlFile& file);
 /// do not need it.
 /// `misfit`: `kinestat report --misfit` (frameworks with elastic data; pipeline::picture_model).
 pipeline::ModelPictures load_scene(const std::string& path, std::optional<double> tolerance, bool traced_motion = false,
-                                   std::optional<double> misfit = std::nullopt);
+                                   const std::optional<framework::MisfitTolerance>& misfit = std::nullopt);
 
 // `analyze` dispatches on the model's kind to one of these; each kind adds its own options.
 void register_network_options(CLI::App& analyze);

@@ -22,7 +22,7 @@ namespace {
 long long dense_limit = 1500;
 long long sparse_vectors = 0;
 bool full_vectors = false;
-std::optional<double> misfit;  ///< `--misfit`: frameworks with elastic data (issue 38)
+std::vector<std::string> misfit_texts;  ///< `--misfit`: frameworks with elastic data (issue 38)
 CLI::Option* dense_limit_option = nullptr;
 CLI::Option* vectors_option = nullptr;
 CLI::Option* full_vectors_option = nullptr;
@@ -58,10 +58,9 @@ void register_framework_options(CLI::App& analyze) {
                      fmt::format("Frameworks, with --json: list every entry of each mode and stress state, zeros included "
                                  "(default: the non-zero ones, above {:.2g} times the vector's largest entry; docs/report.md)",
                                  kModeZero));
-  misfit_option = analyze.add_option("--misfit", misfit,
-                     "Frameworks with materials and sections: a manufacturing misfit (model length unit) for the cost of "
-                     "over-constraint after the verdict (default: the cost per unit of misfit; docs/stiffness.md)")
-      ->check(positive_finite_number());
+  misfit_option = add_misfit_option(analyze, misfit_texts,
+                                    "Frameworks with materials and sections: a manufacturing misfit (model length unit) for "
+                                    "the cost of over-constraint after the verdict (default: the cost per unit of misfit)");
 }
 
 int run_framework_analysis(const CommonOptions& options, const framework::FrameworkModel& model, const std::string& path,
@@ -72,8 +71,10 @@ int run_framework_analysis(const CommonOptions& options, const framework::Framew
   if (full_vectors && !options.json)
     throw Error("--full-vectors lists every entry in the JSON report: add --json (the text report lists the non-zero "
                 "entries of each mode and stress state), or remove --full-vectors");
+  const std::optional<framework::MisfitTolerance> misfit = misfit_tolerance(misfit_texts);
   if (misfit && !model.has_elastic_data())
     throw io::InputError({path, 1, 1}, "--misfit needs a model with materials and sections (docs/stiffness.md); remove it");
+  check_misfit_elements(model, misfit, path);
   framework::AnalysisOptions analysis_options;
   analysis_options.tolerances = Tolerances::with_rank(options.tolerance);
   analysis_options.dense_limit = static_cast<Eigen::Index>(dense_limit);

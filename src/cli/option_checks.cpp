@@ -8,6 +8,9 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "kinestat/error.hpp"
+#include "kinestat/io/input_error.hpp"
+
 namespace kinestat::cli {
 
 namespace {
@@ -24,7 +27,57 @@ std::optional<double> parse_double(const std::string& text) {
   return value;
 }
 
+// ELEMENT=VALUE split at the last '=' (element names may hold one); none without an '='.
+std::optional<std::pair<std::string, std::string>> split_named(const std::string& text) {
+  const std::size_t equals = text.rfind('=');
+  if (equals == std::string::npos) return std::nullopt;
+  return std::pair{text.substr(0, equals), text.substr(equals + 1)};
+}
+
 }  // namespace
+
+CLI::Option* add_misfit_option(CLI::App& command, std::vector<std::string>& texts, const std::string& about) {
+  const CLI::Validator format(
+      [](std::string& text) -> std::string {
+        const auto named = split_named(text);
+        if (!named) return positive_finite_number()(text);  // the plain VALUE, as before
+        if (named->first.empty()) return fmt::format("'{}' names no element: expected ELEMENT=VALUE such as d1=0.01", text);
+        const auto value = parse_double(named->second);
+        if (!value || !std::isfinite(*value) || *value < 0)
+          return fmt::format("'{}' is not a length zero or more: expected ELEMENT=VALUE such as d1=0.01", named->second);
+        return {};
+      },
+      "VALUE|ELEMENT=VALUE");
+  return command
+      .add_option("--misfit", texts,
+                  about + ". VALUE: every element's misfit; ELEMENT=VALUE (repeat --misfit for each element): that element's, "
+                          "the others then the plain VALUE if given, else none (docs/stiffness.md)")
+      ->check(format)
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+}
+
+std::optional<framework::MisfitTolerance> misfit_tolerance(const std::vector<std::string>& texts) {
+  if (texts.empty()) return std::nullopt;
+  framework::MisfitTolerance tolerance;
+  for (const std::string& text : texts) {
+    if (const auto named = split_named(text)) {
+      if (!tolerance.per_element.emplace(named->first, *parse_double(named->second)).second)
+        throw Error(fmt::format("--misfit: element '{}' is given twice; give each element once", named->first));
+    } else {
+      if (tolerance.value) throw Error("--misfit: the plain VALUE (every element's misfit) is given twice; give it once");
+      tolerance.value = *parse_double(text);
+    }
+  }
+  return tolerance;
+}
+
+void check_misfit_elements(const framework::FrameworkModel& model, const std::optional<framework::MisfitTolerance>& tolerance,
+                           const std::string& path) {
+  if (!tolerance) return;
+  if (const std::optional<std::string> unknown = framework::unknown_misfit_element(model, *tolerance))
+    throw io::InputError({path, 1, 1}, fmt::format("--misfit: the model has no element named '{}'", *unknown));
+}
 
 CLI::Validator positive_finite_number() {
   return CLI::Validator(

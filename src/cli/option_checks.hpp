@@ -7,8 +7,11 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "kinestat/design/verdict.hpp"
+#include "kinestat/framework/framework_model.hpp"
+#include "kinestat/framework/misfit.hpp"
 #include "kinestat/network/network_result.hpp"
 
 namespace kinestat::cli {
@@ -17,6 +20,18 @@ namespace kinestat::cli {
 CLI::Validator positive_finite_number();
 /// A whole number >= 0 (counts and 1-based indices, 0 meaning "none").
 CLI::Validator non_negative_whole_number();
+
+/// Adds `--misfit` (analyze, stiffness, report) to `command`, stored in `texts`: each occurrence
+/// one VALUE (a positive length: every element's misfit) or ELEMENT=VALUE (that element's, zero
+/// or more), repeated for several elements. `about` starts the help text.
+CLI::Option* add_misfit_option(CLI::App& command, std::vector<std::string>& texts, const std::string& about);
+/// The misfit the `--misfit` texts give (model length unit); none when none were given. Throws
+/// kinestat::Error (exit 2) when the plain VALUE or one element is given twice.
+std::optional<framework::MisfitTolerance> misfit_tolerance(const std::vector<std::string>& texts);
+/// Throws io::InputError at `path` (one line naming `--misfit` and the element) when
+/// `tolerance` names an element that `model` does not have.
+void check_misfit_elements(const framework::FrameworkModel& model, const std::optional<framework::MisfitTolerance>& tolerance,
+                           const std::string& path);
 
 /// Exit status of a command whose verdict failed `--fail-unless` (0 success, 2 bad input or
 /// usage, 3 internal error or out of memory; docs/report.md, "Exit status").

@@ -15,21 +15,20 @@ namespace kinestat::cli {
 
 void register_report(CLI::App& app, Action& action) {
   auto options = std::make_shared<CommonOptions>();
-  auto misfit = std::make_shared<std::optional<double>>();  // `--misfit` (issue 38): frameworks with elastic data
+  auto misfit = std::make_shared<std::vector<std::string>>();  // `--misfit` (issue 38): frameworks with elastic data
   CLI::App* command = app.add_subcommand(
       "report", "Write a self-contained interactive HTML report (summary, 3D view, modes, self-stress)");
   command->add_option("model", options->model_path, "Model file of any kind: kinestat YAML / JSON, SPACAR .dat, URDF .urdf, SDFormat .sdf or MJCF .xml; '-': kinestat YAML / JSON on standard input")->required();
   command->add_option("-o,--output", options->output_path, "Write the HTML to this file instead of standard output");
   command->add_option("--tolerance", options->tolerance, "Relative rank tolerance (as for analyze)")->check(positive_finite_number());
-  command->add_option("--misfit", *misfit,
-                      "Frameworks with materials and sections: a manufacturing misfit (model length unit); the view shows "
-                      "the stress the worst one locks into the elements (default: per unit of misfit; docs/stiffness.md)")
-      ->check(positive_finite_number());
+  add_misfit_option(*command, *misfit,
+                    "Frameworks with materials and sections: a manufacturing misfit (model length unit); the view shows "
+                    "the stress the worst one locks into the elements (default: per unit of misfit)");
   command->callback([options, misfit, &action] {
     action = [options, misfit] {
       // The model first: a bad model is reported as such whether or not the viewer is built in.
       const pipeline::ModelPictures loaded =
-          load_scene(options->model_path, options->tolerance, /*traced_motion=*/true, *misfit);
+          load_scene(options->model_path, options->tolerance, /*traced_motion=*/true, misfit_tolerance(*misfit));
       if (!report::html_report_built_in()) {
         std::cerr << "kinestat: error: HTML output is not built in: this kinestat was built without npm, so three.js "
                      "could not be embedded (rebuild with npm available; 'kinestat draw' writes SVG)\n";

@@ -14,7 +14,7 @@ io::ModelKind model_kind_of(const io::YamlFile& file) {
 }
 
 pipeline::ModelPictures load_scene(const std::string& path, std::optional<double> tolerance, bool traced_motion,
-                                   std::optional<double> misfit) {
+                                   const std::optional<framework::MisfitTolerance>& misfit) {
   return pipeline::picture_model(read_model(path), tolerance, traced_motion, misfit);  // any format, notices on stderr
 }
 

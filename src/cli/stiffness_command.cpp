@@ -25,7 +25,7 @@ namespace {
 struct StiffnessOptions {
   CommonOptions common;
   std::string at;                 ///< the node whose stiffness is asked
-  std::optional<double> misfit;   ///< `--misfit VALUE` (issue 38 item 3, S2), model length units
+  std::vector<std::string> misfit;  ///< `--misfit VALUE` / `ELEMENT=VALUE` (issue 38 item 3), model length units
 };
 
 // The consistent unit names of a model whose length unit is `length` (docs/stiffness.md).
@@ -112,14 +112,15 @@ int run_stiffness(const StiffnessOptions& options) {
   // `--misfit`: the cost of over-constraint (S2's misfit, prestress and frequencies) beside it.
   std::optional<framework::OverConstraintCost> cost;
   try {
-    if (options.misfit) {
+    if (const std::optional<framework::MisfitTolerance> misfit = misfit_tolerance(options.misfit)) {
+      check_misfit_elements(model, misfit, path);
       // The analysis as every report gives it (the generic answer may re-choose the basis of the
       // self-stresses), without the pipeline's own cost at the intended-motion node: the cost is
       // computed once, here, at --at, and carries the stiffness without the misfit.
       std::optional<framework::GenericFramework> generic;
       const framework::FrameworkResult analysis =
           framework::analyse_framework_as_reported(model, framework::AnalysisOptions{}, &generic);
-      cost = framework::over_constraint_cost(model, analysis, node, *options.misfit);
+      cost = framework::over_constraint_cost(model, analysis, node, *misfit);
       result = cost->without;
     } else {
       result = framework::stiffness_at(model, node);
@@ -151,10 +152,9 @@ void register_stiffness(CLI::App& app, Action& action) {
   command->add_option("model", options->common.model_path, "Framework model: kinestat YAML / JSON (kind: framework) or SPACAR .dat")
       ->required();
   command->add_option("--at", options->at, "The node whose stiffness is condensed (every other free coordinate free)")->required();
-  command->add_option("--misfit", options->misfit,
-                      "A manufacturing misfit (model length unit): the stress it locks into each redundant constraint, and "
-                      "the stiffness and eigenfrequencies without and with it")
-      ->check(positive_finite_number());
+  add_misfit_option(*command, options->misfit,
+                    "A manufacturing misfit (model length unit): the stress it locks into each redundant constraint, and "
+                    "the stiffness and eigenfrequencies without and with it");
   command->add_flag("--json", options->common.json, "Machine-readable output: a `stiffness` object");
   command->add_option("-o,--output", options->common.output_path, "Write to this file instead of standard output");
   command->callback([options, &action] { action = [options] { return run_stiffness(*options); }; });

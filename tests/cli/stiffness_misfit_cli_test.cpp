@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -122,6 +123,61 @@ TEST(StiffnessMisfitCommand, NegativeMisfitIsRefusedWithExitCode2) {
   EXPECT_NE(r.err.find("--misfit"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("not positive"), std::string::npos) << r.err;
   EXPECT_EQ(run_cli("stiffness " + kGuide + " --at P --misfit abc --json").exit_code, 2);
+}
+
+// A planar square of side 100 mm with both diagonals, steel bars of area 3 mm² (EA = 630000 N),
+// on statically determinate supports: one self-stress (sides −1, diagonals √2).
+std::string braced_square_file() {
+  return kinestat::testing::write_temp_file(
+      "braced-square-steel.yaml",
+      "kinestat: 1\nkind: framework\nname: braced square\ndimension: planar\nunits: mm\n"
+      "materials: {steel: {E: 210000, G: 80000}}\nsections: {bar: {area: 3}}\ndefaults: {material: steel, section: bar}\n"
+      "nodes: {A: [0, 0], B: [100, 0], C: [100, 100], D: [0, 100]}\nsupports: {A: fixed, B: [y]}\nelements:\n"
+      "  - {name: s1, type: truss, nodes: [A, B]}\n  - {name: s2, type: truss, nodes: [B, C]}\n"
+      "  - {name: s3, type: truss, nodes: [C, D]}\n  - {name: s4, type: truss, nodes: [D, A]}\n"
+      "  - {name: d1, type: truss, nodes: [A, C]}\n  - {name: d2, type: truss, nodes: [B, D]}\n");
+}
+
+TEST(StiffnessMisfitCommand, PerElementMisfitGivesThatElementsForceMethodCase) {
+  // `--misfit d1=0.02`: only d1 is made 0.02 mm short. Force method (docs/stiffness.md):
+  // Σ σᵢ² Lᵢ/EA = 4a(1 + √2)/EA, α = √2 δ EA/(4a(1 + √2)), diagonal force √2 α =
+  // EA δ/(2a(1 + √2)) = 630000 · 0.02/(200 · 2.41421) = 26.096 N, stress over 3 mm².
+  const std::string model = braced_square_file();
+  const auto r = run_cli("stiffness " + model + " --at C --misfit d1=0.02 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto misfit = nlohmann::json::parse(r.out).at("misfit");
+  EXPECT_TRUE(misfit.at("value").is_null());  // no plain VALUE: the other bars have none
+  EXPECT_EQ(misfit.at("per_element"), nlohmann::json::parse(R"({"d1": 0.02})"));
+  const double diagonal = 630000.0 * 0.02 / (2 * 100.0 * (1 + std::sqrt(2.0)));
+  const auto& worst = misfit.at("worst");
+  EXPECT_EQ(worst.at("source").get<std::string>().rfind("d1", 0), 0u) << worst.at("source");
+  EXPECT_NEAR(worst.at("force").get<double>(), diagonal, 1e-6 * diagonal);
+  EXPECT_NEAR(worst.at("stress").get<double>(), diagonal / 3.0, 1e-6 * diagonal);
+
+  // Side s1 at 0.05 mm beside d1 at 0.02 mm: s1's case gives the diagonals √2 δ EA/(4a(1 + √2))
+  // = 46.13 N (more than d1's 26.10 N), so it is the worst; the text names both tolerances.
+  const double side_case = std::sqrt(2.0) * 0.05 * 630000.0 / (4 * 100.0 * (1 + std::sqrt(2.0)));
+  const auto both = run_cli("stiffness " + model + " --at C --misfit s1=0.05 --misfit d1=0.02 --json");
+  ASSERT_EQ(both.exit_code, 0) << both.err;
+  const auto worst_both = nlohmann::json::parse(both.out).at("misfit").at("worst");
+  EXPECT_EQ(worst_both.at("source").get<std::string>().rfind("s1", 0), 0u) << worst_both.at("source");
+  EXPECT_NEAR(std::abs(worst_both.at("force").get<double>()), side_case, 1e-6 * side_case);
+  const auto text = run_cli("stiffness " + model + " --at C --misfit s1=0.05 --misfit d1=0.02");
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_NE(text.out.find("misfit per held deformation: 0.02 mm in d1, 0.05 mm in s1, none elsewhere; force method"), std::string::npos)
+      << text.out;
+}
+
+TEST(StiffnessMisfitCommand, PerElementMisfitOfAnUnknownElementIsOneLineWithExitCode2) {
+  const auto r = run_cli("stiffness " + braced_square_file() + " --at C --misfit d9=0.02");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  EXPECT_NE(r.err.find("--misfit"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("'d9'"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  const auto analyze = run_cli("analyze " + kGuide + " --misfit leaf3=0.01");
+  EXPECT_EQ(analyze.exit_code, 2);
+  EXPECT_NE(analyze.err.find("'leaf3'"), std::string::npos) << analyze.err;
 }
 
 }  // namespace

@@ -87,6 +87,81 @@ TEST(Misfit, BracedSquareGivesTheForceMethodBarForces) {
   EXPECT_NEAR(work, 0.0, 1e-15);
 }
 
+// The element a deformation index belongs to, by name.
+std::string element_of(const FrameworkModel& model, const FrameworkResult& analysis, Eigen::Index deformation) {
+  return model.elements[analysis.indexing.deformations[static_cast<std::size_t>(deformation)].element].name;
+}
+
+TEST(Misfit, PerElementMisfitOfOneDiagonalGivesTheSingleDiagonalBarForces) {
+  // `--misfit d1=δ` and nothing else: only d1 is made δ short, every other bar fits (misfit 0).
+  // By the force method above: diagonals δ/(2a(1 + √2)) (tension), sides −√2 δ/(4a(1 + √2)),
+  // and the cases of the other bars (zero misfit) lock in nothing.
+  const double a = 2.0, delta = 1e-3;
+  const FrameworkModel model = braced_square(a, true);
+  const FrameworkResult analysis = analyse_framework(model);
+  MisfitTolerance tolerance;
+  tolerance.per_element = {{"d1", delta}};
+  const MisfitResult misfit = analyse_misfit(model, analysis, unit_bars(model), tolerance);
+  ASSERT_TRUE(misfit.worst_source.has_value());
+  EXPECT_EQ(element_of(model, analysis, *misfit.worst_source), "d1");
+  EXPECT_EQ(misfit.worst_misfit, delta);
+  EXPECT_EQ(misfit.value, 0.0);
+  EXPECT_EQ(misfit.participating.size(), 6u);  // every bar is in the self-stress, misfit or not
+  const double diagonal = delta / (2 * a * (1 + std::sqrt(2.0))), side = -std::sqrt(2.0) * delta / (4 * a * (1 + std::sqrt(2.0)));
+  EXPECT_NEAR(misfit.worst.force, diagonal, 1e-12 * diagonal);
+  for (std::size_t e = 0; e < model.elements.size(); ++e) {
+    const double expected = model.elements[e].name[0] == 'd' ? diagonal : side;
+    EXPECT_NEAR(misfit.worst_resultants(analysis.indexing.first_deformation[e]), expected, 1e-12 * diagonal) << model.elements[e].name;
+  }
+}
+
+TEST(Misfit, PerElementWorstCaseIsTheLargestUnitForceTimesItsMisfit) {
+  // Diagonals d1 = 1e-3, d2 = 3e-3, sides none: a diagonal misfit δ gives |force| at most
+  // δ/(2a(1 + √2)), so d2's case is the worst, three times d1's: 3e-3/(2a(1 + √2)).
+  const double a = 2.0, root2 = std::sqrt(2.0);
+  const FrameworkModel model = braced_square(a, true);
+  const FrameworkResult analysis = analyse_framework(model);
+  MisfitTolerance diagonals;
+  diagonals.per_element = {{"d1", 1e-3}, {"d2", 3e-3}};
+  const MisfitResult two = analyse_misfit(model, analysis, unit_bars(model), diagonals);
+  ASSERT_TRUE(two.worst_source.has_value());
+  EXPECT_EQ(element_of(model, analysis, *two.worst_source), "d2");
+  const double d2_force = 3e-3 / (2 * a * (1 + root2));
+  EXPECT_NEAR(two.worst.force, d2_force, 1e-12 * d2_force);
+  EXPECT_NEAR(two.worst.stress, d2_force, 1e-12 * d2_force);  // unit area
+
+  // A side misfit δ (α = −δ/(4a(1 + √2))) gives the diagonals |√2 α| = √2 δ/(4a(1 + √2)), the
+  // sides |α|: per unit misfit 1/√2 of a diagonal's. With d1 = d2 = 1e-3 and the sides the plain
+  // 1.5e-3, a side's case is worse (√2·1.5e-3/4 = 0.530e-3 > 1e-3/2 = 0.5e-3, over a(1 + √2)),
+  // its largest force on a diagonal; with the sides at 1.3e-3 (0.460e-3) a diagonal's wins.
+  for (const double side_misfit : {1.5e-3, 1.3e-3}) {
+    MisfitTolerance mixed;
+    mixed.value = side_misfit;
+    mixed.per_element = {{"d1", 1e-3}, {"d2", 1e-3}};
+    const MisfitResult m = analyse_misfit(model, analysis, unit_bars(model), mixed);
+    ASSERT_TRUE(m.worst_source.has_value());
+    const std::string source = element_of(model, analysis, *m.worst_source);
+    const double side_case = root2 * side_misfit / (4 * a * (1 + root2)), diagonal_case = 1e-3 / (2 * a * (1 + root2));
+    if (side_misfit == 1.5e-3) {
+      EXPECT_EQ(source[0], 's') << source;
+      EXPECT_EQ(m.worst_misfit, side_misfit);
+      EXPECT_EQ(model.elements[m.worst.element].name[0], 'd');
+      EXPECT_NEAR(std::abs(m.worst.force), side_case, 1e-12 * side_case);
+    } else {
+      EXPECT_EQ(source[0], 'd') << source;
+      EXPECT_NEAR(m.worst.force, diagonal_case, 1e-12 * diagonal_case);
+    }
+  }
+}
+
+TEST(Misfit, PerElementMisfitOfAnUnknownElementIsRefused) {
+  const FrameworkModel model = braced_square(2.0, true);
+  MisfitTolerance tolerance;
+  tolerance.per_element = {{"d3", 1e-3}};
+  EXPECT_EQ(unknown_misfit_element(model, tolerance), std::optional<std::string>("d3"));
+  EXPECT_THROW(analyse_misfit(model, analyse_framework(model), unit_bars(model), tolerance), std::invalid_argument);
+}
+
 TEST(Misfit, BracedSquareStressScalesWithTheMisfitAndTheUnit) {
   // The same square in mm (a = 2000 mm, EA in N: unchanged per bar force) and in m (a = 2 m):
   // the force for a misfit of 1 mm = 1e-3 m is the same number of newtons: EA δ/(2a(1+√2)) with

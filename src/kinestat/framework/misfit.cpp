@@ -93,6 +93,19 @@ bool misfit_worse(const ElementStressResultants& candidate, const ElementStressR
 
 }  // namespace
 
+double MisfitTolerance::of(const std::string& element) const {
+  if (const auto named = per_element.find(element); named != per_element.end()) return named->second;
+  return value.value_or(0.0);
+}
+
+std::optional<std::string> unknown_misfit_element(const FrameworkModel& model, const MisfitTolerance& tolerance) {
+  for (const auto& [name, misfit] : tolerance.per_element) {
+    const bool known = std::any_of(model.elements.begin(), model.elements.end(), [&](const Element& e) { return e.name == name; });
+    if (!known) return name;
+  }
+  return std::nullopt;
+}
+
 std::vector<ElementCompliance> element_compliance(const FrameworkModel& model) {
   std::vector<ElementCompliance> out(model.elements.size());
   for (std::size_t e = 0; e < model.elements.size(); ++e) {
@@ -193,11 +206,14 @@ std::vector<ElementStressResultants> element_stress_resultants(const FrameworkMo
 }
 
 MisfitResult analyse_misfit(const FrameworkModel& model, const FrameworkResult& a, const std::vector<ElementCompliance>& compliance,
-                            double value) {
+                            const MisfitTolerance& tolerance) {
   if (compliance.size() != model.elements.size())
     throw std::invalid_argument("analyse_misfit: one compliance per element expected");
+  if (const std::optional<std::string> unknown = unknown_misfit_element(model, tolerance))
+    throw std::invalid_argument("--misfit: the model has no element named '" + *unknown + "'");
   MisfitResult result;
-  result.value = value;
+  result.value = tolerance.value.value_or(0.0);
+  result.tolerance = tolerance;
   result.self_stresses = a.self_stresses;
   result.worst_resultants = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(a.indexing.deformations.size()));
   if (a.self_stresses == 0) {
@@ -224,6 +240,7 @@ MisfitResult analyse_misfit(const FrameworkModel& model, const FrameworkResult& 
     if (!deformation_is_length(model.dimension, model.elements[d.element], d.deformation)) continue;
     if (s.row(r).cwiseAbs().maxCoeff() <= kMisfitParticipation * largest) continue;
     result.participating.push_back(deformation);
+    const double value = tolerance.of(model.elements[d.element].name);
     Eigen::VectorXd all = Eigen::VectorXd::Zero(result.worst_resultants.size());
     for (Eigen::Index i = 0; i < a.m; ++i) all(a.rows[static_cast<std::size_t>(i)]) = value * influence_of_unit(i, r);
     std::vector<ElementStressResultants> elements = element_stress_resultants(model, a.indexing, all, compliance);
@@ -232,6 +249,7 @@ MisfitResult analyse_misfit(const FrameworkModel& model, const FrameworkResult& 
     if (top == elements.end()) continue;
     if (!result.worst_source || misfit_worse(*top, result.worst)) {
       result.worst_source = deformation;
+      result.worst_misfit = value;
       result.worst = *top;
       result.worst_resultants = all;
       worst_elements = std::move(elements);

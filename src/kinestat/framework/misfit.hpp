@@ -19,6 +19,7 @@
 #include <Eigen/Core>
 
 #include <limits>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -81,9 +82,28 @@ std::vector<ElementStressResultants> element_stress_resultants(const FrameworkMo
                                                                const Eigen::VectorXd& resultants,
                                                                const std::vector<ElementCompliance>& compliance);
 
-/// The worst case of a misfit of size `value` over every participating deformation.
+/// The misfit each element is made with (`--misfit VALUE`, `--misfit ELEMENT=VALUE`), model
+/// length unit: the named elements' own, every other element the plain value, or none (0)
+/// when only elements are named. A plain length converts to it (every element the same).
+struct MisfitTolerance {
+  std::optional<double> value;               ///< elements not named
+  std::map<std::string, double> per_element;  ///< by element name (sorted: deterministic output)
+  MisfitTolerance() = default;
+  MisfitTolerance(double plain) : value(plain) {}  // NOLINT(google-explicit-constructor): the plain `--misfit VALUE`
+  /// The misfit of the element named `element` (model length unit).
+  double of(const std::string& element) const;
+};
+
+/// The first element named in `tolerance` that `model` does not have; none when all exist.
+std::optional<std::string> unknown_misfit_element(const FrameworkModel& model, const MisfitTolerance& tolerance);
+
+/// The worst case of a misfit (each participating deformation in turn given its element's
+/// misfit) over every participating deformation.
 struct MisfitResult {
-  double value = 0.0;              ///< the misfit, model length unit
+  double value = 0.0;              ///< the plain misfit, model length unit (0 when only elements are named)
+  MisfitTolerance tolerance;       ///< the misfit of every element, as given
+  /// The misfit of the worst case's deformation (its element's), model length unit.
+  double worst_misfit = 0.0;
   Eigen::Index self_stresses = 0;  ///< of the analysis
   /// False when the analysis has no vectors (the sparse path): no misfit stress computed.
   bool computed = false;
@@ -104,10 +124,12 @@ struct MisfitResult {
 };
 
 /// Force method over the self-stresses of `analysis` (made on `model`), with each element's
-/// compliance (one per element of `model`): for every participating deformation, the misfit
-/// `value` alone; keeps the case with the largest peak stress. Zero self-stresses: computed,
-/// no worst case, zero resultants.
+/// compliance (one per element of `model`): for every participating deformation, its element's
+/// misfit (`tolerance`) alone; keeps the case with the largest peak stress. The stresses are
+/// linear in the misfit, so each case is the unit-misfit resultants times that misfit. Zero
+/// self-stresses: computed, no worst case, zero resultants. Throws std::invalid_argument for
+/// an element name the model does not have.
 MisfitResult analyse_misfit(const FrameworkModel& model, const FrameworkResult& analysis,
-                            const std::vector<ElementCompliance>& compliance, double value);
+                            const std::vector<ElementCompliance>& compliance, const MisfitTolerance& tolerance);
 
 }  // namespace kinestat::framework

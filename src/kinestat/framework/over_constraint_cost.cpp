@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/framework/over_constraint_cost.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -34,10 +35,13 @@ std::optional<VibrationModes> framework_vibration(const FrameworkModel& model, c
 }
 
 OverConstraintCost over_constraint_cost(const FrameworkModel& model, const FrameworkResult& analysis, std::size_t node,
-                                        double misfit) {
+                                        const MisfitTolerance& misfit) {
   if (!model.has_elastic_data())
     throw std::invalid_argument("the model has no elastic data: give materials and sections (docs/stiffness.md)");
-  if (!(misfit >= 0.0) || !std::isfinite(misfit)) throw std::invalid_argument("the misfit must be a finite length, zero or more");
+  const auto valid = [](double length) { return length >= 0.0 && std::isfinite(length); };
+  if ((misfit.value && !valid(*misfit.value)) ||
+      std::any_of(misfit.per_element.begin(), misfit.per_element.end(), [&](const auto& named) { return !valid(named.second); }))
+    throw std::invalid_argument("the misfit must be a finite length, zero or more");
   OverConstraintCost cost;
   cost.node = node;
   cost.indexing = analysis.indexing;

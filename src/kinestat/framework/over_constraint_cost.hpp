@@ -37,12 +37,14 @@ struct OverConstraintCost {
   std::vector<Eigen::Index> free;
 };
 
-/// The cost of a misfit of `misfit` (model length unit) in `model`, analysed as `analysis`
-/// (dense path with vectors for a stress), at `node`. Throws std::invalid_argument with a
-/// one-line message when the model has no elastic data or the node's stiffness is undefined
-/// (stiffness_at), or when a self-stress runs through rigid members only.
+/// The cost of a misfit of `misfit` (model length unit: one length for every element, or per
+/// element) in `model`, analysed as `analysis` (dense path with vectors for a stress), at
+/// `node`. Throws std::invalid_argument with a one-line message when the model has no elastic
+/// data, a misfit is negative or not finite, an element named in `misfit` is not in the model,
+/// the node's stiffness is undefined (stiffness_at), or a self-stress runs through rigid
+/// members only.
 OverConstraintCost over_constraint_cost(const FrameworkModel& model, const FrameworkResult& analysis, std::size_t node,
-                                        double misfit);
+                                        const MisfitTolerance& misfit);
 
 /// The lowest eigenpairs of the assembled stiffness `assembled` of `model` plus `prestress`
 /// (n_x × n_x over the indexing's coordinates, or empty for none) with its lumped mass, over

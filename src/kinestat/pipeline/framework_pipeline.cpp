@@ -16,7 +16,7 @@ std::optional<std::size_t> intended_motion_node(const framework::FrameworkModel&
 }
 
 framework::AnalysedCost framework_cost(const framework::FrameworkModel& model, const framework::FrameworkResult& result,
-                                       std::optional<double> misfit) {
+                                       const std::optional<framework::MisfitTolerance>& misfit) {
   framework::AnalysedCost cost;
   cost.per_unit = !misfit;
   const std::optional<std::size_t> node = intended_motion_node(model);
@@ -27,7 +27,7 @@ framework::AnalysedCost framework_cost(const framework::FrameworkModel& model, c
   try {
     // Without a misfit: one model length unit. The stresses are linear in it, so the report
     // gives them per unit of misfit.
-    cost.cost = framework::over_constraint_cost(model, result, *node, misfit.value_or(1.0));
+    cost.cost = framework::over_constraint_cost(model, result, *node, misfit ? *misfit : framework::MisfitTolerance(1.0));
   } catch (const std::invalid_argument& refused) {
     cost.not_computed = refused.what();
   }
@@ -35,7 +35,7 @@ framework::AnalysedCost framework_cost(const framework::FrameworkModel& model, c
 }
 
 FrameworkAnalysis analyse_framework(const framework::FrameworkModel& model, const framework::AnalysisOptions& options,
-                                    std::optional<double> misfit) {
+                                    const std::optional<framework::MisfitTolerance>& misfit) {
   FrameworkAnalysis a;
   a.options = options;
   a.options.stop = StopRequest{};

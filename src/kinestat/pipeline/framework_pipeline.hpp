@@ -13,6 +13,7 @@
 #include "kinestat/framework/framework_analysis.hpp"
 #include "kinestat/framework/framework_model.hpp"
 #include "kinestat/framework/generic_framework.hpp"
+#include "kinestat/framework/misfit.hpp"
 #include "kinestat/framework/two_way_trace.hpp"
 
 namespace kinestat::pipeline {
@@ -32,9 +33,10 @@ struct FrameworkAnalysis {
 
 /// The framework pipeline for `model` with `options` (the stop request is polled between the
 /// stages and throws kinestat::Stopped). A model with elastic data also gets its cost of
-/// over-constraint (framework_cost) for `misfit` (model length unit; none: per unit misfit).
+/// over-constraint (framework_cost) for `misfit` (model length unit, one for all elements or per
+/// element; none: per unit misfit).
 FrameworkAnalysis analyse_framework(const framework::FrameworkModel& model, const framework::AnalysisOptions& options,
-                                    std::optional<double> misfit = std::nullopt);
+                                    const std::optional<framework::MisfitTolerance>& misfit = std::nullopt);
 
 /// The node whose coordinates are the intended motions: the first node with an independent
 /// coordinate (index into model.nodes); none when the model declares no intended motion.
@@ -45,7 +47,7 @@ std::optional<std::size_t> intended_motion_node(const framework::FrameworkModel&
 /// over_constraint_cost refuses (no material or section, a mechanism at the node, ...) and a
 /// model without an intended motion give a cost with `not_computed` set instead.
 framework::AnalysedCost framework_cost(const framework::FrameworkModel& model, const framework::FrameworkResult& result,
-                                       std::optional<double> misfit);
+                                       const std::optional<framework::MisfitTolerance>& misfit);
 
 /// The finite motion of each finite mode of `analysis` traced both ways, as the HTML report
 /// animates it (framework::animation_traces with the analysis's options).

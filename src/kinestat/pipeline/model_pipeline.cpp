@@ -165,10 +165,13 @@ report::Scene model_scene(const io::ModelFile& file, const ModelAnalysis& analys
 }
 
 ModelPictures picture_model(const io::ModelFile& file, std::optional<double> tolerance, bool traced_motion,
-                            std::optional<double> misfit) {
+                            const std::optional<framework::MisfitTolerance>& misfit) {
   if (misfit && !(file.framework && file.framework->has_elastic_data()))
     throw io::InputError({file.path, 1, 1}, "--misfit needs a framework model with materials and sections "
                                             "(docs/stiffness.md); remove it");
+  if (misfit)
+    if (const std::optional<std::string> unknown = framework::unknown_misfit_element(*file.framework, *misfit))
+      throw io::InputError({file.path, 1, 1}, "--misfit: the model has no element named '" + *unknown + "'");
   AnalysisRequest request;
   request.tolerance = tolerance;
   request.misfit = misfit;

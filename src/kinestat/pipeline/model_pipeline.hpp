@@ -43,7 +43,7 @@ struct AnalysisRequest {
   StopRequest stop;
   /// Frameworks with elastic data: the misfit (model length unit) of the cost of
   /// over-constraint (`analyze --misfit`); none: the cost per unit misfit.
-  std::optional<double> misfit;
+  std::optional<framework::MisfitTolerance> misfit;
 };
 
 /// A model analysed: the kind's results, exactly one analysis per kind (a network has the
@@ -113,6 +113,6 @@ struct ModelPictures {
 /// of over-constraint in the scene (report::add_framework_cost) for `misfit` (model length
 /// unit; none: per unit misfit); a misfit for any other model is an io::InputError.
 ModelPictures picture_model(const io::ModelFile& file, std::optional<double> tolerance, bool traced_motion = false,
-                            std::optional<double> misfit = std::nullopt);
+                            const std::optional<framework::MisfitTolerance>& misfit = std::nullopt);
 
 }  // namespace kinestat::pipeline

@@ -63,7 +63,7 @@ SceneStress misfit_stress(const Scene& scene, const framework::FrameworkModel& m
   SceneStress entry;
   entry.unit = stresses ? u.stress : moments ? u.moment : "N";
   const std::string amount = analysed.per_unit ? fmt::format("per {} of misfit", u.length)
-                                               : fmt::format("from a misfit of {} {}", cost_number(m.value), u.length);
+                                               : fmt::format("from a misfit of {} {}", cost_number(m.worst_misfit), u.length);
   const framework::ElementStressResultants& w = m.worst;
   entry.label = fmt::format("misfit stress {} in {}: worst {}, {} {} {}", amount,
                             cost_deformation_label(model, cost.indexing, *m.worst_source), model.elements[w.element].name,
@@ -142,7 +142,7 @@ void add_framework_cost(Scene& scene, const framework::FrameworkModel& model, co
     scene.stresses.push_back(misfit_stress(scene, model, analysed));
     const double worst = std::isfinite(m.worst.stress) ? m.worst.stress : m.worst.force;
     scene.summary.push_back({analysed.per_unit ? fmt::format("worst misfit stress per {}", u.length)
-                                               : fmt::format("worst stress at {} {} misfit", cost_number(m.value), u.length),
+                                               : fmt::format("worst stress at {} {} misfit", cost_number(m.worst_misfit), u.length),
                              fmt::format("{} {} in {}", cost_number(worst), std::isfinite(m.worst.stress) ? u.stress : "N",
                                          model.elements[m.worst.element].name)});
   }

@@ -93,13 +93,23 @@ nlohmann::ordered_json frequencies_json(const framework::VibrationModes& modes) 
   return list;
 }
 
+// The misfit as given: one length ("0.01 mm"), or per element ("0.02 mm in d1, 0.01 mm in d2,
+// 0.005 mm elsewhere"; "none elsewhere" without a plain value).
+std::string tolerance_text(const framework::MisfitTolerance& tolerance, const std::string& length) {
+  if (tolerance.per_element.empty()) return fmt::format("{} {}", shown(tolerance.value.value_or(0.0)), length);
+  std::string out;
+  for (const auto& [element, value] : tolerance.per_element)
+    out += fmt::format("{}{} {} in {}", out.empty() ? "" : ", ", shown(value), length, io::printable_text(element));
+  return out + (tolerance.value ? fmt::format(", {} {} elsewhere", shown(*tolerance.value), length) : ", none elsewhere");
+}
+
 std::string statement(const framework::FrameworkModel& model, const OverConstraintCost& cost) {
   const Units u = units_of(model);
   const framework::MisfitResult& m = cost.misfit;
   if (m.self_stresses == 0)
-    return fmt::format("no self-stress: exactly constrained against misfit, so a misfit of {} {} is taken up without stress, "
+    return fmt::format("no self-stress: exactly constrained against misfit, so a misfit of {} is taken up without stress, "
                        "and stiffness and eigenfrequencies do not change with it",
-                       shown(m.value), u.length);
+                       tolerance_text(m.tolerance, u.length));
   if (!m.computed)
     return fmt::format("{} self-stress{}, but no stress vectors were computed (a large model analysed by sparse QR): "
                        "misfit stress not computed",
@@ -108,7 +118,7 @@ std::string statement(const framework::FrameworkModel& model, const OverConstrai
   const ElementStressResultants& w = m.worst;
   const std::string stress = std::isnan(w.stress) ? "" : fmt::format("a peak stress of {} {}, ", shown(w.stress), u.stress);
   return fmt::format("{} self-stress{}; the worst case is a misfit of {} {} in {}: it gives {} {}an axial force of {} {}{}",
-                     m.self_stresses, m.self_stresses == 1 ? "" : "es", shown(m.value), u.length,
+                     m.self_stresses, m.self_stresses == 1 ? "" : "es", shown(m.worst_misfit), u.length,
                      io::printable_text(deformation_label(model, cost.indexing, *m.worst_source)), element_name(model, w.element),
                      stress, shown(w.force), u.force,
                      w.moment != 0.0 ? fmt::format(" and a bending moment of {} {}", shown(w.moment), u.moment) : "");
@@ -122,7 +132,12 @@ std::string stiffness_unit(const Units& u, bool rotation) {
 
 std::string over_constraint_text(const framework::FrameworkModel& model, const OverConstraintCost& cost) {
   const Units u = units_of(model);
-  std::string out = fmt::format("Cost of over-constraint (misfit {} {} per held deformation, force method):\n", shown(cost.misfit.value), u.length);
+  const framework::MisfitTolerance& tolerance = cost.misfit.tolerance;
+  std::string out = tolerance.per_element.empty()
+                        ? fmt::format("Cost of over-constraint (misfit {} per held deformation, force method):\n",
+                                      tolerance_text(tolerance, u.length))
+                        : fmt::format("Cost of over-constraint (misfit per held deformation: {}; force method):\n",
+                                      tolerance_text(tolerance, u.length));
   out += "  " + statement(model, cost) + "\n";
   if (!cost.misfit.elements.empty()) {
     out += fmt::format("  {:<20} {:>14} {:>14} {:>16}\n", "element", "force [" + u.force + "]", "moment [" + u.moment + "]",
@@ -161,7 +176,14 @@ std::string over_constraint_text(const framework::FrameworkModel& model, const O
 nlohmann::ordered_json over_constraint_json(const framework::FrameworkModel& model, const OverConstraintCost& cost) {
   const framework::MisfitResult& m = cost.misfit;
   nlohmann::ordered_json misfit = json_object(9);
-  misfit["value"] = json_number(m.value);
+  const bool per_element = !m.tolerance.per_element.empty();
+  // Per element without a plain value: the elements not named have none, `value` is null.
+  misfit["value"] = per_element && !m.tolerance.value ? nlohmann::ordered_json(nullptr) : json_number(m.value);
+  if (per_element) {
+    nlohmann::ordered_json named = json_object(m.tolerance.per_element.size());
+    for (const auto& [element, value] : m.tolerance.per_element) named[element] = json_number(value);
+    misfit["per_element"] = std::move(named);
+  }
   misfit["unit"] = units_of(model).length;
   misfit["self_stresses"] = m.self_stresses;
   misfit["statement"] = statement(model, cost);
