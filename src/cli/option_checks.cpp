@@ -47,12 +47,13 @@ CLI::Option* add_misfit_option(CLI::App& command, std::vector<std::string>& text
           return fmt::format("'{}' is not a length zero or more: expected ELEMENT=VALUE such as d1=0.01", named->second);
         return {};
       },
-      "VALUE|ELEMENT=VALUE");
+      "");  // the type name below says what is expected
   return command
       .add_option("--misfit", texts,
                   about + ". VALUE: every element's misfit; ELEMENT=VALUE (repeat --misfit for each element): that element's, "
                           "the others then the plain VALUE if given, else none (docs/stiffness.md)")
       ->check(format)
+      ->type_name("VALUE|ELEMENT=VALUE")
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
 }
