@@ -99,7 +99,9 @@ double MisfitTolerance::of(const std::string& element) const {
 }
 
 std::optional<std::string> unknown_misfit_element(const FrameworkModel& model, const MisfitTolerance& tolerance) {
-  for (const auto& [name, misfit] : tolerance.per_element) {
+  // Not a structured binding: clang before 16 cannot capture one in a lambda.
+  for (const auto& entry : tolerance.per_element) {
+    const std::string& name = entry.first;
     const bool known = std::any_of(model.elements.begin(), model.elements.end(), [&](const Element& e) { return e.name == name; });
     if (!known) return name;
   }
