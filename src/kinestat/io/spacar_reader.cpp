@@ -496,6 +496,8 @@ class SpacarReader {
 
   // Every pending element as a framework element (named by its SPACAR number), then the joints.
   void build_elements() {
+    // Once: the nodes do not change while elements are built (per element it was O(n^2)).
+    coincident_distance_ = kCoincident * framework::characteristic_length(model_);
     for (const PendingElement& e : elements_) {
       Element element;
       element.name = std::to_string(e.number);
@@ -556,7 +558,7 @@ class SpacarReader {
                          welded ? DeformationRole::fixed : DeformationRole::released);
     for (std::size_t k = 0; k < translation_count(); ++k) element.roles[k] = DeformationRole::fixed;
     const Eigen::Vector3d axis = model_.nodes[carried].position - model_.nodes[element.nodes[0]].position;
-    if (!(axis.norm() > kCoincident * framework::characteristic_length(model_)))
+    if (!(axis.norm() > coincident_distance_))
       fail(e.node_tokens.back(), fmt::format("zero-length element {}: nodes {} and {} coincide", e.number, e.p, e.q));
   }
 
@@ -569,7 +571,7 @@ class SpacarReader {
     const std::size_t q = beam ? orientation_index_.at(e.rq) : position_index_.at(e.q);
     element.nodes = {p, q};
     const Eigen::Vector3d axis = model_.nodes[q].position - model_.nodes[p].position;
-    if (!(axis.norm() > kCoincident * framework::characteristic_length(model_)))
+    if (!(axis.norm() > coincident_distance_))
       fail(e.node_tokens.back(), fmt::format("zero-length element {}: nodes {} and {} coincide", e.number, e.p, e.q));
     const Eigen::Vector3d x = axis.normalized();
     if (beam) {
@@ -808,6 +810,7 @@ class SpacarReader {
   std::set<long> warping_nodes_;
   std::vector<std::string> notices_;
   std::set<long> welded_ends_;  // RBEAM end nodes q without an orientation node (given the body's rotations)
+  double coincident_distance_ = 0.0;  ///< kCoincident × the characteristic length, set by build_elements
   std::string warped_;
   FrameworkModel model_;
   std::map<long, Eigen::Vector3d> positions_;
