@@ -15,13 +15,14 @@ namespace kinestat::report {
 namespace {
 
 // The consistent unit names of a model whose length unit is `length` (docs/stiffness.md).
-struct CostUnits {
+// The stiffness units besides the cost's (report::cost_units: length, stress).
+struct StiffnessUnits {
   std::string length, translation, rotation, coupling, stress;
 };
 
-CostUnits cost_units(const framework::FrameworkModel& model) {
-  const std::string length = model.units.empty() ? "m" : model.units;
-  return {length, "N/" + length, "N*" + length + "/rad", "N/rad", length == "m" ? "Pa" : "N/" + length + "^2"};
+StiffnessUnits stiffness_units(const framework::FrameworkModel& model) {
+  const CostUnits u = cost_units(model);
+  return {u.length, u.force + "/" + u.length, u.moment + "/rad", u.force + "/rad", u.stress};
 }
 
 nlohmann::ordered_json cost_matrix_json(const Eigen::MatrixXd& matrix) {
@@ -37,7 +38,7 @@ nlohmann::ordered_json cost_matrix_json(const Eigen::MatrixXd& matrix) {
 std::string cost_shown(double value) { return std::isnan(value) ? "n/a" : fmt::format("{:.4g}", value); }
 
 // "x 0.525 N/mm, z 21000 N/mm"
-std::string cost_directions_text(const std::vector<framework::DirectionStiffness>& list, const CostUnits& units) {
+std::string cost_directions_text(const std::vector<framework::DirectionStiffness>& list, const StiffnessUnits& units) {
   std::string out;
   for (const framework::DirectionStiffness& d : list)
     out += fmt::format("{}{} {} {}", out.empty() ? "" : ", ", d.coordinate, fmt::format("{:.6g}", d.stiffness),
@@ -48,7 +49,7 @@ std::string cost_directions_text(const std::vector<framework::DirectionStiffness
 // Per unit misfit: the worst case and its elements, then the stiffness and frequencies
 // without misfit (those with a misfit depend on its size: `--misfit`).
 std::string per_unit_cost_text(const framework::FrameworkModel& model, const framework::OverConstraintCost& cost) {
-  const CostUnits units = cost_units(model);
+  const StiffnessUnits units = stiffness_units(model);
   std::string out = fmt::format("Cost of over-constraint (per {0} of misfit, force method; stresses are linear in the misfit: "
                                 "scale them, or give --misfit VALUE):\n",
                                 units.length);
@@ -79,7 +80,7 @@ std::string per_unit_cost_text(const framework::FrameworkModel& model, const fra
 }  // namespace
 
 nlohmann::ordered_json node_stiffness_json(const framework::FrameworkModel& model, const framework::NodeStiffness& result) {
-  const CostUnits units = cost_units(model);
+  const StiffnessUnits units = stiffness_units(model);
   nlohmann::ordered_json out = json_object(10);
   out["at"] = model.nodes[result.node].name;
   out["coordinates"] = result.coordinates;

@@ -22,19 +22,6 @@ namespace {
 // as moving (a display choice: which coordinates the side panel names, not a numerical test).
 constexpr double kListedModeShare = 0.01;
 
-struct CostUnits {
-  std::string length, stress, moment;
-};
-
-// The model's consistent units, as the text and JSON reports name them (SI when absent).
-CostUnits cost_units(const framework::FrameworkModel& model) {
-  CostUnits u;
-  u.length = model.units.empty() ? "m" : model.units;
-  u.stress = u.length == "m" ? "Pa" : "N/" + u.length + "^2";
-  u.moment = "N*" + u.length;
-  return u;
-}
-
 std::string cost_number(double value) { return fmt::format("{:.4g}", value); }
 
 std::string cost_deformation_label(const framework::FrameworkModel& model, const framework::FrameworkIndexing& indexing,

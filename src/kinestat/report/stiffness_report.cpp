@@ -41,16 +41,6 @@ nlohmann::ordered_json json_number(double value) {
   return std::isfinite(value) ? nlohmann::ordered_json(physical(value)) : nlohmann::ordered_json(nullptr);
 }
 
-struct Units {
-  std::string length, force = "N", stress, moment;
-};
-Units units_of(const framework::FrameworkModel& model) {
-  Units u;
-  u.length = model.units.empty() ? "m" : model.units;
-  u.stress = u.length == "m" ? "Pa" : "N/" + u.length + "^2";
-  u.moment = "N*" + u.length;
-  return u;
-}
 
 std::string element_name(const framework::FrameworkModel& model, std::size_t element) {
   return io::printable_text(model.elements[element].name);
@@ -104,7 +94,7 @@ std::string tolerance_text(const framework::MisfitTolerance& tolerance, const st
 }
 
 std::string statement(const framework::FrameworkModel& model, const OverConstraintCost& cost) {
-  const Units u = units_of(model);
+  const CostUnits u = cost_units(model);
   const framework::MisfitResult& m = cost.misfit;
   if (m.self_stresses == 0)
     return fmt::format("no self-stress: exactly constrained against misfit, so a misfit of {} is taken up without stress, "
@@ -124,14 +114,22 @@ std::string statement(const framework::FrameworkModel& model, const OverConstrai
                      w.moment != 0.0 ? fmt::format(" and a bending moment of {} {}", shown(w.moment), u.moment) : "");
 }
 
-std::string stiffness_unit(const Units& u, bool rotation) {
+std::string stiffness_unit(const CostUnits& u, bool rotation) {
   return rotation ? u.moment + "/rad" : u.force + "/" + u.length;
 }
 
 }  // namespace
 
+CostUnits cost_units(const framework::FrameworkModel& model) {
+  CostUnits u;
+  u.length = model.units.empty() ? "m" : model.units;
+  u.stress = u.length == "m" ? "Pa" : "N/" + u.length + "^2";
+  u.moment = "N*" + u.length;
+  return u;
+}
+
 std::string over_constraint_text(const framework::FrameworkModel& model, const OverConstraintCost& cost) {
-  const Units u = units_of(model);
+  const CostUnits u = cost_units(model);
   const framework::MisfitTolerance& tolerance = cost.misfit.tolerance;
   std::string out = tolerance.per_element.empty()
                         ? fmt::format("Cost of over-constraint (misfit {} per held deformation, force method):\n",
@@ -184,7 +182,7 @@ nlohmann::ordered_json over_constraint_json(const framework::FrameworkModel& mod
     for (const auto& [element, value] : m.tolerance.per_element) named[element] = json_number(value);
     misfit["per_element"] = std::move(named);
   }
-  misfit["unit"] = units_of(model).length;
+  misfit["unit"] = cost_units(model).length;
   misfit["self_stresses"] = m.self_stresses;
   misfit["statement"] = statement(model, cost);
   if (m.worst_source) {

@@ -15,6 +15,15 @@
 
 namespace kinestat::report {
 
+/// The names of the units the cost of over-constraint is given in: the model's consistent units
+/// (`units:`, SI when absent): length, force (N), stress (Pa, or N/length²) and moment (N·length).
+struct CostUnits {
+  std::string length, force = "N", stress, moment;
+};
+
+/// The units of `model`'s cost figures, as the text, JSON and HTML reports name them.
+CostUnits cost_units(const framework::FrameworkModel& model);
+
 /// The block as text: a heading line, the worst case in words (or, with no self-stress, that any
 /// misfit is taken up without stress), the elements that carry it, and the stiffness at the node
 /// and the lowest eigenfrequencies without and with the misfit.
