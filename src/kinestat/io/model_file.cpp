@@ -60,7 +60,7 @@ ModelFile read_model_file(const std::string& path, const ImportOptions& options)
     return model;
   }
   if (format == ModelFormat::spacar) {
-    SpacarImport imported = parse_spacar(path, read_text_file(path, options.max_input_bytes));
+    SpacarImport imported = read_spacar(path, options);
     model.kind = ModelKind::framework;
     model.framework = std::move(imported.model);
     model.notices = std::move(imported.notices);

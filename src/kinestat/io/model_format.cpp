@@ -1,8 +1,16 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/io/model_format.hpp"
 
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
+#include <cstring>
+#include <utility>
 
 #include "kinestat/io/input_error.hpp"
 #include "kinestat/io/mjcf_reader.hpp"
@@ -11,6 +19,58 @@
 #include "kinestat/io/urdf_reader.hpp"
 
 namespace kinestat::io {
+
+namespace {
+
+/// At most the first `bytes` of the file at `path` (a regular file, device or FIFO) and whether
+/// the file went on past them. Throws InputError naming the file when it is a folder or cannot
+/// be read (the messages of read_text_file).
+std::pair<std::string, bool> read_prefix(const std::string& path, std::size_t bytes) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) throw InputError({path, 0, 0}, fmt::format("cannot open file for reading: {}", std::strerror(errno)));
+  struct Closer {
+    int fd;
+    ~Closer() { ::close(fd); }
+  } closer{fd};
+  struct stat info {};
+  if (::fstat(fd, &info) == 0 && S_ISDIR(info.st_mode))
+    throw InputError({path, 0, 0}, "this is a folder, not a file: give the path of the model file");
+  std::string text(bytes + 1, '\0');  // one byte more tells whether the file goes on
+  std::size_t filled = 0;
+  while (filled < text.size()) {
+    const ssize_t got = ::read(fd, text.data() + filled, text.size() - filled);
+    if (got < 0 && errno == EINTR) continue;
+    if (got < 0) throw InputError({path, 0, 0}, fmt::format("cannot read the model file: {}", std::strerror(errno)));
+    if (got == 0) break;
+    filled += static_cast<std::size_t>(got);
+  }
+  const bool cut = filled > bytes;
+  text.resize(std::min(filled, bytes));
+  return {std::move(text), cut};
+}
+
+/// The format an .xml file's root element names, from the first kXmlRootSearchBytes of it.
+ModelFormat xml_format(const std::string& path) {
+  auto [prefix, cut] = read_prefix(path, kXmlRootSearchBytes);
+  // A prefix cut inside a name would give a shorter name ("<muj"): keep it up to its last '>',
+  // so that a name is read only when something after it (at least that '>') was read too.
+  if (cut) prefix.resize(prefix.rfind('>') == std::string::npos ? 0 : prefix.rfind('>') + 1);
+  const std::string root = xml_root_name(prefix);
+  if (root == "mujoco") return ModelFormat::mjcf;
+  if (root == "robot") return ModelFormat::urdf;
+  if (root == "sdf") return ModelFormat::sdformat;
+  if (!root.empty())
+    throw InputError({path, 1, 1}, "an .xml file with a <" + root + "> root is not a format kinestat reads; "
+                                   "expected <mujoco>, <robot> or <sdf>");
+  if (cut)
+    throw InputError({path, 1, 1}, fmt::format("no root element in the first {} of this .xml file (after its declaration, "
+                                               "comments and doctype): expected <mujoco> (MJCF), <robot> (URDF) or <sdf> "
+                                               "(SDFormat) within them",
+                                               size_text(kXmlRootSearchBytes)));
+  throw InputError({path, 1, 1}, "an .xml file must be MJCF (<mujoco>), URDF (<robot>) or SDFormat (<sdf>)");
+}
+
+}  // namespace
 
 ModelFormat model_format(const std::string& path) {
   const auto dot = path.find_last_of('.');
@@ -22,15 +82,7 @@ ModelFormat model_format(const std::string& path) {
   if (extension == "bars") return ModelFormat::bar_table;
   if (extension == "urdf") return ModelFormat::urdf;
   if (extension == "sdf" || extension == "world") return ModelFormat::sdformat;
-  if (extension == "xml") {
-    const std::string root = xml_root_name(read_text_file(path));
-    if (root == "mujoco") return ModelFormat::mjcf;
-    if (root == "robot") return ModelFormat::urdf;
-    if (root == "sdf") return ModelFormat::sdformat;
-    throw InputError({path, 1, 1}, root.empty() ? "an .xml file must be MJCF (<mujoco>), URDF (<robot>) or SDFormat (<sdf>)"
-                                                : "an .xml file with a <" + root + "> root is not a format kinestat reads; "
-                                                  "expected <mujoco>, <robot> or <sdf>");
-  }
+  if (extension == "xml") return xml_format(path);
   return ModelFormat::kinestat;
 }
 

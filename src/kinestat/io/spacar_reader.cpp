@@ -66,7 +66,13 @@ std::string ignored_summary(const std::set<std::string>& keywords) {
 
 class SpacarReader {
  public:
-  SpacarReader(std::string path, const std::string& text) : path_(std::move(path)) { tokenize(text); }
+  SpacarReader(std::string path, const std::string& text, std::size_t max_bytes) : path_(std::move(path)) {
+    if (text.size() > max_bytes)
+      throw InputError({path_, 0, 0}, fmt::format("the input is larger than the {} limit on model files: the command's "
+                                                  "--max-input-size SIZE raises it (e.g. 1GiB)",
+                                                  size_text(max_bytes)));
+    tokenize(text);
+  }
 
   SpacarImport read() {
     // SPACAR files have no title: the model is named after the file.
@@ -100,8 +106,6 @@ class SpacarReader {
   }
 
   void tokenize(const std::string& text) {
-    if (text.size() > kMaxTextFileBytes)
-      throw InputError({path_, 1, 1}, fmt::format("file is larger than the {} MiB limit", kMaxTextFileBytes >> 20));
     bool ended = false;
     int line = 0;
     std::size_t start = 0;
@@ -835,8 +839,12 @@ std::string spacar_joint_node_name(long position, long orientation) {
   return fmt::format("{}r{}", position, orientation);
 }
 
-SpacarImport parse_spacar(const std::string& path, const std::string& text) { return SpacarReader(path, text).read(); }
+SpacarImport parse_spacar(const std::string& path, const std::string& text, const ImportOptions& options) {
+  return SpacarReader(path, text, options.max_input_bytes).read();
+}
 
-SpacarImport read_spacar(const std::string& path) { return parse_spacar(path, read_text_file(path)); }
+SpacarImport read_spacar(const std::string& path, const ImportOptions& options) {
+  return parse_spacar(path, read_text_file(path, options.max_input_bytes), options);
+}
 
 }  // namespace kinestat::io

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "kinestat/framework/framework_model.hpp"
+#include "kinestat/io/network_import.hpp"
 
 namespace kinestat::io {
 
@@ -20,11 +21,14 @@ struct SpacarImport {
   std::vector<std::string> notices;
 };
 
-/// Reads SPACAR input `text` that came from `path` (used in messages only).
-SpacarImport parse_spacar(const std::string& path, const std::string& text);
+/// Reads SPACAR input `text` that came from `path` (used in messages only). Text longer than
+/// `options.max_input_bytes` (the command's --max-input-size) is refused with an InputError
+/// naming the file and the limit; the other options do not apply to SPACAR files.
+SpacarImport parse_spacar(const std::string& path, const std::string& text, const ImportOptions& options = {});
 
-/// Reads the SPACAR input file at `path`. Throws InputError if it cannot be read.
-SpacarImport read_spacar(const std::string& path);
+/// Reads the SPACAR input file at `path`, at most `options.max_input_bytes` of it. Throws
+/// InputError if it cannot be read or is larger.
+SpacarImport read_spacar(const std::string& path, const ImportOptions& options = {});
 
 /// Name of the kinestat node for SPACAR position node `position` ("3"), and of the extra
 /// node that carries orientation node `orientation` at a position whose first orientation
