@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // `kinestat analyze --backend petsc FILE` (run under mpirun): a framework's or a coupling
 // network's counts and rank evidence decided by the distributed path (src/kinestat/distributed,
-// docs/scaling.md), reported by the serial sparse path's writers. Every process reads the
-// model itself and takes part in the decision; rank 0 writes the report. Built into
+// docs/scaling.md), reported by the serial sparse path's writers. Rank 0 reads the model,
+// builds the matrix and sends every other process its rows; all take part in the decision;
+// rank 0 writes the report. At one process MPI is not initialised at all. Built into
 // `kinestat-mpi` only, to which `kinestat` hands such a command over (petsc_handover.cpp), so
 // that no other command loads MPI. Nothing here runs, and MPI is never initialised,
 // unless `--backend petsc` is given.
@@ -28,7 +29,7 @@ namespace kinestat::cli {
 
 namespace {
 
-// The model as every process reads it: a framework (kinestat YAML / JSON or SPACAR) or a
+// The model as rank 0 reads it: a framework (kinestat YAML / JSON or SPACAR) or a
 // coupling network (kinestat YAML / JSON, URDF, SDFormat, MJCF).
 struct PetscModel {
   std::optional<framework::FrameworkModel> framework;
@@ -94,6 +95,7 @@ nlohmann::ordered_json backend_json(const pipeline::DistributedAnalysis& analysi
   nlohmann::ordered_json measured;
   measured["seconds"] = {{"threshold", b.threshold_seconds}, {"interiors", b.interior_seconds}, {"interface", b.interface_seconds}};
   measured["peak_memory_bytes"] = b.peak_memory;
+  measured["peak_before_decision_bytes"] = b.peak_before_decision;
   measured["factor_memory_bytes"] = b.factor_memory;
   j["measured"] = measured;
   return j;
@@ -107,14 +109,15 @@ std::string backend_text(const pipeline::DistributedAnalysis& analysis, bool tim
       b.processes, fmt::join(b.interior_ranks, " + "), b.interface_columns, b.interface_rows, b.interface_rank,
       fmt::join(analysis.not_computed, "; "));
   if (!timings) return text;
-  std::string peak, factor;
+  std::string peak, before, factor;
   for (std::size_t p = 0; p < b.peak_memory.size(); ++p) {
     peak += fmt::format("{}{:.0f} MB", p == 0 ? "" : ", ", static_cast<double>(b.peak_memory[p]) / 1e6);
+    before += fmt::format("{}{:.0f} MB", p == 0 ? "" : ", ", static_cast<double>(b.peak_before_decision[p]) / 1e6);
     factor += fmt::format("{}{:.0f} MB", p == 0 ? "" : ", ", static_cast<double>(b.factor_memory[p]) / 1e6);
   }
   return text + fmt::format("  time: threshold {:.2f} s, interiors {:.2f} s (slowest process), interface {:.2f} s; peak memory "
-                            "per process {}; SuiteSparse's factor memory per process {}\n",
-                            b.threshold_seconds, b.interior_seconds, b.interface_seconds, peak, factor);
+                            "per process {} (before the decision: {}); SuiteSparse's factor memory per process {}\n",
+                            b.threshold_seconds, b.interior_seconds, b.interface_seconds, peak, before, factor);
 }
 
 // Replaces the first `from` in `text` by `to` (the serial reports' wording of their method).
@@ -158,39 +161,50 @@ void report_network(const CommonOptions& options, const io::LoadedNetwork& loade
   emit(options, text + backend_text(analysis, options.timings));
 }
 
-// Reads the model on this process (notices and errors from rank 0 only); the exit code agreed by
-// all processes (the largest), so that every process stops together on bad input.
-int read_everywhere(const CommonOptions& options, const distributed::MpiSession& session, PetscModel& model) {
+// Reads the model on rank 0 alone (the other processes receive their rows of the matrix from
+// it); the exit code agreed by all processes, so that every process stops together on bad input.
+int read_on_root(const CommonOptions& options, const distributed::MpiSession& session, PetscModel& model) {
   int code = 0;
-  std::string message;
-  const bool quiet = session.rank() != 0;
-  if (quiet) std::cerr.setstate(std::ios::failbit);  // the notices once, from rank 0
-  try {
-    reject_petsc_options(options);
-    model = read_petsc_model(options);
-  } catch (const io::InputError& error) {
-    message = error.what();
-    code = error.exit_code();
-  } catch (const Error& error) {
-    message = std::string("kinestat: error: ") + error.what();
-    code = error.exit_code();
-  } catch (const std::bad_alloc&) {
-    message = fmt::format("kinestat: error: out of memory reading the model on process {} of {}", session.rank(), session.size());
-    code = 3;
+  if (session.rank() == 0) {
+    try {
+      reject_petsc_options(options);
+      model = read_petsc_model(options);
+    } catch (const io::InputError& error) {
+      std::cerr << error.what() << '\n';
+      code = error.exit_code();
+    } catch (const Error& error) {
+      std::cerr << "kinestat: error: " << error.what() << '\n';
+      code = error.exit_code();
+    } catch (const std::bad_alloc&) {
+      std::cerr << "kinestat: error: out of memory reading the model on process 0 of " << session.size() << '\n';
+      code = 3;
+    }
   }
-  if (quiet) std::cerr.clear();
-  int agreed = 0;
-  MPI_Allreduce(&code, &agreed, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
-  if (code != 0 && (session.rank() == 0 || message.find("out of memory") != std::string::npos)) std::cerr << message << '\n';
-  return agreed;
+  if (session.initialised()) MPI_Bcast(&code, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  return code;
+}
+
+// A process other than 0: its part of the decision (the rows rank 0 sends it); its exit code.
+int decide_as_worker(const distributed::MpiSession& session) {
+  try {
+    return distributed::decomposed_rank({}, {}).cancelled;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "kinestat: error: out of memory on process " << session.rank() << " of " << session.size()
+              << " (this process's part does not fit: run on more processes or machines)\n";
+  } catch (const std::exception& error) {
+    std::cerr << "kinestat: error: " << error.what() << " (process " << session.rank() << ")\n";
+  }
+  distributed::MpiSession::abort(3);
 }
 
 }  // namespace
 
 int run_petsc_analysis(const CommonOptions& options) {
-  const distributed::MpiSession session;
+  // At one process MPI is not started: the decision is the serial one (docs/scaling.md).
+  const distributed::MpiSession session(distributed::MpiStart::unless_alone);
   PetscModel model;
-  if (const int code = read_everywhere(options, session, model); code != 0) return code;
+  if (const int code = read_on_root(options, session, model); code != 0) return code;
+  if (session.rank() != 0) return decide_as_worker(session);
   const Tolerances tolerances = Tolerances::with_rank(options.tolerance);
   pipeline::DistributedFrameworkAnalysis framework_analysis;
   pipeline::DistributedNetworkAnalysis network_analysis;
@@ -203,21 +217,21 @@ int run_petsc_analysis(const CommonOptions& options) {
       network_analysis = pipeline::analyse_network_distributed(model.network->model, tolerances);
     }
   } catch (const network::ModelError& error) {
-    // The same on every process (each built K from the same model): no collective call was made.
-    if (session.rank() == 0) std::cerr << io::locate(error, *model.network, model.path).what() << '\n';
+    // Thrown before the decision began: the other processes are told to stop (exit 2 on all).
+    distributed::cancel_decomposed_rank(2);
+    std::cerr << io::locate(error, *model.network, model.path).what() << '\n';
     return 2;
   } catch (const Error& error) {
     std::cerr << "kinestat: error: " << error.what() << '\n';
     distributed::MpiSession::abort(error.exit_code());
   } catch (const std::bad_alloc&) {
-    std::cerr << "kinestat: error: out of memory on process " << session.rank() << " of " << session.size()
+    std::cerr << "kinestat: error: out of memory on process 0 of " << session.size()
               << " (this process's part does not fit: run on more processes or machines)\n";
     distributed::MpiSession::abort(3);
   } catch (const std::exception& error) {
-    std::cerr << "kinestat: error: " << error.what() << " (process " << session.rank() << ")\n";
+    std::cerr << "kinestat: error: " << error.what() << " (process 0)\n";
     distributed::MpiSession::abort(3);
   }
-  if (session.rank() != 0) return 0;
   if (model.framework) report_framework(options, *model.framework, framework_analysis);
   else report_network(options, *model.network, network_analysis);
   return 0;

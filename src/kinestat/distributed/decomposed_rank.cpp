@@ -5,10 +5,15 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
+#include <cstdint>
 #include <numeric>
+#include <type_traits>
+#include <utility>
 
 #include "kinestat/distributed/column_partition.hpp"
 #include "kinestat/distributed/interior_reduction.hpp"
+#include "kinestat/distributed/mpi_session.hpp"
 #include "kinestat/distributed/process_memory.hpp"
 #include "kinestat/linalg/sparse_rank.hpp"
 
@@ -56,28 +61,100 @@ LocalBlocks local_blocks(const Eigen::SparseMatrix<double>& b, const ColumnParti
   return out;
 }
 
-// The threshold fields of the serial rule, computed on rank 0 and broadcast.
-linalg::RankDecision broadcast_threshold(const Eigen::SparseMatrix<double>& a, const linalg::RankTolerance& tolerance,
-                                         int rank) {
+// What rank 0 tells every process before the decision: go (0) or cancelled (rank 0's exit
+// code), the matrix's shape and side, and the serial rule's threshold fields.
+struct DecisionHeader {
+  std::array<long long, 4> integers{};  // status, rows, cols, transpose
+  std::array<double, 4> reals{};        // largest, threshold, rounding_level, input_rounding
+};
+
+DecisionHeader broadcast_header(DecisionHeader header) {
+  MPI_Bcast(header.integers.data(), static_cast<int>(header.integers.size()), MPI_LONG_LONG, 0, MPI_COMM_WORLD);
+  MPI_Bcast(header.reals.data(), static_cast<int>(header.reals.size()), MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  return header;
+}
+
+// Rank 0's header: the threshold of `a` by the serial rule.
+DecisionHeader root_header(const Eigen::SparseMatrix<double>& a, const linalg::RankTolerance& tolerance, bool transpose) {
+  const linalg::RankDecision d = linalg::sparse_rank_threshold(a, tolerance);
+  return {{0, a.rows(), a.cols(), transpose ? 1 : 0}, {d.largest, d.threshold, d.rounding_level, d.input_rounding}};
+}
+
+linalg::RankDecision decision_of(const DecisionHeader& header) {
   linalg::RankDecision decision;
-  if (rank == 0) decision = linalg::sparse_rank_threshold(a, tolerance);
-  std::array<double, 4> fields{decision.largest, decision.threshold, decision.rounding_level, decision.input_rounding};
-  MPI_Bcast(fields.data(), static_cast<int>(fields.size()), MPI_DOUBLE, 0, MPI_COMM_WORLD);
-  decision.largest = fields[0];
-  decision.threshold = fields[1];
-  decision.rounding_level = fields[2];
-  decision.input_rounding = fields[3];
-  decision.rows = a.rows();
-  decision.cols = a.cols();
+  decision.rows = static_cast<Eigen::Index>(header.integers[1]);
+  decision.cols = static_cast<Eigen::Index>(header.integers[2]);
+  decision.largest = header.reals[0];
+  decision.threshold = header.reals[1];
+  decision.rounding_level = header.reals[2];
+  decision.input_rounding = header.reals[3];
   decision.sparse = true;
   return decision;
 }
 
-// Every process's interface block (global interface columns) stacked on rank 0, under the
-// interface-only rows of `b`; empty elsewhere.
-Eigen::SparseMatrix<double> gather_interface(const Eigen::SparseMatrix<double>& b, const ColumnPartition& partition,
-                                             const std::vector<Eigen::Index>& gamma, const LocalBlocks& local,
-                                             const Eigen::SparseMatrix<double>& block, int rank, int size) {
+// Rank 0's rows of `b` with entries in interface columns only, in their order, on the interface
+// columns (global interface numbering): the stacked interface's last rows.
+Eigen::SparseMatrix<double> interface_only_rows(const Eigen::SparseMatrix<double>& b, const ColumnPartition& partition,
+                                                const std::vector<Eigen::Index>& gamma) {
+  std::vector<Eigen::Index> interface_row(partition.row_part.size(), -1);
+  Eigen::Index rows = 0;
+  for (std::size_t i = 0; i < interface_row.size(); ++i)
+    if (partition.row_part[i] == ColumnPartition::kInterface) interface_row[i] = rows++;
+  std::vector<Eigen::Triplet<double>> entries;
+  for (Eigen::Index j = 0; j < b.outerSize(); ++j) {
+    if (partition.column_part[static_cast<std::size_t>(j)] != ColumnPartition::kInterface) continue;
+    for (Eigen::SparseMatrix<double>::InnerIterator it(b, j); it; ++it)
+      if (const Eigen::Index row = interface_row[static_cast<std::size_t>(it.row())]; row >= 0)
+        entries.emplace_back(row, gamma[static_cast<std::size_t>(j)], it.value());
+  }
+  Eigen::SparseMatrix<double> out(rows, partition.interface_columns);
+  out.setFromTriplets(entries.begin(), entries.end());
+  return out;
+}
+
+// A compressed sparse matrix sent whole to process `to` (its shape, then its three arrays).
+void send_matrix(const Eigen::SparseMatrix<double>& m, int to) {
+  static_assert(std::is_same_v<Eigen::SparseMatrix<double>::StorageIndex, int>);
+  const std::array<long long, 3> shape{m.rows(), m.cols(), m.nonZeros()};
+  MPI_Send(shape.data(), 3, MPI_LONG_LONG, to, 0, MPI_COMM_WORLD);
+  MPI_Send(m.outerIndexPtr(), static_cast<int>(m.cols() + 1), MPI_INT, to, 0, MPI_COMM_WORLD);
+  MPI_Send(m.innerIndexPtr(), static_cast<int>(m.nonZeros()), MPI_INT, to, 0, MPI_COMM_WORLD);
+  MPI_Send(m.valuePtr(), static_cast<int>(m.nonZeros()), MPI_DOUBLE, to, 0, MPI_COMM_WORLD);
+}
+
+Eigen::SparseMatrix<double> receive_matrix(int from) {
+  std::array<long long, 3> shape{};
+  MPI_Recv(shape.data(), 3, MPI_LONG_LONG, from, 0, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  Eigen::SparseMatrix<double> m(static_cast<Eigen::Index>(shape[0]), static_cast<Eigen::Index>(shape[1]));
+  m.resizeNonZeros(static_cast<Eigen::Index>(shape[2]));
+  MPI_Recv(m.outerIndexPtr(), static_cast<int>(shape[1] + 1), MPI_INT, from, 0, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  MPI_Recv(m.innerIndexPtr(), static_cast<int>(shape[2]), MPI_INT, from, 0, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  MPI_Recv(m.valuePtr(), static_cast<int>(shape[2]), MPI_DOUBLE, from, 0, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  return m;
+}
+
+void send_blocks(const LocalBlocks& blocks, int to) {
+  send_matrix(blocks.interior, to);
+  send_matrix(blocks.interface, to);
+  const std::vector<long long> global(blocks.interface_global.begin(), blocks.interface_global.end());
+  MPI_Send(global.data(), static_cast<int>(global.size()), MPI_LONG_LONG, to, 0, MPI_COMM_WORLD);
+}
+
+LocalBlocks receive_blocks() {
+  LocalBlocks out;
+  out.interior = receive_matrix(0);
+  out.interface = receive_matrix(0);
+  std::vector<long long> global(static_cast<std::size_t>(out.interface.cols()));
+  MPI_Recv(global.data(), static_cast<int>(global.size()), MPI_LONG_LONG, 0, 0, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  out.interface_global.assign(global.begin(), global.end());
+  return out;
+}
+
+// Every process's interface block (global interface columns) stacked on rank 0, above rank 0's
+// interface-only rows; empty elsewhere.
+Eigen::SparseMatrix<double> gather_interface(const LocalBlocks& local, const Eigen::SparseMatrix<double>& block,
+                                             const Eigen::SparseMatrix<double>& interface_only, Eigen::Index interface_columns,
+                                             int rank, int size) {
   std::vector<long long> rows, cols;
   std::vector<double> values;
   for (Eigen::Index k = 0; k < block.outerSize(); ++k)
@@ -108,17 +185,10 @@ Eigen::SparseMatrix<double> gather_interface(const Eigen::SparseMatrix<double>& 
       entries.emplace_back(row_offset + all_rows[k], all_cols[k], all_values[k]);
     row_offset += counts[2 * static_cast<std::size_t>(p) + 1];
   }
-  // The rows of b with entries in interface columns only, in their order.
-  std::vector<Eigen::Index> interface_row(partition.row_part.size(), -1);
-  for (std::size_t i = 0; i < interface_row.size(); ++i)
-    if (partition.row_part[i] == ColumnPartition::kInterface) interface_row[i] = row_offset++;
-  for (Eigen::Index j = 0; j < b.outerSize(); ++j) {
-    if (partition.column_part[static_cast<std::size_t>(j)] != ColumnPartition::kInterface) continue;
-    for (Eigen::SparseMatrix<double>::InnerIterator it(b, j); it; ++it)
-      if (const Eigen::Index row = interface_row[static_cast<std::size_t>(it.row())]; row >= 0)
-        entries.emplace_back(row, gamma[static_cast<std::size_t>(j)], it.value());
-  }
-  Eigen::SparseMatrix<double> stacked(row_offset, partition.interface_columns);
+  for (Eigen::Index k = 0; k < interface_only.outerSize(); ++k)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(interface_only, k); it; ++it)
+      entries.emplace_back(row_offset + it.row(), it.col(), it.value());
+  Eigen::SparseMatrix<double> stacked(row_offset + interface_only.rows(), interface_columns);
   stacked.setFromTriplets(entries.begin(), entries.end());
   return stacked;
 }
@@ -138,16 +208,36 @@ std::vector<std::size_t> gather_sizes(std::size_t mine, int rank, int size) {
   return {all.begin(), all.end()};
 }
 
-// P ≥ 2: the decomposition itself (the threshold already in `out.decision`).
-void decide_decomposed(const Eigen::SparseMatrix<double>& b, DecomposedRank& out, int rank, std::size_t& factor_memory) {
-  const double start = MPI_Wtime();
-  const ColumnPartition partition = partition_columns(b, out.processes);
+// Rank 0 at P ≥ 2: partitions the columns of `b` (released here), sends every other process
+// its blocks, and keeps its own and the interface-only rows.
+struct RootShare {
+  LocalBlocks local;
+  Eigen::SparseMatrix<double> interface_only;
+  Eigen::Index interface_columns = 0;
+};
+
+RootShare scatter_blocks(Eigen::SparseMatrix<double> b, int size) {
+  const ColumnPartition partition = partition_columns(b, size);
   std::vector<Eigen::Index> gamma(partition.column_part.size(), -1);
   Eigen::Index interface = 0;
   for (std::size_t j = 0; j < gamma.size(); ++j)
     if (partition.column_part[j] == ColumnPartition::kInterface) gamma[j] = interface++;
-  const LocalBlocks local = local_blocks(b, partition, rank, gamma);
-  const InteriorReduction reduced = reduce_interior(local.interior, local.interface, out.decision.threshold);
+  // One block at a time, so that rank 0 holds b and one process's rows at most.
+  for (int p = 1; p < size; ++p) send_blocks(local_blocks(b, partition, p, gamma), p);
+  return {local_blocks(b, partition, 0, gamma), interface_only_rows(b, partition, gamma), partition.interface_columns};
+}
+
+// P ≥ 2: the decomposition itself (the threshold already in `out.decision`); `b` is the matrix
+// factored on rank 0 and empty elsewhere.
+void decide_decomposed(Eigen::SparseMatrix<double> b, DecomposedRank& out, int rank, std::size_t& factor_memory) {
+  const double start = MPI_Wtime();
+  RootShare share;
+  if (rank == 0) share = scatter_blocks(std::move(b), out.processes);
+  else share.local = receive_blocks();
+  static_assert(sizeof(Eigen::Index) == sizeof(std::int64_t));
+  Eigen::Index interface_columns = share.interface_columns;
+  MPI_Bcast(&interface_columns, 1, MPI_INT64_T, 0, MPI_COMM_WORLD);
+  const InteriorReduction reduced = reduce_interior(share.local.interior, share.local.interface, out.decision.threshold);
   factor_memory = reduced.peak_memory;
   const double interior_seconds = MPI_Wtime() - start;
   MPI_Reduce(&interior_seconds, &out.interior_seconds, 1, MPI_DOUBLE, MPI_MAX, 0, MPI_COMM_WORLD);
@@ -161,8 +251,8 @@ void decide_decomposed(const Eigen::SparseMatrix<double>& b, DecomposedRank& out
     MPI_Allgather(&interior_kept, 1, MPI_DOUBLE, kept.data(), 1, MPI_DOUBLE, MPI_COMM_WORLD);
     interior_kept = std::accumulate(kept.begin(), kept.end(), 0.0, smaller_kept);
   }
-  const Eigen::SparseMatrix<double> stacked =
-      gather_interface(b, partition, gamma, local, reduced.interface_block, rank, out.processes);
+  const Eigen::SparseMatrix<double> stacked = gather_interface(share.local, reduced.interface_block, share.interface_only,
+                                                               interface_columns, rank, out.processes);
   // rank 0 decides the interface; [rank, smallest kept bits] broadcast.
   std::array<double, 4> root{0.0, 0.0, 0.0, 0.0};
   if (rank == 0) {
@@ -174,40 +264,78 @@ void decide_decomposed(const Eigen::SparseMatrix<double>& b, DecomposedRank& out
   }
   MPI_Bcast(root.data(), static_cast<int>(root.size()), MPI_DOUBLE, 0, MPI_COMM_WORLD);
   out.interface_rank = static_cast<Eigen::Index>(root[0]);
-  out.interface_columns = partition.interface_columns;
+  out.interface_columns = interface_columns;
   out.interface_rows = static_cast<Eigen::Index>(root[2]);
   out.interface_seconds = root[3];
   const Eigen::Index rank_total = std::accumulate(out.interior_ranks.begin(), out.interior_ranks.end(), out.interface_rank);
   linalg::record_rank(out.decision, linalg::SparseRankCount{rank_total, smaller_kept(interior_kept, root[1]), 0});
 }
 
+// One process (P = 1, or MPI not initialised): the serial decision itself.
+void decide_alone(const Eigen::SparseMatrix<double>& a, const linalg::RankTolerance& tolerance,
+                  const std::vector<Eigen::Index>& column_groups, FactoredSide side, DecomposedRank& out,
+                  std::size_t& factor_memory) {
+  if (side == FactoredSide::taller || a.rows() == 0 || a.cols() == 0) {
+    out.decision = linalg::sparse_numerical_rank(a, tolerance, &factor_memory, column_groups);
+  } else {  // a network's rule: the threshold of K, the counts-only QR of Kᵀ
+    out.decision = linalg::sparse_rank_threshold(a, tolerance);
+    const linalg::SparseRankCount count =
+        linalg::sparse_qr_rank(Eigen::SparseMatrix<double>(a.transpose()), out.decision.threshold);
+    factor_memory = count.peak_memory;
+    linalg::record_rank(out.decision, count);
+  }
+  out.interior_ranks = {out.decision.rank};
+}
+
 }  // namespace
 
-DecomposedRank decomposed_rank(const Eigen::SparseMatrix<double>& a, const linalg::RankTolerance& tolerance,
+DecomposedRank decomposed_rank(Eigen::SparseMatrix<double> a, const linalg::RankTolerance& tolerance,
                                const std::vector<Eigen::Index>& column_groups, FactoredSide side) {
-  int rank = 0;
   DecomposedRank out;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  MPI_Comm_size(MPI_COMM_WORLD, &out.processes);
+  const int rank = world_rank();
+  out.processes = world_size();
   std::size_t factor_memory = 0;
-  const double start = MPI_Wtime();
+  const std::size_t before = peak_resident_bytes();
+  const double start = out.processes == 1 ? 0.0 : MPI_Wtime();
+  if (out.processes == 1) {
+    const auto clock = std::chrono::steady_clock::now();
+    decide_alone(a, tolerance, column_groups, side, out, factor_memory);
+    out.interior_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
+    out.peak_memory = {peak_resident_bytes()};
+    out.peak_before_decision = {before};
+    out.factor_memory = {factor_memory};
+    return out;
+  }
   const bool transpose = side == FactoredSide::transposed || a.rows() < a.cols();
-  if (a.rows() == 0 || a.cols() == 0 || (out.processes == 1 && side == FactoredSide::taller)) {
-    // Nothing to split: the serial decision itself (every process computes it when the matrix
-    // is empty, which costs nothing).
-    out.decision = linalg::sparse_numerical_rank(a, tolerance, &factor_memory, column_groups);
-    out.interior_ranks.assign(static_cast<std::size_t>(out.processes), 0);
-    out.interior_ranks[0] = out.decision.rank;
-    out.interior_seconds = MPI_Wtime() - start;
+  const DecisionHeader header = broadcast_header(rank == 0 ? root_header(a, tolerance, transpose) : DecisionHeader{});
+  if (header.integers[0] != 0) {
+    out.cancelled = static_cast<int>(header.integers[0]);
+    return out;
+  }
+  out.decision = decision_of(header);
+  out.threshold_seconds = MPI_Wtime() - start;
+  if (out.decision.rows == 0 || out.decision.cols == 0) {
+    out.interior_ranks.assign(static_cast<std::size_t>(out.processes), 0);  // nothing to split
+  } else if (rank != 0) {
+    decide_decomposed({}, out, rank, factor_memory);
+  } else if (header.integers[3] != 0) {
+    Eigen::SparseMatrix<double> b = a.transpose();
+    a = Eigen::SparseMatrix<double>();  // only the factored side is kept
+    decide_decomposed(std::move(b), out, rank, factor_memory);
   } else {
-    out.decision = broadcast_threshold(a, tolerance, rank);
-    out.threshold_seconds = MPI_Wtime() - start;
-    const Eigen::SparseMatrix<double> b = transpose ? Eigen::SparseMatrix<double>(a.transpose()) : a;
-    decide_decomposed(b, out, rank, factor_memory);
+    decide_decomposed(std::move(a), out, rank, factor_memory);
   }
   out.peak_memory = gather_sizes(peak_resident_bytes(), rank, out.processes);
+  out.peak_before_decision = gather_sizes(before, rank, out.processes);
   out.factor_memory = gather_sizes(factor_memory, rank, out.processes);
   return out;
+}
+
+void cancel_decomposed_rank(int exit_code) {
+  if (world_size() == 1) return;
+  DecisionHeader header;
+  header.integers[0] = exit_code;
+  broadcast_header(header);
 }
 
 }  // namespace kinestat::distributed

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The rank of a large sparse matrix decided on many processes by domain decomposition with the
-// serial sparse QR (docs/scaling.md, "The distributed rank decision"): the columns are split
-// into one interior per process and an interface (partition_columns); each process reduces
+// serial sparse QR (docs/scaling.md, "The distributed rank decision"): rank 0 holds the matrix,
+// splits its columns into one interior per process and an interface (partition_columns) and
+// sends each process only the rows that touch its interior; each process reduces
 // the rows that touch its interior with SuiteSparseQR at the serial rule's absolute threshold
 // (reduce_interior) and sends rank 0 a block on the interface of at most its interface
 // columns' rows; rank 0 decides the rank of those blocks stacked with the interface-only rows
@@ -34,9 +35,13 @@ struct DecomposedRank {
   /// Wall time, seconds: σ_max and the threshold (rank 0), the slowest process's interior
   /// (partition, assembly, factorisation, compression), the interface's factorisation on rank 0.
   double threshold_seconds = 0.0, interior_seconds = 0.0, interface_seconds = 0.0;
-  /// Per process (index = MPI rank; rank 0 only): peak resident memory and SuiteSparse's own
-  /// count of its factorisations' peak, bytes.
-  std::vector<std::size_t> peak_memory, factor_memory;
+  /// Per process (index = MPI rank; rank 0 only): peak resident memory, the peak when the
+  /// decision began (reading the model and building the matrix: rank 0 only, since the others
+  /// receive their rows), and SuiteSparse's own count of its factorisations' peak, bytes.
+  std::vector<std::size_t> peak_memory, peak_before_decision, factor_memory;
+  /// On processes other than 0: the exit code rank 0 passed to cancel_decomposed_rank when it
+  /// could not build the matrix (nothing was decided); 0 otherwise.
+  int cancelled = 0;
 };
 
 /// Which matrix is factored: rank(A) = rank(Aᵀ), but which one a rank-revealing QR factors
@@ -46,15 +51,23 @@ enum class FactoredSide {
   transposed,  ///< Aᵀ always (a network's rank K from the QR of Kᵀ, network::analyse_network_sparse)
 };
 
-/// Decides rank(a) on all processes of MPI_COMM_WORLD (collective). Every process passes the
-/// whole matrix `a` (each builds it from the model itself) and the same `tolerance`; the
-/// threshold is the serial rule's (linalg::sparse_rank_threshold, computed on rank 0 and
-/// broadcast). `column_groups` (a framework's node of each coordinate) is passed to the serial
-/// decision at P = 1, which is then linalg::sparse_numerical_rank itself (FactoredSide::taller). Throws std::bad_alloc
-/// when memory runs out and std::runtime_error when SuiteSparseQR fails; the caller aborts the
-/// run (the other processes would wait in a collective call).
-DecomposedRank decomposed_rank(const Eigen::SparseMatrix<double>& a, const linalg::RankTolerance& tolerance,
+/// Decides rank(a) on all processes of MPI_COMM_WORLD (collective; without MPI initialised,
+/// the one process alone). Only rank 0's `a` and `tolerance` are read (the other processes may
+/// pass an empty matrix and a default tolerance): rank 0 computes the serial rule's threshold
+/// (linalg::sparse_rank_threshold), partitions the columns and sends every other process the
+/// rows that touch its interior, then releases `a` (taken by value: pass it with std::move so
+/// that rank 0 does not keep two copies). At one process the decision is the serial one:
+/// linalg::sparse_numerical_rank with `column_groups` (a framework's node of each coordinate)
+/// for FactoredSide::taller, the counts-only QR of aᵀ for FactoredSide::transposed. Throws
+/// std::bad_alloc when memory runs out and std::runtime_error when SuiteSparseQR fails; the
+/// caller aborts the run (the other processes would wait in a collective call).
+DecomposedRank decomposed_rank(Eigen::SparseMatrix<double> a, const linalg::RankTolerance& tolerance,
                                const std::vector<Eigen::Index>& column_groups = {},
                                FactoredSide side = FactoredSide::taller);
+
+/// On rank 0 instead of decomposed_rank, when the matrix cannot be built (bad model): the other
+/// processes' decomposed_rank returns at once with DecomposedRank::cancelled = `exit_code`.
+/// Collective; does nothing without MPI or at one process.
+void cancel_decomposed_rank(int exit_code);
 
 }  // namespace kinestat::distributed

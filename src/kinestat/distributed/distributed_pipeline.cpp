@@ -1,22 +1,16 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/distributed/distributed_pipeline.hpp"
 
-#include <mpi.h>
-
 #include <algorithm>
+#include <utility>
 
 #include "kinestat/design/framework_verdict.hpp"
 #include "kinestat/design/sparse_network_verdict.hpp"
+#include "kinestat/distributed/mpi_session.hpp"
 
 namespace kinestat::pipeline {
 
 namespace {
-
-int process_rank() {
-  int rank = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  return rank;
-}
 
 // The node of each column of D(c), the serial counts' column groups (framework_analysis.cpp).
 std::vector<Eigen::Index> framework_column_nodes(const framework::FrameworkResult& result) {
@@ -42,8 +36,8 @@ DistributedFrameworkAnalysis analyse_framework_distributed(const framework::Fram
                                                            const framework::AnalysisOptions& options) {
   DistributedFrameworkAnalysis out;
   framework::FrameworkResult& result = out.result;
-  const Eigen::SparseMatrix<double> jacobian = framework::prepare_analysis(model, result);
-  out.backend = distributed::decomposed_rank(jacobian, framework_rank_tolerance(model, result.length, options.tolerances),
+  Eigen::SparseMatrix<double> jacobian = framework::prepare_analysis(model, result);
+  out.backend = distributed::decomposed_rank(std::move(jacobian), framework_rank_tolerance(model, result.length, options.tolerances),
                                              framework_column_nodes(result));
   result.method = framework::RankMethod::sparse_qr;  // the compact report of the serial sparse counts
   result.decision = out.backend.decision;
@@ -53,7 +47,7 @@ DistributedFrameworkAnalysis analyse_framework_distributed(const framework::Fram
   result.factor_memory = out.backend.factor_memory.empty() ? 0 : *std::max_element(out.backend.factor_memory.begin(),
                                                                                     out.backend.factor_memory.end());
   out.not_computed = {"modes and stress states", "release proposal"};
-  if (process_rank() == 0) {
+  if (distributed::world_rank() == 0) {
     framework::AnalysisOptions verdict_options = options;
     verdict_options.vectors = false;
     out.verdict = design::framework_verdict(model, result, verdict_options);
@@ -76,7 +70,7 @@ DistributedNetworkAnalysis analyse_network_distributed(const network::Model& mod
   network::sparse_network_in_user_frame(model.space, r);  // one frame for every path
   out.not_computed = {"motions and self-stresses (basis vectors)", "couplings that carry a self-stress and that move",
                       "pair freedoms"};
-  if (process_rank() != 0) return out;
+  if (distributed::world_rank() != 0) return out;
   out.verdict = design::sparse_network_verdict(model, r, tolerances);
   // The sparse verdict's note says where the redundancy is named; here nothing is.
   out.verdict.note = "the distributed path decides the counts only: no states, no couplings named under 'where', no change "

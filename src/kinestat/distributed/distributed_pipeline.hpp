@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The pipeline of the distributed path (`kinestat analyze --backend petsc`, issue 36's "one
-// result shape per kind for every path"): every process reads the model and builds the
-// matrix the serial sparse path builds (D(c) of a framework, K of a coupling network), the
-// rank is decided by decomposed_rank, and the result is the serial sparse path's own type in
+// result shape per kind for every path"): rank 0 reads the model and builds the matrix the
+// serial sparse path builds (D(c) of a framework, K of a coupling network), the rank is decided
+// by decomposed_rank (which sends the other processes their rows), and the result is the serial sparse path's own type in
 // the user frame, so that the serial report writers format it. It lives beside the backend
 // (kinestat_petsc) rather than in pipeline/, because it calls MPI. Counts and rank evidence
 // only: the method gives no null vectors, so modes, stress states, supports and pair freedoms
@@ -46,14 +46,17 @@ struct DistributedNetworkAnalysis : DistributedAnalysis {
   design::Verdict verdict;  ///< design::sparse_network_verdict of the counts (rank 0 only)
 };
 
-/// Collective over MPI_COMM_WORLD: every process passes the same model (each reads it itself)
-/// and options; `options.tolerances.rank` is the user's relative tolerance (unset: the serial
-/// sparse rule). Throws as decomposed_rank.
+/// Collective over MPI_COMM_WORLD: the model and options of rank 0 are the ones decided (other
+/// processes may call this with the same model, as the tests do, or take part through
+/// distributed::decomposed_rank with an empty matrix, as the command does, without reading the
+/// model); `options.tolerances.rank` is the user's relative tolerance (unset: the serial sparse
+/// rule). The counts are on every process that called this. Throws as decomposed_rank.
 DistributedFrameworkAnalysis analyse_framework_distributed(const framework::FrameworkModel& model,
                                                            const framework::AnalysisOptions& options);
 
-/// Collective over MPI_COMM_WORLD, as above; throws network::ModelError (the same on every
-/// process) as network::build_body_twist_system does, before any collective call.
+/// Collective over MPI_COMM_WORLD, as above; throws network::ModelError as
+/// network::build_body_twist_system does, before any collective call (rank 0 then calls
+/// distributed::cancel_decomposed_rank so that the other processes return).
 DistributedNetworkAnalysis analyse_network_distributed(const network::Model& model, const Tolerances& tolerances);
 
 }  // namespace kinestat::pipeline

@@ -8,27 +8,51 @@
 
 namespace kinestat::distributed {
 
-/// Initialises MPI on construction and finalises it on destruction. Collective over
-/// MPI_COMM_WORLD; at most one per process.
+/// Whether a session initialises MPI when this process is the only one of its run.
+enum class MpiStart {
+  always,        ///< MPI_Init in every case (the mpi tests, which call MPI themselves)
+  unless_alone,  ///< not when the launcher's environment says one process (or no launcher at
+                 ///< all: a singleton); at P = 1 the decision is the serial one, and OpenMPI's
+                 ///< MPI_Init alone costs about 0.5 s of wall time (docs/scaling.md)
+};
+
+/// Initialises MPI on construction (see MpiStart) and finalises it on destruction. Collective
+/// over MPI_COMM_WORLD; at most one per process.
 class MpiSession {
  public:
-  MpiSession();
+  explicit MpiSession(MpiStart start = MpiStart::always);
   ~MpiSession();
   MpiSession(const MpiSession&) = delete;
   MpiSession& operator=(const MpiSession&) = delete;
 
-  /// This process's rank in MPI_COMM_WORLD (0: the one that writes reports).
+  /// This process's rank in MPI_COMM_WORLD (0: the one that writes reports; 0 without MPI).
   int rank() const { return rank_; }
-  /// The number of processes in MPI_COMM_WORLD.
+  /// The number of processes in MPI_COMM_WORLD (1 without MPI).
   int size() const { return size_; }
+  /// Whether this session initialised MPI (false only with MpiStart::unless_alone at P = 1).
+  bool initialised() const { return initialised_; }
 
-  /// Ends every process of the run with `exit_code` after an error on this one (MPI_Abort),
-  /// so that no process waits forever in a collective call.
+  /// Ends every process of the run with `exit_code` after an error on this one (MPI_Abort when
+  /// MPI is initialised, so that no process waits forever in a collective call).
   [[noreturn]] static void abort(int exit_code);
 
  private:
   int rank_ = 0;
   int size_ = 1;
+  bool initialised_ = false;
 };
+
+/// This process's rank in MPI_COMM_WORLD, 0 when MPI is not initialised (one process).
+int world_rank();
+/// The number of processes in MPI_COMM_WORLD, 1 when MPI is not initialised.
+int world_size();
+
+/// Whether the environment shows this process to be the only one of its run: a launcher's
+/// size variable equal to 1 (OpenMPI's OMPI_COMM_WORLD_SIZE, PMI's PMI_SIZE as MPICH's Hydra
+/// and srun set it), or no launcher variable at all (OMPI_COMM_WORLD_*, PMI_*, PMIX_* unset:
+/// started without mpirun). Any other launcher variable without a size reads as "not alone", so that an
+/// unknown launcher still gets MPI. `environment` is a NULL-terminated list of NAME=VALUE
+/// strings (environ).
+bool started_alone(const char* const* environment);
 
 }  // namespace kinestat::distributed
