@@ -7,7 +7,8 @@
 # lattice 1000: a 23 x 23 grid of bodies, C = 2e constraints, generically rigid, so FN = 0 and
 # CN = C - 3(n - 1)). The serial report's keys and rank evidence, the backend's notice of what it
 # does not compute (also under --vectors), and its errors: a structure model, --dense-limit and
-# a missing file are refused with exit 2 by every process. `kinestat` hands the command over to
+# a missing file are refused with exit 2 by every process, a disconnected network too (found by
+# rank 0 after reading); without mpirun the command decides alone (the hand counts). `kinestat` hands the command over to
 # the kinestat-mpi beside it, and `kinestat` that has none (copied alone) says so with exit 2.
 # Usage: check_cli.sh MPIRUN KINESTAT SOURCE_DIR WORK_DIR
 set -eu
@@ -84,6 +85,20 @@ status=0
 "$mpirun" -n 2 "$kinestat" analyze --backend petsc "$work/missing.yaml" 2> "$work/err" || status=$?
 [ "$status" -eq 2 ] || { echo "missing file: exit $status, expected 2"; cat "$work/err"; exit 1; }
 grep -q "missing.yaml" "$work/err"
+# A network whose bodies are not connected: rank 0 finds it while building K and tells the
+# other process to stop (no hang), exit 2 with the serial message.
+printf 'kinestat: 1\nkind: network\ndimension: planar\nground: a\ncouplings:\n  - {name: R1, type: revolute, between: [a, b], point: [0, 0]}\n  - {name: R2, type: revolute, between: [c, d], point: [1, 0]}\n' > "$work/split.yaml"
+status=0
+"$mpirun" -n 2 "$kinestat" analyze --backend petsc "$work/split.yaml" 2> "$work/err" || status=$?
+[ "$status" -eq 2 ] || { echo "disconnected network: exit $status, expected 2"; cat "$work/err"; exit 1; }
+grep -q "split.yaml.*not all connected" "$work/err"
+# Without mpirun (one process, MPI not initialised): the serial decision, the hand counts.
+"$kinestat" analyze --backend petsc "$model" --json > "$work/alone-petsc.json"
+/usr/bin/python3 -c "
+import json, sys
+r = json.load(open(sys.argv[1])); n = 58
+assert (r['mechanisms'], r['self_stresses']) == (0, (n - 1) ** 2) and r['backend']['processes'] == 1, r['backend']
+" "$work/alone-petsc.json"
 mkdir -p "$work/alone"
 cp "$kinestat" "$work/alone/kinestat"
 status=0

@@ -12,6 +12,7 @@
 
 #include "kinestat/distributed/column_partition.hpp"
 #include "kinestat/distributed/distributed_pipeline.hpp"
+#include "kinestat/distributed/mpi_session.hpp"
 #include "kinestat/framework/framework_analysis.hpp"
 #include "support/lattice_generator.hpp"
 
@@ -104,6 +105,24 @@ TEST(ColumnPartition, NoRowJoinsTwoInteriors) {
       EXPECT_EQ(partition.row_part[static_cast<std::size_t>(i)], seen) << i;
     }
   }
+}
+
+// Whether the command may skip MPI: only when the launcher's size says one process, or when no
+// launcher started it; an unknown launcher (PMIx without a size) keeps MPI.
+TEST(MpiSession, StartedAloneFromTheEnvironment) {
+  const auto alone = [](std::vector<const char*> environment) {
+    environment.push_back(nullptr);
+    return started_alone(environment.data());
+  };
+  EXPECT_TRUE(alone({}));
+  EXPECT_TRUE(alone({"PATH=/usr/bin", "HOME=/root"}));
+  EXPECT_TRUE(alone({"OMPI_COMM_WORLD_SIZE=1", "OMPI_COMM_WORLD_RANK=0"}));
+  EXPECT_TRUE(alone({"PMI_SIZE=1", "PMI_RANK=0"}));
+  EXPECT_FALSE(alone({"OMPI_COMM_WORLD_SIZE=2"}));
+  EXPECT_FALSE(alone({"OMPI_COMM_WORLD_RANK=0", "OMPI_COMM_WORLD_SIZE=16"}));
+  EXPECT_FALSE(alone({"PMI_SIZE=1", "OMPI_COMM_WORLD_SIZE=4"}));
+  EXPECT_FALSE(alone({"PMIX_RANK=0"}));
+  EXPECT_FALSE(alone({"OMPI_COMM_WORLD_SIZE=10"}));  // not a prefix match of "1"
 }
 
 }  // namespace
