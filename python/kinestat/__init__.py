@@ -19,6 +19,7 @@ Bad input raises :class:`InputError` (a ``ValueError``) with ``file``, ``line``,
 out of range in a model built in code :class:`ModelIndexError` (also an ``IndexError``).
 """
 
+import collections.abc as _abc
 import errno as _errno
 import html as _html
 import json as _json
@@ -91,6 +92,29 @@ def _tolerance(value):
     if number <= 0:
         raise _argument_error(f"tolerance: {value!r} is not positive: expected a positive number such as 1e-9")
     return number
+
+
+def _misfit_argument(value):
+    # As the command's --misfit VALUE (every element) or --misfit ELEMENT=VALUE (repeated): a
+    # length, or a dict {element name: length}. The module checks the lengths (zero or more,
+    # finite) and the element names against the model (ValueError).
+    if isinstance(value, _abc.Mapping):
+        if not value:
+            raise _argument_error("misfit: the dict names no element: expected {element name: length}, e.g. {'d1': 0.01}")
+        misfits = {}
+        for element, length in value.items():
+            if not isinstance(element, str):
+                raise _argument_error(f"misfit: {element!r} is not an element name (a string)")
+            misfits[element] = _misfit_length(length, f"misfit of element '{element}'")
+        return misfits
+    return _misfit_length(value, "misfit")
+
+
+def _misfit_length(value, what):
+    if isinstance(value, bool) or not isinstance(value, _numbers.Real):
+        raise _argument_error(f"{what}: {value!r} is not a number: expected a length zero or more such as 0.01, "
+                              "or a dict {element name: length}")
+    return float(value)
 
 
 def _existing(path):
@@ -416,10 +440,10 @@ class FrameworkResult(_Result):
         """The eigenfrequencies (Hz, ascending, a numpy vector) and mode shapes (a numpy array,
         one mass-normalised column per frequency over ``stiffness_labels``; massless coordinates
         condensed out) of the framework with its masses. ``misfit`` (a length in the model's
-        unit): under the prestress of the worst misfit (``kinestat stiffness --misfit``); a
-        negative frequency is a mode the prestress buckled, −√|ω²| / 2π. ValueError without
-        elastic data or masses."""
-        frequencies, shapes, _ = self._analysed.eigenpairs(float(misfit))
+        unit, or a dict ``{element name: length}`` as in ``over_constraint``): under the
+        prestress of the worst misfit (``kinestat stiffness --misfit``); a negative frequency is
+        a mode the prestress buckled, −√|ω²| / 2π. ValueError without elastic data or masses."""
+        frequencies, shapes, _ = self._analysed.eigenpairs(_misfit_argument(misfit))
         return frequencies, shapes
 
     def over_constraint(self, at, misfit):
@@ -427,8 +451,11 @@ class FrameworkResult(_Result):
         --json``): the ``misfit`` block (``value``, ``worst``: ``element``, ``force`` in N,
         tension positive, ``stress`` peak in N/length², …; ``worst`` None for an exactly
         constrained design) and ``frequencies`` (Hz, ascending; with ``frequencies_with_misfit``)
-        as a dict. ``misfit`` is a length in the model's unit; ValueError for a negative one."""
-        return _json.loads(self._analysed.over_constraint(str(at), float(misfit)))
+        as a dict. ``misfit`` is a length in the model's unit for every element, or a dict
+        ``{element name: length}`` (``--misfit ELEMENT=VALUE``: the elements not named get none;
+        the block then has ``per_element`` and ``value`` None). ValueError for a negative or
+        non-finite length or an element the model does not have."""
+        return _json.loads(self._analysed.over_constraint(str(at), _misfit_argument(misfit)))
 
     @property
     def row_labels(self):
