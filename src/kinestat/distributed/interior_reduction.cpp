@@ -4,8 +4,6 @@
 #include <SuiteSparseQR.hpp>
 
 #include <algorithm>
-#include <cmath>
-#include <limits>
 #include <new>
 #include <stdexcept>
 #include <string>
@@ -18,7 +16,11 @@ namespace kinestat::distributed {
 
 namespace {
 
-// SuiteSparseQR's [C, R, E] = qr(A, B) and what it allocated, released on every path.
+// SuiteSparseQR's [C, E] = qr(A, B) without R (its expert interface with R not asked for), and
+// what it allocated, released on every path. R, assembled from the fronts in two copies, was
+// half of a process's factor memory (a 268,801-bar lattice at P = 2: 168 MB with R, 92 MB
+// without; docs/scaling.md), and only its pivots were read: they come from a counts-only
+// factorisation instead (reduce_interior).
 class QrWithRightHandSide {
  public:
   QrWithRightHandSide(const Eigen::SparseMatrix<double>& a, const Eigen::SparseMatrix<double>& b, double threshold)
@@ -26,10 +28,10 @@ class QrWithRightHandSide {
     cholmod_l_start(&cc_);
     cc_.print = 0;  // failures reach the caller as exceptions
     cholmod_sparse a_view = linalg::cholmod_view(a_), b_view = linalg::cholmod_view(b_);
-    // econ = m: every row of C = QᵀB, those beyond the rank included.
-    rank_ = SuiteSparseQR<double>(SPQR_ORDERING_METIS, threshold, static_cast<SuiteSparse_long>(a.rows()), &a_view, &b_view,
-                                  &c_, &r_, &e_, &cc_);
-    if (rank_ >= 0 && cc_.status >= CHOLMOD_OK && c_ != nullptr && r_ != nullptr) return;
+    // econ = m: every row of C = QᵀB, those beyond the rank included; getCTX 0: C itself.
+    rank_ = SuiteSparseQR<double>(SPQR_ORDERING_METIS, threshold, static_cast<SuiteSparse_long>(a.rows()), 0, &a_view, &b_view,
+                                  nullptr, &c_, nullptr, nullptr, &e_, nullptr, nullptr, nullptr, &cc_);
+    if (rank_ >= 0 && cc_.status >= CHOLMOD_OK && c_ != nullptr) return;
     const int status = cc_.status;
     release();
     if (status == CHOLMOD_OUT_OF_MEMORY) throw std::bad_alloc();
@@ -41,26 +43,6 @@ class QrWithRightHandSide {
 
   Eigen::Index rank() const { return static_cast<Eigen::Index>(rank_); }
   std::size_t peak_memory() const { return cc_.memory_usage; }
-
-  // The smallest |R_kk| of the live rows: each of the first `rank` rows of R begins at its pivot.
-  double smallest_kept() const {
-    if (rank_ == 0) return 0.0;
-    std::vector<SuiteSparse_long> lead(static_cast<std::size_t>(rank_), std::numeric_limits<SuiteSparse_long>::max());
-    std::vector<double> pivot(static_cast<std::size_t>(rank_), 0.0);
-    const auto* p = static_cast<const SuiteSparse_long*>(r_->p);
-    const auto* i = static_cast<const SuiteSparse_long*>(r_->i);
-    const auto* x = static_cast<const double*>(r_->x);
-    for (SuiteSparse_long j = 0; j < static_cast<SuiteSparse_long>(r_->ncol); ++j)
-      for (SuiteSparse_long k = p[j]; k < p[j + 1]; ++k) {
-        if (i[k] >= rank_ || x[k] == 0.0) continue;
-        const auto row = static_cast<std::size_t>(i[k]);
-        if (j < lead[row]) {
-          lead[row] = j;
-          pivot[row] = std::abs(x[k]);
-        }
-      }
-    return *std::min_element(pivot.begin(), pivot.end());
-  }
 
   // Rows rank … m − 1 of C = QᵀB: B's part outside range(A), in an orthonormal basis of it.
   Eigen::SparseMatrix<double> rows_beyond_rank() const {
@@ -80,7 +62,6 @@ class QrWithRightHandSide {
  private:
   void release() {
     if (c_ != nullptr) cholmod_l_free_sparse(&c_, &cc_);
-    if (r_ != nullptr) cholmod_l_free_sparse(&r_, &cc_);
     if (e_ != nullptr) cholmod_l_free(a_.cols(), sizeof(SuiteSparse_long), e_, &cc_);
     e_ = nullptr;
     if (started_) cholmod_l_finish(&cc_);
@@ -88,7 +69,7 @@ class QrWithRightHandSide {
   }
   linalg::CholmodMatrix a_, b_;  // 64-bit index copies, as SuiteSparseQR's long interface needs
   cholmod_common cc_{};
-  cholmod_sparse *c_ = nullptr, *r_ = nullptr;
+  cholmod_sparse* c_ = nullptr;
   SuiteSparse_long* e_ = nullptr;
   SuiteSparse_long rank_ = -1;
   bool started_ = true;
@@ -128,12 +109,20 @@ InteriorReduction reduce_interior(const Eigen::SparseMatrix<double>& interior, c
     out.interface_block = Eigen::SparseMatrix<double>(0, 0);
     return out;
   }
+  // The rank and its evidence (the smallest kept pivot) from the counts-only factorisation,
+  // which keeps no R; then QᵀA_Γ from a second factorisation of the same A_I in the same METIS
+  // order at the same threshold (B's columns come after A's in every front, so A's pivots are
+  // the same operations): both must find the same rank.
+  const linalg::SparseRankCount count = linalg::sparse_qr_rank(interior, threshold);
+  out.rank = count.rank;
+  out.smallest_kept = count.smallest_pivot;
   Eigen::SparseMatrix<double> tail;
   {
     const QrWithRightHandSide qr(interior, interface, threshold);
-    out.rank = qr.rank();
-    out.smallest_kept = qr.smallest_kept();
-    out.peak_memory = qr.peak_memory();
+    if (qr.rank() != count.rank)
+      throw std::runtime_error("SuiteSparseQR's two factorisations of a process's interior found ranks " +
+                               std::to_string(count.rank) + " and " + std::to_string(qr.rank()));
+    out.peak_memory = std::max(count.peak_memory, qr.peak_memory());
     tail = qr.rows_beyond_rank();
   }  // the interior's factor is released before the second QR
   out.interface_block = compress(tail, threshold, out.peak_memory);

@@ -22,13 +22,16 @@ struct InteriorReduction {
   /// does not span, compressed by a second sparse QR at the same threshold. Columns as A_Γ's.
   /// rank([A_I A_Γ]) = rank + rank(G) (in exact arithmetic, before the thresholds).
   Eigen::SparseMatrix<double> interface_block;
-  std::size_t peak_memory = 0;  ///< SuiteSparse's own peak count of the two factorisations, bytes
+  std::size_t peak_memory = 0;  ///< SuiteSparse's own peak count of the factorisations (the largest), bytes
 };
 
-/// Factors `interior` (A_I) by SuiteSparseQR with METIS's order and `threshold` (absolute),
-/// applying Qᵀ to `interface` (A_Γ, the same rows) as it goes; the rows of QᵀA_Γ beyond the rank
-/// are compressed into InteriorReduction::interface_block. Throws std::bad_alloc when memory runs
-/// out and std::runtime_error when SuiteSparseQR fails otherwise.
+/// Factors `interior` (A_I) by SuiteSparseQR with METIS's order and `threshold` (absolute)
+/// twice, one factorisation at a time and neither keeping R: counts only (the rank and its
+/// smallest kept pivot, linalg::sparse_qr_rank), then applying Qᵀ to `interface` (A_Γ, the same
+/// rows) as it goes; the rows of QᵀA_Γ beyond the rank are compressed into
+/// InteriorReduction::interface_block. Throws std::bad_alloc when memory runs out and
+/// std::runtime_error when SuiteSparseQR fails otherwise (or its two factorisations disagree on
+/// the rank).
 InteriorReduction reduce_interior(const Eigen::SparseMatrix<double>& interior, const Eigen::SparseMatrix<double>& interface,
                                   double threshold);
 
