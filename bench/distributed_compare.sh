@@ -3,8 +3,10 @@
 # Serial sparse path vs the distributed backend (domain decomposition) on P = 1, 2 and 4
 # processes (4 oversubscribed on a 2-core machine), side by side in one run (bench/README.md,
 # "Distributed backend"): counts, wall time and peak memory per process. Serial: /usr/bin/time
-# of `kinestat analyze MODEL --json`; P processes: /usr/bin/time of the whole mpirun, and the
-# backend's own report (--timings: peak resident memory of each rank, its stages' times).
+# of `kinestat analyze MODEL --json`; "alone": the backend without mpirun (one process, MPI not
+# initialised); P processes: /usr/bin/time of the whole mpirun, and the backend's own report
+# (--timings: peak resident memory of each rank, of which before the decision — rank 0 reads
+# the model and builds the matrix, the others receive their rows —, its stages' times).
 # Frameworks and coupling networks (networks: C x d(n-1) is K's size, FN and CN the counts).
 # One MPI run at a time. Usage: bench/distributed_compare.sh KINESTAT MODEL...
 set -eu
@@ -29,9 +31,10 @@ if len(sys.argv) > 5:
 else:
     b = j["backend"]; s = b["measured"]["seconds"]
     peaks = " + ".join(f"{x / 1e6:.0f}" for x in b["measured"]["peak_memory_bytes"])
+    before = " + ".join(f"{x / 1e6:.0f}" for x in b["measured"]["peak_before_decision_bytes"])
     factors = " + ".join(f"{x / 1e6:.0f}" for x in b["measured"]["factor_memory_bytes"])
     print(f"| {name} | {label} | {counts} | {seconds} s (interiors {s['interiors']:.2f} s, interface {s['interface']:.2f} s, "
-          f"{b['interface_columns']} interface columns) | {peaks} MB (factors {factors} MB) |")
+          f"{b['interface_columns']} interface columns) | {peaks} MB (before the decision {before}; factors {factors} MB) |")
 PY
 echo "load average: $(cut -d' ' -f1-3 /proc/loadavg)"
 for model in "$@"; do
@@ -39,6 +42,9 @@ for model in "$@"; do
   /usr/bin/time -f "%e %U %M" -o "$work/time" "$kinestat" analyze "$model" --json > "$work/serial.json"
   read -r seconds cpu kb < "$work/time"
   /usr/bin/python3 "$work/row.py" "$name" serial "$work/serial.json" "$seconds" "$cpu" "$kb"
+  /usr/bin/time -f "%e" -o "$work/time" "$kinestat" analyze --backend petsc --timings "$model" --json > "$work/petsc.json"
+  read -r seconds < "$work/time"
+  /usr/bin/python3 "$work/row.py" "$name" "alone" "$work/petsc.json" "$seconds"
   for p in 1 2 4; do
     /usr/bin/time -f "%e" -o "$work/time" mpirun -n "$p" "$kinestat" analyze --backend petsc --timings "$model" --json \
       > "$work/petsc.json" || { echo "| $name | P = $p | failed (exit $?) |"; continue; }

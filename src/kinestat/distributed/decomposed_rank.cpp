@@ -9,7 +9,6 @@
 #include <cstdint>
 #include <numeric>
 #include <type_traits>
-#include <utility>
 
 #include "kinestat/distributed/column_partition.hpp"
 #include "kinestat/distributed/interior_reduction.hpp"
@@ -216,7 +215,11 @@ struct RootShare {
   Eigen::Index interface_columns = 0;
 };
 
-RootShare scatter_blocks(Eigen::SparseMatrix<double> b, int size) {
+// Frees a matrix's storage now (Eigen 3.4's SparseMatrix has no move constructor: std::move
+// copies it, so ownership is passed by reference and released by swapping).
+void release(Eigen::SparseMatrix<double>& m) { Eigen::SparseMatrix<double>().swap(m); }
+
+RootShare scatter_blocks(Eigen::SparseMatrix<double>& b, int size) {
   const ColumnPartition partition = partition_columns(b, size);
   std::vector<Eigen::Index> gamma(partition.column_part.size(), -1);
   Eigen::Index interface = 0;
@@ -224,16 +227,16 @@ RootShare scatter_blocks(Eigen::SparseMatrix<double> b, int size) {
     if (partition.column_part[j] == ColumnPartition::kInterface) gamma[j] = interface++;
   // One block at a time, so that rank 0 holds b and one process's rows at most.
   for (int p = 1; p < size; ++p) send_blocks(local_blocks(b, partition, p, gamma), p);
-  return {local_blocks(b, partition, 0, gamma), interface_only_rows(b, partition, gamma), partition.interface_columns};
+  RootShare share{local_blocks(b, partition, 0, gamma), interface_only_rows(b, partition, gamma), partition.interface_columns};
+  release(b);
+  return share;
 }
 
 // P ≥ 2: the decomposition itself (the threshold already in `out.decision`); `b` is the matrix
-// factored on rank 0 and empty elsewhere.
-void decide_decomposed(Eigen::SparseMatrix<double> b, DecomposedRank& out, int rank, std::size_t& factor_memory) {
+// factored on rank 0 (released once its rows are sent) and empty elsewhere.
+void decide_decomposed(Eigen::SparseMatrix<double>& b, DecomposedRank& out, int rank, std::size_t& factor_memory) {
   const double start = MPI_Wtime();
-  RootShare share;
-  if (rank == 0) share = scatter_blocks(std::move(b), out.processes);
-  else share.local = receive_blocks();
+  const RootShare share = rank == 0 ? scatter_blocks(b, out.processes) : RootShare{receive_blocks(), {}, 0};
   static_assert(sizeof(Eigen::Index) == sizeof(std::int64_t));
   Eigen::Index interface_columns = share.interface_columns;
   MPI_Bcast(&interface_columns, 1, MPI_INT64_T, 0, MPI_COMM_WORLD);
@@ -289,7 +292,7 @@ void decide_alone(const Eigen::SparseMatrix<double>& a, const linalg::RankTolera
 
 }  // namespace
 
-DecomposedRank decomposed_rank(Eigen::SparseMatrix<double> a, const linalg::RankTolerance& tolerance,
+DecomposedRank decomposed_rank(Eigen::SparseMatrix<double>&& a, const linalg::RankTolerance& tolerance,
                                const std::vector<Eigen::Index>& column_groups, FactoredSide side) {
   DecomposedRank out;
   const int rank = world_rank();
@@ -316,14 +319,12 @@ DecomposedRank decomposed_rank(Eigen::SparseMatrix<double> a, const linalg::Rank
   out.threshold_seconds = MPI_Wtime() - start;
   if (out.decision.rows == 0 || out.decision.cols == 0) {
     out.interior_ranks.assign(static_cast<std::size_t>(out.processes), 0);  // nothing to split
-  } else if (rank != 0) {
-    decide_decomposed({}, out, rank, factor_memory);
-  } else if (header.integers[3] != 0) {
+  } else if (rank == 0 && header.integers[3] != 0) {
     Eigen::SparseMatrix<double> b = a.transpose();
-    a = Eigen::SparseMatrix<double>();  // only the factored side is kept
-    decide_decomposed(std::move(b), out, rank, factor_memory);
+    release(a);  // only the factored side is kept
+    decide_decomposed(b, out, rank, factor_memory);
   } else {
-    decide_decomposed(std::move(a), out, rank, factor_memory);
+    decide_decomposed(a, out, rank, factor_memory);  // rank 0's matrix, or nothing elsewhere
   }
   out.peak_memory = gather_sizes(peak_resident_bytes(), rank, out.processes);
   out.peak_before_decision = gather_sizes(before, rank, out.processes);

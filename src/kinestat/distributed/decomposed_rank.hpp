@@ -55,13 +55,13 @@ enum class FactoredSide {
 /// the one process alone). Only rank 0's `a` and `tolerance` are read (the other processes may
 /// pass an empty matrix and a default tolerance): rank 0 computes the serial rule's threshold
 /// (linalg::sparse_rank_threshold), partitions the columns and sends every other process the
-/// rows that touch its interior, then releases `a` (taken by value: pass it with std::move so
-/// that rank 0 does not keep two copies). At one process the decision is the serial one:
+/// rows that touch its interior, then releases `a` (taken over: on return it is empty; a copy
+/// is made by passing Eigen::SparseMatrix<double>(m)). At one process the decision is the serial one:
 /// linalg::sparse_numerical_rank with `column_groups` (a framework's node of each coordinate)
 /// for FactoredSide::taller, the counts-only QR of aᵀ for FactoredSide::transposed. Throws
 /// std::bad_alloc when memory runs out and std::runtime_error when SuiteSparseQR fails; the
 /// caller aborts the run (the other processes would wait in a collective call).
-DecomposedRank decomposed_rank(Eigen::SparseMatrix<double> a, const linalg::RankTolerance& tolerance,
+DecomposedRank decomposed_rank(Eigen::SparseMatrix<double>&& a, const linalg::RankTolerance& tolerance,
                                const std::vector<Eigen::Index>& column_groups = {},
                                FactoredSide side = FactoredSide::taller);
 

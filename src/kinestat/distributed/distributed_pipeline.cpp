@@ -60,8 +60,8 @@ DistributedNetworkAnalysis analyse_network_distributed(const network::Model& mod
   network::SparseNetworkResult& r = out.result;
   r = network::build_body_twist_system(model, tolerances);
   // The serial rule: the threshold of K (its σ_max and the input's rounding), rank K decided by
-  // the QR of Kᵀ.
-  out.backend = distributed::decomposed_rank(r.K, {tolerances.rank, r.rank.input_rounding}, {},
+  // the QR of Kᵀ. K stays in the result (the counts and the verdict read it): a copy is passed.
+  out.backend = distributed::decomposed_rank(Eigen::SparseMatrix<double>(r.K), {tolerances.rank, r.rank.input_rounding}, {},
                                              distributed::FactoredSide::transposed);
   r.rank = out.backend.decision;
   r.motion_factor_rank = r.rank;

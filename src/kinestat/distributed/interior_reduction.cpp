@@ -123,7 +123,8 @@ InteriorReduction reduce_interior(const Eigen::SparseMatrix<double>& interior, c
       throw std::runtime_error("SuiteSparseQR's two factorisations of a process's interior found ranks " +
                                std::to_string(count.rank) + " and " + std::to_string(qr.rank()));
     out.peak_memory = std::max(count.peak_memory, qr.peak_memory());
-    tail = qr.rows_beyond_rank();
+    Eigen::SparseMatrix<double> rows = qr.rows_beyond_rank();
+    tail.swap(rows);  // no copy (Eigen's SparseMatrix has no move assignment)
   }  // the interior's factor is released before the second QR
   out.interface_block = compress(tail, threshold, out.peak_memory);
   return out;
