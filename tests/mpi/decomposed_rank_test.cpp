@@ -9,6 +9,7 @@
 #include <mpi.h>
 
 #include <numeric>
+#include <utility>
 
 #include "kinestat/distributed/column_partition.hpp"
 #include "kinestat/distributed/distributed_pipeline.hpp"
@@ -79,6 +80,46 @@ TEST(DecomposedRank, CubicLattice) {
   const Eigen::Index coordinates = 3 * n * n * (n - 1);
   const Eigen::Index mechanisms = 3 * (n - 1);
   check_framework(framework::spatial_lattice(n), mechanisms, bars - (coordinates - mechanisms), "cubic 8");
+}
+
+// As the command runs it: only rank 0 holds the matrix (the others pass an empty one and receive
+// their rows); the hand counts of a pinned triangular lattice, rigid with (n − 1)² self-stresses,
+// on every process, and rank 0's matrix released once its rows are sent.
+TEST(DecomposedRank, OnlyRankZeroHoldsTheMatrix) {
+  const int n = 40;
+  Eigen::SparseMatrix<double> a;
+  Eigen::Index rows = 0, cols = 0;
+  if (world_rank() == 0) {
+    framework::FrameworkResult scratch;
+    a = framework::prepare_analysis(framework::planar_lattice(n, true), scratch);
+    rows = a.rows();
+    cols = a.cols();
+  }
+  const DecomposedRank r = decomposed_rank(std::move(a), linalg::RankTolerance{});
+  EXPECT_EQ(r.cancelled, 0);
+  EXPECT_EQ(r.decision.rows - r.decision.rank, (n - 1) * (n - 1));
+  EXPECT_EQ(r.decision.cols, r.decision.rank);  // rigid: no mechanism
+  EXPECT_EQ(r.processes, world_size());
+  if (world_rank() == 0) {
+    EXPECT_EQ(r.decision.rows, rows);
+    EXPECT_EQ(r.decision.cols, cols);
+    if (world_size() > 1) {
+      EXPECT_EQ(a.nonZeros(), 0);  // taken over (rvalue reference) and released after the scatter
+    }
+  }
+}
+
+// Rank 0 cancels (its model could not be built): the other processes return with its exit code
+// and decide nothing.
+TEST(DecomposedRank, CancelledByRankZero) {
+  if (world_size() == 1) GTEST_SKIP() << "needs a second process";
+  if (world_rank() == 0) {
+    cancel_decomposed_rank(2);
+    return;
+  }
+  const DecomposedRank r = decomposed_rank(Eigen::SparseMatrix<double>(), linalg::RankTolerance{});
+  EXPECT_EQ(r.cancelled, 2);
+  EXPECT_EQ(r.decision.rank, 0);
 }
 
 // The partition's defining property on a lattice's D(c), for 2 and 4 parts: no row has entries
