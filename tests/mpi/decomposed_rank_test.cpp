@@ -123,7 +123,8 @@ TEST(DecomposedRank, CancelledByRankZero) {
 }
 
 // The partition's defining property on a lattice's D(c), for 2 and 4 parts: no row has entries
-// in the interiors of two parts, each interior is non-empty and the interface is small.
+// in the interiors of two parts, each interior is non-empty and the interface is small; every
+// interface column has its separator, and a row touches only the separators beside its part.
 TEST(ColumnPartition, NoRowJoinsTwoInteriors) {
   framework::FrameworkResult scratch;
   const Eigen::SparseMatrix<double> a = framework::prepare_analysis(framework::planar_lattice(30, true), scratch);
@@ -144,7 +145,24 @@ TEST(ColumnPartition, NoRowJoinsTwoInteriors) {
         seen = part;
       }
       EXPECT_EQ(partition.row_part[static_cast<std::size_t>(i)], seen) << i;
+      // What the interface tree relies on: a row of part p touches only separators p − 1 and p
+      // (the levels beside its interior), an interface-only row only one separator.
+      int first_separator = -1;
+      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(rows, i); it; ++it) {
+        const int separator = partition.column_separator[static_cast<std::size_t>(it.col())];
+        if (separator < 0) continue;
+        EXPECT_LE(separator, parts - 2) << i;
+        if (seen != ColumnPartition::kInterface) {
+          EXPECT_TRUE(separator == seen - 1 || separator == seen) << "row " << i << " part " << seen << " separator " << separator;
+        } else if (first_separator < 0) {
+          first_separator = separator;
+        } else {
+          EXPECT_EQ(separator, first_separator) << "interface row " << i;
+        }
+      }
     }
+    for (std::size_t j = 0; j < partition.column_part.size(); ++j)
+      EXPECT_EQ(partition.column_separator[j] >= 0, partition.column_part[j] == ColumnPartition::kInterface) << j;
   }
 }
 

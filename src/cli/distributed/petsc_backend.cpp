@@ -83,7 +83,7 @@ nlohmann::ordered_json backend_json(const pipeline::DistributedAnalysis& analysi
   j["name"] = "petsc";
   j["processes"] = b.processes;
   j["solver"] = "domain decomposition: SuiteSparseQR of each process's interior at the serial rule's threshold, "
-                "the interface's reduced blocks stacked and factored on rank 0 at the same threshold";
+                "the interface's reduced blocks merged in a tree, one separator at a time, at the same threshold";
   j["interior_ranks"] = b.interior_ranks;
   j["interface_columns"] = b.interface_columns;
   j["interface_rows"] = b.interface_rows;

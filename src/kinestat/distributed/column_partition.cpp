@@ -77,10 +77,12 @@ ColumnPartition partition_columns(const Eigen::SparseMatrix<double>& a, int part
     }
   }
   out.column_part.resize(level.size());
+  out.column_separator.assign(level.size(), -1);
   for (std::size_t j = 0; j < level.size(); ++j) {
     const auto at = std::lower_bound(separators.begin(), separators.end(), level[j]);
     const bool on_separator = at != separators.end() && *at == level[j];
     out.column_part[j] = on_separator ? ColumnPartition::kInterface : static_cast<int>(at - separators.begin());
+    if (on_separator) out.column_separator[j] = static_cast<int>(at - separators.begin());
     if (on_separator) ++out.interface_columns;
   }
   out.row_part.assign(static_cast<std::size_t>(a.rows()), ColumnPartition::kInterface);

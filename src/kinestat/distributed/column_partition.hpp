@@ -17,6 +17,9 @@ struct ColumnPartition {
   static constexpr int kInterface = -1;
   int parts = 1;
   std::vector<int> column_part;  ///< per column: 0 … parts − 1, or kInterface
+  /// per column: for an interface column its separator k (0 … parts − 2, between parts k and
+  /// k + 1, the parts' order along the levels), −1 for an interior column
+  std::vector<int> column_separator;
   std::vector<int> row_part;     ///< per row: 0 … parts − 1, or kInterface (also an empty row)
   Eigen::Index interface_columns = 0;
 };

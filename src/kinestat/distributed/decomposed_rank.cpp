@@ -8,10 +8,12 @@
 #include <chrono>
 #include <cstdint>
 #include <numeric>
-#include <type_traits>
+#include <utility>
 
 #include "kinestat/distributed/column_partition.hpp"
+#include "kinestat/distributed/interface_tree.hpp"
 #include "kinestat/distributed/interior_reduction.hpp"
+#include "kinestat/distributed/matrix_messages.hpp"
 #include "kinestat/distributed/mpi_session.hpp"
 #include "kinestat/distributed/process_memory.hpp"
 #include "kinestat/linalg/sparse_rank.hpp"
@@ -111,85 +113,18 @@ Eigen::SparseMatrix<double> interface_only_rows(const Eigen::SparseMatrix<double
   return out;
 }
 
-// A compressed sparse matrix sent whole to process `to` (its shape, then its three arrays).
-void send_matrix(const Eigen::SparseMatrix<double>& m, int to) {
-  static_assert(std::is_same_v<Eigen::SparseMatrix<double>::StorageIndex, int>);
-  const std::array<long long, 3> shape{m.rows(), m.cols(), m.nonZeros()};
-  MPI_Send(shape.data(), 3, MPI_LONG_LONG, to, 0, MPI_COMM_WORLD);
-  MPI_Send(m.outerIndexPtr(), static_cast<int>(m.cols() + 1), MPI_INT, to, 0, MPI_COMM_WORLD);
-  MPI_Send(m.innerIndexPtr(), static_cast<int>(m.nonZeros()), MPI_INT, to, 0, MPI_COMM_WORLD);
-  MPI_Send(m.valuePtr(), static_cast<int>(m.nonZeros()), MPI_DOUBLE, to, 0, MPI_COMM_WORLD);
-}
-
-Eigen::SparseMatrix<double> receive_matrix(int from) {
-  std::array<long long, 3> shape{};
-  MPI_Recv(shape.data(), 3, MPI_LONG_LONG, from, 0, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-  Eigen::SparseMatrix<double> m(static_cast<Eigen::Index>(shape[0]), static_cast<Eigen::Index>(shape[1]));
-  m.resizeNonZeros(static_cast<Eigen::Index>(shape[2]));
-  MPI_Recv(m.outerIndexPtr(), static_cast<int>(shape[1] + 1), MPI_INT, from, 0, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-  MPI_Recv(m.innerIndexPtr(), static_cast<int>(shape[2]), MPI_INT, from, 0, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-  MPI_Recv(m.valuePtr(), static_cast<int>(shape[2]), MPI_DOUBLE, from, 0, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-  return m;
-}
-
 void send_blocks(const LocalBlocks& blocks, int to) {
   send_matrix(blocks.interior, to);
   send_matrix(blocks.interface, to);
-  const std::vector<long long> global(blocks.interface_global.begin(), blocks.interface_global.end());
-  MPI_Send(global.data(), static_cast<int>(global.size()), MPI_LONG_LONG, to, 0, MPI_COMM_WORLD);
+  send_indices(blocks.interface_global, to);
 }
 
 LocalBlocks receive_blocks() {
   LocalBlocks out;
   out.interior = receive_matrix(0);
   out.interface = receive_matrix(0);
-  std::vector<long long> global(static_cast<std::size_t>(out.interface.cols()));
-  MPI_Recv(global.data(), static_cast<int>(global.size()), MPI_LONG_LONG, 0, 0, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-  out.interface_global.assign(global.begin(), global.end());
+  out.interface_global = receive_indices(0);
   return out;
-}
-
-// Every process's interface block (global interface columns) stacked on rank 0, above rank 0's
-// interface-only rows; empty elsewhere.
-Eigen::SparseMatrix<double> gather_interface(const LocalBlocks& local, const Eigen::SparseMatrix<double>& block,
-                                             const Eigen::SparseMatrix<double>& interface_only, Eigen::Index interface_columns,
-                                             int rank, int size) {
-  std::vector<long long> rows, cols;
-  std::vector<double> values;
-  for (Eigen::Index k = 0; k < block.outerSize(); ++k)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(block, k); it; ++it) {
-      rows.push_back(it.row());
-      cols.push_back(local.interface_global[static_cast<std::size_t>(it.col())]);
-      values.push_back(it.value());
-    }
-  const std::array<long long, 2> mine{static_cast<long long>(values.size()), block.rows()};
-  std::vector<long long> counts(2 * static_cast<std::size_t>(size));
-  MPI_Gather(mine.data(), 2, MPI_LONG_LONG, counts.data(), 2, MPI_LONG_LONG, 0, MPI_COMM_WORLD);
-  std::vector<int> sizes(static_cast<std::size_t>(size)), offsets(static_cast<std::size_t>(size));
-  for (int p = 0; p < size; ++p) sizes[static_cast<std::size_t>(p)] = static_cast<int>(counts[2 * static_cast<std::size_t>(p)]);
-  std::exclusive_scan(sizes.begin(), sizes.end(), offsets.begin(), 0);
-  const int total = rank == 0 ? offsets.back() + sizes.back() : 0;
-  std::vector<long long> all_rows(static_cast<std::size_t>(total)), all_cols(static_cast<std::size_t>(total));
-  std::vector<double> all_values(static_cast<std::size_t>(total));
-  const int n = static_cast<int>(values.size());
-  MPI_Gatherv(rows.data(), n, MPI_LONG_LONG, all_rows.data(), sizes.data(), offsets.data(), MPI_LONG_LONG, 0, MPI_COMM_WORLD);
-  MPI_Gatherv(cols.data(), n, MPI_LONG_LONG, all_cols.data(), sizes.data(), offsets.data(), MPI_LONG_LONG, 0, MPI_COMM_WORLD);
-  MPI_Gatherv(values.data(), n, MPI_DOUBLE, all_values.data(), sizes.data(), offsets.data(), MPI_DOUBLE, 0, MPI_COMM_WORLD);
-  if (rank != 0) return {};
-  std::vector<Eigen::Triplet<double>> entries;
-  Eigen::Index row_offset = 0;
-  for (int p = 0; p < size; ++p) {
-    const auto from = static_cast<std::size_t>(offsets[static_cast<std::size_t>(p)]);
-    for (std::size_t k = from; k < from + static_cast<std::size_t>(sizes[static_cast<std::size_t>(p)]); ++k)
-      entries.emplace_back(row_offset + all_rows[k], all_cols[k], all_values[k]);
-    row_offset += counts[2 * static_cast<std::size_t>(p) + 1];
-  }
-  for (Eigen::Index k = 0; k < interface_only.outerSize(); ++k)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(interface_only, k); it; ++it)
-      entries.emplace_back(row_offset + it.row(), it.col(), it.value());
-  Eigen::SparseMatrix<double> stacked(row_offset + interface_only.rows(), interface_columns);
-  stacked.setFromTriplets(entries.begin(), entries.end());
-  return stacked;
 }
 
 // The smallest of the kept pivots that exist (0 when none: the rank is 0).
@@ -213,6 +148,7 @@ struct RootShare {
   LocalBlocks local;
   Eigen::SparseMatrix<double> interface_only;
   Eigen::Index interface_columns = 0;
+  std::vector<int> separator;  ///< the separator of each interface column (global numbering)
 };
 
 // Frees a matrix's storage now (Eigen 3.4's SparseMatrix has no move constructor: std::move
@@ -227,7 +163,11 @@ RootShare scatter_blocks(Eigen::SparseMatrix<double>& b, int size) {
     if (partition.column_part[j] == ColumnPartition::kInterface) gamma[j] = interface++;
   // One block at a time, so that rank 0 holds b and one process's rows at most.
   for (int p = 1; p < size; ++p) send_blocks(local_blocks(b, partition, p, gamma), p);
-  RootShare share{local_blocks(b, partition, 0, gamma), interface_only_rows(b, partition, gamma), partition.interface_columns};
+  std::vector<int> separator(static_cast<std::size_t>(interface));
+  for (std::size_t j = 0; j < gamma.size(); ++j)
+    if (gamma[j] >= 0) separator[static_cast<std::size_t>(gamma[j])] = partition.column_separator[j];
+  RootShare share{local_blocks(b, partition, 0, gamma), interface_only_rows(b, partition, gamma), partition.interface_columns,
+                  std::move(separator)};
   release(b);
   return share;
 }
@@ -236,10 +176,15 @@ RootShare scatter_blocks(Eigen::SparseMatrix<double>& b, int size) {
 // factored on rank 0 (released once its rows are sent) and empty elsewhere.
 void decide_decomposed(Eigen::SparseMatrix<double>& b, DecomposedRank& out, int rank, std::size_t& factor_memory) {
   const double start = MPI_Wtime();
-  const RootShare share = rank == 0 ? scatter_blocks(b, out.processes) : RootShare{receive_blocks(), {}, 0};
+  RootShare share = rank == 0 ? scatter_blocks(b, out.processes) : RootShare{receive_blocks(), {}, 0, {}};
   static_assert(sizeof(Eigen::Index) == sizeof(std::int64_t));
   Eigen::Index interface_columns = share.interface_columns;
   MPI_Bcast(&interface_columns, 1, MPI_INT64_T, 0, MPI_COMM_WORLD);
+  // Every process: the interface-only rows and the separator of each interface column (small:
+  // about one row and one number per interface column), for the merges of the interface tree.
+  broadcast_matrix(share.interface_only);
+  share.separator.resize(static_cast<std::size_t>(interface_columns));
+  MPI_Bcast(share.separator.data(), static_cast<int>(interface_columns), MPI_INT, 0, MPI_COMM_WORLD);
   const InteriorReduction reduced = reduce_interior(share.local.interior, share.local.interface, out.decision.threshold);
   factor_memory = reduced.peak_memory;
   const double interior_seconds = MPI_Wtime() - start;
@@ -254,24 +199,19 @@ void decide_decomposed(Eigen::SparseMatrix<double>& b, DecomposedRank& out, int 
     MPI_Allgather(&interior_kept, 1, MPI_DOUBLE, kept.data(), 1, MPI_DOUBLE, MPI_COMM_WORLD);
     interior_kept = std::accumulate(kept.begin(), kept.end(), 0.0, smaller_kept);
   }
-  const Eigen::SparseMatrix<double> stacked = gather_interface(share.local, reduced.interface_block, share.interface_only,
-                                                               interface_columns, rank, out.processes);
-  // rank 0 decides the interface; [rank, smallest kept bits] broadcast.
-  std::array<double, 4> root{0.0, 0.0, 0.0, 0.0};
-  if (rank == 0) {
-    const double interface_start = MPI_Wtime();
-    linalg::SparseRankCount count;
-    if (stacked.rows() > 0 && stacked.cols() > 0) count = linalg::sparse_qr_rank(stacked, out.decision.threshold);
-    factor_memory = std::max(factor_memory, count.peak_memory);
-    root = {static_cast<double>(count.rank), count.smallest_pivot, static_cast<double>(stacked.rows()), MPI_Wtime() - interface_start};
-  }
-  MPI_Bcast(root.data(), static_cast<int>(root.size()), MPI_DOUBLE, 0, MPI_COMM_WORLD);
-  out.interface_rank = static_cast<Eigen::Index>(root[0]);
+  // The interface reduced in a tree of merges (interface_tree.hpp).
+  InterfaceBlock block;
+  block.rows = reduced.interface_block;
+  block.columns = share.local.interface_global;
+  const InterfaceTreeRank tree = reduce_interface_tree(std::move(block), share.interface_only, share.separator,
+                                                       out.decision.threshold);
+  factor_memory = std::max(factor_memory, tree.peak_memory);
+  out.interface_rank = tree.rank;
   out.interface_columns = interface_columns;
-  out.interface_rows = static_cast<Eigen::Index>(root[2]);
-  out.interface_seconds = root[3];
+  out.interface_rows = tree.rows;
+  out.interface_seconds = tree.seconds;
   const Eigen::Index rank_total = std::accumulate(out.interior_ranks.begin(), out.interior_ranks.end(), out.interface_rank);
-  linalg::record_rank(out.decision, linalg::SparseRankCount{rank_total, smaller_kept(interior_kept, root[1]), 0});
+  linalg::record_rank(out.decision, linalg::SparseRankCount{rank_total, smaller_kept(interior_kept, tree.smallest_kept), 0});
 }
 
 // One process (P = 1, or MPI not initialised): the serial decision itself.

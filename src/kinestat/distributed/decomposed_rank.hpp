@@ -5,9 +5,9 @@
 // splits its columns into one interior per process and an interface (partition_columns) and
 // sends each process only the rows that touch its interior; each process reduces
 // the rows that touch its interior with SuiteSparseQR at the serial rule's absolute threshold
-// (reduce_interior) and sends rank 0 a block on the interface of at most its interface
-// columns' rows; rank 0 decides the rank of those blocks stacked with the interface-only rows
-// at the same threshold. rank(A) = Σ interior ranks + the interface's rank.
+// (reduce_interior) to a block on the interface of at most its interface columns' rows; the
+// blocks and the interface-only rows are reduced in a tree of merges, one separator at a time,
+// at the same threshold (reduce_interface_tree). rank(A) = Σ interior ranks + Σ the merges' ranks.
 
 #include <Eigen/SparseCore>
 
@@ -27,13 +27,15 @@ struct DecomposedRank {
   linalg::RankDecision decision;
   int processes = 1;
   /// Columns of the matrix factored (A, or Aᵀ when A is wider than tall, as the serial path
-  /// chooses) in the interface, and rows of the interface's stacked matrix (the processes'
-  /// blocks and the interface-only rows). 0 at P = 1 (no decomposition).
+  /// chooses) in the interface, and the rows stacked at the interface tree's merges (the
+  /// processes' blocks and the interface-only rows; at P = 2 the one stack). 0 at P = 1 (no
+  /// decomposition).
   Eigen::Index interface_columns = 0, interface_rows = 0;
   std::vector<Eigen::Index> interior_ranks;  ///< per process (at P = 1: the whole rank)
-  Eigen::Index interface_rank = 0;
+  Eigen::Index interface_rank = 0;  ///< Σ of the interface tree's merges' ranks
   /// Wall time, seconds: σ_max and the threshold (rank 0), the slowest process's interior
-  /// (partition, assembly, factorisation, compression), the interface's factorisation on rank 0.
+  /// (partition, assembly, factorisations, compression), the interface tree on rank 0 (from
+  /// the end of its own interior, so including its wait for the others').
   double threshold_seconds = 0.0, interior_seconds = 0.0, interface_seconds = 0.0;
   /// Per process (index = MPI rank; rank 0 only): peak resident memory, the peak when the
   /// decision began (reading the model and building the matrix: rank 0 only, since the others
