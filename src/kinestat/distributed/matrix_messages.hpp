@@ -6,7 +6,6 @@
 
 #include <Eigen/SparseCore>
 
-#include <cstdint>
 #include <vector>
 
 namespace kinestat::distributed {
@@ -20,8 +19,10 @@ Eigen::SparseMatrix<double> receive_matrix(int from);
 /// Rank 0's `m` on every process (collective; `m` is read on rank 0 and replaced elsewhere).
 void broadcast_matrix(Eigen::SparseMatrix<double>& m);
 
-/// Sends / receives a list of indices (the global interface column of each block column).
+/// Sends a list of indices (the global interface column of each block column) to process `to`.
 void send_indices(const std::vector<Eigen::Index>& indices, int to);
+
+/// Receives a list of indices sent by send_indices from process `from`.
 std::vector<Eigen::Index> receive_indices(int from);
 
 }  // namespace kinestat::distributed
