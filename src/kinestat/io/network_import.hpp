@@ -40,8 +40,9 @@ struct ImportOptions {
     floating,        ///< the base and every loose link or group float (a free coupling to the world)
   };
   Base base = Base::format_default;
-  /// Largest model file read, in bytes (the command's --max-input-size): kinestat YAML / JSON
-  /// files and bar tables; 64 MiB by default (io::ReadingLimits::max_bytes).
+  /// Largest model file read, in bytes (the command's --max-input-size), by every reader:
+  /// kinestat YAML / JSON, bar tables, SPACAR, URDF, SDFormat and MJCF; 64 MiB by default
+  /// (io::ReadingLimits::max_bytes).
   std::size_t max_input_bytes = std::size_t{64} << 20;
 };
 
