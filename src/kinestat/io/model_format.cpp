@@ -1,19 +1,15 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "kinestat/io/model_format.hpp"
 
-#include <fcntl.h>
 #include <fmt/format.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
-#include <cstring>
 #include <utility>
 
 #include "kinestat/io/input_error.hpp"
 #include "kinestat/io/mjcf_reader.hpp"
+#include "kinestat/io/read_only_file.hpp"
 #include "kinestat/io/sdformat_reader.hpp"
 #include "kinestat/io/text_file.hpp"
 #include "kinestat/io/urdf_reader.hpp"
@@ -26,23 +22,13 @@ namespace {
 /// the file went on past them. Throws InputError naming the file when it is a folder or cannot
 /// be read (the messages of read_text_file).
 std::pair<std::string, bool> read_prefix(const std::string& path, std::size_t bytes) {
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) throw InputError({path, 0, 0}, fmt::format("cannot open file for reading: {}", std::strerror(errno)));
-  struct Closer {
-    int fd;
-    ~Closer() { ::close(fd); }
-  } closer{fd};
-  struct stat info {};
-  if (::fstat(fd, &info) == 0 && S_ISDIR(info.st_mode))
-    throw InputError({path, 0, 0}, "this is a folder, not a file: give the path of the model file");
+  ReadOnlyFile file(path, "this is a folder, not a file: give the path of the model file");
   std::string text(bytes + 1, '\0');  // one byte more tells whether the file goes on
   std::size_t filled = 0;
   while (filled < text.size()) {
-    const ssize_t got = ::read(fd, text.data() + filled, text.size() - filled);
-    if (got < 0 && errno == EINTR) continue;
-    if (got < 0) throw InputError({path, 0, 0}, fmt::format("cannot read the model file: {}", std::strerror(errno)));
+    const std::size_t got = file.read_some(text.data() + filled, text.size() - filled);
     if (got == 0) break;
-    filled += static_cast<std::size_t>(got);
+    filled += got;
   }
   const bool cut = filled > bytes;
   text.resize(std::min(filled, bytes));

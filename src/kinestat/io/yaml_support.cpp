@@ -2,19 +2,16 @@
 #include "kinestat/io/yaml_support.hpp"
 
 #include "kinestat/io/printable_text.hpp"
+#include "kinestat/io/read_only_file.hpp"
 #include "kinestat/io/text_file.hpp"
 
-#include <fcntl.h>
 #include <fmt/format.h>
-#include <sys/stat.h>
-#include <unistd.h>
 #include <yaml.h>
 
 #include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cstdint>
-#include <cerrno>
 #include <cmath>
 #include <cstring>
 #include <iostream>
@@ -520,30 +517,15 @@ std::string describe(const TreeNode& node) {
 }  // namespace
 
 std::string read_model_text(const std::string& path, const ReadingLimits& limits) {
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) throw InputError({path, 0, 0}, fmt::format("cannot open file for reading: {}", std::strerror(errno)));
-  struct Closer {
-    int fd;
-    ~Closer() { ::close(fd); }
-  } closer{fd};
-  struct stat info {};
-  if (::fstat(fd, &info) != 0) throw InputError({path, 0, 0}, fmt::format("cannot read the model file: {}", std::strerror(errno)));
-  if (S_ISDIR(info.st_mode)) {
-    throw InputError({path, 0, 0}, "this is a folder, not a model file: give the path of a .yaml or .json model");
-  }
-  if (S_ISREG(info.st_mode) && static_cast<std::uintmax_t>(info.st_size) > limits.max_bytes) too_large(path, limits);
+  ReadOnlyFile file(path, "this is a folder, not a model file: give the path of a .yaml or .json model");
+  const auto size = file.regular_size();
+  if (size && *size > limits.max_bytes) too_large(path, limits);
   // Devices, FIFOs and pipes have no size: read in blocks and stop one byte past the limit.
   std::string text;
-  if (S_ISREG(info.st_mode)) text.reserve(static_cast<std::size_t>(info.st_size));
+  if (size) text.reserve(*size);
   char block[1 << 16];
-  while (true) {
-    const ssize_t got = ::read(fd, block, sizeof block);
-    if (got < 0) {
-      if (errno == EINTR) continue;
-      throw InputError({path, 0, 0}, fmt::format("cannot read the model file: {}", std::strerror(errno)));
-    }
-    if (got == 0) break;
-    text.append(block, static_cast<std::size_t>(got));
+  while (const std::size_t got = file.read_some(block, sizeof block)) {
+    text.append(block, got);
     if (text.size() > limits.max_bytes) too_large(path, limits);
   }
   return text;
