@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 #include <mpi.h>
+#include <unistd.h>
 
 #include <iostream>
 #include <optional>
@@ -200,8 +201,9 @@ int decide_as_worker(const distributed::MpiSession& session) {
 }  // namespace
 
 int run_petsc_analysis(const CommonOptions& options) {
-  // At one process MPI is not started: the decision is the serial one (docs/scaling.md).
-  const distributed::MpiSession session(distributed::MpiStart::unless_alone);
+  // At one process (no launcher, or one saying size 1) MPI is not started: the decision is the
+  // serial one (docs/scaling.md).
+  const distributed::MpiSession session(!distributed::started_alone(environ));
   PetscModel model;
   if (const int code = read_on_root(options, session, model); code != 0) return code;
   if (session.rank() != 0) return decide_as_worker(session);

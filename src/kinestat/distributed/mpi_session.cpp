@@ -2,7 +2,6 @@
 #include "kinestat/distributed/mpi_session.hpp"
 
 #include <mpi.h>
-#include <unistd.h>
 
 #include <cstdlib>
 #include <stdexcept>
@@ -37,8 +36,8 @@ bool started_alone(const char* const* environment) {
   return sized ? sized_one : !launcher;
 }
 
-MpiSession::MpiSession(MpiStart start) {
-  if (start == MpiStart::unless_alone && started_alone(environ)) return;
+MpiSession::MpiSession(bool initialise) {
+  if (!initialise) return;
   if (MPI_Init(nullptr, nullptr) != MPI_SUCCESS) throw std::runtime_error("MPI could not be initialised");
   initialised_ = true;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank_);

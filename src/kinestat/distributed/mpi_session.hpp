@@ -8,19 +8,12 @@
 
 namespace kinestat::distributed {
 
-/// Whether a session initialises MPI when this process is the only one of its run.
-enum class MpiStart {
-  always,        ///< MPI_Init in every case (the mpi tests, which call MPI themselves)
-  unless_alone,  ///< not when the launcher's environment says one process (or no launcher at
-                 ///< all: a singleton); at P = 1 the decision is the serial one, and OpenMPI's
-                 ///< MPI_Init alone costs about 0.5 s of wall time (docs/scaling.md)
-};
-
-/// Initialises MPI on construction (see MpiStart) and finalises it on destruction. Collective
+/// Initialises MPI on construction (unless `initialise` is false: a process alone in its run,
+/// which then decides serially; see started_alone) and finalises it on destruction. Collective
 /// over MPI_COMM_WORLD; at most one per process.
 class MpiSession {
  public:
-  explicit MpiSession(MpiStart start = MpiStart::always);
+  explicit MpiSession(bool initialise = true);
   ~MpiSession();
   MpiSession(const MpiSession&) = delete;
   MpiSession& operator=(const MpiSession&) = delete;
@@ -29,7 +22,7 @@ class MpiSession {
   int rank() const { return rank_; }
   /// The number of processes in MPI_COMM_WORLD (1 without MPI).
   int size() const { return size_; }
-  /// Whether this session initialised MPI (false only with MpiStart::unless_alone at P = 1).
+  /// Whether this session initialised MPI.
   bool initialised() const { return initialised_; }
 
   /// Ends every process of the run with `exit_code` after an error on this one (MPI_Abort when
@@ -52,7 +45,9 @@ int world_size();
 /// and srun set it), or no launcher variable at all (OMPI_COMM_WORLD_*, PMI_*, PMIX_* unset:
 /// started without mpirun). Any other launcher variable without a size reads as "not alone", so that an
 /// unknown launcher still gets MPI. `environment` is a NULL-terminated list of NAME=VALUE
-/// strings (environ).
+/// strings (the caller's environ: the library reads no environment itself). At P = 1 the
+/// decision is the serial one, and OpenMPI's MPI_Init alone costs about 0.5 s of wall time
+/// (docs/scaling.md), so the command does not initialise MPI then.
 bool started_alone(const char* const* environment);
 
 }  // namespace kinestat::distributed
