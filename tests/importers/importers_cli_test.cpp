@@ -149,7 +149,7 @@ TEST(RobotCli, BadFilesExitTwoWithOneLocatedLine) {
   const std::string xml = write_temp_file("bad.xml", "<?xml version='1.0'?>\n<scene/>\n");
   const CliRun x = run_cli("analyze " + xml);
   EXPECT_EQ(x.exit_code, 2);
-  EXPECT_EQ(x.err, xml + ":1:1: error: an .xml file with a <scene> root is not a format kinestat reads; expected <mujoco>, "
+  EXPECT_EQ(x.err, xml + ":2:1: error: an .xml file with a <scene> root is not a format kinestat reads; expected <mujoco>, "
                          "<robot> or <sdf>\n");
 }
 

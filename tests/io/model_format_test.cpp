@@ -5,6 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -71,8 +75,11 @@ TEST(ModelFormat, RootNameAtTheEndOfThePrefixIsReadWholeOrNotAtAll) {
 
 TEST(ModelFormat, OtherRootsFoldersAndMissingFilesSayWhatIsWrong) {
   const std::string scene = write_temp_file("scene.xml", "<?xml version=\"1.0\"?>\n<scene/>\n");
-  EXPECT_EQ(error_of(scene), scene + ":1:1: error: an .xml file with a <scene> root is not a format kinestat reads; expected "
+  // The position is the root's '<': line 2 after the declaration; column 3 after two spaces.
+  EXPECT_EQ(error_of(scene), scene + ":2:1: error: an .xml file with a <scene> root is not a format kinestat reads; expected "
                                      "<mujoco>, <robot> or <sdf>");
+  const std::string indented = write_temp_file("indented.xml", "<!-- a\n comment -->\n\n  <world/>\n");
+  EXPECT_TRUE(has(error_of(indented), indented + ":4:3: error: an .xml file with a <world> root")) << error_of(indented);
   const std::string text = write_temp_file("text.xml", "just words\n");
   EXPECT_EQ(error_of(text), text + ":1:1: error: an .xml file must be MJCF (<mujoco>), URDF (<robot>) or SDFormat (<sdf>)");
   const fs::path folder = testing::scratch_folder() / "folder.xml";
@@ -80,6 +87,24 @@ TEST(ModelFormat, OtherRootsFoldersAndMissingFilesSayWhatIsWrong) {
   EXPECT_TRUE(has(error_of(folder.string()), "this is a folder, not a file")) << error_of(folder.string());
   const std::string missing = (testing::scratch_folder() / "missing.xml").string();
   EXPECT_TRUE(has(error_of(missing), missing + ": error: cannot open file for reading")) << error_of(missing);
+}
+
+// A named pipe called .xml is refused at once with exit 2 rather than read twice: its root
+// element would be read by the format detection, and the reader's second open would wait for
+// another writer for ever. The test holds the pipe open for writing itself (O_RDWR does not wait
+// on Linux), so that the detection's open does not wait either, and writes nothing.
+TEST(ModelFormat, PipeNamedXmlIsRefusedNotReadTwice) {
+  const fs::path pipe = testing::scratch_folder() / "pipe.xml";
+  fs::remove(pipe);
+  ASSERT_EQ(::mkfifo(pipe.c_str(), 0600), 0);
+  const int writer = ::open(pipe.c_str(), O_RDWR | O_CLOEXEC);
+  ASSERT_GE(writer, 0);
+  const std::string message = error_of(pipe.string());
+  ::close(writer);
+  fs::remove(pipe);
+  EXPECT_EQ(message, pipe.string() + ": error: an .xml model must be a regular file (this is a pipe or device): its root "
+                                     "element is read first to tell MJCF, URDF and SDFormat apart, then the file is read "
+                                     "again; save it to a file, or name it .urdf or .sdf");
 }
 
 // A 100 MiB .xml (sparse: its size costs no disk) is told apart by its first bytes, then refused

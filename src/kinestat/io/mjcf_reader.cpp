@@ -845,7 +845,11 @@ mjModel* load(const char* file, const mjVFS* vfs, char (&error)[1024], MjcfReade
 // 2.2.2 crashes on some malformed URDF, which it also reads: only an MJCF root reaches it (fuzzer).
 void refuse_empty(const std::string& path, const std::string& text) {
   if (text.empty()) throw InputError({path, 0, 0}, "the file is empty: expected an MJCF model (<mujoco>)");
-  if (xml_root_name(text) != "mujoco") throw InputError({path, 1, 1}, "expected an MJCF model: a <mujoco> root element");
+  const XmlRootElement root = xml_root_element(text);
+  if (root.name != "mujoco") {
+    const auto [line, column] = LineIndex(text).position(root.offset);
+    throw InputError({path, line, column}, "expected an MJCF model: a <mujoco> root element");
+  }
 }
 
 }  // namespace

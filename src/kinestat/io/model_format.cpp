@@ -18,11 +18,16 @@ namespace kinestat::io {
 
 namespace {
 
-/// At most the first `bytes` of the file at `path` (a regular file, device or FIFO) and whether
-/// the file went on past them. Throws InputError naming the file when it is a folder or cannot
-/// be read (the messages of read_text_file).
+/// At most the first `bytes` of the regular file at `path` and whether the file went on past
+/// them. Throws InputError naming the file when it is a folder or cannot be read (the messages of
+/// read_text_file), or when it is a FIFO or device: its reader would open it again after this
+/// read, and a pipe read once is gone (the second open would wait for another writer).
 std::pair<std::string, bool> read_prefix(const std::string& path, std::size_t bytes) {
   ReadOnlyFile file(path, "this is a folder, not a file: give the path of the model file");
+  if (!file.regular_size())
+    throw InputError({path, 0, 0}, "an .xml model must be a regular file (this is a pipe or device): its root element "
+                                   "is read first to tell MJCF, URDF and SDFormat apart, then the file is read again; "
+                                   "save it to a file, or name it .urdf or .sdf");
   std::string text(bytes + 1, '\0');  // one byte more tells whether the file goes on
   std::size_t filled = 0;
   while (filled < text.size()) {
@@ -41,13 +46,15 @@ ModelFormat xml_format(const std::string& path) {
   // A prefix cut inside a name would give a shorter name ("<muj"): keep it up to its last '>',
   // so that a name is read only when something after it (at least that '>') was read too.
   if (cut) prefix.resize(prefix.rfind('>') == std::string::npos ? 0 : prefix.rfind('>') + 1);
-  const std::string root = xml_root_name(prefix);
-  if (root == "mujoco") return ModelFormat::mjcf;
-  if (root == "robot") return ModelFormat::urdf;
-  if (root == "sdf") return ModelFormat::sdformat;
-  if (!root.empty())
-    throw InputError({path, 1, 1}, "an .xml file with a <" + root + "> root is not a format kinestat reads; "
-                                   "expected <mujoco>, <robot> or <sdf>");
+  const XmlRootElement root = xml_root_element(prefix);
+  if (root.name == "mujoco") return ModelFormat::mjcf;
+  if (root.name == "robot") return ModelFormat::urdf;
+  if (root.name == "sdf") return ModelFormat::sdformat;
+  if (!root.name.empty()) {
+    const auto [line, column] = LineIndex(prefix).position(root.offset);
+    throw InputError({path, line, column}, "an .xml file with a <" + root.name + "> root is not a format kinestat reads; "
+                                           "expected <mujoco>, <robot> or <sdf>");
+  }
   if (cut)
     throw InputError({path, 1, 1}, fmt::format("no root element in the first {} of this .xml file (after its declaration, "
                                                "comments and doctype): expected <mujoco> (MJCF), <robot> (URDF) or <sdf> "

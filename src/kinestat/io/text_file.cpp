@@ -34,29 +34,29 @@ ReadingLimits reading_limits_for(std::size_t max_bytes) {
   return limits;
 }
 
-std::string xml_root_name(const std::string& text) {
+XmlRootElement xml_root_element(const std::string& text) {
   std::size_t i = 0;
   if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) i = 3;  // UTF-8 byte order mark
   while (i < text.size()) {
     while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
-    if (i >= text.size() || text[i] != '<') return "";
+    if (i >= text.size() || text[i] != '<') return {};
     if (text.compare(i, 4, "<!--") == 0) {
       const auto end = text.find("-->", i + 4);
-      if (end == std::string::npos) return "";
+      if (end == std::string::npos) return {};
       i = end + 3;
     } else if (text.compare(i, 2, "<?") == 0 || text.compare(i, 2, "<!") == 0) {
       const auto end = text.find('>', i + 2);
-      if (end == std::string::npos) return "";
+      if (end == std::string::npos) return {};
       i = end + 1;
     } else {
       std::size_t j = i + 1;
       while (j < text.size() && (std::isalnum(static_cast<unsigned char>(text[j])) || text[j] == '_' || text[j] == '-' ||
                                  text[j] == ':' || text[j] == '.'))
         ++j;
-      return text.substr(i + 1, j - i - 1);
+      return {text.substr(i + 1, j - i - 1), i};
     }
   }
-  return "";
+  return {};
 }
 
 LineIndex::LineIndex(std::string_view text) : text_(text) {

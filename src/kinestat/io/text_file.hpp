@@ -32,9 +32,14 @@ std::string size_text(std::size_t bytes);
 /// the defaults' ratio of 4 bytes a node), never fewer than the default.
 ReadingLimits reading_limits_for(std::size_t max_bytes);
 
-/// The name of the first element of XML `text` ("robot", "sdf", "mujoco"), skipping the XML
-/// declaration, comments and doctype; "" when the text does not start like XML.
-std::string xml_root_name(const std::string& text);
+/// The first element of an XML text: its name and the byte offset of its '<'.
+struct XmlRootElement {
+  std::string name;         ///< "robot", "sdf", "mujoco"; "" when the text does not start like XML
+  std::size_t offset = 0;   ///< of the element's '<' (0 when there is none)
+};
+
+/// The first element of XML `text`, skipping the XML declaration, comments and doctype.
+XmlRootElement xml_root_element(const std::string& text);
 
 /// The line starts of a text, found once: readers that locate many elements (one per joint)
 /// turn offsets into lines and lines into text without scanning from the file's start each time.
