@@ -36,14 +36,15 @@ namespace fs = std::filesystem;
 
 bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
-// One line naming the file and the limit, exit 2, nothing on standard output. An .xml file is
-// refused sooner, by the search for its root element in its first 1 MiB (io/model_format).
+// One line naming the file and the limit, exit 2, nothing on standard output. An .xml file that
+// is a device or a FIFO is refused at once, before it is read (io/model_format: its root element
+// would be read first and the file opened again by its reader).
 void expect_refused_at_the_limit(const CliRun& r, const std::string& path) {
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_TRUE(r.out.empty());
   EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;  // one line
   EXPECT_TRUE(has(r.err, path)) << r.err;
-  EXPECT_TRUE(has(r.err, path.ends_with(".xml") ? "no root element in the first 1 MiB" : "64 MiB limit")) << r.err;
+  EXPECT_TRUE(has(r.err, path.ends_with(".xml") ? "an .xml model must be a regular file (this is a pipe or device)" : "64 MiB limit")) << r.err;
 }
 
 bool built_in(const CliRun& r) { return !has(r.err, "not built in"); }
