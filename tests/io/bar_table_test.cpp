@@ -11,7 +11,10 @@
 
 #include "kinestat/framework/framework_analysis.hpp"
 #include "kinestat/io/bar_table_reader.hpp"
+#include "kinestat/io/framework_reader.hpp"
+#include "kinestat/io/framework_yaml_writer.hpp"
 #include "kinestat/io/input_error.hpp"
+#include "kinestat/io/yaml_support.hpp"
 #include "support/cli_run.hpp"
 
 namespace kinestat::io {
@@ -92,6 +95,24 @@ TEST(BarTable, EveryRefusalIsLocated) {
             "in.bars:9:4: error: expected the translations node 0 holds (x, y or xy)");
   EXPECT_EQ(bar_table_error("kinestat bars 1\ndimension 2\nnodes 2\n0 0\n1 0\nbars 1\n0 1\nsupports 0\nmore\n"),
             "in.bars:9:1: error: expected the end of the bar table after its supports");
+  // No node: refused as a YAML framework is ('nodes' is empty), not analysed as an empty structure.
+  EXPECT_EQ(bar_table_error("kinestat bars 1\ndimension 2\nnodes 0\nbars 0\n"),
+            "in.bars:3:7: error: expected at least one node: a framework needs one");
+}
+
+// Nodes and no bar (found by fuzz_bar_table): a valid table whose YAML must read back; it wrote
+// "elements:" with nothing after it, which YAML reads as null, not as an empty list. By hand:
+// three free nodes in the plane, 2 × 3 = 6 mechanisms, no self-stress.
+TEST(BarTable, NodesWithoutBarsAreWrittenAsYamlThatReadsBack) {
+  const framework::FrameworkModel model = parse_bar_table("in.bars", "kinestat bars 1\ndimension 2\nnodes 3\n0 0\n0 0\n0 1\nbars 0\n");
+  const std::string yaml = framework_yaml(model, {});
+  EXPECT_NE(yaml.find("elements: []\n"), std::string::npos) << yaml;
+  const framework::FrameworkModel again = read_framework_model(YamlFile::parse("again.yaml", yaml));
+  EXPECT_EQ(again.nodes.size(), 3u);
+  EXPECT_TRUE(again.elements.empty());
+  const auto result = framework::analyse_framework(again);
+  EXPECT_EQ(result.mechanisms, 6);
+  EXPECT_EQ(result.self_stresses, 0);
 }
 
 TEST(BarTable, CountsAreNotTrustedForMemory) {

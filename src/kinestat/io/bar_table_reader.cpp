@@ -63,6 +63,8 @@ class BarTableParser {
     expect_line("'nodes N' (the number of nodes)");
     keyword("nodes");
     const std::size_t nodes = count("the number of nodes");
+    // As a YAML framework (io/framework_reader): a model of no node is a mistake, not a structure.
+    if (nodes == 0) fail(token_column_, "expected at least one node: a framework needs one");
     end_of_line("'nodes N'");
     model.nodes.reserve(std::min(nodes, text_.size() / kShortestEntryLine));
     const auto d = static_cast<Eigen::Index>(model.dimension);

@@ -92,7 +92,8 @@ std::string framework_yaml(const FrameworkModel& model, const std::vector<std::s
   if (!model.name.empty()) out += "name: " + quoted(model.name) + "\n";
   out += model.dimension == 2 ? "dimension: planar\n" : "dimension: spatial\n";
   if (!model.units.empty()) out += "units: " + quoted(model.units) + "\n";
-  out += "nodes:\n";
+  // An empty block is written as an empty flow collection: "nodes:" alone reads back as null.
+  out += model.nodes.empty() ? "nodes: {}\n" : "nodes:\n";
   for (const auto& node : model.nodes) {
     if (node.triad) {
       const Eigen::Matrix3d& t = *node.triad;
@@ -113,7 +114,7 @@ std::string framework_yaml(const FrameworkModel& model, const std::vector<std::s
     if (!block.empty()) out += std::string(key) + ":\n" + block;
   }
   out += elastic_data_yaml(model);
-  out += "elements:\n";
+  out += model.elements.empty() ? "elements: []\n" : "elements:\n";
   for (const Element& element : model.elements) {
     std::vector<std::string> nodes;
     for (std::size_t n : element.nodes) nodes.push_back(quoted(model.nodes[n].name));
