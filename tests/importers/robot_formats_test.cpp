@@ -479,6 +479,13 @@ TEST(MjcfReader, AnEmptyFileIsAnInputError) {
   }
   // libmujoco 2.2.2 also reads URDF, and crashed on a malformed one (fuzzer).
   EXPECT_THROW(parse_mjcf("robot.xml", "<robot name='r'><l:ink name='a'/></robot>"), InputError);
+  // Another root is refused at its '<': line 2 after the declaration, column 3 after two spaces.
+  try {
+    parse_mjcf("robot.xml", "<?xml version='1.0'?>\n  <robot name='r'/>\n");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "robot.xml:2:3: error: expected an MJCF model: a <mujoco> root element");
+  }
 }
 
 }  // namespace

@@ -92,8 +92,7 @@ std::string framework_yaml(const FrameworkModel& model, const std::vector<std::s
   if (!model.name.empty()) out += "name: " + quoted(model.name) + "\n";
   out += model.dimension == 2 ? "dimension: planar\n" : "dimension: spatial\n";
   if (!model.units.empty()) out += "units: " + quoted(model.units) + "\n";
-  // An empty block is written as an empty flow collection: "nodes:" alone reads back as null.
-  out += model.nodes.empty() ? "nodes: {}\n" : "nodes:\n";
+  out += "nodes:\n";
   for (const auto& node : model.nodes) {
     if (node.triad) {
       const Eigen::Matrix3d& t = *node.triad;
@@ -114,6 +113,7 @@ std::string framework_yaml(const FrameworkModel& model, const std::vector<std::s
     if (!block.empty()) out += std::string(key) + ":\n" + block;
   }
   out += elastic_data_yaml(model);
+  // No element (a bar table of nodes alone): "elements:" with nothing after it reads back as null.
   out += model.elements.empty() ? "elements: []\n" : "elements:\n";
   for (const Element& element : model.elements) {
     std::vector<std::string> nodes;
